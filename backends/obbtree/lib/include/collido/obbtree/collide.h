@@ -1,0 +1,46 @@
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <Eigen/Geometry>
+
+#include <collido/obbtree/tree.h>
+
+namespace collido::obbtree {
+
+/// An intersecting pair: input triangle index in A, in B.
+struct TrianglePair {
+  std::int32_t a = 0;
+  std::int32_t b = 0;
+};
+
+/// What a tree-tree query asks.
+enum class CollideMode {
+  kFirstHit,  ///< stop at the first intersecting pair (boolean answer, one witness)
+  kAllPairs,  ///< every intersecting pair (up to max_pairs)
+};
+
+/// Options and limits of a query.
+struct CollideRequest {
+  CollideMode mode = CollideMode::kAllPairs;
+  std::uint64_t max_pairs = 0;  ///< kAllPairs: stop after this many; 0 = no limit
+};
+
+/// The answer and the work done.
+struct CollideResult {
+  std::vector<TrianglePair> pairs;  ///< in traversal order
+  bool truncated = false;           ///< max_pairs stopped the query
+  std::uint64_t box_tests = 0;      ///< separating-axis tests
+  std::uint64_t triangle_tests = 0;  ///< exact triangle-triangle tests
+};
+
+/// Collides two posed trees by simultaneous descent from the roots, in A's model frame: B's
+/// boxes are brought into A's frame with the relative pose, a box pair that the 15-axis test
+/// separates ends its branch, otherwise the larger box is split; at two leaves every triangle
+/// pair is tested exactly (on B's vertices transformed into A's frame). `result` is overwritten.
+void collide(const ObbTree& a, const Eigen::Isometry3d& pose_a, const ObbTree& b,
+             const Eigen::Isometry3d& pose_b, const CollideRequest& request,
+             CollideResult& result);
+
+}  // namespace collido::obbtree

@@ -1,0 +1,52 @@
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace collido::obbtree {
+
+/// An oriented box: the points center + axes * u with |u_k| <= half_extents[k].
+struct OrientedBox {
+  Eigen::Matrix3d axes = Eigen::Matrix3d::Identity();  ///< orthonormal, right-handed columns,
+                                                       ///< sorted by decreasing spread
+  Eigen::Vector3d center = Eigen::Vector3d::Zero();
+  Eigen::Vector3d half_extents = Eigen::Vector3d::Zero();
+};
+
+/// Fits boxes to sets of triangles of one mesh, as in the dissertation: m = the centre of mass
+/// of the triangles (area-weighted centroid; the mean of the centroids when the area is zero);
+/// C = the covariance of their vertices about m, each distinct vertex counted once (counting a
+/// vertex once per triangle would weight it by its valence and tilt the axes of even a cuboid);
+/// axes = the normalised eigenvectors of C, by decreasing extent; extents = the extreme vertices
+/// along each axis, widened by a few units of rounding so the box contains every vertex as
+/// computed. Holds scratch space for the distinct-vertex pass, reused across calls.
+class BoxFitter {
+ public:
+  explicit BoxFitter(std::size_t vertex_count) : stamp_(vertex_count, 0) {}
+
+  /// The box of triangles order[0 .. count).
+  OrientedBox fit(const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
+                  const Eigen::Ref<const Eigen::Matrix3Xi>& triangles, const std::int32_t* order,
+                  std::int32_t count);
+
+ private:
+  std::vector<std::uint32_t> stamp_;  // stamp_[v] == epoch_: vertex v already counted
+  std::uint32_t epoch_ = 0;
+};
+
+/// One-off BoxFitter::fit.
+OrientedBox fitBox(const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
+                   const Eigen::Ref<const Eigen::Matrix3Xi>& triangles,
+                   const std::int32_t* order, std::int32_t count);
+
+/// Recomputes centre and extents of `box` over all columns of `triangles`, keeping its axes
+/// (refit after the vertices moved).
+void refitBoxExtents(OrientedBox& box, const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
+                     const Eigen::Ref<const Eigen::Matrix3Xi>& triangles);
+
+/// Whether `point` lies in `box` as computed in double precision (no tolerance).
+bool boxContains(const OrientedBox& box, const Eigen::Vector3d& point);
+
+}  // namespace collido::obbtree

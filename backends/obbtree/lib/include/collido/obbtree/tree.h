@@ -1,0 +1,71 @@
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include <collido/obbtree/oriented_box.h>
+
+namespace collido::obbtree {
+
+/// How to build a tree.
+struct BuildOptions {
+  std::int32_t max_leaf_triangles = 1;  ///< split while a node holds more than this (>= 1)
+};
+
+/// One node of the flat tree. Depth-first order: the first child of node i is i + 1.
+struct Node {
+  OrientedBox box;
+  std::int32_t second_child = -1;  ///< index of the second child; -1 for a leaf
+  std::int32_t first = 0;          ///< first position in the tree's triangle order
+  std::int32_t count = 0;          ///< triangles in this subtree: order[first .. first + count)
+
+  bool isLeaf() const { return second_child < 0; }
+};
+
+/// The OBB tree of a triangle mesh: a flat array of nodes, a copy of the vertices and the
+/// triangles stored in leaf order (so a leaf's triangles are contiguous).
+class ObbTree {
+ public:
+  /// Builds the tree top-down: fit a box (fitBox); split along the longest box axis by the plane
+  /// through the mean of the triangle centres, a triangle going to the side its centre lies on;
+  /// if a side is empty try the next longest axis; if every axis fails, or the node holds at
+  /// most max_leaf_triangles, it is a leaf. O(n log n) for well-spread meshes.
+  static ObbTree build(const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
+                       const Eigen::Ref<const Eigen::Matrix3Xi>& triangles,
+                       const BuildOptions& options = {});
+
+  const std::vector<Node>& nodes() const { return nodes_; }
+  const Eigen::Matrix3Xd& vertices() const { return vertices_; }
+  /// Triangles in leaf order: column k is the input triangle triangleId(k).
+  const Eigen::Matrix3Xi& orderedTriangles() const { return triangles_; }
+  /// The input index of the triangle at position k of the leaf order.
+  std::int32_t triangleId(std::int32_t k) const { return ids_[static_cast<std::size_t>(k)]; }
+  std::size_t triangleCount() const { return ids_.size(); }
+  /// Deepest level (the root is at depth 0).
+  int depth() const { return depth_; }
+
+  /// Replaces the vertex positions (same count and order as at build) and refits every box
+  /// bottom-up, keeping its axes. The tree's shape is unchanged.
+  void refit(const Eigen::Ref<const Eigen::Matrix3Xd>& vertices);
+
+  /// Checks the invariants: the structure (children partition their parent's range, every
+  /// triangle in exactly one leaf) and that every triangle lies inside every ancestor box.
+  /// Returns an empty string when valid, else the first violation found.
+  std::string validate() const;
+
+  /// Bytes held: nodes, vertices, ordered triangles and ids (capacities, not sizes).
+  std::size_t memoryBytes() const;
+
+ private:
+  std::vector<Node> nodes_;
+  Eigen::Matrix3Xd vertices_;
+  Eigen::Matrix3Xi triangles_;
+  std::vector<std::int32_t> ids_;
+  int depth_ = 0;
+};
+
+}  // namespace collido::obbtree

@@ -1,0 +1,125 @@
+#include <collido/obbtree/oriented_box.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <Eigen/Eigenvalues>
+
+namespace collido::obbtree {
+namespace {
+
+constexpr double kEpsilon = std::numeric_limits<double>::epsilon();
+
+// Sets centre and extents of `box` (axes given) from the extreme projections of the vertices,
+// measured from `reference` to keep the numbers small, and widens the extents by a bound on the
+// rounding of these sums and of the later containment checks (a few ulps of the magnitudes
+// involved, times a safety factor), so the stored box contains every vertex as computed.
+// `triangle(i)` gives the vertex indices of the i-th of `count` triangles.
+template <typename TriangleAt>
+void setExtents(OrientedBox& box, const Eigen::Vector3d& reference,
+                const Eigen::Ref<const Eigen::Matrix3Xd>& vertices, std::int32_t count,
+                TriangleAt&& triangle_at) {
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
+  Eigen::Vector3d hi = -lo;
+  const Eigen::Matrix3d axes_t = box.axes.transpose();
+  for (std::int32_t i = 0; i < count; ++i) {
+    const auto triangle = triangle_at(i);
+    for (int k = 0; k < 3; ++k) {
+      const Eigen::Vector3d u = axes_t * (vertices.col(triangle[k]) - reference);
+      lo = lo.cwiseMin(u);
+      hi = hi.cwiseMax(u);
+    }
+  }
+  const Eigen::Vector3d middle = 0.5 * (lo + hi);
+  box.center = reference + box.axes * middle;
+  const double scale = reference.cwiseAbs().maxCoeff() + middle.cwiseAbs().maxCoeff() +
+                       (hi - lo).cwiseAbs().maxCoeff();
+  box.half_extents = (0.5 * (hi - lo)).array() + 64.0 * kEpsilon * scale;
+}
+
+}  // namespace
+
+OrientedBox fitBox(const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
+                   const Eigen::Ref<const Eigen::Matrix3Xi>& triangles,
+                   const std::int32_t* order, std::int32_t count) {
+  BoxFitter fitter(static_cast<std::size_t>(vertices.cols()));
+  return fitter.fit(vertices, triangles, order, count);
+}
+
+OrientedBox BoxFitter::fit(const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
+                           const Eigen::Ref<const Eigen::Matrix3Xi>& triangles,
+                           const std::int32_t* order, std::int32_t count) {
+  // Centre of mass of the triangles (area-weighted centroids).
+  Eigen::Vector3d weighted = Eigen::Vector3d::Zero();
+  Eigen::Vector3d plain = Eigen::Vector3d::Zero();
+  double total_area = 0.0;
+  for (std::int32_t i = 0; i < count; ++i) {
+    const auto t = triangles.col(order[i]);
+    const Eigen::Vector3d a = vertices.col(t[0]);
+    const Eigen::Vector3d b = vertices.col(t[1]);
+    const Eigen::Vector3d c = vertices.col(t[2]);
+    const Eigen::Vector3d centroid = (a + b + c) / 3.0;
+    const double area = 0.5 * (b - a).cross(c - a).norm();
+    weighted += area * centroid;
+    plain += centroid;
+    total_area += area;
+  }
+  const Eigen::Vector3d mean = total_area > 0.0 && std::isfinite(total_area)
+                                   ? Eigen::Vector3d(weighted / total_area)
+                                   : Eigen::Vector3d(plain / static_cast<double>(count));
+
+  // Covariance of the distinct vertices about the centre of mass.
+  if (++epoch_ == 0) {  // the stamps wrapped around: start afresh
+    std::fill(stamp_.begin(), stamp_.end(), 0);
+    epoch_ = 1;
+  }
+  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+  for (std::int32_t i = 0; i < count; ++i) {
+    const auto t = triangles.col(order[i]);
+    for (int k = 0; k < 3; ++k) {
+      std::uint32_t& stamp = stamp_[static_cast<std::size_t>(t[k])];
+      if (stamp == epoch_) continue;
+      stamp = epoch_;
+      const Eigen::Vector3d d = vertices.col(t[k]) - mean;
+      covariance += d * d.transpose();
+    }
+  }
+
+  OrientedBox box;
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(covariance);
+  if (solver.info() == Eigen::Success && solver.eigenvectors().allFinite()) {
+    // Eigen sorts eigenvalues in increasing order; the box axes go from largest spread down.
+    box.axes.col(0) = solver.eigenvectors().col(2).normalized();
+    box.axes.col(1) = solver.eigenvectors().col(1).normalized();
+    box.axes.col(2) = box.axes.col(0).cross(box.axes.col(1)).normalized();
+  }
+  setExtents(box, mean, vertices, count,
+             [&](std::int32_t i) { return triangles.col(order[i]); });
+  // Order the axes by decreasing extent (the eigenvalue order is only a proxy for it), keeping
+  // the frame right-handed, so that the longest axis is axis 0 for splitting.
+  for (int pass = 0; pass < 2; ++pass) {
+    for (int k = 0; k < 2; ++k) {
+      if (box.half_extents[k] < box.half_extents[k + 1]) {
+        box.axes.col(k).swap(box.axes.col(k + 1));
+        std::swap(box.half_extents[k], box.half_extents[k + 1]);
+        box.axes.col(2) = box.axes.col(0).cross(box.axes.col(1));
+      }
+    }
+  }
+  return box;
+}
+
+void refitBoxExtents(OrientedBox& box, const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
+                     const Eigen::Ref<const Eigen::Matrix3Xi>& triangles) {
+  const Eigen::Vector3d reference = vertices.col(triangles(0, 0));
+  setExtents(box, reference, vertices, static_cast<std::int32_t>(triangles.cols()),
+             [&](std::int32_t i) { return triangles.col(i); });
+}
+
+bool boxContains(const OrientedBox& box, const Eigen::Vector3d& point) {
+  const Eigen::Vector3d u = box.axes.transpose() * (point - box.center);
+  return (u.cwiseAbs().array() <= box.half_extents.array()).all();
+}
+
+}  // namespace collido::obbtree

@@ -1,0 +1,100 @@
+// Top-down construction of the OBB tree (the dissertation's method; Gottschalk et al. 1996).
+//
+// Per node: fit the box; if the node holds more than max_leaf_triangles, split. The split plane
+// is orthogonal to the longest box axis and passes through the mean of the triangle centres; a
+// triangle goes to the side its centre lies on. If one side is empty, the next longest axis is
+// tried; if all three fail (e.g. all centres coincide), the node becomes a leaf that keeps all
+// its triangles. Nodes are emitted in depth-first order, so the first child is always the next
+// node and only the second child's index is stored. An explicit stack keeps adversarial inputs
+// (very unbalanced splits) from exhausting the call stack.
+#include <algorithm>
+#include <numeric>
+
+#include <collido/obbtree/tree.h>
+
+namespace collido::obbtree {
+namespace {
+
+struct Task {
+  std::int32_t first;
+  std::int32_t count;
+  std::int32_t parent;  // node whose second_child this task fills; -1 for the root/first child
+  int depth;
+};
+
+// Partitions order[first, first + count) by the centre plane along `axis`; returns the size of
+// the lower part (0 or count when the split fails on this axis).
+std::int32_t partition(std::int32_t* order, std::int32_t count, const Eigen::Vector3d& axis,
+                       const Eigen::Matrix3Xd& centroids) {
+  double mean = 0.0;
+  for (std::int32_t i = 0; i < count; ++i) mean += axis.dot(centroids.col(order[i]));
+  mean /= static_cast<double>(count);
+  std::int32_t* middle = std::partition(order, order + count, [&](std::int32_t t) {
+    return axis.dot(centroids.col(t)) < mean;
+  });
+  return static_cast<std::int32_t>(middle - order);
+}
+
+}  // namespace
+
+ObbTree ObbTree::build(const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
+                       const Eigen::Ref<const Eigen::Matrix3Xi>& triangles,
+                       const BuildOptions& options) {
+  ObbTree tree;
+  tree.vertices_ = vertices;
+  const auto n = static_cast<std::int32_t>(triangles.cols());
+  const std::int32_t max_leaf = std::max<std::int32_t>(1, options.max_leaf_triangles);
+  std::vector<std::int32_t> order(static_cast<std::size_t>(n));
+  std::iota(order.begin(), order.end(), 0);
+
+  Eigen::Matrix3Xd centroids(3, n);
+  for (std::int32_t t = 0; t < n; ++t) {
+    centroids.col(t) = (vertices.col(triangles(0, t)) + vertices.col(triangles(1, t)) +
+                        vertices.col(triangles(2, t))) /
+                       3.0;
+  }
+
+  // A binary tree with at most n leaves has at most 2n - 1 nodes.
+  tree.nodes_.reserve(n > 0 ? static_cast<std::size_t>(2 * (n / max_leaf + 1)) : 0);
+  BoxFitter fitter(static_cast<std::size_t>(vertices.cols()));
+  std::vector<Task> stack;
+  if (n > 0) stack.push_back(Task{0, n, -1, 0});
+  while (!stack.empty()) {
+    const Task task = stack.back();
+    stack.pop_back();
+    const auto index = static_cast<std::int32_t>(tree.nodes_.size());
+    if (task.parent >= 0) tree.nodes_[static_cast<std::size_t>(task.parent)].second_child = index;
+    Node node;
+    std::int32_t* range = order.data() + task.first;
+    node.box = fitter.fit(vertices, triangles, range, task.count);
+    node.first = task.first;
+    node.count = task.count;
+    tree.depth_ = std::max(tree.depth_, task.depth);
+    tree.nodes_.push_back(node);
+    if (task.count <= max_leaf) continue;
+
+    std::int32_t lower = 0;
+    for (int axis = 0; axis < 3; ++axis) {  // axes are sorted longest first
+      lower = partition(range, task.count, node.box.axes.col(axis), centroids);
+      if (lower > 0 && lower < task.count) break;
+    }
+    if (lower == 0 || lower == task.count) continue;  // no axis splits: a leaf
+    // LIFO: the first child is popped next, so it lands at index + 1.
+    stack.push_back(Task{task.first + lower, task.count - lower, index, task.depth + 1});
+    stack.push_back(Task{task.first, lower, -1, task.depth + 1});
+  }
+  tree.triangles_.resize(3, n);
+  tree.ids_ = order;
+  for (std::int32_t k = 0; k < n; ++k) tree.triangles_.col(k) = triangles.col(order[k]);
+  tree.nodes_.shrink_to_fit();
+  return tree;
+}
+
+std::size_t ObbTree::memoryBytes() const {
+  return nodes_.capacity() * sizeof(Node) +
+         static_cast<std::size_t>(vertices_.size()) * sizeof(double) +
+         static_cast<std::size_t>(triangles_.size()) * sizeof(int) +
+         ids_.capacity() * sizeof(std::int32_t);
+}
+
+}  // namespace collido::obbtree

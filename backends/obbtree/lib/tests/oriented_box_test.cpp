@@ -1,0 +1,143 @@
+#include <random>
+#include <vector>
+
+#include <Eigen/Geometry>
+#include <gtest/gtest.h>
+
+#include <collido/obbtree/oriented_box.h>
+
+namespace collido::obbtree {
+namespace {
+
+struct Soup {
+  Eigen::Matrix3Xd vertices;
+  Eigen::Matrix3Xi triangles;
+  std::vector<std::int32_t> order;
+};
+
+// A closed box mesh with half sizes (hx, hy, hz), rotated and moved.
+Soup boxMesh(const Eigen::Vector3d& half, const Eigen::Matrix3d& rotation,
+             const Eigen::Vector3d& offset) {
+  Soup s;
+  s.vertices.resize(3, 8);
+  for (int i = 0; i < 8; ++i) {
+    const Eigen::Vector3d corner((i & 1) ? half.x() : -half.x(), (i & 2) ? half.y() : -half.y(),
+                                 (i & 4) ? half.z() : -half.z());
+    s.vertices.col(i) = rotation * corner + offset;
+  }
+  const int faces[12][3] = {{0, 2, 1}, {1, 2, 3}, {4, 5, 6}, {5, 7, 6}, {0, 1, 4}, {1, 5, 4},
+                            {2, 6, 3}, {3, 6, 7}, {0, 4, 2}, {2, 4, 6}, {1, 3, 5}, {3, 7, 5}};
+  s.triangles.resize(3, 12);
+  for (int f = 0; f < 12; ++f) s.triangles.col(f) << faces[f][0], faces[f][1], faces[f][2];
+  for (int f = 0; f < 12; ++f) s.order.push_back(f);
+  return s;
+}
+
+Soup randomSoup(std::mt19937_64& rng, int triangles, double spread) {
+  std::uniform_real_distribution<double> u(-spread, spread);
+  Soup s;
+  s.vertices.resize(3, 3 * triangles);
+  s.triangles.resize(3, triangles);
+  for (int t = 0; t < triangles; ++t) {
+    const Eigen::Vector3d base(u(rng), u(rng), u(rng));
+    for (int k = 0; k < 3; ++k) {
+      s.vertices.col(3 * t + k) = base + 0.1 * Eigen::Vector3d(u(rng), u(rng), u(rng));
+    }
+    s.triangles.col(t) << 3 * t, 3 * t + 1, 3 * t + 2;
+    s.order.push_back(t);
+  }
+  return s;
+}
+
+OrientedBox fit(const Soup& s) {
+  return fitBox(s.vertices, s.triangles, s.order.data(), static_cast<std::int32_t>(s.order.size()));
+}
+
+TEST(OrientedBoxFit, ContainsEveryVertexOfRandomSoups) {
+  std::mt19937_64 rng(7);
+  for (int trial = 0; trial < 200; ++trial) {
+    const double spread = std::pow(10.0, trial % 9 - 3);  // 1e-3 .. 1e5
+    const Soup s = randomSoup(rng, 1 + trial % 40, spread);
+    const OrientedBox box = fit(s);
+    for (int v = 0; v < s.vertices.cols(); ++v) {
+      ASSERT_TRUE(boxContains(box, s.vertices.col(v))) << "trial " << trial << " vertex " << v;
+    }
+  }
+}
+
+TEST(OrientedBoxFit, ContainsVerticesFarFromTheOrigin) {
+  std::mt19937_64 rng(8);
+  Soup s = randomSoup(rng, 30, 1.0);
+  s.vertices.colwise() += Eigen::Vector3d(1e8, -3e7, 5e6);
+  const OrientedBox box = fit(s);
+  for (int v = 0; v < s.vertices.cols(); ++v) EXPECT_TRUE(boxContains(box, s.vertices.col(v)));
+}
+
+TEST(OrientedBoxFit, AxesAreOrthonormalAndRightHanded) {
+  std::mt19937_64 rng(9);
+  for (int trial = 0; trial < 100; ++trial) {
+    const OrientedBox box = fit(randomSoup(rng, 2 + trial % 20, 1.0));
+    EXPECT_LT((box.axes.transpose() * box.axes - Eigen::Matrix3d::Identity()).norm(), 1e-12);
+    EXPECT_NEAR(box.axes.determinant(), 1.0, 1e-12);
+    EXPECT_GE(box.half_extents[0], box.half_extents[1]);
+    EXPECT_GE(box.half_extents[1], box.half_extents[2]);
+  }
+}
+
+TEST(OrientedBoxFit, RotatedCuboidGivesItsOwnAxesAndExtents) {
+  const Eigen::Matrix3d rotation =
+      Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+  const Eigen::Vector3d half(3.0, 2.0, 1.0);
+  const Eigen::Vector3d offset(10, -4, 2);
+  const OrientedBox box = fit(boxMesh(half, rotation, offset));
+  // Distinct extents make the covariance eigenvectors the cuboid's own axes (up to sign).
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_NEAR(std::abs(box.axes.col(k).dot(rotation.col(k))), 1.0, 1e-9) << "axis " << k;
+    EXPECT_NEAR(box.half_extents[k], half[k], 1e-9);
+  }
+  EXPECT_LT((box.center - offset).norm(), 1e-9);
+}
+
+TEST(OrientedBoxFit, FlatTriangleGetsAZeroThicknessAxisNormalToIt) {
+  Soup s;
+  s.vertices.resize(3, 3);
+  s.vertices << 0, 4, 0,  //
+      0, 0, 1,            //
+      2, 2, 2;
+  s.triangles.resize(3, 1);
+  s.triangles.col(0) << 0, 1, 2;
+  s.order = {0};
+  const OrientedBox box = fit(s);
+  EXPECT_NEAR(std::abs(box.axes.col(2).z()), 1.0, 1e-12);
+  EXPECT_LT(box.half_extents[2], 1e-12);
+}
+
+TEST(OrientedBoxFit, DegenerateSetsStillGetAContainingBox) {
+  Soup s;
+  s.vertices.resize(3, 3);
+  s.vertices << 1, 1, 1,  //
+      2, 2, 2,            //
+      3, 3, 3;  // three copies of one point
+  s.triangles.resize(3, 1);
+  s.triangles.col(0) << 0, 1, 2;
+  s.order = {0};
+  const OrientedBox box = fit(s);
+  EXPECT_TRUE(box.axes.allFinite());
+  EXPECT_TRUE(boxContains(box, Eigen::Vector3d(1, 2, 3)));
+}
+
+TEST(OrientedBoxRefit, KeepsAxesAndContainsMovedVertices) {
+  std::mt19937_64 rng(10);
+  Soup s = randomSoup(rng, 20, 1.0);
+  OrientedBox box = fit(s);
+  const Eigen::Matrix3d axes = box.axes;
+  s.vertices.array() *= 1.7;
+  s.vertices.row(0).array() += 3.0;
+  Eigen::Matrix3Xi ordered = s.triangles;
+  refitBoxExtents(box, s.vertices, ordered);
+  EXPECT_EQ(box.axes, axes);
+  for (int v = 0; v < s.vertices.cols(); ++v) EXPECT_TRUE(boxContains(box, s.vertices.col(v)));
+}
+
+}  // namespace
+}  // namespace collido::obbtree

@@ -1,0 +1,49 @@
+#include <iostream>
+
+#include <collido/scene/scene.h>
+
+#include "commands.h"
+
+namespace collido::cli {
+namespace {
+
+int checkScenes(const std::vector<std::string>& paths) {
+  int failures = 0;
+  for (const std::string& path : paths) {
+    Result<Scene> loaded = loadScene(path);
+    if (!loaded.ok()) {
+      std::cout << "error: " << loaded.status().message() << "\n";
+      ++failures;
+      continue;
+    }
+    const Scene& scene = loaded.value();
+    std::cout << scene.name << " (" << path << "): " << scene.frames << " frame"
+              << (scene.frames == 1 ? "" : "s") << ", " << scene.objects.size() << " objects, "
+              << scene.queries.size() << " queries\n";
+    if (!scene.description.empty()) std::cout << "  " << scene.description << "\n";
+    for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+      const SceneObject& o = scene.objects[i];
+      std::cout << "  object " << o.name << ": " << o.report.summary()
+                << (o.poses.size() == 1 ? ", fixed pose" : ", moving") << "\n";
+    }
+    for (const SceneQuery& q : scene.queries) {
+      std::cout << "  query " << q.name << ": " << queryKindName(q.request.kind) << " "
+                << scene.objects[q.a].name << " vs " << scene.objects[q.b].name;
+      if (q.request.max_pairs != 0) std::cout << ", at most " << q.request.max_pairs << " pairs";
+      std::cout << "\n";
+    }
+  }
+  return failures == 0 ? 0 : 1;
+}
+
+}  // namespace
+
+void addCheckCommand(CLI::App& app, int& exit_code) {
+  CLI::App* command =
+      app.add_subcommand("check", "Load and validate scene files, and summarise them");
+  auto paths = std::make_shared<std::vector<std::string>>();
+  command->add_option("scenes", *paths, "scene files (JSON)")->required();
+  command->callback([paths, &exit_code] { exit_code = checkScenes(*paths); });
+}
+
+}  // namespace collido::cli

@@ -1,0 +1,103 @@
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+
+#include <collido/runner/runner.h>
+
+#include "commands.h"
+
+namespace collido::cli {
+namespace {
+
+struct RunArguments {
+  std::vector<std::string> scenes;
+  std::vector<std::string> backends;
+  std::string json_path;
+  int repetitions = 5;
+  bool quiet = false;
+  bool fail_on_disagreement = false;
+};
+
+// Writes to a temporary file beside the target and renames it, so a reader never sees half a
+// file.
+bool writeAtomically(const std::string& path, const std::string& text) {
+  const std::string temporary = path + ".partial";
+  {
+    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+    if (!out || !(out << text) || !out.flush()) return false;
+  }
+  std::error_code ec;
+  std::filesystem::rename(temporary, path, ec);
+  return !ec;
+}
+
+int run(const RunArguments& args, const PluginOptions& plugin_options) {
+  std::vector<Scene> scenes;
+  for (const std::string& path : args.scenes) {
+    Result<Scene> scene = loadScene(path);
+    if (!scene.ok()) {
+      std::cerr << "error: " << scene.status().message() << "\n";
+      return 2;
+    }
+    scenes.push_back(std::move(scene).value());
+  }
+  const PluginDiscovery found = discoverPlugins(plugin_options.paths, !plugin_options.no_defaults);
+  for (const std::string& problem : found.problems) std::cerr << "warning: " << problem << "\n";
+  std::vector<std::string> names = args.backends;
+  if (names.empty()) {
+    for (const auto& plugin : found.plugins) {
+      for (const VariantInfo& v : plugin->variants()) names.push_back(v.name);
+    }
+  }
+  Result<std::vector<BackendSpec>> specs = resolveBackends(names, found.plugins);
+  if (!specs.ok()) {
+    std::cerr << "error: " << specs.status().message() << "\n";
+    return 2;
+  }
+  if (specs.value().empty()) {
+    std::cerr << "error: no backends to run (build the plugins or pass --plugin)\n";
+    return 2;
+  }
+  RunOptions options;
+  options.repetitions = args.repetitions;
+  if (!args.quiet) options.progress = [](const std::string& line) { std::cerr << line << "\n"; };
+  const RunReport report = runScenes(scenes, specs.value(), options);
+  std::cout << formatRunTable(report);
+  if (!args.json_path.empty() && !writeAtomically(args.json_path, runReportJson(report) + "\n")) {
+    std::cerr << "error: cannot write " << args.json_path << "\n";
+    return 2;
+  }
+  bool failed = !report.problems.empty();
+  bool disagreed = false;
+  for (const QueryMeasurement& m : report.measurements) {
+    failed = failed || m.status.rfind("failed", 0) == 0;
+    disagreed = disagreed || m.disagreements != 0;
+  }
+  if (failed) return 1;
+  return args.fail_on_disagreement && disagreed ? 3 : 0;
+}
+
+}  // namespace
+
+void addRunCommand(CLI::App& app, const PluginOptions& plugins, int& exit_code) {
+  CLI::App* command = app.add_subcommand(
+      "run",
+      "Run the scenes' queries on backends, check every answer against the exact oracle, and "
+      "print time, error and memory per backend, scene and query. Exit code: 0 ok, 1 a backend "
+      "failed, 2 bad input, 3 disagreement with --fail-on-disagreement");
+  auto args = std::make_shared<RunArguments>();
+  command->add_option("scenes", args->scenes, "scene files (JSON)")->required();
+  command
+      ->add_option("--backends", args->backends,
+                   "backends to run, NAME or NAME[key=value;...] (default: every variant found)")
+      ->delimiter(',');
+  command->add_option("--json", args->json_path, "also write the results, per frame, as JSON");
+  command->add_option("--repetitions", args->repetitions, "timed calls per frame and query")
+      ->check(CLI::Range(1, 1000000));
+  command->add_flag("--quiet", args->quiet, "no progress lines on stderr");
+  command->add_flag("--fail-on-disagreement", args->fail_on_disagreement,
+                    "exit with 3 when any answer differs from the oracle's");
+  command->callback([args, &plugins, &exit_code] { exit_code = run(*args, plugins); });
+}
+
+}  // namespace collido::cli

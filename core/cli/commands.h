@@ -1,0 +1,21 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+namespace collido::cli {
+
+/// Plugin search options shared by the subcommands.
+struct PluginOptions {
+  std::vector<std::string> paths;  ///< --plugin: files or folders searched first
+  bool no_defaults = false;        ///< --no-default-plugins
+};
+
+/// Each add*Command registers a subcommand whose callback runs it and stores its exit code.
+void addBackendsCommand(CLI::App& app, const PluginOptions& plugins, int& exit_code);
+void addCheckCommand(CLI::App& app, int& exit_code);
+void addRunCommand(CLI::App& app, const PluginOptions& plugins, int& exit_code);
+
+}  // namespace collido::cli

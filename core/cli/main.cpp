@@ -1,0 +1,32 @@
+// collido: the command-line front of Collidoscope.
+#include <exception>
+#include <iostream>
+
+#include "commands.h"
+
+int main(int argc, char** argv) {
+  CLI::App app{
+      "Collidoscope: compares collision-detection backends on hard geometry, every answer "
+      "checked against an exact reference."};
+  app.require_subcommand(1);
+  app.fallthrough();  // --plugin may come after the subcommand too
+  collido::cli::PluginOptions plugins;
+  app.add_option("--plugin", plugins.paths,
+                 "plugin file or folder to load before the default places (repeatable)");
+  app.add_flag("--no-default-plugins", plugins.no_defaults,
+               "load only plugins given with --plugin (not the build tree, install folder or "
+               "COLLIDO_PLUGIN_PATH)");
+  int exit_code = 0;
+  collido::cli::addBackendsCommand(app, plugins, exit_code);
+  collido::cli::addCheckCommand(app, exit_code);
+  collido::cli::addRunCommand(app, plugins, exit_code);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  } catch (const std::exception& e) {
+    std::cerr << "collido: " << e.what() << "\n";
+    return 2;
+  }
+  return exit_code;
+}

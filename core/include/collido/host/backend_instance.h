@@ -1,0 +1,56 @@
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <string>
+
+#include <collido/capabilities.h>
+#include <collido/geometry.h>
+#include <collido/host/plugin_library.h>
+#include <collido/query.h>
+#include <collido/status.h>
+
+namespace collido {
+
+/// A model handle issued by a backend instance; 0 is never valid.
+using ModelHandle = std::uint64_t;
+
+/// The host's side of one backend instance: calls through the plugin's C table, turns codes and
+/// messages back into Status, and converts results. Not thread-safe (neither is an instance).
+class BackendInstance {
+ public:
+  /// Creates an instance of `variant` with key/value options.
+  static Result<std::unique_ptr<BackendInstance>> create(
+      std::shared_ptr<PluginLibrary> library, const std::string& variant,
+      const std::map<std::string, std::string>& options = {});
+
+  BackendInstance(const BackendInstance&) = delete;
+  BackendInstance& operator=(const BackendInstance&) = delete;
+  ~BackendInstance();
+
+  /// The variant name, e.g. "obbtree" or "fcl:obb".
+  const std::string& name() const { return variant_; }
+  const Capabilities& capabilities() const { return capabilities_; }
+  const PluginLibrary& library() const { return *library_; }
+
+  Result<ModelHandle> build(const MeshView& mesh, const BuildNeeds& needs);
+  Status update(ModelHandle model, const Eigen::Ref<const Eigen::Matrix3Xd>& positions);
+  /// Fills `result` (cleared first; its vectors keep their capacity).
+  Status query(ModelHandle a, const Pose& pose_a, ModelHandle b, const Pose& pose_b,
+               const QueryRequest& request, QueryResult& result);
+  Result<std::uint64_t> memory(ModelHandle model);
+  Status release(ModelHandle model);
+
+ private:
+  BackendInstance(std::shared_ptr<PluginLibrary> library, std::string variant,
+                  CollidoInstance* instance)
+      : library_(std::move(library)), variant_(std::move(variant)), instance_(instance) {}
+
+  std::shared_ptr<PluginLibrary> library_;
+  std::string variant_;
+  CollidoInstance* instance_ = nullptr;
+  Capabilities capabilities_;
+};
+
+}  // namespace collido

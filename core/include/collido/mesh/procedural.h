@@ -1,0 +1,96 @@
+#pragma once
+
+#include <collido/mesh/triangle_mesh.h>
+#include <collido/status.h>
+
+namespace collido {
+
+// Every generator checks its parameters first and returns kInvalidArgument with a message that
+// names the generator, the parameter and the allowed range ("torus: minor_segments = 2, must be
+// >= 3"); non-finite numbers are rejected, and so is any resolution that would give more than
+// 50 million triangles. Closed meshes (torus, chain, sphere, gear) are watertight 2-manifolds:
+// every edge has exactly two triangles, counter-clockwise seen from outside, no zero-area
+// triangles and no duplicate vertices. Lengths are in the caller's unit.
+
+/// Ring torus around the z axis, centred at the origin: major_segments * minor_segments vertices
+/// and twice as many triangles. Vertex i * minor_segments + j lies at u = 2 pi i / major_segments
+/// around z and v = 2 pi j / minor_segments around the tube, so the extremes (+-(R + r) on x and
+/// y, +-r on z) are vertices when both resolutions are multiples of 4.
+struct TorusParams {
+  double major_radius = 1.0;   ///< centre of the tube to the z axis, > 0
+  double minor_radius = 0.25;  ///< tube radius, > 0 and < major_radius
+  int major_segments = 48;     ///< resolution around z, >= 3
+  int minor_segments = 24;     ///< resolution around the tube, >= 3
+};
+
+/// A chain of interlocked tori along +x, as one mesh: link i is centred at (i * pitch, 0, 0) with
+/// pitch = 2 * (major_radius - minor_radius) - clearance; even links lie in the xy plane, odd
+/// links in the xz plane, so neighbours pass through each other's hole. At clearance 0 the tubes
+/// of neighbours touch; clearance > 0 leaves a gap, < 0 makes them intersect (the tessellated
+/// tubes deviate from the ideal ones by their chord sagitta; at clearance 0 with even resolutions
+/// the contact point is a vertex of both links, i.e. two coincident vertices). Link i owns vertex
+/// columns [i V, (i + 1) V) and triangle columns [2 i V, 2 (i + 1) V), V = major * minor segments.
+struct ChainParams {
+  int links = 3;     ///< >= 1
+  TorusParams link;  ///< shape and resolution of every link
+  /// Gap between neighbouring tubes, finite. pitch must stay > 2 * minor_radius (the far side of a
+  /// neighbour's hole; the gap there is pitch - 2 r) and, with 3 or more links, > major_radius +
+  /// minor_radius (links i and i + 2 lie in the same plane and would overlap).
+  double clearance = 0.0;
+};
+
+/// UV sphere centred at the origin, poles on z: slices * (stacks - 1) + 2 vertices (one per
+/// pole, vertex 0 north, the last south) and 2 * slices * (stacks - 1) triangles (fans at the
+/// poles). Rings sit at polar angles pi k / stacks, so the equator is a ring when stacks is even.
+struct SphereParams {
+  double radius = 1.0;  ///< > 0
+  int slices = 32;      ///< around z, >= 3
+  int stacks = 16;      ///< pole to pole, >= 2
+};
+
+/// A rectangular sheet in the xy plane centred at the origin (two triangles per cell), optionally
+/// waved: z = amplitude * sin(2 pi waves x / width) * cos(2 pi waves y / depth). Open, one-sided,
+/// every triangle's normal has a positive z component. (cells_x + 1) * (cells_y + 1) vertices,
+/// vertex i + j * (cells_x + 1) at column i, row j; 2 * cells_x * cells_y triangles.
+struct GridSheetParams {
+  double width = 2.0;      ///< along x, > 0
+  double depth = 2.0;      ///< along y, > 0
+  int cells_x = 32;        ///< >= 1
+  int cells_y = 32;        ///< >= 1
+  double amplitude = 0.0;  ///< finite, any sign
+  double waves = 1.0;      ///< finite
+};
+
+/// Spur gear: an involute tooth profile extruded along z (from -face_width/2 to +face_width/2),
+/// centred at the origin, closed, non-convex, tooth 0 centred on +x. Standard full-depth teeth:
+/// pitch radius rp = module * teeth / 2, base radius rp cos(pressure angle), tip radius
+/// rp + module, root radius rp - 1.25 module; the tooth is pi module / 2 thick on the pitch
+/// circle (zero backlash), so two gears of the same module at centre distance
+/// module (z1 + z2) / 2 touch when a tooth sits centred in the other's gap. Where the root
+/// circle is inside the base circle the flank continues radially down to it (no undercut or
+/// fillet is modelled). Each tooth's outline, counter-clockwise:
+///   [root foot] flank_samples rising flank points, one tip-arc midpoint, flank_samples falling
+///   flank points, [root foot], root_samples points strictly inside the root arc
+/// (the two feet only when the root circle is inside the base circle); flanks are sampled
+/// uniformly in the involute's roll angle from the base or root circle to the tip circle.
+/// With P such points per tooth: 2 * teeth * P + 2 vertices (bottom outline, top outline, the
+/// two cap centres) and 4 * teeth * P triangles (caps fanned from the centres, side walls).
+/// Rejected as well: pointed teeth (no thickness left at the tip circle) and gaps closed at the
+/// root circle, which happen with few resp. many teeth at high pressure angles.
+struct GearParams {
+  int teeth = 20;                  ///< >= 6
+  double module = 0.1;             ///< pitch diameter / teeth, > 0
+  double face_width = 0.2;         ///< thickness along z, > 0
+  double pressure_angle_deg = 20;  ///< involute pressure angle, in (0, 45) degrees
+  int flank_samples = 6;           ///< points per involute flank (resolution), >= 2
+  int root_samples = 3;            ///< points along each root arc, >= 1
+};
+
+/// Generators. Each checks its parameters and returns kInvalidArgument naming the bad one.
+Result<TriangleMesh> makeTorus(const TorusParams& params);
+Result<TriangleMesh> makeChain(const ChainParams& params);
+Result<TriangleMesh> makeSphere(const SphereParams& params);
+Result<TriangleMesh> makeGridSheet(const GridSheetParams& params);
+Result<TriangleMesh> makeGear(const GearParams& params);
+
+}  // namespace collido

@@ -1,0 +1,209 @@
+/* The C boundary between Collidoscope and a backend plugin.
+ *
+ * A plugin is a shared library that exports one function, COLLIDO_PLUGIN_ENTRY_SYMBOL, returning a
+ * pointer to a static CollidoPluginTable. The host reads abi_version first and refuses the plugin
+ * when it differs from COLLIDO_PLUGIN_ABI_VERSION, so every other field may change between
+ * versions. Nothing but plain C data crosses this boundary: no exceptions, no C++ types, no
+ * ownership transfer. Plugin authors normally do not write against this header directly; they
+ * implement collido::Backend (backend.h) and add one COLLIDO_DEFINE_PLUGIN line (plugin_export.h).
+ *
+ * Conventions (they hold for every function below):
+ * - Every function returns a CollidoStatusCode; on anything but COLLIDO_STATUS_OK it writes a
+ *   human-readable, NUL-terminated reason into the caller's CollidoMessage.
+ * - Model handles are opaque 64-bit values; 0 is never a valid handle. A handle that was released,
+ *   or never issued, yields COLLIDO_STATUS_INVALID_HANDLE, never a crash.
+ * - Input arrays are valid only during the call; a plugin copies what it keeps.
+ * - Output arrays (pairs, contacts, notes) belong to the backend instance and stay valid until the
+ *   next call on that instance.
+ * - Lengths are metres or whatever unit the scene uses; nothing here assumes a unit.
+ */
+#ifndef COLLIDO_PLUGIN_API_H
+#define COLLIDO_PLUGIN_API_H
+
+#include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/** The interface version; bump it on any change to the structures or functions below. */
+#define COLLIDO_PLUGIN_ABI_VERSION 1u
+
+/** The one symbol a plugin shared library exports. */
+#define COLLIDO_PLUGIN_ENTRY_SYMBOL "collido_plugin_table"
+
+/** Outcome of a call across the boundary. */
+typedef enum CollidoStatusCode {
+  COLLIDO_STATUS_OK = 0,
+  COLLIDO_STATUS_UNSUPPORTED = 1,      /**< the backend cannot answer this (capabilities say so) */
+  COLLIDO_STATUS_INVALID_ARGUMENT = 2, /**< malformed input: sizes, options, non-finite values */
+  COLLIDO_STATUS_INVALID_HANDLE = 3,   /**< unknown, released or stale model handle */
+  COLLIDO_STATUS_ENGINE_FAILURE = 4,   /**< the engine threw or reported an error */
+  COLLIDO_STATUS_OUT_OF_MEMORY = 5,
+  COLLIDO_STATUS_INTERNAL = 6 /**< a bug in the plugin or adapter */
+} CollidoStatusCode;
+
+/** Bit flags naming the questions a query can ask. */
+typedef enum CollidoQueryKind {
+  COLLIDO_QUERY_BOOLEAN = 1u << 0,   /**< do the two shapes share a point? (early exit allowed) */
+  COLLIDO_QUERY_ALL_PAIRS = 1u << 1, /**< every intersecting (triangle of A, triangle of B) pair */
+  COLLIDO_QUERY_CONTACTS = 1u << 2   /**< contact points with normal and depth */
+} CollidoQueryKind;
+
+/** Bit flags naming the shape kinds a backend can build. */
+typedef enum CollidoShapeKind {
+  COLLIDO_SHAPE_TRIANGLE_MESH = 1u << 0
+} CollidoShapeKind;
+
+/** Bit flags for what a backend can do beyond answering queries. */
+typedef enum CollidoFeature {
+  COLLIDO_FEATURE_UPDATE = 1u << 0,                 /**< update() accepts new vertex positions */
+  COLLIDO_FEATURE_COUNTS_BV_TESTS = 1u << 1,        /**< results carry bounding-volume test counts */
+  COLLIDO_FEATURE_COUNTS_PRIMITIVE_TESTS = 1u << 2 /**< results carry primitive test counts */
+} CollidoFeature;
+
+/** Bit flags of CollidoBuildNeeds::flags. */
+typedef enum CollidoNeedFlag {
+  COLLIDO_NEED_DEFORMS = 1u << 0 /**< update() will be called on this model */
+} CollidoNeedFlag;
+
+/** A reason written by the callee, always NUL-terminated. */
+typedef struct CollidoMessage {
+  char text[1024];
+} CollidoMessage;
+
+/** A key/value option given to create(), e.g. {"max_leaf_triangles", "4"}. */
+typedef struct CollidoOption {
+  const char* key;
+  const char* value;
+} CollidoOption;
+
+/** One backend variant offered by a plugin, e.g. "fcl:obb". */
+typedef struct CollidoVariantInfo {
+  const char* name;    /**< unique among all plugins; "engine" or "engine:flavour" */
+  const char* summary; /**< one line for `collido backends` */
+} CollidoVariantInfo;
+
+/** What an instance can do. */
+typedef struct CollidoCapabilities {
+  uint32_t shape_kinds;  /**< CollidoShapeKind bits */
+  uint32_t query_kinds;  /**< CollidoQueryKind bits */
+  uint32_t features;     /**< CollidoFeature bits */
+  uint32_t reserved;     /**< zero */
+  uint64_t max_contacts; /**< most contacts one query can return; 0 = no limit */
+  const char* notes;     /**< limits worth knowing, one paragraph; may be "" */
+} CollidoCapabilities;
+
+/** A triangle mesh in its model frame. */
+typedef struct CollidoTriangleMeshView {
+  const double* positions;  /**< 3 * vertex_count doubles, x y z per vertex */
+  uint32_t vertex_count;
+  uint32_t triangle_count;
+  const int32_t* triangles; /**< 3 * triangle_count vertex indices, counter-clockwise = outward */
+} CollidoTriangleMeshView;
+
+/** A shape to build; `kind` says which pointer is set. */
+typedef struct CollidoShapeView {
+  uint32_t kind; /**< one CollidoShapeKind value */
+  uint32_t reserved;
+  const CollidoTriangleMeshView* mesh; /**< set when kind == COLLIDO_SHAPE_TRIANGLE_MESH */
+} CollidoShapeView;
+
+/** What the scene will ask of a model, so the backend builds only that. */
+typedef struct CollidoBuildNeeds {
+  uint32_t query_kinds; /**< CollidoQueryKind bits the model will be queried with */
+  uint32_t flags;       /**< CollidoNeedFlag bits */
+} CollidoBuildNeeds;
+
+/** A rigid transform: world = rotation * model + translation. */
+typedef struct CollidoPose {
+  double rotation[9]; /**< row-major 3x3 */
+  double translation[3];
+} CollidoPose;
+
+/** The question asked of one pair of models. */
+typedef struct CollidoQueryRequest {
+  uint32_t kind;      /**< exactly one CollidoQueryKind value */
+  uint32_t reserved;  /**< zero */
+  uint64_t max_pairs; /**< ALL_PAIRS: stop after this many pairs; 0 = no limit */
+  uint64_t max_contacts; /**< CONTACTS: stop after this many contacts; 0 = no limit */
+} CollidoQueryRequest;
+
+/** An intersecting pair: triangle index in A, triangle index in B (as given to build). */
+typedef struct CollidoTrianglePair {
+  int32_t a;
+  int32_t b;
+} CollidoTrianglePair;
+
+/** A contact, in the world frame. */
+typedef struct CollidoContact {
+  double position[3]; /**< a point of the contact region */
+  double normal[3];   /**< unit; points from A towards B (moving B along it separates) */
+  double depth;       /**< penetration depth along normal, >= 0 */
+  int32_t triangle_a; /**< -1 when the engine does not say */
+  int32_t triangle_b; /**< -1 when the engine does not say */
+} CollidoContact;
+
+/** Work the backend did for one query; fields are valid only where `counted` has the bit. */
+typedef struct CollidoWorkCounters {
+  uint64_t bv_tests;        /**< bounding-volume overlap tests */
+  uint64_t primitive_tests; /**< triangle-triangle (or primitive) tests */
+  uint32_t counted;         /**< CollidoFeature COUNTS_* bits that apply */
+  uint32_t reserved;
+} CollidoWorkCounters;
+
+/** The answer to one query. Arrays belong to the instance (see the conventions above). */
+typedef struct CollidoQueryResult {
+  uint32_t intersecting; /**< 1 if the shapes share at least one point */
+  uint32_t truncated;    /**< 1 if a limit stopped the query before the full answer */
+  const CollidoTrianglePair* pairs;
+  uint64_t pair_count;
+  const CollidoContact* contacts;
+  uint64_t contact_count;
+  CollidoWorkCounters counters;
+} CollidoQueryResult;
+
+/** An opaque backend instance, created by CollidoPluginTable::create. */
+typedef struct CollidoInstance CollidoInstance;
+
+/** A model handle; 0 is never valid. */
+typedef uint64_t CollidoModelHandle;
+
+/** The table a plugin exports. The first two fields never move. */
+typedef struct CollidoPluginTable {
+  uint32_t abi_version; /**< COLLIDO_PLUGIN_ABI_VERSION the plugin was built with */
+  uint32_t struct_size; /**< sizeof(CollidoPluginTable) as the plugin saw it */
+  const char* plugin_name;
+  const char* plugin_version;
+  const char* engine_name;
+  const char* engine_version;
+  uint32_t variant_count;
+  uint32_t reserved;
+  const CollidoVariantInfo* variants;
+
+  int32_t (*create)(const char* variant, const CollidoOption* options, uint32_t option_count,
+                    CollidoInstance** out, CollidoMessage* error);
+  void (*destroy)(CollidoInstance* instance);
+  int32_t (*capabilities)(CollidoInstance* instance, CollidoCapabilities* out,
+                          CollidoMessage* error);
+  int32_t (*build)(CollidoInstance* instance, const CollidoShapeView* shape,
+                   const CollidoBuildNeeds* needs, CollidoModelHandle* out, CollidoMessage* error);
+  int32_t (*update)(CollidoInstance* instance, CollidoModelHandle model, const double* positions,
+                    uint32_t vertex_count, CollidoMessage* error);
+  int32_t (*query)(CollidoInstance* instance, CollidoModelHandle a, const CollidoPose* pose_a,
+                   CollidoModelHandle b, const CollidoPose* pose_b,
+                   const CollidoQueryRequest* request, CollidoQueryResult* out,
+                   CollidoMessage* error);
+  int32_t (*memory)(CollidoInstance* instance, CollidoModelHandle model, uint64_t* bytes,
+                    CollidoMessage* error);
+  int32_t (*release)(CollidoInstance* instance, CollidoModelHandle model, CollidoMessage* error);
+} CollidoPluginTable;
+
+/** Signature of the exported entry point. */
+typedef const CollidoPluginTable* (*CollidoPluginEntry)(void);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* COLLIDO_PLUGIN_API_H */

@@ -1,0 +1,39 @@
+#pragma once
+
+#include <collido/backend.h>
+#include <collido/plugin_api.h>
+
+namespace collido::detail {
+
+/// Builds (once) the C table for the plugin described by `info`; see COLLIDO_DEFINE_PLUGIN.
+const CollidoPluginTable* makePluginTable(const PluginInfo& info,
+                                          decltype(CollidoPluginTable::create) create);
+
+/// The C create() shared by all plugins, parameterised by the plugin's description.
+std::int32_t createInstance(const PluginInfo& info, const char* variant,
+                            const CollidoOption* options, std::uint32_t option_count,
+                            CollidoInstance** out, CollidoMessage* error);
+
+/// One C table per description function, so each plugin gets its own create().
+template <const PluginInfo& (*Describe)()>
+const CollidoPluginTable* pluginTable() {
+  struct Entry {
+    static std::int32_t create(const char* variant, const CollidoOption* options,
+                               std::uint32_t option_count, CollidoInstance** out,
+                               CollidoMessage* error) {
+      return createInstance(Describe(), variant, options, option_count, out, error);
+    }
+  };
+  static const CollidoPluginTable* table = makePluginTable(Describe(), &Entry::create);
+  return table;
+}
+
+}  // namespace collido::detail
+
+/// Exports a plugin: `describe` is a function returning `const collido::PluginInfo&`. Defines
+/// `collido_plugin_table_<id>()`, which static builds (tests) call by name; the shared-library
+/// build adds the COLLIDO_PLUGIN_ENTRY_SYMBOL that forwards to it (cmake/CollidoBackend.cmake).
+#define COLLIDO_DEFINE_PLUGIN(id, describe)                                  \
+  extern "C" const CollidoPluginTable* collido_plugin_table_##id(void) {     \
+    return ::collido::detail::pluginTable<&describe>();                      \
+  }

@@ -1,0 +1,107 @@
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <collido/host/plugin_library.h>
+#include <collido/query.h>
+#include <collido/scene/scene.h>
+
+namespace collido {
+
+/// A backend to run: a variant of a loaded plugin, with options ("obbtree[max_leaf_triangles=4]").
+struct BackendSpec {
+  std::shared_ptr<PluginLibrary> library;
+  std::string variant;
+  std::map<std::string, std::string> options;
+
+  /// "variant" or "variant[key=value;...]", as shown in tables.
+  std::string label() const;
+};
+
+/// Parses "variant" or "variant[key=value;key=value]" into a variant and options.
+Result<std::pair<std::string, std::map<std::string, std::string>>> parseBackendText(
+    const std::string& text);
+
+/// Picks, for each text, the plugin offering that variant. Errors name the unknown variant and
+/// list the known ones.
+Result<std::vector<BackendSpec>> resolveBackends(
+    const std::vector<std::string>& texts,
+    const std::vector<std::shared_ptr<PluginLibrary>>& plugins);
+
+/// How a run measures.
+struct RunOptions {
+  int repetitions = 5;  ///< timed calls per frame and query, after one untimed warm-up call
+  std::function<void(const std::string&)> progress;  ///< called with a line per step; may be empty
+};
+
+/// The comparison of one frame's answer with the oracle's.
+struct FrameRecord {
+  std::size_t frame = 0;
+  bool oracle_intersecting = false;
+  bool reported_intersecting = false;
+  std::size_t oracle_pairs = 0;    ///< kAllPairs: size of the exact set
+  std::size_t reported_pairs = 0;  ///< distinct pairs the backend reported
+  std::size_t matched_pairs = 0;   ///< reported pairs in the exact set
+  std::size_t invalid_pairs = 0;   ///< out-of-range or duplicate pairs, and false witnesses
+  bool truncated = false;
+  double median_us = 0.0;          ///< median of this frame's timed calls
+  std::uint64_t bv_tests = 0;
+  std::uint64_t primitive_tests = 0;
+
+  /// Whether the answer differs from the oracle's in any way this query asks about.
+  bool disagrees(QueryKind kind) const;
+};
+
+/// Results of one (backend, scene, query).
+struct QueryMeasurement {
+  std::string backend;
+  std::string scene;
+  std::string query;
+  QueryKind kind = QueryKind::kBoolean;
+  std::string status = "ok";  ///< "ok", or "skipped: <why>" / "failed: <why>"
+  std::vector<FrameRecord> frames;
+  std::vector<double> times_us;  ///< every timed call
+  double median_us = 0.0;
+  double p90_us = 0.0;
+  std::size_t false_negatives = 0;  ///< frames reported disjoint that intersect
+  std::size_t false_positives = 0;  ///< frames reported intersecting that are disjoint
+  std::size_t disagreements = 0;    ///< frames whose answer differs from the oracle's
+  double recall = 1.0;     ///< kAllPairs: matched / exact pairs over all frames (1 if none)
+  double precision = 1.0;  ///< kAllPairs: matched / reported pairs over all frames (1 if none)
+  bool counts_bv_tests = false;
+  bool counts_primitive_tests = false;
+  double build_ms = 0.0;                  ///< both objects
+  std::size_t triangles = 0;              ///< both objects
+  std::size_t memory_bytes = 0;           ///< both objects, as the backend reports
+  std::optional<std::size_t> heap_bytes;  ///< both objects, measured around build
+
+  bool ok() const { return status == "ok"; }
+};
+
+/// Everything a run measured.
+struct RunReport {
+  std::vector<QueryMeasurement> measurements;
+  std::vector<std::string> problems;  ///< backends that could not be created, etc.
+};
+
+/// Runs every query of every scene on every backend, checks each answer against the exact
+/// oracle (computed once per scene, frame and query, shared by all backends) and times it.
+/// Backends that cannot answer a query are recorded as skipped, failures as failed; nothing is
+/// silently dropped.
+RunReport runScenes(const std::vector<Scene>& scenes, const std::vector<BackendSpec>& backends,
+                    const RunOptions& options);
+
+/// The table people read: one row per (backend, scene, query).
+std::string formatRunTable(const RunReport& report);
+
+/// The report as JSON (nlohmann dump), with per-frame records.
+std::string runReportJson(const RunReport& report);
+
+}  // namespace collido

@@ -1,0 +1,60 @@
+#pragma once
+
+#include <cstddef>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <collido/capabilities.h>
+#include <collido/geometry.h>
+#include <collido/mesh/mesh_report.h>
+#include <collido/mesh/triangle_mesh.h>
+#include <collido/query.h>
+#include <collido/status.h>
+
+namespace collido {
+
+/// One object of a scene: a shape and its pose in every frame.
+struct SceneObject {
+  std::string name;
+  std::shared_ptr<const TriangleMesh> mesh;  ///< shared between objects using the same source
+  MeshReport report;                         ///< where the mesh came from and what is in it
+  std::vector<Pose> poses;                   ///< one per frame, or one for every frame
+
+  /// The object's world pose in `frame`.
+  const Pose& poseAt(std::size_t frame) const { return poses.size() == 1 ? poses[0] : poses[frame]; }
+};
+
+/// One question asked of two objects in every frame.
+struct SceneQuery {
+  std::string name;     ///< unique in the scene
+  std::size_t a = 0;    ///< index into Scene::objects
+  std::size_t b = 0;    ///< index into Scene::objects
+  QueryRequest request;
+};
+
+/// A loaded, fully validated scene: nothing in it can fail later for a reason the file holds.
+struct Scene {
+  std::string path;         ///< the file it was read from ("" for scenes built in code)
+  std::string name;
+  std::string description;
+  std::size_t frames = 1;
+  std::vector<SceneObject> objects;
+  std::vector<SceneQuery> queries;
+
+  /// What the scene will ask of an object: the kinds of every query naming it.
+  BuildNeeds needsOf(std::size_t object) const;
+  /// Indices of the objects that some query names, in order.
+  std::vector<std::size_t> queriedObjects() const;
+};
+
+/// Reads and validates a scene file (format: scenes/README.md). Every error names the file, the
+/// JSON path (e.g. /objects/2/shape/minor_radius) and the problem; meshes are loaded and
+/// generated here, so a scene that loads is a scene that runs.
+Result<Scene> loadScene(const std::string& path);
+
+/// As loadScene, from text; `label` names it in messages, `base_directory` resolves mesh paths.
+Result<Scene> parseScene(const std::string& text, const std::string& label,
+                         const std::string& base_directory);
+
+}  // namespace collido

@@ -1,0 +1,438 @@
+// The plugin side of the C boundary: turns a collido::Backend into a CollidoPluginTable.
+//
+// Everything generic lives here so that every plugin checks its input the same way: handles
+// (index + generation, as in Box2D's ids), sizes, finiteness, rigid poses, and that requests and
+// needs are within the instance's capabilities. Exceptions never cross: each entry point catches
+// and turns them into a status with a message.
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <exception>
+#include <limits>
+#include <memory>
+#include <new>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+#include <collido/plugin_export.h>
+
+using collido::StatusCode;
+
+struct CollidoInstance {
+  struct Slot {
+    std::unique_ptr<collido::BackendModel> model;
+    std::uint32_t generation = 1;
+    std::uint32_t vertex_count = 0;
+    collido::BuildNeeds needs;
+  };
+
+  std::string label;  // plugin:variant, for messages
+  std::unique_ptr<collido::Backend> backend;
+  collido::Capabilities capabilities;
+  std::vector<Slot> slots;
+  std::vector<std::uint32_t> free_slots;
+  collido::QueryResult scratch;
+  std::vector<CollidoContact> contacts;
+};
+
+namespace collido::detail {
+namespace {
+
+static_assert(sizeof(TrianglePair) == sizeof(CollidoTrianglePair) &&
+                  std::is_standard_layout_v<TrianglePair>,
+              "TrianglePair is passed across the boundary without copying");
+
+std::int32_t fail(CollidoMessage* error, StatusCode code, const std::string& text) {
+  if (error != nullptr) {
+    const std::size_t n = std::min(text.size(), sizeof(error->text) - 1);
+    std::memcpy(error->text, text.data(), n);
+    error->text[n] = '\0';
+  }
+  return static_cast<std::int32_t>(code);
+}
+
+std::int32_t report(CollidoMessage* error, const Status& status) {
+  if (status.ok()) return static_cast<std::int32_t>(StatusCode::kOk);
+  return fail(error, status.code(), status.message());
+}
+
+// Runs `body` and converts anything it throws into a status; no exception leaves the plugin.
+template <typename Body>
+std::int32_t guarded(const std::string& label, CollidoMessage* error, Body&& body) {
+  try {
+    return body();
+  } catch (const std::bad_alloc&) {
+    return fail(error, StatusCode::kOutOfMemory, label + ": out of memory");
+  } catch (const std::exception& e) {
+    return fail(error, StatusCode::kEngineFailure, label + ": engine error: " + e.what());
+  } catch (...) {
+    return fail(error, StatusCode::kInternal, label + ": unknown exception");
+  }
+}
+
+CollidoInstance::Slot* findSlot(CollidoInstance* instance, CollidoModelHandle handle) {
+  const std::uint64_t index_plus_one = handle & 0xffffffffu;
+  const auto generation = static_cast<std::uint32_t>(handle >> 32);
+  if (index_plus_one == 0 || index_plus_one > instance->slots.size()) return nullptr;
+  CollidoInstance::Slot& slot = instance->slots[index_plus_one - 1];
+  if (!slot.model || slot.generation != generation) return nullptr;
+  return &slot;
+}
+
+std::string handleText(CollidoModelHandle handle) {
+  return "model handle " + std::to_string(handle & 0xffffffffu) + "/" +
+         std::to_string(handle >> 32);
+}
+
+bool isSingleQueryKind(std::uint32_t kind) {
+  return kind == static_cast<std::uint32_t>(QueryKind::kBoolean) ||
+         kind == static_cast<std::uint32_t>(QueryKind::kAllPairs) ||
+         kind == static_cast<std::uint32_t>(QueryKind::kContacts);
+}
+
+std::string kindsText(QueryKindSet set) {
+  std::string text;
+  for (QueryKind kind : {QueryKind::kBoolean, QueryKind::kAllPairs, QueryKind::kContacts}) {
+    if (!set.contains(kind)) continue;
+    if (!text.empty()) text += ", ";
+    text += queryKindName(kind);
+  }
+  return text.empty() ? "nothing" : text;
+}
+
+// Poses must be rigid: a backend may invert them by transposition.
+Status toPose(const CollidoPose* in, const char* which, Pose& out) {
+  if (in == nullptr) return {StatusCode::kInvalidArgument, std::string(which) + ": null pose"};
+  Eigen::Matrix3d rotation;
+  for (int r = 0; r < 3; ++r) {
+    for (int c = 0; c < 3; ++c) rotation(r, c) = in->rotation[3 * r + c];
+  }
+  const Eigen::Vector3d translation(in->translation[0], in->translation[1], in->translation[2]);
+  if (!rotation.allFinite() || !translation.allFinite()) {
+    return {StatusCode::kInvalidArgument, std::string(which) + ": pose has a non-finite entry"};
+  }
+  const double drift = (rotation.transpose() * rotation - Eigen::Matrix3d::Identity()).norm();
+  if (drift > 1e-6 || rotation.determinant() < 0.0) {
+    return {StatusCode::kInvalidArgument,
+            std::string(which) + ": pose rotation is not a rotation (|R^T R - I| = " +
+                std::to_string(drift) + ")"};
+  }
+  out.linear() = rotation;
+  out.translation() = translation;
+  out.makeAffine();
+  return {};
+}
+
+std::int32_t capabilitiesEntry(CollidoInstance* instance, CollidoCapabilities* out,
+                               CollidoMessage* error) {
+  if (instance == nullptr || out == nullptr) {
+    return fail(error, StatusCode::kInvalidArgument, "capabilities: null argument");
+  }
+  const Capabilities& caps = instance->capabilities;
+  *out = CollidoCapabilities{};
+  out->shape_kinds = caps.shape_kinds;
+  out->query_kinds = caps.queries.bits();
+  out->features = (caps.update ? std::uint32_t{COLLIDO_FEATURE_UPDATE} : 0u) |
+                  (caps.counts_bv_tests ? std::uint32_t{COLLIDO_FEATURE_COUNTS_BV_TESTS} : 0u) |
+                  (caps.counts_primitive_tests ? std::uint32_t{COLLIDO_FEATURE_COUNTS_PRIMITIVE_TESTS} : 0u);
+  out->max_contacts = caps.max_contacts;
+  out->notes = caps.notes.c_str();
+  return COLLIDO_STATUS_OK;
+}
+
+Status checkMesh(const CollidoTriangleMeshView& mesh) {
+  if (mesh.triangle_count == 0 || mesh.vertex_count == 0) {
+    return {StatusCode::kInvalidArgument, "mesh is empty (" + std::to_string(mesh.vertex_count) +
+                                              " vertices, " + std::to_string(mesh.triangle_count) +
+                                              " triangles)"};
+  }
+  if (mesh.positions == nullptr || mesh.triangles == nullptr) {
+    return {StatusCode::kInvalidArgument, "mesh arrays are null"};
+  }
+  for (std::uint64_t i = 0; i < 3ull * mesh.vertex_count; ++i) {
+    if (!std::isfinite(mesh.positions[i])) {
+      return {StatusCode::kInvalidArgument,
+              "vertex " + std::to_string(i / 3) + " has a non-finite coordinate"};
+    }
+  }
+  for (std::uint64_t i = 0; i < 3ull * mesh.triangle_count; ++i) {
+    const std::int32_t v = mesh.triangles[i];
+    if (v < 0 || static_cast<std::uint32_t>(v) >= mesh.vertex_count) {
+      return {StatusCode::kInvalidArgument,
+              "triangle " + std::to_string(i / 3) + " references vertex " + std::to_string(v) +
+                  " of " + std::to_string(mesh.vertex_count)};
+    }
+  }
+  return {};
+}
+
+std::int32_t buildEntry(CollidoInstance* instance, const CollidoShapeView* shape,
+                        const CollidoBuildNeeds* needs, CollidoModelHandle* out,
+                        CollidoMessage* error) {
+  if (instance == nullptr || shape == nullptr || needs == nullptr || out == nullptr) {
+    return fail(error, StatusCode::kInvalidArgument, "build: null argument");
+  }
+  const std::string& label = instance->label;
+  return guarded(label, error, [&]() -> std::int32_t {
+    const Capabilities& caps = instance->capabilities;
+    if (shape->kind != COLLIDO_SHAPE_TRIANGLE_MESH || shape->mesh == nullptr) {
+      return fail(error, StatusCode::kInvalidArgument, label + ": build: unknown shape kind");
+    }
+    if (!caps.buildsShape(ShapeKind::kTriangleMesh)) {
+      return fail(error, StatusCode::kUnsupported, label + ": does not build triangle meshes");
+    }
+    const QueryKindSet wanted(needs->query_kinds);
+    if (!caps.queries.containsAll(wanted)) {
+      return fail(error, StatusCode::kUnsupported,
+                  label + ": the scene needs " + kindsText(wanted) + " but the backend answers " +
+                      kindsText(caps.queries));
+    }
+    const bool deforms = (needs->flags & COLLIDO_NEED_DEFORMS) != 0;
+    if (deforms && !caps.update) {
+      return fail(error, StatusCode::kUnsupported, label + ": cannot update deforming models");
+    }
+    const CollidoTriangleMeshView& mesh = *shape->mesh;
+    if (Status s = checkMesh(mesh); !s.ok()) {
+      return fail(error, s.code(), label + ": build: " + s.message());
+    }
+    const MeshView view{
+        Eigen::Map<const Eigen::Matrix3Xd>(mesh.positions, 3, mesh.vertex_count),
+        Eigen::Map<const Eigen::Matrix3Xi>(mesh.triangles, 3, mesh.triangle_count)};
+    BuildNeeds build_needs{wanted, deforms};
+    Result<std::unique_ptr<BackendModel>> built = instance->backend->build(view, build_needs);
+    if (!built.ok()) return report(error, built.status());
+    if (!built.value()) return fail(error, StatusCode::kInternal, label + ": build returned null");
+
+    std::uint32_t index;
+    if (!instance->free_slots.empty()) {
+      index = instance->free_slots.back();
+      instance->free_slots.pop_back();
+    } else {
+      if (instance->slots.size() >= std::numeric_limits<std::uint32_t>::max() - 1) {
+        return fail(error, StatusCode::kOutOfMemory, label + ": too many models");
+      }
+      index = static_cast<std::uint32_t>(instance->slots.size());
+      instance->slots.emplace_back();
+    }
+    CollidoInstance::Slot& slot = instance->slots[index];
+    slot.model = std::move(built).value();
+    slot.vertex_count = mesh.vertex_count;
+    slot.needs = build_needs;
+    *out = (static_cast<std::uint64_t>(slot.generation) << 32) | (index + 1ull);
+    return COLLIDO_STATUS_OK;
+  });
+}
+
+std::int32_t updateEntry(CollidoInstance* instance, CollidoModelHandle model,
+                         const double* positions, std::uint32_t vertex_count,
+                         CollidoMessage* error) {
+  if (instance == nullptr || positions == nullptr) {
+    return fail(error, StatusCode::kInvalidArgument, "update: null argument");
+  }
+  const std::string& label = instance->label;
+  return guarded(label, error, [&]() -> std::int32_t {
+    CollidoInstance::Slot* slot = findSlot(instance, model);
+    if (slot == nullptr) {
+      return fail(error, StatusCode::kInvalidHandle, label + ": update: " + handleText(model) +
+                                                        " is not a live model");
+    }
+    if (!slot->needs.deforms) {
+      return fail(error, StatusCode::kInvalidArgument,
+                  label + ": update: the model was built rigid (needs did not say it deforms)");
+    }
+    if (vertex_count != slot->vertex_count) {
+      return fail(error, StatusCode::kInvalidArgument,
+                  label + ": update: " + std::to_string(vertex_count) +
+                      " positions for a model with " + std::to_string(slot->vertex_count) +
+                      " vertices");
+    }
+    for (std::uint64_t i = 0; i < 3ull * vertex_count; ++i) {
+      if (!std::isfinite(positions[i])) {
+        return fail(error, StatusCode::kInvalidArgument,
+                    label + ": update: vertex " + std::to_string(i / 3) +
+                        " has a non-finite coordinate");
+      }
+    }
+    const Eigen::Map<const Eigen::Matrix3Xd> view(positions, 3, vertex_count);
+    return report(error, instance->backend->update(*slot->model, view));
+  });
+}
+
+std::int32_t queryEntry(CollidoInstance* instance, CollidoModelHandle a, const CollidoPose* pose_a,
+                        CollidoModelHandle b, const CollidoPose* pose_b,
+                        const CollidoQueryRequest* request, CollidoQueryResult* out,
+                        CollidoMessage* error) {
+  if (instance == nullptr || request == nullptr || out == nullptr) {
+    return fail(error, StatusCode::kInvalidArgument, "query: null argument");
+  }
+  const std::string& label = instance->label;
+  return guarded(label, error, [&]() -> std::int32_t {
+    *out = CollidoQueryResult{};
+    if (!isSingleQueryKind(request->kind)) {
+      return fail(error, StatusCode::kInvalidArgument,
+                  label + ": query: kind " + std::to_string(request->kind) + " is not one kind");
+    }
+    const auto kind = static_cast<QueryKind>(request->kind);
+    if (!instance->capabilities.queries.contains(kind)) {
+      return fail(error, StatusCode::kUnsupported,
+                  label + ": does not answer " + queryKindName(kind) + " queries");
+    }
+    CollidoInstance::Slot* slot_a = findSlot(instance, a);
+    CollidoInstance::Slot* slot_b = findSlot(instance, b);
+    for (auto [slot, handle] : {std::pair{slot_a, a}, std::pair{slot_b, b}}) {
+      if (slot == nullptr) {
+        return fail(error, StatusCode::kInvalidHandle,
+                    label + ": query: " + handleText(handle) + " is not a live model");
+      }
+      if (!slot->needs.queries.contains(kind)) {
+        return fail(error, StatusCode::kInvalidArgument,
+                    label + ": query: " + handleText(handle) + " was built for " +
+                        kindsText(slot->needs.queries) + ", not " + queryKindName(kind));
+      }
+    }
+    Pose world_a;
+    Pose world_b;
+    if (Status s = toPose(pose_a, "pose of A", world_a); !s.ok()) {
+      return fail(error, s.code(), label + ": query: " + s.message());
+    }
+    if (Status s = toPose(pose_b, "pose of B", world_b); !s.ok()) {
+      return fail(error, s.code(), label + ": query: " + s.message());
+    }
+    const QueryRequest req{kind, request->max_pairs, request->max_contacts};
+    QueryResult& result = instance->scratch;
+    result.clear();
+    if (Status s = instance->backend->query(*slot_a->model, world_a, *slot_b->model, world_b, req,
+                                            result);
+        !s.ok()) {
+      return report(error, s);
+    }
+    out->intersecting = result.intersecting ? 1u : 0u;
+    out->truncated = result.truncated ? 1u : 0u;
+    out->pairs = reinterpret_cast<const CollidoTrianglePair*>(result.pairs.data());
+    out->pair_count = result.pairs.size();
+    instance->contacts.resize(result.contacts.size());
+    for (std::size_t i = 0; i < result.contacts.size(); ++i) {
+      const Contact& c = result.contacts[i];
+      CollidoContact& d = instance->contacts[i];
+      for (int k = 0; k < 3; ++k) {
+        d.position[k] = c.position[k];
+        d.normal[k] = c.normal[k];
+      }
+      d.depth = c.depth;
+      d.triangle_a = c.triangle_a;
+      d.triangle_b = c.triangle_b;
+    }
+    out->contacts = instance->contacts.data();
+    out->contact_count = instance->contacts.size();
+    out->counters.bv_tests = result.counters.bv_tests;
+    out->counters.primitive_tests = result.counters.primitive_tests;
+    out->counters.counted =
+        (result.counters.counts_bv_tests ? std::uint32_t{COLLIDO_FEATURE_COUNTS_BV_TESTS} : 0u) |
+        (result.counters.counts_primitive_tests ? std::uint32_t{COLLIDO_FEATURE_COUNTS_PRIMITIVE_TESTS} : 0u);
+    return COLLIDO_STATUS_OK;
+  });
+}
+
+std::int32_t memoryEntry(CollidoInstance* instance, CollidoModelHandle model,
+                         std::uint64_t* bytes, CollidoMessage* error) {
+  if (instance == nullptr || bytes == nullptr) {
+    return fail(error, StatusCode::kInvalidArgument, "memory: null argument");
+  }
+  return guarded(instance->label, error, [&]() -> std::int32_t {
+    CollidoInstance::Slot* slot = findSlot(instance, model);
+    if (slot == nullptr) {
+      return fail(error, StatusCode::kInvalidHandle,
+                  instance->label + ": memory: " + handleText(model) + " is not a live model");
+    }
+    *bytes = slot->model->memoryBytes();
+    return COLLIDO_STATUS_OK;
+  });
+}
+
+std::int32_t releaseEntry(CollidoInstance* instance, CollidoModelHandle model,
+                          CollidoMessage* error) {
+  if (instance == nullptr) return fail(error, StatusCode::kInvalidArgument, "release: null");
+  return guarded(instance->label, error, [&]() -> std::int32_t {
+    CollidoInstance::Slot* slot = findSlot(instance, model);
+    if (slot == nullptr) {
+      return fail(error, StatusCode::kInvalidHandle,
+                  instance->label + ": release: " + handleText(model) + " is not a live model");
+    }
+    slot->model.reset();
+    ++slot->generation;  // so the released handle is stale from now on
+    if (slot->generation == 0) slot->generation = 1;
+    instance->free_slots.push_back(static_cast<std::uint32_t>(slot - instance->slots.data()));
+    return COLLIDO_STATUS_OK;
+  });
+}
+
+void destroyEntry(CollidoInstance* instance) {
+  try {
+    delete instance;
+  } catch (...) {  // NOLINT(bugprone-empty-catch): a destructor that throws must not escape
+  }
+}
+
+}  // namespace
+
+std::int32_t createInstance(const PluginInfo& info, const char* variant,
+                            const CollidoOption* options, std::uint32_t option_count,
+                            CollidoInstance** out, CollidoMessage* error) {
+  if (out == nullptr) return fail(error, StatusCode::kInvalidArgument, "create: null out");
+  *out = nullptr;
+  const std::string name = variant != nullptr && *variant != '\0' ? variant : info.name;
+  return guarded(name, error, [&]() -> std::int32_t {
+    const bool known = std::any_of(info.variants.begin(), info.variants.end(),
+                                   [&](const VariantInfo& v) { return v.name == name; });
+    if (!known) {
+      return fail(error, StatusCode::kInvalidArgument,
+                  "plugin " + info.name + " has no variant '" + name + "'");
+    }
+    BackendOptions parsed;
+    for (std::uint32_t i = 0; i < option_count; ++i) {
+      if (options == nullptr || options[i].key == nullptr || options[i].value == nullptr) {
+        return fail(error, StatusCode::kInvalidArgument, name + ": null option");
+      }
+      parsed.set(options[i].key, options[i].value);
+    }
+    Result<std::unique_ptr<Backend>> backend = info.create(name, parsed);
+    if (!backend.ok()) return report(error, backend.status());
+    if (Status s = parsed.rejectUnknown(name); !s.ok()) return report(error, s);
+    auto instance = std::make_unique<CollidoInstance>();
+    instance->label = name;
+    instance->backend = std::move(backend).value();
+    instance->capabilities = instance->backend->capabilities();
+    *out = instance.release();
+    return COLLIDO_STATUS_OK;
+  });
+}
+
+const CollidoPluginTable* makePluginTable(const PluginInfo& info,
+                                          decltype(CollidoPluginTable::create) create) {
+  // The description outlives the table: `info` is the plugin's function-local static.
+  auto* variants = new std::vector<CollidoVariantInfo>();  // lives as long as the library
+  for (const VariantInfo& v : info.variants) {
+    variants->push_back(CollidoVariantInfo{v.name.c_str(), v.summary.c_str()});
+  }
+  auto* table = new CollidoPluginTable{};
+  table->abi_version = COLLIDO_PLUGIN_ABI_VERSION;
+  table->struct_size = sizeof(CollidoPluginTable);
+  table->plugin_name = info.name.c_str();
+  table->plugin_version = info.version.c_str();
+  table->engine_name = info.engine_name.c_str();
+  table->engine_version = info.engine_version.c_str();
+  table->variant_count = static_cast<std::uint32_t>(variants->size());
+  table->variants = variants->data();
+  table->create = create;
+  table->destroy = &destroyEntry;
+  table->capabilities = &capabilitiesEntry;
+  table->build = &buildEntry;
+  table->update = &updateEntry;
+  table->query = &queryEntry;
+  table->memory = &memoryEntry;
+  table->release = &releaseEntry;
+  return table;
+}
+
+}  // namespace collido::detail

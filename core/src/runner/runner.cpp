@@ -1,0 +1,284 @@
+// The runner: every backend on every query of every scene, each answer checked against the exact
+// oracle, each query timed.
+//
+// Timing: per frame, one untimed warm-up call (whose answer is the one checked), then
+// `repetitions` timed calls with a steady clock around the whole interface call, so every
+// backend pays the same boundary cost. Caches are warm by construction; medians and p90 are
+// over all timed calls of the query.
+// Memory: the backend's own figure, and the C heap's growth across build measured by the probe.
+#include <algorithm>
+#include <chrono>
+#include <map>
+#include <set>
+#include <tuple>
+
+#include <collido/host/backend_instance.h>
+#include <collido/oracle/exact_oracle.h>
+#include <collido/runner/heap_probe.h>
+#include <collido/runner/runner.h>
+#include <collido/runner/statistics.h>
+
+namespace collido {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double microseconds(Clock::duration d) {
+  return std::chrono::duration<double, std::micro>(d).count();
+}
+
+// Oracle answers of one scene, keyed by (object a, object b, frame), computed on first use.
+class OracleAnswers {
+ public:
+  explicit OracleAnswers(const Scene& scene) : scene_(scene) {}
+
+  const OracleAnswer& get(const SceneQuery& query, std::size_t frame) {
+    // Boolean queries need only a witness; a pair that any all-pairs query also names shares the
+    // full answer, which contains the boolean one.
+    const bool needs_all = std::any_of(scene_.queries.begin(), scene_.queries.end(),
+                                       [&](const SceneQuery& q) {
+                                         return q.a == query.a && q.b == query.b &&
+                                                q.request.kind != QueryKind::kBoolean;
+                                       });
+    const auto key = std::make_tuple(query.a, query.b, frame);
+    auto found = answers_.find(key);
+    if (found == answers_.end()) {
+      const SceneObject& a = scene_.objects[query.a];
+      const SceneObject& b = scene_.objects[query.b];
+      found = answers_
+                  .emplace(key, exactIntersectingPairs(
+                                    *a.mesh, a.poseAt(frame), *b.mesh, b.poseAt(frame),
+                                    needs_all ? OracleMode::kAllPairs : OracleMode::kFirstPair))
+                  .first;
+    }
+    return found->second;
+  }
+
+ private:
+  const Scene& scene_;
+  std::map<std::tuple<std::size_t, std::size_t, std::size_t>, OracleAnswer> answers_;
+};
+
+struct BuiltModel {
+  ModelHandle handle = 0;
+  double build_ms = 0.0;
+  std::size_t memory_bytes = 0;
+  std::optional<std::size_t> heap_bytes;
+  std::string error;  // non-empty when the build failed
+};
+
+BuiltModel buildModel(BackendInstance& backend, const SceneObject& object, const BuildNeeds& needs) {
+  BuiltModel built;
+  const std::optional<std::size_t> heap_before = heapBytesInUse();
+  const Clock::time_point start = Clock::now();
+  Result<ModelHandle> handle = backend.build(object.mesh->view(), needs);
+  const Clock::time_point stop = Clock::now();
+  const std::optional<std::size_t> heap_after = heapBytesInUse();
+  if (!handle.ok()) {
+    built.error = handle.status().toString();
+    return built;
+  }
+  built.handle = handle.value();
+  built.build_ms = microseconds(stop - start) / 1000.0;
+  if (heap_before && heap_after) {
+    built.heap_bytes = *heap_after > *heap_before ? *heap_after - *heap_before : 0;
+  }
+  Result<std::uint64_t> bytes = backend.memory(built.handle);
+  if (bytes.ok()) built.memory_bytes = static_cast<std::size_t>(bytes.value());
+  return built;
+}
+
+// Compares a backend's answer with the oracle's and fills the answer fields of `record`.
+void compare(const SceneObject& a, const SceneObject& b, std::size_t frame, QueryKind kind,
+             const QueryResult& result, const OracleAnswer& truth, FrameRecord& record) {
+  record.oracle_intersecting = truth.intersecting;
+  record.reported_intersecting = result.intersecting;
+  record.truncated = result.truncated;
+  const auto in_range = [&](const TrianglePair& p) {
+    return p.a >= 0 && static_cast<std::size_t>(p.a) < a.mesh->triangleCount() && p.b >= 0 &&
+           static_cast<std::size_t>(p.b) < b.mesh->triangleCount();
+  };
+  std::vector<TrianglePair> reported;
+  for (const TrianglePair& p : result.pairs) {
+    if (in_range(p)) {
+      reported.push_back(p);
+    } else {
+      ++record.invalid_pairs;
+    }
+  }
+  std::sort(reported.begin(), reported.end());
+  const std::size_t before_dedupe = reported.size();
+  reported.erase(std::unique(reported.begin(), reported.end()), reported.end());
+  record.invalid_pairs += before_dedupe - reported.size();
+
+  if (kind == QueryKind::kBoolean) {
+    // A witness, when given, must really intersect.
+    for (const TrianglePair& p : reported) {
+      if (!exactPairIntersects(*a.mesh, a.poseAt(frame), *b.mesh, b.poseAt(frame), p)) {
+        ++record.invalid_pairs;
+      }
+    }
+    return;
+  }
+  record.oracle_pairs = truth.pairs.size();
+  record.reported_pairs = reported.size();
+  std::vector<TrianglePair> matched;
+  std::set_intersection(reported.begin(), reported.end(), truth.pairs.begin(), truth.pairs.end(),
+                        std::back_inserter(matched));
+  record.matched_pairs = matched.size();
+}
+
+void summarise(QueryMeasurement& m) {
+  m.median_us = quantile(m.times_us, 0.5);
+  m.p90_us = quantile(m.times_us, 0.9);
+  std::size_t oracle_pairs = 0;
+  std::size_t reported_pairs = 0;
+  std::size_t matched_pairs = 0;
+  for (const FrameRecord& f : m.frames) {
+    if (f.oracle_intersecting && !f.reported_intersecting) ++m.false_negatives;
+    if (!f.oracle_intersecting && f.reported_intersecting) ++m.false_positives;
+    if (f.disagrees(m.kind)) ++m.disagreements;
+    oracle_pairs += f.oracle_pairs;
+    reported_pairs += f.reported_pairs;
+    matched_pairs += f.matched_pairs;
+  }
+  if (m.kind == QueryKind::kAllPairs) {
+    m.recall = oracle_pairs == 0 ? 1.0 : static_cast<double>(matched_pairs) / oracle_pairs;
+    m.precision = reported_pairs == 0 ? 1.0 : static_cast<double>(matched_pairs) / reported_pairs;
+  }
+}
+
+void say(const RunOptions& options, const std::string& line) {
+  if (options.progress) options.progress(line);
+}
+
+void runSceneOnBackend(const Scene& scene, const BackendSpec& spec, OracleAnswers& oracle,
+                       const RunOptions& options, RunReport& report) {
+  const std::string label = spec.label();
+  const auto record_all = [&](const std::string& status) {
+    for (const SceneQuery& q : scene.queries) {
+      QueryMeasurement m;
+      m.backend = label;
+      m.scene = scene.name;
+      m.query = q.name;
+      m.kind = q.request.kind;
+      m.status = status;
+      report.measurements.push_back(m);
+    }
+  };
+  Result<std::unique_ptr<BackendInstance>> created =
+      BackendInstance::create(spec.library, spec.variant, spec.options);
+  if (!created.ok()) {
+    report.problems.push_back(created.status().message());
+    record_all("failed: " + created.status().message());
+    return;
+  }
+  BackendInstance& backend = *created.value();
+  const Capabilities& caps = backend.capabilities();
+
+  // Build what the scene needs, restricted to what the backend answers; queries it cannot answer
+  // are skipped below with the reason.
+  std::map<std::size_t, BuiltModel> models;
+  for (std::size_t index : scene.queriedObjects()) {
+    BuildNeeds needs = scene.needsOf(index);
+    needs.queries = QueryKindSet(needs.queries.bits() & caps.queries.bits());
+    if (needs.queries.empty()) continue;
+    say(options, label + ": building " + scene.objects[index].name);
+    models[index] = buildModel(backend, scene.objects[index], needs);
+  }
+
+  for (const SceneQuery& query : scene.queries) {
+    QueryMeasurement m;
+    m.backend = label;
+    m.scene = scene.name;
+    m.query = query.name;
+    m.kind = query.request.kind;
+    const SceneObject& a = scene.objects[query.a];
+    const SceneObject& b = scene.objects[query.b];
+    if (!caps.queries.contains(query.request.kind)) {
+      m.status = std::string("skipped: ") + label + " does not answer " +
+                 queryKindName(query.request.kind) + " queries";
+      report.measurements.push_back(m);
+      continue;
+    }
+    const BuiltModel& model_a = models[query.a];
+    const BuiltModel& model_b = models[query.b];
+    if (!model_a.error.empty() || !model_b.error.empty()) {
+      m.status = "failed: build: " + (model_a.error.empty() ? model_b.error : model_a.error);
+      report.measurements.push_back(m);
+      continue;
+    }
+    m.build_ms = model_a.build_ms + model_b.build_ms;
+    m.triangles = a.mesh->triangleCount() + b.mesh->triangleCount();
+    m.memory_bytes = model_a.memory_bytes + model_b.memory_bytes;
+    if (model_a.heap_bytes && model_b.heap_bytes) {
+      m.heap_bytes = *model_a.heap_bytes + *model_b.heap_bytes;
+    }
+    say(options, label + ": " + scene.name + " / " + query.name + " (" +
+                     std::to_string(scene.frames) + " frames)");
+
+    QueryResult result;
+    for (std::size_t frame = 0; frame < scene.frames && m.ok(); ++frame) {
+      const Pose& pose_a = a.poseAt(frame);
+      const Pose& pose_b = b.poseAt(frame);
+      FrameRecord record;
+      record.frame = frame;
+      if (Status s = backend.query(model_a.handle, pose_a, model_b.handle, pose_b, query.request,
+                                   result);
+          !s.ok()) {
+        m.status = "failed: frame " + std::to_string(frame) + ": " + s.toString();
+        break;
+      }
+      compare(a, b, frame, query.request.kind, result, oracle.get(query, frame), record);
+      record.bv_tests = result.counters.bv_tests;
+      record.primitive_tests = result.counters.primitive_tests;
+      m.counts_bv_tests = result.counters.counts_bv_tests;
+      m.counts_primitive_tests = result.counters.counts_primitive_tests;
+
+      std::vector<double> frame_times;
+      for (int rep = 0; rep < options.repetitions; ++rep) {
+        const Clock::time_point start = Clock::now();
+        const Status s = backend.query(model_a.handle, pose_a, model_b.handle, pose_b,
+                                       query.request, result);
+        const Clock::time_point stop = Clock::now();
+        if (!s.ok()) {
+          m.status = "failed: frame " + std::to_string(frame) + ": " + s.toString();
+          break;
+        }
+        frame_times.push_back(microseconds(stop - start));
+      }
+      record.median_us = quantile(frame_times, 0.5);
+      m.times_us.insert(m.times_us.end(), frame_times.begin(), frame_times.end());
+      m.frames.push_back(record);
+    }
+    summarise(m);
+    report.measurements.push_back(std::move(m));
+  }
+  for (const auto& [index, model] : models) {
+    if (model.error.empty()) (void)backend.release(model.handle);
+  }
+}
+
+}  // namespace
+
+bool FrameRecord::disagrees(QueryKind kind) const {
+  if (oracle_intersecting != reported_intersecting || invalid_pairs != 0) return true;
+  if (kind != QueryKind::kAllPairs) return false;
+  // A truncated answer is right when every pair it gives is real and some were left out.
+  if (truncated) return matched_pairs != reported_pairs || reported_pairs >= oracle_pairs;
+  return matched_pairs != oracle_pairs || matched_pairs != reported_pairs;
+}
+
+RunReport runScenes(const std::vector<Scene>& scenes, const std::vector<BackendSpec>& backends,
+                    const RunOptions& options) {
+  RunReport report;
+  for (const Scene& scene : scenes) {
+    OracleAnswers oracle(scene);
+    for (const BackendSpec& spec : backends) {
+      runSceneOnBackend(scene, spec, oracle, options, report);
+    }
+  }
+  return report;
+}
+
+}  // namespace collido

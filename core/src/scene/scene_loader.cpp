@@ -1,0 +1,530 @@
+// Scene files: JSON in, a fully validated Scene out.
+//
+// The reader walks the document with its JSON pointer in hand, so every complaint names the
+// file, the place and the problem. Errors are thrown as SceneError inside this file only and
+// returned as a Status; unknown keys are errors (a misspelt "minor_raduis" must not silently
+// become the default), except "comment", allowed anywhere for notes.
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+
+#include <nlohmann/json.hpp>
+
+#include <collido/mesh/mesh_io.h>
+#include <collido/mesh/procedural.h>
+#include <collido/scene/scene.h>
+
+#include "scene_motion.h"
+
+namespace collido {
+namespace {
+
+using Json = nlohmann::json;
+
+class SceneError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// A JSON value and where it is, for messages.
+struct Node {
+  const Json& value;
+  std::string pointer;  // JSON pointer, "" for the root
+
+  Node at(const std::string& key) const { return Node{value.at(key), pointer + "/" + key}; }
+  Node at(std::size_t index) const {
+    return Node{value.at(index), pointer + "/" + std::to_string(index)};
+  }
+  bool has(const std::string& key) const { return value.contains(key); }
+  std::string where() const { return pointer.empty() ? "/" : pointer; }
+};
+
+const char* typeName(const Json& v) { return v.type_name(); }
+
+class Reader {
+ public:
+  explicit Reader(std::string label) : label_(std::move(label)) {}
+
+  [[noreturn]] void fail(const Node& node, const std::string& problem) const {
+    throw SceneError(label_ + ": " + node.where() + ": " + problem);
+  }
+
+  void expectObject(const Node& node, const std::set<std::string>& allowed) const {
+    if (!node.value.is_object()) fail(node, std::string("expected an object, got ") + typeName(node.value));
+    for (const auto& item : node.value.items()) {
+      if (item.key() == "comment" || allowed.count(item.key()) != 0) continue;
+      std::string list;
+      for (const std::string& key : allowed) list += (list.empty() ? "" : ", ") + key;
+      fail(node, "unknown key '" + item.key() + "' (allowed: " + list + ")");
+    }
+  }
+
+  void expectArray(const Node& node) const {
+    if (!node.value.is_array()) fail(node, std::string("expected an array, got ") + typeName(node.value));
+  }
+
+  std::string string(const Node& node) const {
+    if (!node.value.is_string()) fail(node, std::string("expected a string, got ") + typeName(node.value));
+    return node.value.get<std::string>();
+  }
+
+  double number(const Node& node) const {
+    if (!node.value.is_number()) fail(node, std::string("expected a number, got ") + typeName(node.value));
+    const double v = node.value.get<double>();
+    if (!std::isfinite(v)) fail(node, "expected a finite number");
+    return v;
+  }
+
+  double number(const Node& parent, const std::string& key, double fallback) const {
+    return parent.has(key) ? number(parent.at(key)) : fallback;
+  }
+
+  double positive(const Node& parent, const std::string& key, double fallback) const {
+    const double v = number(parent, key, fallback);
+    if (!(v > 0.0)) fail(parent.has(key) ? parent.at(key) : parent, key + " must be > 0");
+    return v;
+  }
+
+  std::int64_t integer(const Node& node, std::int64_t min_value, std::int64_t max_value) const {
+    if (!node.value.is_number_integer()) {
+      fail(node, std::string("expected an integer, got ") +
+                     (node.value.is_number() ? "a fractional number" : typeName(node.value)));
+    }
+    const auto v = node.value.get<std::int64_t>();
+    if (node.value.is_number_unsigned() && node.value.get<std::uint64_t>() > 9000000000000000000ull) {
+      fail(node, "integer out of range");
+    }
+    if (v < min_value || v > max_value) {
+      fail(node, "expected an integer in [" + std::to_string(min_value) + ", " +
+                     std::to_string(max_value) + "], got " + std::to_string(v));
+    }
+    return v;
+  }
+
+  std::int64_t integer(const Node& parent, const std::string& key, std::int64_t fallback,
+                       std::int64_t min_value, std::int64_t max_value) const {
+    return parent.has(key) ? integer(parent.at(key), min_value, max_value) : fallback;
+  }
+
+  Eigen::Vector3d vector3(const Node& node) const {
+    expectArray(node);
+    if (node.value.size() != 3) fail(node, "expected 3 numbers, got " + std::to_string(node.value.size()));
+    return {number(node.at(0)), number(node.at(1)), number(node.at(2))};
+  }
+
+  const std::string& label() const { return label_; }
+
+ private:
+  std::string label_;
+};
+
+// --- poses -----------------------------------------------------------------------------------
+
+constexpr double kRotationTolerance = 1e-9;
+
+Eigen::Matrix3d readRotation(const Reader& r, const Node& node) {
+  r.expectObject(node, {"matrix", "quaternion", "axis", "degrees"});
+  const bool has_matrix = node.has("matrix");
+  const bool has_quaternion = node.has("quaternion");
+  const bool has_axis = node.has("axis") || node.has("degrees");
+  if (int(has_matrix) + int(has_quaternion) + int(has_axis) != 1) {
+    r.fail(node, "give exactly one of matrix, quaternion, or axis + degrees");
+  }
+  if (has_matrix) {
+    const Node m = node.at("matrix");
+    r.expectArray(m);
+    if (m.value.size() != 3) r.fail(m, "expected 3 rows");
+    Eigen::Matrix3d rotation;
+    for (int row = 0; row < 3; ++row) {
+      rotation.row(row) = r.vector3(m.at(static_cast<std::size_t>(row))).transpose();
+    }
+    const double drift = (rotation.transpose() * rotation - Eigen::Matrix3d::Identity())
+                             .cwiseAbs()
+                             .maxCoeff();
+    if (drift > kRotationTolerance || rotation.determinant() <= 0.0) {
+      std::ostringstream text;
+      text << "not a rotation: max |R^T R - I| = " << drift << ", det = " << rotation.determinant()
+           << " (a pose must be rigid: orthonormal rows, determinant +1, within "
+           << kRotationTolerance << ")";
+      r.fail(m, text.str());
+    }
+    return rotation;
+  }
+  if (has_quaternion) {
+    const Node q = node.at("quaternion");
+    r.expectArray(q);
+    if (q.value.size() != 4) r.fail(q, "expected [w, x, y, z]");
+    const Eigen::Quaterniond quaternion(r.number(q.at(0)), r.number(q.at(1)), r.number(q.at(2)),
+                                        r.number(q.at(3)));
+    if (std::abs(quaternion.norm() - 1.0) > 1e-6) {
+      r.fail(q, "not a unit quaternion (norm " + std::to_string(quaternion.norm()) + ")");
+    }
+    return quaternion.normalized().toRotationMatrix();
+  }
+  if (!node.has("axis") || !node.has("degrees")) r.fail(node, "axis and degrees go together");
+  const Eigen::Vector3d axis = r.vector3(node.at("axis"));
+  if (!(axis.norm() > 0.0)) r.fail(node.at("axis"), "the axis must not be zero");
+  const double degrees = r.number(node.at("degrees"));
+  return Eigen::AngleAxisd(degrees * M_PI / 180.0, axis.normalized()).toRotationMatrix();
+}
+
+Pose readPose(const Reader& r, const Node& node) {
+  r.expectObject(node, {"translation", "rotation"});
+  Pose pose = Pose::Identity();
+  if (node.has("translation")) pose.translation() = r.vector3(node.at("translation"));
+  if (node.has("rotation")) pose.linear() = readRotation(r, node.at("rotation"));
+  return pose;
+}
+
+// --- shapes ----------------------------------------------------------------------------------
+
+struct LoadedShape {
+  std::shared_ptr<const TriangleMesh> mesh;
+  MeshReport report;
+};
+
+using Generator = Result<TriangleMesh> (*)(const Reader&, const Node&, std::string&);
+
+TorusParams readTorusParams(const Reader& r, const Node& n) {
+  TorusParams p;
+  p.major_radius = r.positive(n, "major_radius", p.major_radius);
+  p.minor_radius = r.positive(n, "minor_radius", p.minor_radius);
+  p.major_segments = static_cast<int>(r.integer(n, "major_segments", p.major_segments, 3, 1 << 20));
+  p.minor_segments = static_cast<int>(r.integer(n, "minor_segments", p.minor_segments, 3, 1 << 20));
+  return p;
+}
+
+Result<TriangleMesh> generateTorus(const Reader& r, const Node& n, std::string& text) {
+  r.expectObject(n, {"generator", "major_radius", "minor_radius", "major_segments",
+                     "minor_segments"});
+  const TorusParams p = readTorusParams(r, n);
+  text = "torus R=" + std::to_string(p.major_radius) + " r=" + std::to_string(p.minor_radius) +
+         " " + std::to_string(p.major_segments) + "x" + std::to_string(p.minor_segments);
+  return makeTorus(p);
+}
+
+Result<TriangleMesh> generateChain(const Reader& r, const Node& n, std::string& text) {
+  r.expectObject(n, {"generator", "links", "clearance", "major_radius", "minor_radius",
+                     "major_segments", "minor_segments"});
+  ChainParams p;
+  p.links = static_cast<int>(r.integer(n, "links", p.links, 1, 100000));
+  p.clearance = r.number(n, "clearance", p.clearance);
+  p.link = readTorusParams(r, n);
+  text = "chain of " + std::to_string(p.links) + " tori";
+  return makeChain(p);
+}
+
+Result<TriangleMesh> generateSphere(const Reader& r, const Node& n, std::string& text) {
+  r.expectObject(n, {"generator", "radius", "slices", "stacks"});
+  SphereParams p;
+  p.radius = r.positive(n, "radius", p.radius);
+  p.slices = static_cast<int>(r.integer(n, "slices", p.slices, 3, 1 << 20));
+  p.stacks = static_cast<int>(r.integer(n, "stacks", p.stacks, 2, 1 << 20));
+  text = "sphere r=" + std::to_string(p.radius) + " " + std::to_string(p.slices) + "x" +
+         std::to_string(p.stacks);
+  return makeSphere(p);
+}
+
+Result<TriangleMesh> generateGridSheet(const Reader& r, const Node& n, std::string& text) {
+  r.expectObject(n, {"generator", "width", "depth", "cells_x", "cells_y", "amplitude", "waves"});
+  GridSheetParams p;
+  p.width = r.positive(n, "width", p.width);
+  p.depth = r.positive(n, "depth", p.depth);
+  p.cells_x = static_cast<int>(r.integer(n, "cells_x", p.cells_x, 1, 1 << 20));
+  p.cells_y = static_cast<int>(r.integer(n, "cells_y", p.cells_y, 1, 1 << 20));
+  p.amplitude = r.number(n, "amplitude", p.amplitude);
+  p.waves = r.number(n, "waves", p.waves);
+  text = "grid sheet " + std::to_string(p.cells_x) + "x" + std::to_string(p.cells_y);
+  return makeGridSheet(p);
+}
+
+Result<TriangleMesh> generateGear(const Reader& r, const Node& n, std::string& text) {
+  r.expectObject(n, {"generator", "teeth", "module", "face_width", "pressure_angle_deg",
+                     "flank_samples", "root_samples"});
+  GearParams p;
+  p.teeth = static_cast<int>(r.integer(n, "teeth", p.teeth, 6, 100000));
+  p.module = r.positive(n, "module", p.module);
+  p.face_width = r.positive(n, "face_width", p.face_width);
+  p.pressure_angle_deg = r.positive(n, "pressure_angle_deg", p.pressure_angle_deg);
+  p.flank_samples = static_cast<int>(r.integer(n, "flank_samples", p.flank_samples, 2, 1 << 16));
+  p.root_samples = static_cast<int>(r.integer(n, "root_samples", p.root_samples, 1, 1 << 16));
+  text = "gear z=" + std::to_string(p.teeth) + " m=" + std::to_string(p.module);
+  return makeGear(p);
+}
+
+const std::map<std::string, Generator>& generators() {
+  static const std::map<std::string, Generator> table = {
+      {"torus", &generateTorus},   {"chain", &generateChain}, {"sphere", &generateSphere},
+      {"grid_sheet", &generateGridSheet}, {"gear", &generateGear}};
+  return table;
+}
+
+class ShapeLoader {
+ public:
+  ShapeLoader(const Reader& reader, std::string base_directory)
+      : reader_(reader), base_(std::move(base_directory)) {}
+
+  LoadedShape load(const Node& node) {
+    const Reader& r = reader_;
+    if (!node.value.is_object()) r.fail(node, "expected an object with 'mesh' or 'generator'");
+    if (node.has("mesh") == node.has("generator")) {
+      r.fail(node, "give exactly one of 'mesh' (a file) or 'generator'");
+    }
+    return node.has("mesh") ? loadFile(node) : generate(node);
+  }
+
+ private:
+  LoadedShape loadFile(const Node& node) {
+    const Reader& r = reader_;
+    r.expectObject(node, {"mesh", "scale"});
+    const std::string relative = r.string(node.at("mesh"));
+    const double scale = r.positive(node, "scale", 1.0);
+    const std::filesystem::path file = std::filesystem::path(base_) / relative;
+    const std::string key = file.lexically_normal().string() + "|" + std::to_string(scale);
+    if (const auto hit = cache_.find(key); hit != cache_.end()) return hit->second;
+
+    MeshReport report;
+    Result<TriangleMesh> mesh = loadMesh(file.lexically_normal().string(), &report);
+    if (!mesh.ok()) r.fail(node.at("mesh"), mesh.status().message());
+    if (scale != 1.0) mesh.value().vertices *= scale;
+    LoadedShape shape{std::make_shared<const TriangleMesh>(std::move(mesh).value()), report};
+    cache_.emplace(key, shape);
+    return shape;
+  }
+
+  LoadedShape generate(const Node& node) {
+    const Reader& r = reader_;
+    const std::string name = r.string(node.at("generator"));
+    const auto found = generators().find(name);
+    if (found == generators().end()) {
+      std::string list;
+      for (const auto& [known, fn] : generators()) list += (list.empty() ? "" : ", ") + known;
+      r.fail(node.at("generator"), "unknown generator '" + name + "' (known: " + list + ")");
+    }
+    std::string text;
+    Result<TriangleMesh> mesh = found->second(r, node, text);
+    if (!mesh.ok()) r.fail(node, mesh.status().message());
+    LoadedShape shape;
+    shape.report.source = text;
+    shape.report.importer = "generator";
+    inspectMesh(mesh.value(), shape.report);
+    shape.mesh = std::make_shared<const TriangleMesh>(std::move(mesh).value());
+    return shape;
+  }
+
+  const Reader& reader_;
+  std::string base_;
+  std::map<std::string, LoadedShape> cache_;
+};
+
+// --- queries ---------------------------------------------------------------------------------
+
+QueryKind readQueryKind(const Reader& r, const Node& node) {
+  const std::string text = r.string(node);
+  for (QueryKind kind : {QueryKind::kBoolean, QueryKind::kAllPairs, QueryKind::kContacts}) {
+    if (text == queryKindName(kind)) return kind;
+  }
+  r.fail(node, "unknown query kind '" + text + "' (known: boolean, all_pairs, contacts)");
+}
+
+// --- the scene -------------------------------------------------------------------------------
+
+Scene readScene(const Reader& r, const Json& document, const std::string& base_directory) {
+  const Node root{document, ""};
+  r.expectObject(root, {"name", "description", "frames", "objects", "queries"});
+  Scene scene;
+  scene.name = root.has("name") ? r.string(root.at("name")) : "";
+  scene.description = root.has("description") ? r.string(root.at("description")) : "";
+  const bool frames_given = root.has("frames");
+  if (frames_given) scene.frames = static_cast<std::size_t>(r.integer(root.at("frames"), 1, 1000000));
+
+  if (!root.has("objects")) r.fail(root, "missing 'objects'");
+  const Node objects = root.at("objects");
+  r.expectArray(objects);
+  if (objects.value.empty()) r.fail(objects, "a scene needs at least one object");
+
+  // Frame count from explicit pose lists when the scene does not state it.
+  if (!frames_given) {
+    for (std::size_t i = 0; i < objects.value.size(); ++i) {
+      const Json& o = objects.value[i];
+      if (o.is_object() && o.contains("motion") && o["motion"].is_object() &&
+          o["motion"].contains("poses") && o["motion"]["poses"].is_array()) {
+        scene.frames = std::max<std::size_t>(scene.frames, o["motion"]["poses"].size());
+      }
+    }
+  }
+
+  ShapeLoader shapes(r, base_directory);
+  std::map<std::string, std::size_t> index_of;
+  for (std::size_t i = 0; i < objects.value.size(); ++i) {
+    const Node node = objects.at(i);
+    r.expectObject(node, {"name", "shape", "pose", "motion"});
+    SceneObject object;
+    if (!node.has("name")) r.fail(node, "missing 'name'");
+    object.name = r.string(node.at("name"));
+    if (object.name.empty()) r.fail(node.at("name"), "the name must not be empty");
+    if (index_of.count(object.name) != 0) {
+      r.fail(node.at("name"), "duplicate object name '" + object.name + "'");
+    }
+    if (!node.has("shape")) r.fail(node, "missing 'shape'");
+    LoadedShape shape = shapes.load(node.at("shape"));
+    object.mesh = shape.mesh;
+    object.report = shape.report;
+    const Pose base = node.has("pose") ? readPose(r, node.at("pose")) : Pose::Identity();
+    object.poses = {base};
+    if (node.has("motion")) {
+      const Node motion = node.at("motion");
+      r.expectObject(motion, {"poses", "random", "jitter"});
+      if (motion.value.size() - (motion.has("comment") ? 1 : 0) != 1) {
+        r.fail(motion, "give exactly one of poses, random, jitter");
+      }
+      if (motion.has("poses")) {
+        if (node.has("pose")) r.fail(node.at("pose"), "'pose' and motion 'poses' exclude each other");
+        const Node list = motion.at("poses");
+        r.expectArray(list);
+        if (list.value.size() != scene.frames) {
+          r.fail(list, "has " + std::to_string(list.value.size()) + " poses but the scene has " +
+                           std::to_string(scene.frames) + " frames");
+        }
+        object.poses.clear();
+        for (std::size_t f = 0; f < list.value.size(); ++f) object.poses.push_back(readPose(r, list.at(f)));
+      } else if (motion.has("random")) {
+        const Node random = motion.at("random");
+        r.expectObject(random, {"seed", "relative_to", "overlap"});
+        RandomOverlapMotion spec;
+        spec.seed = static_cast<std::uint64_t>(r.integer(random, "seed", 1, 0, INT64_MAX));
+        if (!random.has("relative_to")) r.fail(random, "missing 'relative_to'");
+        const std::string other = r.string(random.at("relative_to"));
+        const auto found = index_of.find(other);
+        if (found == index_of.end()) {
+          r.fail(random.at("relative_to"),
+                 "'" + other + "' is not an object defined before this one");
+        }
+        if (!random.has("overlap")) r.fail(random, "missing 'overlap'");
+        const Node overlap = random.at("overlap");
+        if (overlap.value.is_array()) {
+          if (overlap.value.size() != 2) r.fail(overlap, "expected [low, high] or a number");
+          spec.overlap_low = r.number(overlap.at(0));
+          spec.overlap_high = r.number(overlap.at(1));
+        } else {
+          spec.overlap_low = spec.overlap_high = r.number(overlap);
+        }
+        if (!(spec.overlap_low >= 0.0 && spec.overlap_low <= spec.overlap_high &&
+              spec.overlap_high <= 1.0)) {
+          r.fail(overlap, "overlap must satisfy 0 <= low <= high <= 1");
+        }
+        const SceneObject& reference = scene.objects[found->second];
+        object.poses = randomOverlapPoses(spec, *reference.mesh, reference.poses, *object.mesh,
+                                          base, scene.frames);
+      } else {
+        const Node jitter = motion.at("jitter");
+        r.expectObject(jitter, {"seed", "translation", "rotation_deg"});
+        JitterMotion spec;
+        spec.seed = static_cast<std::uint64_t>(r.integer(jitter, "seed", 1, 0, INT64_MAX));
+        spec.translation = r.number(jitter, "translation", 0.0);
+        spec.rotation_deg = r.number(jitter, "rotation_deg", 0.0);
+        if (spec.translation < 0.0 || spec.rotation_deg < 0.0 || spec.rotation_deg > 180.0) {
+          r.fail(jitter, "translation must be >= 0 and rotation_deg in [0, 180]");
+        }
+        object.poses = jitterPoses(spec, base, scene.frames);
+      }
+    }
+    index_of.emplace(object.name, scene.objects.size());
+    scene.objects.push_back(std::move(object));
+  }
+
+  if (!root.has("queries")) r.fail(root, "missing 'queries'");
+  const Node queries = root.at("queries");
+  r.expectArray(queries);
+  if (queries.value.empty()) r.fail(queries, "a scene needs at least one query");
+  std::set<std::string> query_names;
+  for (std::size_t i = 0; i < queries.value.size(); ++i) {
+    const Node node = queries.at(i);
+    r.expectObject(node, {"name", "a", "b", "kind", "max_pairs", "max_contacts"});
+    SceneQuery query;
+    for (const char* side : {"a", "b"}) {
+      if (!node.has(side)) r.fail(node, std::string("missing '") + side + "'");
+      const std::string name = r.string(node.at(side));
+      const auto found = index_of.find(name);
+      if (found == index_of.end()) r.fail(node.at(side), "no object named '" + name + "'");
+      (side[0] == 'a' ? query.a : query.b) = found->second;
+    }
+    if (query.a == query.b) r.fail(node, "a query needs two different objects");
+    if (!node.has("kind")) r.fail(node, "missing 'kind'");
+    query.request.kind = readQueryKind(r, node.at("kind"));
+    query.request.max_pairs =
+        static_cast<std::uint64_t>(r.integer(node, "max_pairs", 0, 0, INT64_MAX));
+    query.request.max_contacts =
+        static_cast<std::uint64_t>(r.integer(node, "max_contacts", 0, 0, INT64_MAX));
+    query.name = node.has("name") ? r.string(node.at("name"))
+                                  : scene.objects[query.a].name + "-" +
+                                        scene.objects[query.b].name + " " +
+                                        queryKindName(query.request.kind);
+    if (!query_names.insert(query.name).second) {
+      r.fail(node, "duplicate query name '" + query.name + "'");
+    }
+    scene.queries.push_back(query);
+  }
+  return scene;
+}
+
+}  // namespace
+
+BuildNeeds Scene::needsOf(std::size_t object) const {
+  BuildNeeds needs;
+  for (const SceneQuery& q : queries) {
+    if (q.a == object || q.b == object) needs.queries |= q.request.kind;
+  }
+  return needs;
+}
+
+std::vector<std::size_t> Scene::queriedObjects() const {
+  std::vector<std::size_t> out;
+  for (std::size_t i = 0; i < objects.size(); ++i) {
+    if (!needsOf(i).queries.empty()) out.push_back(i);
+  }
+  return out;
+}
+
+Result<Scene> parseScene(const std::string& text, const std::string& label,
+                         const std::string& base_directory) {
+  Json document;
+  try {
+    document = Json::parse(text);
+  } catch (const Json::parse_error& e) {
+    return Status(StatusCode::kInvalidArgument,
+                  label + ": not valid JSON (byte " + std::to_string(e.byte) + "): " + e.what());
+  }
+  try {
+    const Reader reader(label);
+    Scene scene = readScene(reader, document, base_directory);
+    if (scene.name.empty()) scene.name = std::filesystem::path(label).stem().string();
+    return scene;
+  } catch (const SceneError& e) {
+    return Status(StatusCode::kInvalidArgument, e.what());
+  } catch (const Json::exception& e) {
+    return Status(StatusCode::kInvalidArgument, label + ": " + e.what());
+  }
+}
+
+Result<Scene> loadScene(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    std::error_code ec;
+    return Status(StatusCode::kInvalidArgument,
+                  path + (std::filesystem::exists(path, ec) ? ": cannot be read" : ": file not found"));
+  }
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  Result<Scene> scene =
+      parseScene(buffer.str(), path, std::filesystem::path(path).parent_path().string());
+  if (scene.ok()) scene.value().path = path;
+  return scene;
+}
+
+}  // namespace collido

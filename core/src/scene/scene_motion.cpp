@@ -1,0 +1,100 @@
+#include "scene_motion.h"
+
+#include <cmath>
+#include <random>
+
+namespace collido {
+namespace {
+
+// Uniform numbers from mt19937_64 with our own conversions: the standard distributions are
+// implementation-defined, and scenes must give the same poses with any standard library.
+class Sampler {
+ public:
+  explicit Sampler(std::uint64_t seed) : engine_(seed) {}
+
+  double uniform() { return static_cast<double>(engine_() >> 11) * 0x1.0p-53; }  // [0, 1)
+  double uniform(double low, double high) { return low + (high - low) * uniform(); }
+
+  Eigen::Vector3d direction() {
+    const double z = uniform(-1.0, 1.0);
+    const double phi = uniform(0.0, 2.0 * M_PI);
+    const double s = std::sqrt(std::max(0.0, 1.0 - z * z));
+    return {s * std::cos(phi), s * std::sin(phi), z};
+  }
+
+  // Shoemake, "Uniform random rotations", Graphics Gems III (1992).
+  Eigen::Matrix3d rotation() {
+    const double u1 = uniform();
+    const double u2 = uniform(0.0, 2.0 * M_PI);
+    const double u3 = uniform(0.0, 2.0 * M_PI);
+    const double a = std::sqrt(1.0 - u1);
+    const double b = std::sqrt(u1);
+    const Eigen::Quaterniond q(b * std::cos(u3), a * std::sin(u2), a * std::cos(u2),
+                               b * std::sin(u3));
+    return q.normalized().toRotationMatrix();
+  }
+
+ private:
+  std::mt19937_64 engine_;
+};
+
+struct Sphere {
+  Eigen::Vector3d center;
+  double radius;
+};
+
+// Centre of the axis-aligned bounds and the farthest vertex from it: a loose but stable sphere.
+Sphere boundingSphere(const TriangleMesh& mesh) {
+  const Eigen::Vector3d lo = mesh.vertices.rowwise().minCoeff();
+  const Eigen::Vector3d hi = mesh.vertices.rowwise().maxCoeff();
+  const Eigen::Vector3d center = 0.5 * (lo + hi);
+  const double radius = (mesh.vertices.colwise() - center).colwise().norm().maxCoeff();
+  return {center, radius};
+}
+
+}  // namespace
+
+std::vector<Pose> randomOverlapPoses(const RandomOverlapMotion& spec,
+                                     const TriangleMesh& reference_mesh,
+                                     const std::vector<Pose>& reference_poses,
+                                     const TriangleMesh& mesh, const Pose& base,
+                                     std::size_t frames) {
+  Sampler sampler(spec.seed);
+  const Sphere reference = boundingSphere(reference_mesh);
+  const Sphere own = boundingSphere(mesh);
+  std::vector<Pose> poses;
+  poses.reserve(frames);
+  for (std::size_t f = 0; f < frames; ++f) {
+    const Pose& reference_pose = reference_poses.size() == 1 ? reference_poses[0] : reference_poses[f];
+    const Eigen::Matrix3d rotation = sampler.rotation() * base.linear();
+    const Eigen::Vector3d direction = sampler.direction();
+    const double overlap = sampler.uniform(spec.overlap_low, spec.overlap_high);
+    const double distance = (1.0 - overlap) * (reference.radius + own.radius);
+    const Eigen::Vector3d target = reference_pose * reference.center + distance * direction;
+    Pose pose = Pose::Identity();
+    pose.linear() = rotation;
+    pose.translation() = target - rotation * own.center;
+    poses.push_back(pose);
+  }
+  return poses;
+}
+
+std::vector<Pose> jitterPoses(const JitterMotion& spec, const Pose& base, std::size_t frames) {
+  Sampler sampler(spec.seed);
+  std::vector<Pose> poses;
+  poses.reserve(frames);
+  for (std::size_t f = 0; f < frames; ++f) {
+    const Eigen::Vector3d axis = sampler.direction();
+    const double angle = sampler.uniform(0.0, spec.rotation_deg) * M_PI / 180.0;
+    const Eigen::Vector3d shift(sampler.uniform(-spec.translation, spec.translation),
+                                sampler.uniform(-spec.translation, spec.translation),
+                                sampler.uniform(-spec.translation, spec.translation));
+    Pose pose = base;
+    pose.linear() = Eigen::AngleAxisd(angle, axis).toRotationMatrix() * base.linear();
+    pose.translation() = base.translation() + shift;
+    poses.push_back(pose);
+  }
+  return poses;
+}
+
+}  // namespace collido

@@ -1,0 +1,44 @@
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include <collido/geometry.h>
+#include <collido/mesh/triangle_mesh.h>
+
+namespace collido {
+
+/// Random poses of an object around a reference object, with a target overlap of their bounding
+/// spheres: each frame draws a uniform random rotation, a uniform random direction, and an
+/// overlap o in [overlap_low, overlap_high]; the object's bounding-sphere centre is placed at
+/// distance (1 - o) * (r_reference + r_object) from the reference's, so o = 0 means the spheres
+/// just touch and o = 1 that the centres coincide.
+struct RandomOverlapMotion {
+  std::uint64_t seed = 1;
+  double overlap_low = 0.5;
+  double overlap_high = 0.5;
+};
+
+/// Random perturbations of a base pose: per frame a rotation about a uniform random axis by an
+/// angle uniform in [0, rotation_deg], about the object's origin, and a translation uniform in
+/// the cube [-translation, translation]^3.
+struct JitterMotion {
+  std::uint64_t seed = 1;
+  double translation = 0.0;
+  double rotation_deg = 0.0;
+};
+
+/// One pose per frame. The reference's poses have one entry per frame or one for all; the
+/// object's `base` rotation is composed with the random one (so a shape's own orientation is
+/// kept in the mix). Deterministic for a seed on every platform (own sampling on mt19937_64).
+std::vector<Pose> randomOverlapPoses(const RandomOverlapMotion& spec,
+                                     const TriangleMesh& reference_mesh,
+                                     const std::vector<Pose>& reference_poses,
+                                     const TriangleMesh& mesh, const Pose& base,
+                                     std::size_t frames);
+
+/// One pose per frame around `base`.
+std::vector<Pose> jitterPoses(const JitterMotion& spec, const Pose& base, std::size_t frames);
+
+}  // namespace collido
