@@ -1,13 +1,19 @@
 #pragma once
 
+#include <vector>
+
 #include <collido/backend.h>
 #include <collido/plugin_api.h>
 
 namespace collido::detail {
 
-/// Builds (once) the C table for the plugin described by `info`; see COLLIDO_DEFINE_PLUGIN.
-const CollidoPluginTable* makePluginTable(const PluginInfo& info,
-                                          decltype(CollidoPluginTable::create) create);
+/// The C table of a plugin and the variant array it points into; one static per plugin, so it
+/// lives exactly as long as the library (no heap blocks left behind by dlclose).
+struct PluginTableStorage {
+  PluginTableStorage(const PluginInfo& info, decltype(CollidoPluginTable::create) create);
+  std::vector<CollidoVariantInfo> variants;
+  CollidoPluginTable table{};
+};
 
 /// The C create() shared by all plugins, parameterised by the plugin's description.
 std::int32_t createInstance(const PluginInfo& info, const char* variant,
@@ -24,8 +30,8 @@ const CollidoPluginTable* pluginTable() {
       return createInstance(Describe(), variant, options, option_count, out, error);
     }
   };
-  static const CollidoPluginTable* table = makePluginTable(Describe(), &Entry::create);
-  return table;
+  static const PluginTableStorage storage(Describe(), &Entry::create);
+  return &storage.table;
 }
 
 }  // namespace collido::detail

@@ -44,12 +44,12 @@ void inspectMesh(const TriangleMesh& mesh, MeshReport& report) {
     }
   }
 
-  std::vector<char> used(mesh.vertexCount(), 0);
+  std::vector<bool> used(mesh.vertexCount(), false);
   for (Eigen::Index t = 0; t < mesh.triangles.cols(); ++t) {
-    for (int k = 0; k < 3; ++k) used[static_cast<std::size_t>(mesh.triangles(k, t))] = 1;
+    for (int k = 0; k < 3; ++k) used[static_cast<std::size_t>(mesh.triangles(k, t))] = true;
   }
-  report.unreferenced_vertices =
-      static_cast<std::size_t>(std::count(used.begin(), used.end(), char{0}));
+  report.unreferenced_vertices = 0;
+  for (bool u : used) report.unreferenced_vertices += u ? 0 : 1;
 }
 
 std::string MeshReport::summary() const {

@@ -408,31 +408,28 @@ std::int32_t createInstance(const PluginInfo& info, const char* variant,
   });
 }
 
-const CollidoPluginTable* makePluginTable(const PluginInfo& info,
-                                          decltype(CollidoPluginTable::create) create) {
-  // The description outlives the table: `info` is the plugin's function-local static.
-  auto* variants = new std::vector<CollidoVariantInfo>();  // lives as long as the library
+PluginTableStorage::PluginTableStorage(const PluginInfo& info,
+                                       decltype(CollidoPluginTable::create) create) {
+  // `info` is the plugin's function-local static, so the strings outlive the table.
   for (const VariantInfo& v : info.variants) {
-    variants->push_back(CollidoVariantInfo{v.name.c_str(), v.summary.c_str()});
+    variants.push_back(CollidoVariantInfo{v.name.c_str(), v.summary.c_str()});
   }
-  auto* table = new CollidoPluginTable{};
-  table->abi_version = COLLIDO_PLUGIN_ABI_VERSION;
-  table->struct_size = sizeof(CollidoPluginTable);
-  table->plugin_name = info.name.c_str();
-  table->plugin_version = info.version.c_str();
-  table->engine_name = info.engine_name.c_str();
-  table->engine_version = info.engine_version.c_str();
-  table->variant_count = static_cast<std::uint32_t>(variants->size());
-  table->variants = variants->data();
-  table->create = create;
-  table->destroy = &destroyEntry;
-  table->capabilities = &capabilitiesEntry;
-  table->build = &buildEntry;
-  table->update = &updateEntry;
-  table->query = &queryEntry;
-  table->memory = &memoryEntry;
-  table->release = &releaseEntry;
-  return table;
+  table.abi_version = COLLIDO_PLUGIN_ABI_VERSION;
+  table.struct_size = sizeof(CollidoPluginTable);
+  table.plugin_name = info.name.c_str();
+  table.plugin_version = info.version.c_str();
+  table.engine_name = info.engine_name.c_str();
+  table.engine_version = info.engine_version.c_str();
+  table.variant_count = static_cast<std::uint32_t>(variants.size());
+  table.variants = variants.data();
+  table.create = create;
+  table.destroy = &destroyEntry;
+  table.capabilities = &capabilitiesEntry;
+  table.build = &buildEntry;
+  table.update = &updateEntry;
+  table.query = &queryEntry;
+  table.memory = &memoryEntry;
+  table.release = &releaseEntry;
 }
 
 }  // namespace collido::detail

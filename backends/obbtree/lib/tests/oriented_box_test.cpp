@@ -1,8 +1,8 @@
 #include <random>
 #include <vector>
 
-#include <Eigen/Geometry>
 #include <gtest/gtest.h>
+#include <Eigen/Geometry>
 
 #include <collido/obbtree/oriented_box.h>
 
@@ -28,8 +28,10 @@ Soup boxMesh(const Eigen::Vector3d& half, const Eigen::Matrix3d& rotation,
   const int faces[12][3] = {{0, 2, 1}, {1, 2, 3}, {4, 5, 6}, {5, 7, 6}, {0, 1, 4}, {1, 5, 4},
                             {2, 6, 3}, {3, 6, 7}, {0, 4, 2}, {2, 4, 6}, {1, 3, 5}, {3, 7, 5}};
   s.triangles.resize(3, 12);
-  for (int f = 0; f < 12; ++f) s.triangles.col(f) << faces[f][0], faces[f][1], faces[f][2];
-  for (int f = 0; f < 12; ++f) s.order.push_back(f);
+  for (int f = 0; f < 12; ++f)
+    s.triangles.col(f) << faces[f][0], faces[f][1], faces[f][2];
+  for (int f = 0; f < 12; ++f)
+    s.order.push_back(f);
   return s;
 }
 
@@ -70,7 +72,8 @@ TEST(OrientedBoxFit, ContainsVerticesFarFromTheOrigin) {
   Soup s = randomSoup(rng, 30, 1.0);
   s.vertices.colwise() += Eigen::Vector3d(1e8, -3e7, 5e6);
   const OrientedBox box = fit(s);
-  for (int v = 0; v < s.vertices.cols(); ++v) EXPECT_TRUE(boxContains(box, s.vertices.col(v)));
+  for (int v = 0; v < s.vertices.cols(); ++v)
+    EXPECT_TRUE(boxContains(box, s.vertices.col(v)));
 }
 
 TEST(OrientedBoxFit, AxesAreOrthonormalAndRightHanded) {
@@ -117,7 +120,7 @@ TEST(OrientedBoxFit, DegenerateSetsStillGetAContainingBox) {
   s.vertices.resize(3, 3);
   s.vertices << 1, 1, 1,  //
       2, 2, 2,            //
-      3, 3, 3;  // three copies of one point
+      3, 3, 3;            // three copies of one point
   s.triangles.resize(3, 1);
   s.triangles.col(0) << 0, 1, 2;
   s.order = {0};
@@ -136,7 +139,8 @@ TEST(OrientedBoxRefit, KeepsAxesAndContainsMovedVertices) {
   Eigen::Matrix3Xi ordered = s.triangles;
   refitBoxExtents(box, s.vertices, ordered);
   EXPECT_EQ(box.axes, axes);
-  for (int v = 0; v < s.vertices.cols(); ++v) EXPECT_TRUE(boxContains(box, s.vertices.col(v)));
+  for (int v = 0; v < s.vertices.cols(); ++v)
+    EXPECT_TRUE(boxContains(box, s.vertices.col(v)));
 }
 
 }  // namespace

@@ -1,0 +1,150 @@
+// Benchmark bodies written once, registered at run time per backend x scene x query.
+#include "scene_benchmarks.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <memory>
+#include <vector>
+
+#include <benchmark/benchmark.h>
+
+#include <collido/host/backend_instance.h>
+#include <collido/host/static_backends.h>
+#include <collido/scene/scene.h>
+
+namespace collido::bench {
+namespace {
+
+struct Variant {
+  std::shared_ptr<PluginLibrary> library;
+  std::string name;
+};
+
+std::vector<Variant> staticVariants() {
+  std::vector<Variant> out;
+  for (const StaticBackendTable& entry : staticBackendTables()) {
+    Result<std::shared_ptr<PluginLibrary>> library =
+        PluginLibrary::fromTable(entry.entry(), entry.name + " (static)");
+    if (!library.ok()) continue;
+    for (const VariantInfo& v : library.value()->variants()) out.push_back({library.value(), v.name});
+  }
+  return out;
+}
+
+std::unique_ptr<BackendInstance> createOrSkip(const Variant& variant, benchmark::State& state) {
+  Result<std::unique_ptr<BackendInstance>> instance =
+      BackendInstance::create(variant.library, variant.name);
+  if (!instance.ok()) {
+    state.SkipWithError(instance.status().message().c_str());
+    return nullptr;
+  }
+  return std::move(instance).value();
+}
+
+void buildBenchmark(benchmark::State& state, const Variant& variant,
+                    const std::shared_ptr<const Scene>& scene, std::size_t object) {
+  std::unique_ptr<BackendInstance> backend = createOrSkip(variant, state);
+  if (!backend) return;
+  const BuildNeeds needs = scene->needsOf(object);
+  const MeshView mesh = scene->objects[object].mesh->view();
+  std::uint64_t bytes = 0;
+  for (auto _ : state) {
+    Result<ModelHandle> model = backend->build(mesh, needs);
+    if (!model.ok()) {
+      state.SkipWithError(model.status().message().c_str());
+      return;
+    }
+    state.PauseTiming();
+    Result<std::uint64_t> memory = backend->memory(model.value());
+    bytes = memory.ok() ? memory.value() : 0;
+    (void)backend->release(model.value());
+    state.ResumeTiming();
+  }
+  const double triangles = static_cast<double>(scene->objects[object].mesh->triangleCount());
+  state.counters["triangles"] = triangles;
+  state.counters["bytes_per_triangle"] = static_cast<double>(bytes) / triangles;
+}
+
+void queryBenchmark(benchmark::State& state, const Variant& variant,
+                    const std::shared_ptr<const Scene>& scene, std::size_t query_index) {
+  std::unique_ptr<BackendInstance> backend = createOrSkip(variant, state);
+  if (!backend) return;
+  const SceneQuery& query = scene->queries[query_index];
+  if (!backend->capabilities().queries.contains(query.request.kind)) {
+    state.SkipWithError("the backend does not answer this kind of query");
+    return;
+  }
+  ModelHandle models[2] = {0, 0};
+  const std::size_t objects[2] = {query.a, query.b};
+  for (int k = 0; k < 2; ++k) {
+    BuildNeeds needs = scene->needsOf(objects[k]);
+    needs.queries = QueryKindSet(needs.queries.bits() & backend->capabilities().queries.bits());
+    Result<ModelHandle> model = backend->build(scene->objects[objects[k]].mesh->view(), needs);
+    if (!model.ok()) {
+      state.SkipWithError(model.status().message().c_str());
+      return;
+    }
+    models[k] = model.value();
+  }
+  const SceneObject& a = scene->objects[query.a];
+  const SceneObject& b = scene->objects[query.b];
+  QueryResult result;
+  std::size_t frame = 0;
+  double bv_tests = 0.0;
+  double primitive_tests = 0.0;
+  double pairs = 0.0;
+  for (auto _ : state) {
+    const Status status = backend->query(models[0], a.poseAt(frame), models[1], b.poseAt(frame),
+                                         query.request, result);
+    if (!status.ok()) {
+      state.SkipWithError(status.message().c_str());
+      return;
+    }
+    bv_tests += static_cast<double>(result.counters.bv_tests);
+    primitive_tests += static_cast<double>(result.counters.primitive_tests);
+    pairs += static_cast<double>(result.pairs.size());
+    frame = (frame + 1) % scene->frames;
+  }
+  state.counters["box_tests"] = benchmark::Counter(bv_tests, benchmark::Counter::kAvgIterations);
+  state.counters["triangle_tests"] =
+      benchmark::Counter(primitive_tests, benchmark::Counter::kAvgIterations);
+  state.counters["pairs"] = benchmark::Counter(pairs, benchmark::Counter::kAvgIterations);
+  state.counters["frames"] = static_cast<double>(scene->frames);
+}
+
+}  // namespace
+
+int registerSceneBenchmarks(const std::string& scenes_directory) {
+  std::vector<std::string> files;
+  std::error_code ec;
+  for (const auto& entry : std::filesystem::directory_iterator(scenes_directory, ec)) {
+    if (entry.path().extension() == ".json") files.push_back(entry.path().string());
+  }
+  std::sort(files.begin(), files.end());
+  int registered = 0;
+  const std::vector<Variant> variants = staticVariants();
+  for (const std::string& file : files) {
+    Result<Scene> loaded = loadScene(file);
+    if (!loaded.ok()) continue;
+    const auto scene = std::make_shared<const Scene>(std::move(loaded).value());
+    for (const Variant& variant : variants) {
+      for (std::size_t object : scene->queriedObjects()) {
+        const std::string name =
+            "build/" + variant.name + "/" + scene->name + "/" + scene->objects[object].name;
+        benchmark::RegisterBenchmark(name.c_str(), buildBenchmark, variant, scene, object)
+            ->Unit(benchmark::kMicrosecond);
+        ++registered;
+      }
+      for (std::size_t q = 0; q < scene->queries.size(); ++q) {
+        const std::string name =
+            "query/" + variant.name + "/" + scene->name + "/" + scene->queries[q].name;
+        benchmark::RegisterBenchmark(name.c_str(), queryBenchmark, variant, scene, q)
+            ->Unit(benchmark::kMicrosecond);
+        ++registered;
+      }
+    }
+  }
+  return registered;
+}
+
+}  // namespace collido::bench
