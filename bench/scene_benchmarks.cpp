@@ -26,7 +26,8 @@ std::vector<Variant> staticVariants() {
     Result<std::shared_ptr<PluginLibrary>> library =
         PluginLibrary::fromTable(entry.entry(), entry.name + " (static)");
     if (!library.ok()) continue;
-    for (const VariantInfo& v : library.value()->variants()) out.push_back({library.value(), v.name});
+    for (const VariantInfo& v : library.value()->variants())
+      out.push_back({library.value(), v.name});
   }
   return out;
 }

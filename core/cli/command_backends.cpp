@@ -43,7 +43,8 @@ int listBackends(const PluginOptions& options) {
       if (!caps.notes.empty()) std::cout << "    notes: " << caps.notes << "\n";
     }
   }
-  for (const std::string& problem : found.problems) std::cout << "problem: " << problem << "\n";
+  for (const std::string& problem : found.problems)
+    std::cout << "problem: " << problem << "\n";
   return found.plugins.empty() ? 1 : 0;
 }
 

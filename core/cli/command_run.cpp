@@ -42,11 +42,13 @@ int run(const RunArguments& args, const PluginOptions& plugin_options) {
     scenes.push_back(std::move(scene).value());
   }
   const PluginDiscovery found = discoverPlugins(plugin_options.paths, !plugin_options.no_defaults);
-  for (const std::string& problem : found.problems) std::cerr << "warning: " << problem << "\n";
+  for (const std::string& problem : found.problems)
+    std::cerr << "warning: " << problem << "\n";
   std::vector<std::string> names = args.backends;
   if (names.empty()) {
     for (const auto& plugin : found.plugins) {
-      for (const VariantInfo& v : plugin->variants()) names.push_back(v.name);
+      for (const VariantInfo& v : plugin->variants())
+        names.push_back(v.name);
     }
   }
   Result<std::vector<BackendSpec>> specs = resolveBackends(names, found.plugins);

@@ -45,8 +45,7 @@ class ObbTreeBackend final : public Backend {
         std::make_unique<ObbTreeModel>(ObbTree::build(mesh.vertices, mesh.triangles, options_)));
   }
 
-  Status update(BackendModel& model,
-                const Eigen::Ref<const Eigen::Matrix3Xd>& positions) override {
+  Status update(BackendModel& model, const Eigen::Ref<const Eigen::Matrix3Xd>& positions) override {
     static_cast<ObbTreeModel&>(model).tree().refit(positions);
     return {};
   }

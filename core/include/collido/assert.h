@@ -17,9 +17,9 @@ namespace detail {
 }  // namespace collido
 
 /// Checks a programming invariant in every build type; failures go to the assert handler.
-#define COLLIDO_ASSERT(condition, message)                                     \
-  do {                                                                         \
-    if (!(condition)) {                                                        \
+#define COLLIDO_ASSERT(condition, message)                                        \
+  do {                                                                            \
+    if (!(condition)) {                                                           \
       ::collido::detail::assertFailed(#condition, (message), __FILE__, __LINE__); \
-    }                                                                          \
+    }                                                                             \
   } while (false)

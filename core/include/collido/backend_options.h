@@ -20,8 +20,8 @@ class BackendOptions {
 
   /// The integer under `key`, or `fallback` when absent; an error when unparseable or outside
   /// [min_value, max_value].
-  Result<std::int64_t> getInt(const std::string& key, std::int64_t fallback,
-                              std::int64_t min_value, std::int64_t max_value);
+  Result<std::int64_t> getInt(const std::string& key, std::int64_t fallback, std::int64_t min_value,
+                              std::int64_t max_value);
   /// The finite number under `key`, or `fallback`; an error outside [min_value, max_value].
   Result<double> getDouble(const std::string& key, double fallback, double min_value,
                            double max_value);

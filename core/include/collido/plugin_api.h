@@ -51,14 +51,12 @@ typedef enum CollidoQueryKind {
 } CollidoQueryKind;
 
 /** Bit flags naming the shape kinds a backend can build. */
-typedef enum CollidoShapeKind {
-  COLLIDO_SHAPE_TRIANGLE_MESH = 1u << 0
-} CollidoShapeKind;
+typedef enum CollidoShapeKind { COLLIDO_SHAPE_TRIANGLE_MESH = 1u << 0 } CollidoShapeKind;
 
 /** Bit flags for what a backend can do beyond answering queries. */
 typedef enum CollidoFeature {
-  COLLIDO_FEATURE_UPDATE = 1u << 0,                 /**< update() accepts new vertex positions */
-  COLLIDO_FEATURE_COUNTS_BV_TESTS = 1u << 1,        /**< results carry bounding-volume test counts */
+  COLLIDO_FEATURE_UPDATE = 1u << 0,                /**< update() accepts new vertex positions */
+  COLLIDO_FEATURE_COUNTS_BV_TESTS = 1u << 1,       /**< results carry bounding-volume test counts */
   COLLIDO_FEATURE_COUNTS_PRIMITIVE_TESTS = 1u << 2 /**< results carry primitive test counts */
 } CollidoFeature;
 
@@ -96,7 +94,7 @@ typedef struct CollidoCapabilities {
 
 /** A triangle mesh in its model frame. */
 typedef struct CollidoTriangleMeshView {
-  const double* positions;  /**< 3 * vertex_count doubles, x y z per vertex */
+  const double* positions; /**< 3 * vertex_count doubles, x y z per vertex */
   uint32_t vertex_count;
   uint32_t triangle_count;
   const int32_t* triangles; /**< 3 * triangle_count vertex indices, counter-clockwise = outward */
@@ -123,9 +121,9 @@ typedef struct CollidoPose {
 
 /** The question asked of one pair of models. */
 typedef struct CollidoQueryRequest {
-  uint32_t kind;      /**< exactly one CollidoQueryKind value */
-  uint32_t reserved;  /**< zero */
-  uint64_t max_pairs; /**< ALL_PAIRS: stop after this many pairs; 0 = no limit */
+  uint32_t kind;         /**< exactly one CollidoQueryKind value */
+  uint32_t reserved;     /**< zero */
+  uint64_t max_pairs;    /**< ALL_PAIRS: stop after this many pairs; 0 = no limit */
   uint64_t max_contacts; /**< CONTACTS: stop after this many contacts; 0 = no limit */
 } CollidoQueryRequest;
 

@@ -39,7 +39,7 @@ const CollidoPluginTable* pluginTable() {
 /// Exports a plugin: `describe` is a function returning `const collido::PluginInfo&`. Defines
 /// `collido_plugin_table_<id>()`, which static builds (tests) call by name; the shared-library
 /// build adds the COLLIDO_PLUGIN_ENTRY_SYMBOL that forwards to it (cmake/CollidoBackend.cmake).
-#define COLLIDO_DEFINE_PLUGIN(id, describe)                                  \
-  extern "C" const CollidoPluginTable* collido_plugin_table_##id(void) {     \
-    return ::collido::detail::pluginTable<&describe>();                      \
+#define COLLIDO_DEFINE_PLUGIN(id, describe)                              \
+  extern "C" const CollidoPluginTable* collido_plugin_table_##id(void) { \
+    return ::collido::detail::pluginTable<&describe>(); /* NOLINT */     \
   }

@@ -61,7 +61,7 @@ struct Contact {
   Eigen::Vector3d position = Eigen::Vector3d::Zero();  ///< a point of the contact region, world
   Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();   ///< unit, world; points from A towards B:
                                                        ///< moving B along it reduces the overlap
-  double depth = 0.0;            ///< penetration depth along `normal`, >= 0
+  double depth = 0.0;                                  ///< penetration depth along `normal`, >= 0
   std::int32_t triangle_a = -1;  ///< triangle of A, or -1 when the engine does not say
   std::int32_t triangle_b = -1;  ///< triangle of B, or -1 when the engine does not say
 };
@@ -75,16 +75,16 @@ struct QueryRequest {
 
 /// Work a backend did for one query; each figure is meaningful only when its flag is set.
 struct WorkCounters {
-  std::uint64_t bv_tests = 0;         ///< bounding-volume overlap tests
-  std::uint64_t primitive_tests = 0;  ///< triangle-triangle tests
-  bool counts_bv_tests = false;       ///< bv_tests was counted
+  std::uint64_t bv_tests = 0;           ///< bounding-volume overlap tests
+  std::uint64_t primitive_tests = 0;    ///< triangle-triangle tests
+  bool counts_bv_tests = false;         ///< bv_tests was counted
   bool counts_primitive_tests = false;  ///< primitive_tests was counted
 };
 
 /// The answer to one query. Reuse one object across queries: its vectors keep their capacity.
 struct QueryResult {
-  bool intersecting = false;  ///< the shapes share at least one point
-  bool truncated = false;     ///< a limit in the request stopped the query early
+  bool intersecting = false;        ///< the shapes share at least one point
+  bool truncated = false;           ///< a limit in the request stopped the query early
   std::vector<TrianglePair> pairs;  ///< kAllPairs (and, where known, kBoolean's witness)
   std::vector<Contact> contacts;    ///< kContacts
   WorkCounters counters;

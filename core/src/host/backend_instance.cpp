@@ -20,7 +20,8 @@ Status fromCode(std::int32_t code, const CollidoMessage& message, const std::str
 CollidoPose toCollidoPose(const Pose& pose) {
   CollidoPose out{};
   for (int r = 0; r < 3; ++r) {
-    for (int c = 0; c < 3; ++c) out.rotation[3 * r + c] = pose.linear()(r, c);
+    for (int c = 0; c < 3; ++c)
+      out.rotation[3 * r + c] = pose.linear()(r, c);
     out.translation[r] = pose.translation()[r];
   }
   return out;
@@ -29,14 +30,16 @@ CollidoPose toCollidoPose(const Pose& pose) {
 }  // namespace
 
 Result<std::unique_ptr<BackendInstance>> BackendInstance::create(
-    std::shared_ptr<PluginLibrary> library, const std::string& variant,
+    const std::shared_ptr<PluginLibrary>& library, const std::string& variant,
     const std::map<std::string, std::string>& options) {
   if (!library->hasVariant(variant)) {
     return Status(StatusCode::kInvalidArgument,
                   "plugin " + library->path() + " has no variant '" + variant + "'");
   }
   std::vector<CollidoOption> c_options;
-  for (const auto& [key, value] : options) c_options.push_back({key.c_str(), value.c_str()});
+  c_options.reserve(options.size());
+  for (const auto& [key, value] : options)
+    c_options.push_back({key.c_str(), value.c_str()});
   CollidoMessage message{};
   CollidoInstance* raw = nullptr;
   const std::int32_t code =
@@ -98,9 +101,8 @@ Status BackendInstance::update(ModelHandle model,
                   message, variant_);
 }
 
-Status BackendInstance::query(ModelHandle a, const Pose& pose_a, ModelHandle b,
-                              const Pose& pose_b, const QueryRequest& request,
-                              QueryResult& result) {
+Status BackendInstance::query(ModelHandle a, const Pose& pose_a, ModelHandle b, const Pose& pose_b,
+                              const QueryRequest& request, QueryResult& result) {
   result.clear();
   const CollidoPose c_pose_a = toCollidoPose(pose_a);
   const CollidoPose c_pose_b = toCollidoPose(pose_b);
@@ -110,8 +112,8 @@ Status BackendInstance::query(ModelHandle a, const Pose& pose_a, ModelHandle b,
   c_request.max_contacts = request.max_contacts;
   CollidoQueryResult out{};
   CollidoMessage message{};
-  if (Status s = fromCode(library_->table().query(instance_, a, &c_pose_a, b, &c_pose_b,
-                                                  &c_request, &out, &message),
+  if (Status s = fromCode(library_->table().query(instance_, a, &c_pose_a, b, &c_pose_b, &c_request,
+                                                  &out, &message),
                           message, variant_);
       !s.ok()) {
     return s;
@@ -147,8 +149,8 @@ Status BackendInstance::query(ModelHandle a, const Pose& pose_a, ModelHandle b,
 Result<std::uint64_t> BackendInstance::memory(ModelHandle model) {
   std::uint64_t bytes = 0;
   CollidoMessage message{};
-  if (Status s = fromCode(library_->table().memory(instance_, model, &bytes, &message), message,
-                          variant_);
+  if (Status s =
+          fromCode(library_->table().memory(instance_, model, &bytes, &message), message, variant_);
       !s.ok()) {
     return s;
   }

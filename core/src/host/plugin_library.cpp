@@ -3,8 +3,8 @@
 #include <dlfcn.h>
 
 #include <algorithm>
-#include <cstring>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <set>
 #include <sstream>
@@ -155,7 +155,8 @@ PluginDiscovery discoverPlugins(const std::vector<std::string>& paths, bool use_
       }
     }
     if (!fresh) return;
-    for (const VariantInfo& v : plugin.value()->variants()) variants_seen.insert(v.name);
+    for (const VariantInfo& v : plugin.value()->variants())
+      variants_seen.insert(v.name);
     found.plugins.push_back(std::move(plugin).value());
   };
   const auto scan = [&](const std::string& path, bool explicit_path) {
@@ -168,16 +169,19 @@ PluginDiscovery discoverPlugins(const std::vector<std::string>& paths, bool use_
         }
       }
       std::sort(files.begin(), files.end());
-      for (const std::string& file : files) consider(file);
+      for (const std::string& file : files)
+        consider(file);
     } else if (fs::exists(path, ec)) {
       consider(path);
     } else if (explicit_path) {
       found.problems.push_back("plugin " + path + ": file not found");
     }
   };
-  for (const std::string& path : paths) scan(path, true);
+  for (const std::string& path : paths)
+    scan(path, true);
   if (use_defaults) {
-    for (const std::string& dir : defaultPluginDirectories()) scan(dir, false);
+    for (const std::string& dir : defaultPluginDirectories())
+      scan(dir, false);
   }
   return found;
 }

@@ -12,7 +12,9 @@ namespace {
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 
-Kernel::Point_3 toPoint(const Eigen::Vector3d& p) { return {p.x(), p.y(), p.z()}; }
+Kernel::Point_3 toPoint(const Eigen::Vector3d& p) {
+  return {p.x(), p.y(), p.z()};
+}
 
 }  // namespace
 
@@ -46,10 +48,12 @@ void inspectMesh(const TriangleMesh& mesh, MeshReport& report) {
 
   std::vector<bool> used(mesh.vertexCount(), false);
   for (Eigen::Index t = 0; t < mesh.triangles.cols(); ++t) {
-    for (int k = 0; k < 3; ++k) used[static_cast<std::size_t>(mesh.triangles(k, t))] = true;
+    for (int k = 0; k < 3; ++k)
+      used[static_cast<std::size_t>(mesh.triangles(k, t))] = true;
   }
   report.unreferenced_vertices = 0;
-  for (bool u : used) report.unreferenced_vertices += u ? 0 : 1;
+  for (bool u : used)
+    report.unreferenced_vertices += u ? 0 : 1;
 }
 
 std::string MeshReport::summary() const {

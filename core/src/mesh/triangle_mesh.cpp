@@ -13,9 +13,9 @@ Status validateMesh(const TriangleMesh& mesh, const std::string& source) {
     for (int k = 0; k < 3; ++k) {
       const double value = mesh.vertices(k, v);
       if (!std::isfinite(value)) {
-        return {StatusCode::kInvalidArgument,
-                source + ": vertex " + std::to_string(v) + " has a non-finite " + kAxis[k] +
-                    " coordinate (" + std::to_string(value) + ")"};
+        return {StatusCode::kInvalidArgument, source + ": vertex " + std::to_string(v) +
+                                                  " has a non-finite " + kAxis[k] +
+                                                  " coordinate (" + std::to_string(value) + ")"};
       }
     }
   }

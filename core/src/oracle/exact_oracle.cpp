@@ -91,8 +91,9 @@ Element classify(const Point& a, const Point& b, const Point& c) {
     e.p[2] = c;
   } else {
     Point sorted[3] = {a, b, c};
-    std::sort(std::begin(sorted), std::end(sorted),
-              [](const Point& x, const Point& y) { return CGAL::compare_xyz(x, y) == CGAL::SMALLER; });
+    std::sort(std::begin(sorted), std::end(sorted), [](const Point& x, const Point& y) {
+      return CGAL::compare_xyz(x, y) == CGAL::SMALLER;
+    });
     if (sorted[0] == sorted[2]) {
       e.kind = kPointElement;
       e.p[0] = sorted[0];
@@ -121,8 +122,12 @@ PosedMesh poseMesh(const TriangleMesh& mesh, const Pose& pose) {
   return out;
 }
 
-EK::Triangle_3 triangleOf(const Element& e) { return {e.p[0], e.p[1], e.p[2]}; }
-EK::Segment_3 segmentOf(const Element& e) { return {e.p[0], e.p[1]}; }
+EK::Triangle_3 triangleOf(const Element& e) {
+  return {e.p[0], e.p[1], e.p[2]};
+}
+EK::Segment_3 segmentOf(const Element& e) {
+  return {e.p[0], e.p[1]};
+}
 
 bool triTri(const Element& x, const Element& y) {
   return CGAL::do_intersect(triangleOf(x), triangleOf(y));
@@ -130,15 +135,27 @@ bool triTri(const Element& x, const Element& y) {
 bool triSeg(const Element& x, const Element& y) {
   return CGAL::do_intersect(triangleOf(x), segmentOf(y));
 }
-bool triPoint(const Element& x, const Element& y) { return triangleOf(x).has_on(y.p[0]); }
-bool segTri(const Element& x, const Element& y) { return triSeg(y, x); }
+bool triPoint(const Element& x, const Element& y) {
+  return triangleOf(x).has_on(y.p[0]);
+}
+bool segTri(const Element& x, const Element& y) {
+  return triSeg(y, x);
+}
 bool segSeg(const Element& x, const Element& y) {
   return CGAL::do_intersect(segmentOf(x), segmentOf(y));
 }
-bool segPoint(const Element& x, const Element& y) { return segmentOf(x).has_on(y.p[0]); }
-bool pointTri(const Element& x, const Element& y) { return triPoint(y, x); }
-bool pointSeg(const Element& x, const Element& y) { return segPoint(y, x); }
-bool pointPoint(const Element& x, const Element& y) { return x.p[0] == y.p[0]; }
+bool segPoint(const Element& x, const Element& y) {
+  return segmentOf(x).has_on(y.p[0]);
+}
+bool pointTri(const Element& x, const Element& y) {
+  return triPoint(y, x);
+}
+bool pointSeg(const Element& x, const Element& y) {
+  return segPoint(y, x);
+}
+bool pointPoint(const Element& x, const Element& y) {
+  return x.p[0] == y.p[0];
+}
 
 using ExactTest = bool (*)(const Element&, const Element&);
 constexpr ExactTest kExactTests[3][3] = {
@@ -180,13 +197,15 @@ class Grid {
       if (static_cast<double>(dims_[0]) * dims_[1] * dims_[2] <= max_cells) break;
       cell *= 1.5;
     }
-    for (int k = 0; k < 3; ++k) inv_cell_[k] = dims_[k] / std::max(size[k], 1e-300);
+    for (int k = 0; k < 3; ++k)
+      inv_cell_[k] = dims_[k] / std::max(size[k], 1e-300);
 
     // Counting sort of A's elements into cells (CSR layout).
     const std::size_t cells = static_cast<std::size_t>(dims_[0]) * dims_[1] * dims_[2];
     start_.assign(cells + 1, 0);
     forEachCellOfA(a, [&](std::size_t cell_index, std::size_t) { ++start_[cell_index + 1]; });
-    for (std::size_t c = 0; c < cells; ++c) start_[c + 1] += start_[c];
+    for (std::size_t c = 0; c < cells; ++c)
+      start_[c + 1] += start_[c];
     items_.resize(start_[cells]);
     std::vector<std::size_t> fill(start_.begin(), start_.end() - 1);
     forEachCellOfA(a, [&](std::size_t cell_index, std::size_t element) {
@@ -222,7 +241,8 @@ class Grid {
       if (!cellRange(a.elements[e].box, lo, hi)) continue;
       for (int z = lo[2]; z <= hi[2]; ++z) {
         for (int y = lo[1]; y <= hi[1]; ++y) {
-          for (int x = lo[0]; x <= hi[0]; ++x) add(index(x, y, z), e);
+          for (int x = lo[0]; x <= hi[0]; ++x)
+            add(index(x, y, z), e);
         }
       }
     }
@@ -275,8 +295,8 @@ OracleAnswer exactIntersectingPairs(const TriangleMesh& a, const Pose& pose_a,
       ++answer.candidate_pairs;
       ++answer.exact_tests;
       if (!elementsIntersect(ea, eb)) return true;
-      answer.pairs.push_back(TrianglePair{static_cast<std::int32_t>(i),
-                                          static_cast<std::int32_t>(j)});
+      answer.pairs.push_back(
+          TrianglePair{static_cast<std::int32_t>(i), static_cast<std::int32_t>(j)});
       return mode == OracleMode::kAllPairs;
     });
     if (!go_on) break;
@@ -291,7 +311,8 @@ bool exactPairIntersects(const TriangleMesh& a, const Pose& pose_a, const Triang
   const auto element = [](const TriangleMesh& mesh, const Pose& pose, std::int32_t t) {
     TriangleMesh single;
     single.vertices.resize(3, 3);
-    for (int k = 0; k < 3; ++k) single.vertices.col(k) = mesh.corner(static_cast<std::size_t>(t), k);
+    for (int k = 0; k < 3; ++k)
+      single.vertices.col(k) = mesh.corner(static_cast<std::size_t>(t), k);
     single.triangles = Eigen::Matrix3Xi(3, 1);
     single.triangles.col(0) << 0, 1, 2;
     return poseMesh(single, pose).elements.front();

@@ -25,15 +25,14 @@ Result<std::int64_t> BackendOptions::getInt(const std::string& key, std::int64_t
   errno = 0;
   char* end = nullptr;
   const long long parsed = std::strtoll(text.c_str(), &end, 10);
-  if (text.empty() || *end != '\0' || errno == ERANGE || parsed < min_value ||
-      parsed > max_value) {
+  if (text.empty() || *end != '\0' || errno == ERANGE || parsed < min_value || parsed > max_value) {
     return badValue(key, text, range);
   }
   return static_cast<std::int64_t>(parsed);
 }
 
-Result<double> BackendOptions::getDouble(const std::string& key, double fallback,
-                                         double min_value, double max_value) {
+Result<double> BackendOptions::getDouble(const std::string& key, double fallback, double min_value,
+                                         double max_value) {
   consumed_.insert(key);
   const auto it = values_.find(key);
   if (it == values_.end()) return fallback;
@@ -42,9 +41,9 @@ Result<double> BackendOptions::getDouble(const std::string& key, double fallback
   const double parsed = std::strtod(text.c_str(), &end);
   if (text.empty() || *end != '\0' || !std::isfinite(parsed) || parsed < min_value ||
       parsed > max_value) {
-    return badValue(key, text,
-                    "a number in [" + std::to_string(min_value) + ", " +
-                        std::to_string(max_value) + "]");
+    return badValue(
+        key, text,
+        "a number in [" + std::to_string(min_value) + ", " + std::to_string(max_value) + "]");
   }
   return parsed;
 }
@@ -66,7 +65,12 @@ Status BackendOptions::rejectUnknown(const std::string& backend_name) const {
     unknown += key;
   }
   if (unknown.empty()) return {};
-  return {StatusCode::kInvalidArgument, backend_name + ": unknown option(s): " + unknown};
+  // The keys some getter asked for are exactly the options this backend understands.
+  std::string known;
+  for (const std::string& key : consumed_) known += (known.empty() ? "" : ", ") + key;
+  return {StatusCode::kInvalidArgument,
+          backend_name + ": unknown option(s): " + unknown +
+              (known.empty() ? " (it takes no options)" : " (known: " + known + ")")};
 }
 
 }  // namespace collido

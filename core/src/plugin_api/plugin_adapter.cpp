@@ -17,8 +17,6 @@
 
 #include <collido/plugin_export.h>
 
-using collido::StatusCode;
-
 struct CollidoInstance {
   struct Slot {
     std::unique_ptr<collido::BackendModel> model;
@@ -106,7 +104,8 @@ Status toPose(const CollidoPose* in, const char* which, Pose& out) {
   if (in == nullptr) return {StatusCode::kInvalidArgument, std::string(which) + ": null pose"};
   Eigen::Matrix3d rotation;
   for (int r = 0; r < 3; ++r) {
-    for (int c = 0; c < 3; ++c) rotation(r, c) = in->rotation[3 * r + c];
+    for (int c = 0; c < 3; ++c)
+      rotation(r, c) = in->rotation[3 * r + c];
   }
   const Eigen::Vector3d translation(in->translation[0], in->translation[1], in->translation[2]);
   if (!rotation.allFinite() || !translation.allFinite()) {
@@ -115,8 +114,9 @@ Status toPose(const CollidoPose* in, const char* which, Pose& out) {
   const double drift = (rotation.transpose() * rotation - Eigen::Matrix3d::Identity()).norm();
   if (drift > 1e-6 || rotation.determinant() < 0.0) {
     return {StatusCode::kInvalidArgument,
-            std::string(which) + ": pose rotation is not a rotation (|R^T R - I| = " +
-                std::to_string(drift) + ")"};
+            std::string(which) + ": not a rotation (|R^T R - I| = " + std::to_string(drift) +
+                ", det = " + std::to_string(rotation.determinant()) +
+                "; a pose must be rigid: orthonormal, determinant +1)"};
   }
   out.linear() = rotation;
   out.translation() = translation;
@@ -133,9 +133,10 @@ std::int32_t capabilitiesEntry(CollidoInstance* instance, CollidoCapabilities* o
   *out = CollidoCapabilities{};
   out->shape_kinds = caps.shape_kinds;
   out->query_kinds = caps.queries.bits();
-  out->features = (caps.update ? std::uint32_t{COLLIDO_FEATURE_UPDATE} : 0u) |
-                  (caps.counts_bv_tests ? std::uint32_t{COLLIDO_FEATURE_COUNTS_BV_TESTS} : 0u) |
-                  (caps.counts_primitive_tests ? std::uint32_t{COLLIDO_FEATURE_COUNTS_PRIMITIVE_TESTS} : 0u);
+  out->features =
+      (caps.update ? std::uint32_t{COLLIDO_FEATURE_UPDATE} : 0u) |
+      (caps.counts_bv_tests ? std::uint32_t{COLLIDO_FEATURE_COUNTS_BV_TESTS} : 0u) |
+      (caps.counts_primitive_tests ? std::uint32_t{COLLIDO_FEATURE_COUNTS_PRIMITIVE_TESTS} : 0u);
   out->max_contacts = caps.max_contacts;
   out->notes = caps.notes.c_str();
   return COLLIDO_STATUS_OK;
@@ -159,9 +160,9 @@ Status checkMesh(const CollidoTriangleMeshView& mesh) {
   for (std::uint64_t i = 0; i < 3ull * mesh.triangle_count; ++i) {
     const std::int32_t v = mesh.triangles[i];
     if (v < 0 || static_cast<std::uint32_t>(v) >= mesh.vertex_count) {
-      return {StatusCode::kInvalidArgument,
-              "triangle " + std::to_string(i / 3) + " references vertex " + std::to_string(v) +
-                  " of " + std::to_string(mesh.vertex_count)};
+      return {StatusCode::kInvalidArgument, "triangle " + std::to_string(i / 3) +
+                                                " references vertex " + std::to_string(v) + " of " +
+                                                std::to_string(mesh.vertex_count)};
     }
   }
   return {};
@@ -196,9 +197,8 @@ std::int32_t buildEntry(CollidoInstance* instance, const CollidoShapeView* shape
     if (Status s = checkMesh(mesh); !s.ok()) {
       return fail(error, s.code(), label + ": build: " + s.message());
     }
-    const MeshView view{
-        Eigen::Map<const Eigen::Matrix3Xd>(mesh.positions, 3, mesh.vertex_count),
-        Eigen::Map<const Eigen::Matrix3Xi>(mesh.triangles, 3, mesh.triangle_count)};
+    const MeshView view{Eigen::Map<const Eigen::Matrix3Xd>(mesh.positions, 3, mesh.vertex_count),
+                        Eigen::Map<const Eigen::Matrix3Xi>(mesh.triangles, 3, mesh.triangle_count)};
     BuildNeeds build_needs{wanted, deforms};
     Result<std::unique_ptr<BackendModel>> built = instance->backend->build(view, build_needs);
     if (!built.ok()) return report(error, built.status());
@@ -234,8 +234,8 @@ std::int32_t updateEntry(CollidoInstance* instance, CollidoModelHandle model,
   return guarded(label, error, [&]() -> std::int32_t {
     CollidoInstance::Slot* slot = findSlot(instance, model);
     if (slot == nullptr) {
-      return fail(error, StatusCode::kInvalidHandle, label + ": update: " + handleText(model) +
-                                                        " is not a live model");
+      return fail(error, StatusCode::kInvalidHandle,
+                  label + ": update: " + handleText(model) + " is not a live model");
     }
     if (!slot->needs.deforms) {
       return fail(error, StatusCode::kInvalidArgument,
@@ -249,9 +249,9 @@ std::int32_t updateEntry(CollidoInstance* instance, CollidoModelHandle model,
     }
     for (std::uint64_t i = 0; i < 3ull * vertex_count; ++i) {
       if (!std::isfinite(positions[i])) {
-        return fail(error, StatusCode::kInvalidArgument,
-                    label + ": update: vertex " + std::to_string(i / 3) +
-                        " has a non-finite coordinate");
+        return fail(
+            error, StatusCode::kInvalidArgument,
+            label + ": update: vertex " + std::to_string(i / 3) + " has a non-finite coordinate");
       }
     }
     const Eigen::Map<const Eigen::Matrix3Xd> view(positions, 3, vertex_count);
@@ -302,8 +302,8 @@ std::int32_t queryEntry(CollidoInstance* instance, CollidoModelHandle a, const C
     const QueryRequest req{kind, request->max_pairs, request->max_contacts};
     QueryResult& result = instance->scratch;
     result.clear();
-    if (Status s = instance->backend->query(*slot_a->model, world_a, *slot_b->model, world_b, req,
-                                            result);
+    if (Status s =
+            instance->backend->query(*slot_a->model, world_a, *slot_b->model, world_b, req, result);
         !s.ok()) {
       return report(error, s);
     }
@@ -329,13 +329,15 @@ std::int32_t queryEntry(CollidoInstance* instance, CollidoModelHandle a, const C
     out->counters.primitive_tests = result.counters.primitive_tests;
     out->counters.counted =
         (result.counters.counts_bv_tests ? std::uint32_t{COLLIDO_FEATURE_COUNTS_BV_TESTS} : 0u) |
-        (result.counters.counts_primitive_tests ? std::uint32_t{COLLIDO_FEATURE_COUNTS_PRIMITIVE_TESTS} : 0u);
+        (result.counters.counts_primitive_tests
+             ? std::uint32_t{COLLIDO_FEATURE_COUNTS_PRIMITIVE_TESTS}
+             : 0u);
     return COLLIDO_STATUS_OK;
   });
 }
 
-std::int32_t memoryEntry(CollidoInstance* instance, CollidoModelHandle model,
-                         std::uint64_t* bytes, CollidoMessage* error) {
+std::int32_t memoryEntry(CollidoInstance* instance, CollidoModelHandle model, std::uint64_t* bytes,
+                         CollidoMessage* error) {
   if (instance == nullptr || bytes == nullptr) {
     return fail(error, StatusCode::kInvalidArgument, "memory: null argument");
   }
@@ -397,7 +399,12 @@ std::int32_t createInstance(const PluginInfo& info, const char* variant,
       parsed.set(options[i].key, options[i].value);
     }
     Result<std::unique_ptr<Backend>> backend = info.create(name, parsed);
-    if (!backend.ok()) return report(error, backend.status());
+    if (!backend.ok()) {
+      // Option getters do not know the backend's name; the message must say whose option it is.
+      const Status& s = backend.status();
+      if (s.message().rfind(name + ":", 0) == 0) return report(error, s);
+      return fail(error, s.code(), name + ": " + s.message());
+    }
     if (Status s = parsed.rejectUnknown(name); !s.ok()) return report(error, s);
     auto instance = std::make_unique<CollidoInstance>();
     instance->label = name;

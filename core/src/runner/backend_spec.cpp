@@ -11,7 +11,10 @@ std::string BackendSpec::label() const {
   std::string text = variant + "[";
   bool first = true;
   for (const auto& [key, value] : options) {
-    text += (first ? "" : ";") + key + "=" + value;
+    if (!first) text += ";";
+    text += key;
+    text += "=";
+    text += value;
     first = false;
   }
   return text + "]";
@@ -33,7 +36,8 @@ Result<std::pair<std::string, std::map<std::string, std::string>>> parseBackendT
   std::string item;
   while (std::getline(list, item, ';')) {
     const std::size_t equals = item.find('=');
-    if (equals == std::string::npos || equals == 0) return bad("option '" + item + "' is not key=value");
+    if (equals == std::string::npos || equals == 0)
+      return bad("option '" + item + "' is not key=value");
     if (!out.second.emplace(item.substr(0, equals), item.substr(equals + 1)).second) {
       return bad("option '" + item.substr(0, equals) + "' given twice");
     }
@@ -48,18 +52,20 @@ Result<std::vector<BackendSpec>> resolveBackends(
   for (const std::string& text : texts) {
     auto parsed = parseBackendText(text);
     if (!parsed.ok()) return parsed.status();
-    const auto& [variant, options] = parsed.value();
+    const std::string& variant = parsed.value().first;
+    const std::map<std::string, std::string>& options = parsed.value().second;
     const auto found = std::find_if(plugins.begin(), plugins.end(), [&](const auto& plugin) {
       return plugin->hasVariant(variant);
     });
     if (found == plugins.end()) {
       std::string known;
       for (const auto& plugin : plugins) {
-        for (const VariantInfo& v : plugin->variants()) known += (known.empty() ? "" : ", ") + v.name;
+        for (const VariantInfo& v : plugin->variants())
+          known += (known.empty() ? "" : ", ") + v.name;
       }
       return Status(StatusCode::kInvalidArgument,
-                    "no plugin offers backend '" + variant + "' (found: " +
-                        (known.empty() ? "none" : known) + ")");
+                    "no plugin offers backend '" + variant +
+                        "' (found: " + (known.empty() ? "none" : known) + ")");
     }
     specs.push_back(BackendSpec{*found, variant, options});
   }

@@ -10,19 +10,19 @@ std::string runReportJson(const RunReport& report) {
   for (const QueryMeasurement& m : report.measurements) {
     Json frames = Json::array();
     for (const FrameRecord& f : m.frames) {
-      frames.push_back({{"frame", f.frame},
-                        {"oracle_intersecting", f.oracle_intersecting},
-                        {"reported_intersecting", f.reported_intersecting},
-                        {"oracle_pairs", f.oracle_pairs},
-                        {"reported_pairs", f.reported_pairs},
-                        {"matched_pairs", f.matched_pairs},
-                        {"invalid_pairs", f.invalid_pairs},
-                        {"truncated", f.truncated},
-                        {"disagrees", f.disagrees(m.kind)},
-                        {"median_us", f.median_us},
-                        {"bv_tests", m.counts_bv_tests ? Json(f.bv_tests) : Json()},
-                        {"primitive_tests",
-                         m.counts_primitive_tests ? Json(f.primitive_tests) : Json()}});
+      frames.push_back(
+          {{"frame", f.frame},
+           {"oracle_intersecting", f.oracle_intersecting},
+           {"reported_intersecting", f.reported_intersecting},
+           {"oracle_pairs", f.oracle_pairs},
+           {"reported_pairs", f.reported_pairs},
+           {"matched_pairs", f.matched_pairs},
+           {"invalid_pairs", f.invalid_pairs},
+           {"truncated", f.truncated},
+           {"disagrees", f.disagrees(m.kind)},
+           {"median_us", f.median_us},
+           {"bv_tests", m.counts_bv_tests ? Json(f.bv_tests) : Json()},
+           {"primitive_tests", m.counts_primitive_tests ? Json(f.primitive_tests) : Json()}});
     }
     measurements.push_back({{"backend", m.backend},
                             {"scene", m.scene},
@@ -43,9 +43,8 @@ std::string runReportJson(const RunReport& report) {
                             {"heap_bytes", m.heap_bytes ? Json(*m.heap_bytes) : Json()},
                             {"frames", frames}});
   }
-  const Json document = {{"collidoscope_run", 1},
-                         {"measurements", measurements},
-                         {"problems", report.problems}};
+  const Json document = {
+      {"collidoscope_run", 1}, {"measurements", measurements}, {"problems", report.problems}};
   return document.dump(2);
 }
 

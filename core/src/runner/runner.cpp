@@ -35,11 +35,10 @@ class OracleAnswers {
   const OracleAnswer& get(const SceneQuery& query, std::size_t frame) {
     // Boolean queries need only a witness; a pair that any all-pairs query also names shares the
     // full answer, which contains the boolean one.
-    const bool needs_all = std::any_of(scene_.queries.begin(), scene_.queries.end(),
-                                       [&](const SceneQuery& q) {
-                                         return q.a == query.a && q.b == query.b &&
-                                                q.request.kind != QueryKind::kBoolean;
-                                       });
+    const bool needs_all =
+        std::any_of(scene_.queries.begin(), scene_.queries.end(), [&](const SceneQuery& q) {
+          return q.a == query.a && q.b == query.b && q.request.kind != QueryKind::kBoolean;
+        });
     const auto key = std::make_tuple(query.a, query.b, frame);
     auto found = answers_.find(key);
     if (found == answers_.end()) {
@@ -67,7 +66,8 @@ struct BuiltModel {
   std::string error;  // non-empty when the build failed
 };
 
-BuiltModel buildModel(BackendInstance& backend, const SceneObject& object, const BuildNeeds& needs) {
+BuiltModel buildModel(BackendInstance& backend, const SceneObject& object,
+                      const BuildNeeds& needs) {
   BuiltModel built;
   const std::optional<std::size_t> heap_before = heapBytesInUse();
   const Clock::time_point start = Clock::now();
@@ -223,8 +223,8 @@ void runSceneOnBackend(const Scene& scene, const BackendSpec& spec, OracleAnswer
       const Pose& pose_b = b.poseAt(frame);
       FrameRecord record;
       record.frame = frame;
-      if (Status s = backend.query(model_a.handle, pose_a, model_b.handle, pose_b, query.request,
-                                   result);
+      if (Status s =
+              backend.query(model_a.handle, pose_a, model_b.handle, pose_b, query.request, result);
           !s.ok()) {
         m.status = "failed: frame " + std::to_string(frame) + ": " + s.toString();
         break;
@@ -238,8 +238,8 @@ void runSceneOnBackend(const Scene& scene, const BackendSpec& spec, OracleAnswer
       std::vector<double> frame_times;
       for (int rep = 0; rep < options.repetitions; ++rep) {
         const Clock::time_point start = Clock::now();
-        const Status s = backend.query(model_a.handle, pose_a, model_b.handle, pose_b,
-                                       query.request, result);
+        const Status s =
+            backend.query(model_a.handle, pose_a, model_b.handle, pose_b, query.request, result);
         const Clock::time_point stop = Clock::now();
         if (!s.ok()) {
           m.status = "failed: frame " + std::to_string(frame) + ": " + s.toString();

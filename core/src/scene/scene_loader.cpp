@@ -9,9 +9,11 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <memory>
 #include <set>
 #include <sstream>
 #include <stdexcept>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -44,7 +46,9 @@ struct Node {
   std::string where() const { return pointer.empty() ? "/" : pointer; }
 };
 
-const char* typeName(const Json& v) { return v.type_name(); }
+const char* typeName(const Json& v) {
+  return v.type_name();
+}
 
 class Reader {
  public:
@@ -55,26 +59,31 @@ class Reader {
   }
 
   void expectObject(const Node& node, const std::set<std::string>& allowed) const {
-    if (!node.value.is_object()) fail(node, std::string("expected an object, got ") + typeName(node.value));
+    if (!node.value.is_object())
+      fail(node, std::string("expected an object, got ") + typeName(node.value));
     for (const auto& item : node.value.items()) {
       if (item.key() == "comment" || allowed.count(item.key()) != 0) continue;
       std::string list;
-      for (const std::string& key : allowed) list += (list.empty() ? "" : ", ") + key;
+      for (const std::string& key : allowed)
+        list += (list.empty() ? "" : ", ") + key;
       fail(node, "unknown key '" + item.key() + "' (allowed: " + list + ")");
     }
   }
 
   void expectArray(const Node& node) const {
-    if (!node.value.is_array()) fail(node, std::string("expected an array, got ") + typeName(node.value));
+    if (!node.value.is_array())
+      fail(node, std::string("expected an array, got ") + typeName(node.value));
   }
 
   std::string string(const Node& node) const {
-    if (!node.value.is_string()) fail(node, std::string("expected a string, got ") + typeName(node.value));
+    if (!node.value.is_string())
+      fail(node, std::string("expected a string, got ") + typeName(node.value));
     return node.value.get<std::string>();
   }
 
   double number(const Node& node) const {
-    if (!node.value.is_number()) fail(node, std::string("expected a number, got ") + typeName(node.value));
+    if (!node.value.is_number())
+      fail(node, std::string("expected a number, got ") + typeName(node.value));
     const double v = node.value.get<double>();
     if (!std::isfinite(v)) fail(node, "expected a finite number");
     return v;
@@ -96,7 +105,8 @@ class Reader {
                      (node.value.is_number() ? "a fractional number" : typeName(node.value)));
     }
     const auto v = node.value.get<std::int64_t>();
-    if (node.value.is_number_unsigned() && node.value.get<std::uint64_t>() > 9000000000000000000ull) {
+    if (node.value.is_number_unsigned() &&
+        node.value.get<std::uint64_t>() > 9000000000000000000ull) {
       fail(node, "integer out of range");
     }
     if (v < min_value || v > max_value) {
@@ -113,7 +123,8 @@ class Reader {
 
   Eigen::Vector3d vector3(const Node& node) const {
     expectArray(node);
-    if (node.value.size() != 3) fail(node, "expected 3 numbers, got " + std::to_string(node.value.size()));
+    if (node.value.size() != 3)
+      fail(node, "expected 3 numbers, got " + std::to_string(node.value.size()));
     return {number(node.at(0)), number(node.at(1)), number(node.at(2))};
   }
 
@@ -143,9 +154,8 @@ Eigen::Matrix3d readRotation(const Reader& r, const Node& node) {
     for (int row = 0; row < 3; ++row) {
       rotation.row(row) = r.vector3(m.at(static_cast<std::size_t>(row))).transpose();
     }
-    const double drift = (rotation.transpose() * rotation - Eigen::Matrix3d::Identity())
-                             .cwiseAbs()
-                             .maxCoeff();
+    const double drift =
+        (rotation.transpose() * rotation - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff();
     if (drift > kRotationTolerance || rotation.determinant() <= 0.0) {
       std::ostringstream text;
       text << "not a rotation: max |R^T R - I| = " << drift << ", det = " << rotation.determinant()
@@ -200,8 +210,8 @@ TorusParams readTorusParams(const Reader& r, const Node& n) {
 }
 
 Result<TriangleMesh> generateTorus(const Reader& r, const Node& n, std::string& text) {
-  r.expectObject(n, {"generator", "major_radius", "minor_radius", "major_segments",
-                     "minor_segments"});
+  r.expectObject(n,
+                 {"generator", "major_radius", "minor_radius", "major_segments", "minor_segments"});
   const TorusParams p = readTorusParams(r, n);
   text = "torus R=" + std::to_string(p.major_radius) + " r=" + std::to_string(p.minor_radius) +
          " " + std::to_string(p.major_segments) + "x" + std::to_string(p.minor_segments);
@@ -258,9 +268,11 @@ Result<TriangleMesh> generateGear(const Reader& r, const Node& n, std::string& t
 }
 
 const std::map<std::string, Generator>& generators() {
-  static const std::map<std::string, Generator> table = {
-      {"torus", &generateTorus},   {"chain", &generateChain}, {"sphere", &generateSphere},
-      {"grid_sheet", &generateGridSheet}, {"gear", &generateGear}};
+  static const std::map<std::string, Generator> table = {{"torus", &generateTorus},
+                                                         {"chain", &generateChain},
+                                                         {"sphere", &generateSphere},
+                                                         {"grid_sheet", &generateGridSheet},
+                                                         {"gear", &generateGear}};
   return table;
 }
 
@@ -303,7 +315,8 @@ class ShapeLoader {
     const auto found = generators().find(name);
     if (found == generators().end()) {
       std::string list;
-      for (const auto& [known, fn] : generators()) list += (list.empty() ? "" : ", ") + known;
+      for (const auto& [known, fn] : generators())
+        list += (list.empty() ? "" : ", ") + known;
       r.fail(node.at("generator"), "unknown generator '" + name + "' (known: " + list + ")");
     }
     std::string text;
@@ -332,6 +345,56 @@ QueryKind readQueryKind(const Reader& r, const Node& node) {
   r.fail(node, "unknown query kind '" + text + "' (known: boolean, all_pairs, contacts)");
 }
 
+// --- the document ----------------------------------------------------------------------------
+
+// nlohmann::json keeps the last of two equal keys in an object; a scene with "frames" twice must
+// not silently mean the second. The parser's callback sees every key; a stack of the open
+// containers (the key or index being read in each) gives the JSON pointer of a repeated key.
+Json::parser_callback_t duplicateKeyCheck(const std::string& label) {
+  struct Open {
+    bool array = false;
+    std::size_t index = 0;  // arrays: the element being read
+    std::string key;        // objects: the key being read
+    std::set<std::string> keys;
+  };
+  auto open = std::make_shared<std::vector<Open>>();
+  return [open, label](int /*depth*/, Json::parse_event_t event, Json& parsed) {
+    const auto escaped = [](const std::string& key) {  // RFC 6901: '~' -> "~0", '/' -> "~1"
+      std::string out;
+      for (char c : key) out += c == '~' ? "~0" : c == '/' ? "~1" : std::string(1, c);
+      return out;
+    };
+    switch (event) {
+      case Json::parse_event_t::object_start:
+      case Json::parse_event_t::array_start:
+        open->push_back(Open{event == Json::parse_event_t::array_start, 0, "", {}});
+        break;
+      case Json::parse_event_t::key: {
+        Open& object = open->back();
+        object.key = parsed.get<std::string>();
+        if (!object.keys.insert(object.key).second) {
+          std::string pointer;
+          for (const Open& o : *open) {
+            pointer += "/" + (o.array ? std::to_string(o.index) : escaped(o.key));
+          }
+          throw SceneError(label + ": " + pointer + ": duplicate key '" + object.key +
+                           "' (only one of them would count)");
+        }
+        break;
+      }
+      case Json::parse_event_t::object_end:
+      case Json::parse_event_t::array_end:
+        open->pop_back();
+        if (!open->empty() && open->back().array) ++open->back().index;
+        break;
+      case Json::parse_event_t::value:
+        if (!open->empty() && open->back().array) ++open->back().index;
+        break;
+    }
+    return true;
+  };
+}
+
 // --- the scene -------------------------------------------------------------------------------
 
 Scene readScene(const Reader& r, const Json& document, const std::string& base_directory) {
@@ -341,7 +404,8 @@ Scene readScene(const Reader& r, const Json& document, const std::string& base_d
   scene.name = root.has("name") ? r.string(root.at("name")) : "";
   scene.description = root.has("description") ? r.string(root.at("description")) : "";
   const bool frames_given = root.has("frames");
-  if (frames_given) scene.frames = static_cast<std::size_t>(r.integer(root.at("frames"), 1, 1000000));
+  if (frames_given)
+    scene.frames = static_cast<std::size_t>(r.integer(root.at("frames"), 1, 1000000));
 
   if (!root.has("objects")) r.fail(root, "missing 'objects'");
   const Node objects = root.at("objects");
@@ -384,7 +448,8 @@ Scene readScene(const Reader& r, const Json& document, const std::string& base_d
         r.fail(motion, "give exactly one of poses, random, jitter");
       }
       if (motion.has("poses")) {
-        if (node.has("pose")) r.fail(node.at("pose"), "'pose' and motion 'poses' exclude each other");
+        if (node.has("pose"))
+          r.fail(node.at("pose"), "'pose' and motion 'poses' exclude each other");
         const Node list = motion.at("poses");
         r.expectArray(list);
         if (list.value.size() != scene.frames) {
@@ -392,7 +457,8 @@ Scene readScene(const Reader& r, const Json& document, const std::string& base_d
                            std::to_string(scene.frames) + " frames");
         }
         object.poses.clear();
-        for (std::size_t f = 0; f < list.value.size(); ++f) object.poses.push_back(readPose(r, list.at(f)));
+        for (std::size_t f = 0; f < list.value.size(); ++f)
+          object.poses.push_back(readPose(r, list.at(f)));
       } else if (motion.has("random")) {
         const Node random = motion.at("random");
         r.expectObject(random, {"seed", "relative_to", "overlap"});
@@ -461,10 +527,10 @@ Scene readScene(const Reader& r, const Json& document, const std::string& base_d
         static_cast<std::uint64_t>(r.integer(node, "max_pairs", 0, 0, INT64_MAX));
     query.request.max_contacts =
         static_cast<std::uint64_t>(r.integer(node, "max_contacts", 0, 0, INT64_MAX));
-    query.name = node.has("name") ? r.string(node.at("name"))
-                                  : scene.objects[query.a].name + "-" +
-                                        scene.objects[query.b].name + " " +
-                                        queryKindName(query.request.kind);
+    query.name = node.has("name")
+                     ? r.string(node.at("name"))
+                     : scene.objects[query.a].name + "-" + scene.objects[query.b].name + " " +
+                           queryKindName(query.request.kind);
     if (!query_names.insert(query.name).second) {
       r.fail(node, "duplicate query name '" + query.name + "'");
     }
@@ -495,10 +561,12 @@ Result<Scene> parseScene(const std::string& text, const std::string& label,
                          const std::string& base_directory) {
   Json document;
   try {
-    document = Json::parse(text);
+    document = Json::parse(text, duplicateKeyCheck(label));
   } catch (const Json::parse_error& e) {
     return Status(StatusCode::kInvalidArgument,
                   label + ": not valid JSON (byte " + std::to_string(e.byte) + "): " + e.what());
+  } catch (const SceneError& e) {
+    return Status(StatusCode::kInvalidArgument, e.what());
   }
   try {
     const Reader reader(label);
@@ -516,8 +584,9 @@ Result<Scene> loadScene(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) {
     std::error_code ec;
-    return Status(StatusCode::kInvalidArgument,
-                  path + (std::filesystem::exists(path, ec) ? ": cannot be read" : ": file not found"));
+    return Status(
+        StatusCode::kInvalidArgument,
+        path + (std::filesystem::exists(path, ec) ? ": cannot be read" : ": file not found"));
   }
   std::stringstream buffer;
   buffer << in.rdbuf();

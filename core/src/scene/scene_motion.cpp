@@ -65,7 +65,8 @@ std::vector<Pose> randomOverlapPoses(const RandomOverlapMotion& spec,
   std::vector<Pose> poses;
   poses.reserve(frames);
   for (std::size_t f = 0; f < frames; ++f) {
-    const Pose& reference_pose = reference_poses.size() == 1 ? reference_poses[0] : reference_poses[f];
+    const Pose& reference_pose =
+        reference_poses.size() == 1 ? reference_poses[0] : reference_poses[f];
     const Eigen::Matrix3d rotation = sampler.rotation() * base.linear();
     const Eigen::Vector3d direction = sampler.direction();
     const double overlap = sampler.uniform(spec.overlap_low, spec.overlap_high);

@@ -21,7 +21,9 @@ struct PairTask {
   std::int32_t b;
 };
 
-double boxSize(const Node& node) { return node.box.half_extents.sum(); }
+double boxSize(const Node& node) {
+  return node.box.half_extents.sum();
+}
 
 }  // namespace
 

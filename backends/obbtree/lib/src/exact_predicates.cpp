@@ -10,7 +10,9 @@ namespace {
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 
-Kernel::Point_3 point3(const Eigen::Vector3d& p) { return {p.x(), p.y(), p.z()}; }
+Kernel::Point_3 point3(const Eigen::Vector3d& p) {
+  return {p.x(), p.y(), p.z()};
+}
 
 Kernel::Point_2 point2(const Eigen::Vector3d& p, int drop) {
   switch (drop) {

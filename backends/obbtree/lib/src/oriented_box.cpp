@@ -41,8 +41,8 @@ void setExtents(OrientedBox& box, const Eigen::Vector3d& reference,
 }  // namespace
 
 OrientedBox fitBox(const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
-                   const Eigen::Ref<const Eigen::Matrix3Xi>& triangles,
-                   const std::int32_t* order, std::int32_t count) {
+                   const Eigen::Ref<const Eigen::Matrix3Xi>& triangles, const std::int32_t* order,
+                   std::int32_t count) {
   BoxFitter fitter(static_cast<std::size_t>(vertices.cols()));
   return fitter.fit(vertices, triangles, order, count);
 }
@@ -94,8 +94,7 @@ OrientedBox BoxFitter::fit(const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
     box.axes.col(1) = solver.eigenvectors().col(1).normalized();
     box.axes.col(2) = box.axes.col(0).cross(box.axes.col(1)).normalized();
   }
-  setExtents(box, mean, vertices, count,
-             [&](std::int32_t i) { return triangles.col(order[i]); });
+  setExtents(box, mean, vertices, count, [&](std::int32_t i) { return triangles.col(order[i]); });
   // Order the axes by decreasing extent (the eigenvalue order is only a proxy for it), keeping
   // the frame right-handed, so that the longest axis is axis 0 for splitting.
   for (int pass = 0; pass < 2; ++pass) {

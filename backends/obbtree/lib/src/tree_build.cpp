@@ -27,11 +27,11 @@ struct Task {
 std::int32_t partition(std::int32_t* order, std::int32_t count, const Eigen::Vector3d& axis,
                        const Eigen::Matrix3Xd& centroids) {
   double mean = 0.0;
-  for (std::int32_t i = 0; i < count; ++i) mean += axis.dot(centroids.col(order[i]));
+  for (std::int32_t i = 0; i < count; ++i)
+    mean += axis.dot(centroids.col(order[i]));
   mean /= static_cast<double>(count);
-  std::int32_t* middle = std::partition(order, order + count, [&](std::int32_t t) {
-    return axis.dot(centroids.col(t)) < mean;
-  });
+  std::int32_t* middle = std::partition(
+      order, order + count, [&](std::int32_t t) { return axis.dot(centroids.col(t)) < mean; });
   return static_cast<std::int32_t>(middle - order);
 }
 
@@ -85,7 +85,8 @@ ObbTree ObbTree::build(const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
   }
   tree.triangles_.resize(3, n);
   tree.ids_ = order;
-  for (std::int32_t k = 0; k < n; ++k) tree.triangles_.col(k) = triangles.col(order[k]);
+  for (std::int32_t k = 0; k < n; ++k)
+    tree.triangles_.col(k) = triangles.col(order[k]);
   tree.nodes_.shrink_to_fit();
   return tree;
 }

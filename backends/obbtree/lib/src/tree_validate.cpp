@@ -6,7 +6,9 @@
 namespace collido::obbtree {
 namespace {
 
-std::string nodeText(std::size_t index) { return "node " + std::to_string(index); }
+std::string nodeText(std::size_t index) {
+  return "node " + std::to_string(index);
+}
 
 }  // namespace
 
@@ -19,7 +21,8 @@ std::string ObbTree::validate() const {
   // id appears exactly once.
   std::vector<char> seen(static_cast<std::size_t>(n), 0);
   for (std::int32_t id : ids_) {
-    if (id < 0 || id >= n || seen[static_cast<std::size_t>(id)]) return "triangle ids are not a permutation";
+    if (id < 0 || id >= n || seen[static_cast<std::size_t>(id)])
+      return "triangle ids are not a permutation";
     seen[static_cast<std::size_t>(id)] = 1;
   }
   std::vector<std::int32_t> parent(nodes_.size(), -1);

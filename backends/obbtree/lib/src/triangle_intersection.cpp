@@ -128,16 +128,17 @@ bool segmentMeetsTriangle(const Vec& a, const Vec& b, int side_a, int side_b, co
 }
 
 bool allStrictlyOneSide(const int side[3]) {
-  return (side[0] > 0 && side[1] > 0 && side[2] > 0) ||
-         (side[0] < 0 && side[1] < 0 && side[2] < 0);
+  return (side[0] > 0 && side[1] > 0 && side[2] > 0) || (side[0] < 0 && side[1] < 0 && side[2] < 0);
 }
 
 bool triangleTriangle(const Vec* t1, const Vec* t2) {
   int side2[3];  // corners of t2 relative to t1's plane
-  for (int i = 0; i < 3; ++i) side2[i] = orient3d(t1[0], t1[1], t1[2], t2[i]);
+  for (int i = 0; i < 3; ++i)
+    side2[i] = orient3d(t1[0], t1[1], t1[2], t2[i]);
   if (allStrictlyOneSide(side2)) return false;
   int side1[3];  // corners of t1 relative to t2's plane
-  for (int i = 0; i < 3; ++i) side1[i] = orient3d(t2[0], t2[1], t2[2], t1[i]);
+  for (int i = 0; i < 3; ++i)
+    side1[i] = orient3d(t2[0], t2[1], t2[2], t1[i]);
   if (allStrictlyOneSide(side1)) return false;
   if (side2[0] == 0 && side2[1] == 0 && side2[2] == 0) return coplanarTriangles(t1, t2);
   for (int i = 0; i < 3; ++i) {

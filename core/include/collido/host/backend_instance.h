@@ -22,7 +22,7 @@ class BackendInstance {
  public:
   /// Creates an instance of `variant` with key/value options.
   static Result<std::unique_ptr<BackendInstance>> create(
-      std::shared_ptr<PluginLibrary> library, const std::string& variant,
+      const std::shared_ptr<PluginLibrary>& library, const std::string& variant,
       const std::map<std::string, std::string>& options = {});
 
   BackendInstance(const BackendInstance&) = delete;

@@ -9,7 +9,7 @@ namespace collido {
 
 /// A backend linked into this program: its name and the entry function of its table.
 struct StaticBackendTable {
-  std::string name;         ///< the backend folder's name ("obbtree")
+  std::string name;          ///< the backend folder's name ("obbtree")
   CollidoPluginEntry entry;  ///< collido_plugin_table_<name>
 };
 

@@ -10,8 +10,8 @@ namespace collido {
 /// What import found in a mesh: counts of the legitimate oddities that are kept, and how the
 /// coordinates were read.
 struct MeshReport {
-  std::string source;    ///< file path or generator description
-  std::string importer;  ///< which reader produced the mesh
+  std::string source;             ///< file path or generator description
+  std::string importer;           ///< which reader produced the mesh
   bool single_precision = false;  ///< coordinates passed through 32-bit floats on import
   std::size_t vertices = 0;
   std::size_t triangles = 0;

@@ -21,9 +21,9 @@ enum class OracleMode {
 /// The exact reference answer for two posed meshes.
 struct OracleAnswer {
   bool intersecting = false;
-  std::vector<TrianglePair> pairs;    ///< sorted by (a, b); one witness in kFirstPair mode
-  std::size_t candidate_pairs = 0;    ///< pairs whose conservative boxes overlapped
-  std::size_t exact_tests = 0;        ///< pairs decided by exact predicates
+  std::vector<TrianglePair> pairs;  ///< sorted by (a, b); one witness in kFirstPair mode
+  std::size_t candidate_pairs = 0;  ///< pairs whose conservative boxes overlapped
+  std::size_t exact_tests = 0;      ///< pairs decided by exact predicates
 };
 
 /// Every pair (triangle of A, triangle of B) whose closed triangles share at least one point,

@@ -51,7 +51,7 @@ struct FrameRecord {
   std::size_t matched_pairs = 0;   ///< reported pairs in the exact set
   std::size_t invalid_pairs = 0;   ///< out-of-range or duplicate pairs, and false witnesses
   bool truncated = false;
-  double median_us = 0.0;          ///< median of this frame's timed calls
+  double median_us = 0.0;  ///< median of this frame's timed calls
   std::uint64_t bv_tests = 0;
   std::uint64_t primitive_tests = 0;
 

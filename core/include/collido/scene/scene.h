@@ -22,20 +22,22 @@ struct SceneObject {
   std::vector<Pose> poses;                   ///< one per frame, or one for every frame
 
   /// The object's world pose in `frame`.
-  const Pose& poseAt(std::size_t frame) const { return poses.size() == 1 ? poses[0] : poses[frame]; }
+  const Pose& poseAt(std::size_t frame) const {
+    return poses.size() == 1 ? poses[0] : poses[frame];
+  }
 };
 
 /// One question asked of two objects in every frame.
 struct SceneQuery {
-  std::string name;     ///< unique in the scene
-  std::size_t a = 0;    ///< index into Scene::objects
-  std::size_t b = 0;    ///< index into Scene::objects
+  std::string name;   ///< unique in the scene
+  std::size_t a = 0;  ///< index into Scene::objects
+  std::size_t b = 0;  ///< index into Scene::objects
   QueryRequest request;
 };
 
 /// A loaded, fully validated scene: nothing in it can fail later for a reason the file holds.
 struct Scene {
-  std::string path;         ///< the file it was read from ("" for scenes built in code)
+  std::string path;  ///< the file it was read from ("" for scenes built in code)
   std::string name;
   std::string description;
   std::size_t frames = 1;

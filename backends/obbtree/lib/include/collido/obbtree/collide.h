@@ -29,9 +29,9 @@ struct CollideRequest {
 
 /// The answer and the work done.
 struct CollideResult {
-  std::vector<TrianglePair> pairs;  ///< in traversal order
-  bool truncated = false;           ///< max_pairs stopped the query
-  std::uint64_t box_tests = 0;      ///< separating-axis tests
+  std::vector<TrianglePair> pairs;   ///< in traversal order
+  bool truncated = false;            ///< max_pairs stopped the query
+  std::uint64_t box_tests = 0;       ///< separating-axis tests
   std::uint64_t triangle_tests = 0;  ///< exact triangle-triangle tests
 };
 
@@ -40,7 +40,6 @@ struct CollideResult {
 /// separates ends its branch, otherwise the larger box is split; at two leaves every triangle
 /// pair is tested exactly (on B's vertices transformed into A's frame). `result` is overwritten.
 void collide(const ObbTree& a, const Eigen::Isometry3d& pose_a, const ObbTree& b,
-             const Eigen::Isometry3d& pose_b, const CollideRequest& request,
-             CollideResult& result);
+             const Eigen::Isometry3d& pose_b, const CollideRequest& request, CollideResult& result);
 
 }  // namespace collido::obbtree

@@ -38,8 +38,8 @@ class BoxFitter {
 
 /// One-off BoxFitter::fit.
 OrientedBox fitBox(const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
-                   const Eigen::Ref<const Eigen::Matrix3Xi>& triangles,
-                   const std::int32_t* order, std::int32_t count);
+                   const Eigen::Ref<const Eigen::Matrix3Xi>& triangles, const std::int32_t* order,
+                   std::int32_t count);
 
 /// Recomputes centre and extents of `box` over all columns of `triangles`, keeping its axes
 /// (refit after the vertices moved).

@@ -45,8 +45,8 @@ inline bool boxesOverlap(const Eigen::Matrix3d& rotation, const Eigen::Vector3d&
       const int j1 = (j + 1) % 3;
       const int j2 = (j + 2) % 3;
       const double distance = std::abs(t[i2] * r(i1, j) - t[i1] * r(i2, j));
-      const double radius = a[i1] * abs_r(i2, j) + a[i2] * abs_r(i1, j) + b[j1] * abs_r(i, j2) +
-                            b[j2] * abs_r(i, j1);
+      const double radius =
+          a[i1] * abs_r(i2, j) + a[i2] * abs_r(i1, j) + b[j1] * abs_r(i, j2) + b[j2] * abs_r(i, j1);
       if (separated(distance, radius)) return false;
     }
   }
