@@ -11,7 +11,9 @@ std::string sourcePath(const std::string& relative) {
   return std::string(COLLIDO_SOURCE_DIR) + "/" + relative;
 }
 
-std::string pluginDirectory() { return COLLIDO_PLUGIN_DIR; }
+std::string pluginDirectory() {
+  return COLLIDO_PLUGIN_DIR;
+}
 
 std::string makeTempDirectory(const std::string& hint) {
   namespace fs = std::filesystem;

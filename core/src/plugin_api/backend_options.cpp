@@ -67,7 +67,8 @@ Status BackendOptions::rejectUnknown(const std::string& backend_name) const {
   if (unknown.empty()) return {};
   // The keys some getter asked for are exactly the options this backend understands.
   std::string known;
-  for (const std::string& key : consumed_) known += (known.empty() ? "" : ", ") + key;
+  for (const std::string& key : consumed_)
+    known += (known.empty() ? "" : ", ") + key;
   return {StatusCode::kInvalidArgument,
           backend_name + ": unknown option(s): " + unknown +
               (known.empty() ? " (it takes no options)" : " (known: " + known + ")")};

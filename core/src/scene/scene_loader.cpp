@@ -361,7 +361,8 @@ Json::parser_callback_t duplicateKeyCheck(const std::string& label) {
   return [open, label](int /*depth*/, Json::parse_event_t event, Json& parsed) {
     const auto escaped = [](const std::string& key) {  // RFC 6901: '~' -> "~0", '/' -> "~1"
       std::string out;
-      for (char c : key) out += c == '~' ? "~0" : c == '/' ? "~1" : std::string(1, c);
+      for (char c : key)
+        out += c == '~' ? "~0" : c == '/' ? "~1" : std::string(1, c);
       return out;
     };
     switch (event) {

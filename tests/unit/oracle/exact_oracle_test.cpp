@@ -23,9 +23,13 @@ Json readJson(const std::string& relative) {
   return Json::parse(in);
 }
 
-Eigen::Vector3d vec(const Json& j) { return {j[0].get<double>(), j[1].get<double>(), j[2].get<double>()}; }
+Eigen::Vector3d vec(const Json& j) {
+  return {j[0].get<double>(), j[1].get<double>(), j[2].get<double>()};
+}
 
-Triangle triangle(const Json& j) { return {vec(j[0]), vec(j[1]), vec(j[2])}; }
+Triangle triangle(const Json& j) {
+  return {vec(j[0]), vec(j[1]), vec(j[2])};
+}
 
 TriangleMesh meshOf(const std::vector<Triangle>& triangles) {
   TriangleMesh mesh;
@@ -70,7 +74,8 @@ TEST(ExactOracle, GivesTheListedPairsForTheFortyEnvRobPoses) {
   for (const Json& c : cases) {
     Pose pose = Pose::Identity();
     for (int r = 0; r < 3; ++r) {
-      for (int k = 0; k < 3; ++k) pose.linear()(r, k) = c["R"][r][k].get<double>();
+      for (int k = 0; k < 3; ++k)
+        pose.linear()(r, k) = c["R"][r][k].get<double>();
     }
     pose.translation() = vec(c["t"]);
     std::vector<TrianglePair> expected;
@@ -81,8 +86,8 @@ TEST(ExactOracle, GivesTheListedPairsForTheFortyEnvRobPoses) {
     const OracleAnswer answer =
         exactIntersectingPairs(env.value(), pose, rob.value(), Pose::Identity());
     EXPECT_EQ(answer.intersecting, c["collide"].get<bool>()) << c["id"];
-    EXPECT_EQ(answer.pairs, expected) << c["id"] << ": " << answer.pairs.size() << " pairs vs "
-                                      << expected.size() << " listed";
+    EXPECT_EQ(answer.pairs, expected)
+        << c["id"] << ": " << answer.pairs.size() << " pairs vs " << expected.size() << " listed";
     colliding += answer.intersecting ? 1 : 0;
   }
   EXPECT_EQ(colliding, 17);
@@ -91,13 +96,13 @@ TEST(ExactOracle, GivesTheListedPairsForTheFortyEnvRobPoses) {
 // The oracle poses vertices exactly: a vertex 1e-20 above a plane at z = 1 stays above it,
 // although 1 + 1e-20 rounds to 1 in double precision.
 TEST(ExactOracle, PosesVerticesInExactArithmetic) {
-  const TriangleMesh floor = meshOf({Triangle{Eigen::Vector3d(-1, -1, 1), Eigen::Vector3d(3, -1, 1),
-                                              Eigen::Vector3d(-1, 3, 1)}});
+  const TriangleMesh floor = meshOf(
+      {Triangle{Eigen::Vector3d(-1, -1, 1), Eigen::Vector3d(3, -1, 1), Eigen::Vector3d(-1, 3, 1)}});
   // Lowest corner at z = tiny in the model frame, the rest well above.
   for (const double tiny : {1e-20, -1e-20}) {
-    const TriangleMesh tooth = meshOf({Triangle{Eigen::Vector3d(0.2, 0.2, tiny),
-                                                Eigen::Vector3d(0.4, 0.2, 0.5),
-                                                Eigen::Vector3d(0.2, 0.4, 0.5)}});
+    const TriangleMesh tooth =
+        meshOf({Triangle{Eigen::Vector3d(0.2, 0.2, tiny), Eigen::Vector3d(0.4, 0.2, 0.5),
+                         Eigen::Vector3d(0.2, 0.4, 0.5)}});
     const Pose lift = translation(Eigen::Vector3d(0, 0, 1));
     ASSERT_EQ(1.0 + tiny, 1.0);  // the rounded pose would make the corner touch the floor
     const OracleAnswer answer = exactIntersectingPairs(tooth, lift, floor, Pose::Identity());
@@ -120,8 +125,8 @@ TEST(ExactOracle, TouchingCountsAsIntersecting) {
   // the edge x = 1 too; the other two triangles meet them only at corners (1,0) and (1,1).
   const std::vector<TrianglePair> expected = {{0, 0}, {0, 1}, {1, 1}};
   EXPECT_EQ(touching.pairs, expected);
-  const OracleAnswer apart = exactIntersectingPairs(square(0.0), Pose::Identity(),
-                                                    square(1.0 + 1e-15), Pose::Identity());
+  const OracleAnswer apart =
+      exactIntersectingPairs(square(0.0), Pose::Identity(), square(1.0 + 1e-15), Pose::Identity());
   EXPECT_FALSE(apart.intersecting);
 }
 
@@ -135,7 +140,8 @@ TEST(ExactOracle, DecidesDegenerateTrianglesAsSegmentsAndPoints) {
   EXPECT_TRUE(exactTrianglesIntersect(face, piercing));
   EXPECT_FALSE(exactTrianglesIntersect(face, beside));
   // A point (three equal corners) on the hypotenuse, and just off it.
-  const Triangle on_edge{Eigen::Vector3d(1, 1, 0), Eigen::Vector3d(1, 1, 0), Eigen::Vector3d(1, 1, 0)};
+  const Triangle on_edge{Eigen::Vector3d(1, 1, 0), Eigen::Vector3d(1, 1, 0),
+                         Eigen::Vector3d(1, 1, 0)};
   const Triangle off_edge{Eigen::Vector3d(1, 1 + 0x1p-40, 0), Eigen::Vector3d(1, 1 + 0x1p-40, 0),
                           Eigen::Vector3d(1, 1 + 0x1p-40, 0)};
   EXPECT_TRUE(exactTrianglesIntersect(face, on_edge));
@@ -144,7 +150,8 @@ TEST(ExactOracle, DecidesDegenerateTrianglesAsSegmentsAndPoints) {
   EXPECT_FALSE(exactTrianglesIntersect(on_edge, off_edge));
   // Collinear segments that overlap, and that only nearly meet.
   const Triangle left{Eigen::Vector3d(0, 0, 5), Eigen::Vector3d(1, 1, 5), Eigen::Vector3d(2, 2, 5)};
-  const Triangle right{Eigen::Vector3d(2, 2, 5), Eigen::Vector3d(3, 3, 5), Eigen::Vector3d(4, 4, 5)};
+  const Triangle right{Eigen::Vector3d(2, 2, 5), Eigen::Vector3d(3, 3, 5),
+                       Eigen::Vector3d(4, 4, 5)};
   const Triangle further{Eigen::Vector3d(2.5, 2.5, 5), Eigen::Vector3d(3, 3, 5),
                          Eigen::Vector3d(4, 4, 5)};
   EXPECT_TRUE(exactTrianglesIntersect(left, right));

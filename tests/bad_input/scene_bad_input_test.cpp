@@ -1,0 +1,512 @@
+// Bad scene files, one test per case. Each starts from a valid scene (checked on its own below),
+// breaks one thing, and asserts kInvalidArgument with a message that names the file, the JSON
+// pointer of the culprit and the problem. The comment above each test shows the message.
+#include <collido/scene/scene.h>
+
+#include <string>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "bad_input/rejection.h"
+#include "support/test_paths.h"
+
+namespace collido {
+namespace {
+
+using Json = nlohmann::json;
+using test::rejected;
+
+constexpr const char* kLabel = "bad.json";
+
+/// A valid two-frame scene: a small sphere "a" at the origin, a small torus "b" at x = 3, and
+/// one boolean query "q" between them.
+Json validScene() {
+  return Json::parse(R"({
+    "name": "valid",
+    "frames": 2,
+    "objects": [
+      {"name": "a", "shape": {"generator": "sphere", "radius": 1, "slices": 8, "stacks": 4}},
+      {"name": "b",
+       "shape": {"generator": "torus", "major_radius": 1, "minor_radius": 0.25,
+                 "major_segments": 8, "minor_segments": 4},
+       "pose": {"translation": [3, 0, 0]}}
+    ],
+    "queries": [{"name": "q", "a": "a", "b": "b", "kind": "boolean"}]
+  })");
+}
+
+Result<Scene> parse(const Json& scene) {
+  return parseScene(scene.dump(), kLabel, test::sourcePath("scenes"));
+}
+
+Json rotation(const Json& rows) {
+  return Json{{"matrix", rows}};
+}
+
+TEST(SceneBadInput, TheValidSceneLoads) {
+  Result<Scene> scene = parse(validScene());
+  ASSERT_TRUE(scene.ok()) << scene.status().toString();
+  EXPECT_EQ(scene.value().objects.size(), 2u);
+  EXPECT_EQ(scene.value().queries.size(), 1u);
+  EXPECT_EQ(scene.value().frames, 2u);
+}
+
+// ---- the document ----------------------------------------------------------------------------
+
+// "bad.json: not valid JSON (byte 14): [json.exception.parse_error.101] parse error at line 1,
+//  column 14: syntax error while parsing value - unexpected end of input; ..."
+TEST(SceneBadInput, NotJson) {
+  EXPECT_TRUE(
+      rejected(parseScene(R"({"objects": [)", kLabel, "."), {kLabel, "not valid JSON", "byte 14"}));
+}
+
+// "bad.json: /: expected an object, got array"
+TEST(SceneBadInput, RootNotAnObject) {
+  EXPECT_TRUE(rejected(parseScene("[1, 2]", kLabel, "."), {kLabel, ": /:", "expected an object"}));
+}
+
+// "<dir>/absent.json: file not found"
+TEST(SceneBadInput, SceneFileMissing) {
+  const std::string path = test::makeTempDirectory("bad_scene") + "/absent.json";
+  EXPECT_TRUE(rejected(loadScene(path), {path, "not found"}));
+}
+
+// A file on disk is named by its path in every message.
+TEST(SceneBadInput, SceneFileWithSyntaxErrorNamesTheFile) {
+  const std::string path = test::makeTempDirectory("bad_scene") + "/broken.json";
+  test::writeFile(path, "{\"frames\": 1,,}");
+  EXPECT_TRUE(rejected(loadScene(path), {path, "not valid JSON", "byte 14"}));
+}
+
+// JSON parsers keep one of two equal keys; a scene must not silently drop the other:
+// "bad.json: /frames: duplicate key 'frames' (only one of them would count)"
+TEST(SceneBadInput, DuplicateTopLevelKey) {
+  Json scene = validScene();
+  scene.erase("frames");
+  std::string text = scene.dump();
+  text.insert(1, R"("frames": 1, "frames": 2, )");
+  EXPECT_TRUE(
+      rejected(parseScene(text, kLabel, "."), {kLabel, "/frames:", "duplicate key 'frames'"}));
+}
+
+// The path of a nested repeat counts array elements, including earlier scalars and containers:
+// "bad.json: /objects/1/pose/translation: duplicate key 'translation' (only one of them would
+//  count)"
+TEST(SceneBadInput, DuplicateNestedKey) {
+  const std::string text = R"({"frames": 1, "objects": [
+      {"name": "a", "shape": {"generator": "sphere", "comment": [1, [2], {"x": 3}]}},
+      {"name": "b", "shape": {"generator": "sphere"},
+       "pose": {"translation": [3, 0, 0], "translation": [0, 0, 0]}}],
+    "queries": [{"a": "a", "b": "b", "kind": "boolean"}]})";
+  EXPECT_TRUE(rejected(parseScene(text, kLabel, "."),
+                       {kLabel, ": /objects/1/pose/translation:", "duplicate key 'translation'"}));
+}
+
+// Equal keys in different objects are no repeat.
+TEST(SceneBadInput, EqualKeysInDifferentObjectsAreFine) {
+  const std::string text = R"({"objects": [
+      {"name": "a", "shape": {"generator": "sphere"}},
+      {"name": "b", "shape": {"generator": "sphere"}, "pose": {"translation": [3, 0, 0]}}],
+    "queries": [{"name": "a", "a": "a", "b": "b", "kind": "boolean"}]})";
+  Result<Scene> scene = parseScene(text, kLabel, ".");
+  EXPECT_TRUE(scene.ok()) << scene.status().toString();
+}
+
+// ---- unknown keys ----------------------------------------------------------------------------
+
+// "bad.json: /: unknown key 'object' (allowed: description, frames, name, objects, queries)"
+TEST(SceneBadInput, UnknownTopLevelKey) {
+  Json scene = validScene();
+  scene["object"] = Json::array();
+  EXPECT_TRUE(rejected(parse(scene), {kLabel, ": /:", "unknown key 'object'",
+                                      "allowed: description, frames, name, objects, queries"}));
+}
+
+// "bad.json: /objects/0: unknown key 'shpe' (allowed: motion, name, pose, shape)"
+TEST(SceneBadInput, UnknownKeyInObject) {
+  Json scene = validScene();
+  scene["objects"][0]["shpe"] = 1;
+  EXPECT_TRUE(rejected(
+      parse(scene), {"/objects/0:", "unknown key 'shpe'", "allowed: motion, name, pose, shape"}));
+}
+
+// "bad.json: /objects/1/shape: unknown key 'minor_raduis' (allowed: generator, major_radius,
+//  major_segments, minor_radius, minor_segments)"
+TEST(SceneBadInput, UnknownKeyInShape) {
+  Json scene = validScene();
+  scene["objects"][1]["shape"]["minor_raduis"] = 0.5;
+  EXPECT_TRUE(rejected(parse(scene), {"/objects/1/shape:", "unknown key 'minor_raduis'",
+                                      "allowed: generator, major_radius, major_segments, "
+                                      "minor_radius, minor_segments"}));
+}
+
+// "bad.json: /objects/1/pose: unknown key 'translate' (allowed: rotation, translation)"
+TEST(SceneBadInput, UnknownKeyInPose) {
+  Json scene = validScene();
+  scene["objects"][1]["pose"]["translate"] = Json::array({1, 2, 3});
+  EXPECT_TRUE(rejected(parse(scene), {"/objects/1/pose:", "unknown key 'translate'",
+                                      "allowed: rotation, translation"}));
+}
+
+// "bad.json: /objects/1/pose/rotation: unknown key 'angle' (allowed: axis, degrees, matrix,
+//  quaternion)"
+TEST(SceneBadInput, UnknownKeyInRotation) {
+  Json scene = validScene();
+  scene["objects"][1]["pose"]["rotation"] = {{"axis", {0, 0, 1}}, {"angle", 90}};
+  EXPECT_TRUE(rejected(parse(scene), {"/objects/1/pose/rotation:", "unknown key 'angle'",
+                                      "allowed: axis, degrees, matrix, quaternion"}));
+}
+
+// "bad.json: /queries/0: unknown key 'max_pair' (allowed: a, b, kind, max_contacts, max_pairs,
+//  name)"
+TEST(SceneBadInput, UnknownKeyInQuery) {
+  Json scene = validScene();
+  scene["queries"][0]["max_pair"] = 3;
+  EXPECT_TRUE(rejected(parse(scene), {"/queries/0:", "unknown key 'max_pair'",
+                                      "allowed: a, b, kind, max_contacts, max_pairs, name"}));
+}
+
+// ---- wrong types -----------------------------------------------------------------------------
+
+// "bad.json: /objects/1/pose/translation/0: expected a number, got string"
+TEST(SceneBadInput, StringForANumber) {
+  Json scene = validScene();
+  scene["objects"][1]["pose"]["translation"][0] = "3";
+  EXPECT_TRUE(rejected(parse(scene),
+                       {"/objects/1/pose/translation/0:", "expected a number", "got string"}));
+}
+
+// "bad.json: /objects/0/name: expected a string, got number"
+TEST(SceneBadInput, NumberForAString) {
+  Json scene = validScene();
+  scene["objects"][0]["name"] = 5;
+  EXPECT_TRUE(rejected(parse(scene), {"/objects/0/name:", "expected a string", "got number"}));
+}
+
+// "bad.json: /objects/1/shape/major_segments: expected an integer, got a fractional number"
+TEST(SceneBadInput, FractionalNumberForAnInteger) {
+  Json scene = validScene();
+  scene["objects"][1]["shape"]["major_segments"] = 8.5;
+  EXPECT_TRUE(rejected(parse(scene),
+                       {"/objects/1/shape/major_segments:", "expected an integer", "fractional"}));
+}
+
+// "bad.json: /objects/1/pose/translation: expected 3 numbers, got 2"
+TEST(SceneBadInput, VectorOfTwoNumbers) {
+  Json scene = validScene();
+  scene["objects"][1]["pose"]["translation"] = Json::array({1, 2});
+  EXPECT_TRUE(rejected(parse(scene), {"/objects/1/pose/translation:", "expected 3 numbers"}));
+}
+
+// ---- missing or empty ------------------------------------------------------------------------
+
+// "bad.json: /: missing 'objects'"
+TEST(SceneBadInput, MissingObjects) {
+  Json scene = validScene();
+  scene.erase("objects");
+  EXPECT_TRUE(rejected(parse(scene), {kLabel, ": /:", "missing 'objects'"}));
+}
+
+// "bad.json: /: missing 'queries'"
+TEST(SceneBadInput, MissingQueries) {
+  Json scene = validScene();
+  scene.erase("queries");
+  EXPECT_TRUE(rejected(parse(scene), {": /:", "missing 'queries'"}));
+}
+
+// "bad.json: /objects/1: missing 'name'"
+TEST(SceneBadInput, MissingObjectName) {
+  Json scene = validScene();
+  scene["objects"][1].erase("name");
+  EXPECT_TRUE(rejected(parse(scene), {"/objects/1:", "missing 'name'"}));
+}
+
+// "bad.json: /objects/0: missing 'shape'"
+TEST(SceneBadInput, MissingShape) {
+  Json scene = validScene();
+  scene["objects"][0].erase("shape");
+  EXPECT_TRUE(rejected(parse(scene), {"/objects/0:", "missing 'shape'"}));
+}
+
+// "bad.json: /queries/0: missing 'kind'"
+TEST(SceneBadInput, MissingQueryKind) {
+  Json scene = validScene();
+  scene["queries"][0].erase("kind");
+  EXPECT_TRUE(rejected(parse(scene), {"/queries/0:", "missing 'kind'"}));
+}
+
+// "bad.json: /objects: a scene needs at least one object"
+TEST(SceneBadInput, EmptyObjectList) {
+  Json scene = validScene();
+  scene["objects"] = Json::array();
+  EXPECT_TRUE(rejected(parse(scene), {"/objects:", "at least one object"}));
+}
+
+// "bad.json: /queries: a scene needs at least one query"
+TEST(SceneBadInput, EmptyQueryList) {
+  Json scene = validScene();
+  scene["queries"] = Json::array();
+  EXPECT_TRUE(rejected(parse(scene), {"/queries:", "at least one query"}));
+}
+
+// ---- names -----------------------------------------------------------------------------------
+
+// "bad.json: /objects/1/name: duplicate object name 'a'"
+TEST(SceneBadInput, DuplicateObjectName) {
+  Json scene = validScene();
+  scene["objects"][1]["name"] = "a";
+  EXPECT_TRUE(rejected(parse(scene), {"/objects/1/name:", "duplicate object name 'a'"}));
+}
+
+// "bad.json: /queries/1: duplicate query name 'q'"
+TEST(SceneBadInput, DuplicateQueryName) {
+  Json scene = validScene();
+  scene["queries"].push_back(scene["queries"][0]);
+  scene["queries"][1]["kind"] = "all_pairs";
+  EXPECT_TRUE(rejected(parse(scene), {"/queries/1", "duplicate query name 'q'"}));
+}
+
+// "bad.json: /queries/0/b: no object named 'c'"
+TEST(SceneBadInput, QueryNamesAnUnknownObject) {
+  Json scene = validScene();
+  scene["queries"][0]["b"] = "c";
+  EXPECT_TRUE(rejected(parse(scene), {"/queries/0/b:", "no object named 'c'"}));
+}
+
+// "bad.json: /queries/0: a query needs two different objects"
+TEST(SceneBadInput, QueryOfAnObjectWithItself) {
+  Json scene = validScene();
+  scene["queries"][0]["b"] = "a";
+  EXPECT_TRUE(rejected(parse(scene), {"/queries/0", "two different objects"}));
+}
+
+// "bad.json: /queries/0/kind: unknown query kind 'distance' (known: boolean, all_pairs,
+//  contacts)"
+TEST(SceneBadInput, UnknownQueryKind) {
+  Json scene = validScene();
+  scene["queries"][0]["kind"] = "distance";
+  EXPECT_TRUE(rejected(parse(scene), {"/queries/0/kind:", "unknown query kind 'distance'",
+                                      "boolean, all_pairs, contacts"}));
+}
+
+// "bad.json: /queries/0/max_pairs: expected an integer in [0, 9223372036854775807], got -1"
+TEST(SceneBadInput, NegativeMaxPairs) {
+  Json scene = validScene();
+  scene["queries"][0]["max_pairs"] = -1;
+  EXPECT_TRUE(rejected(parse(scene), {"/queries/0/max_pairs:", "got -1"}));
+}
+
+// ---- shapes ----------------------------------------------------------------------------------
+
+// "bad.json: /objects/0/shape/generator: unknown generator 'cube' (known: chain, gear,
+//  grid_sheet, sphere, torus)"
+TEST(SceneBadInput, UnknownGenerator) {
+  Json scene = validScene();
+  scene["objects"][0]["shape"] = {{"generator", "cube"}};
+  EXPECT_TRUE(rejected(parse(scene), {"/objects/0/shape/generator:", "unknown generator 'cube'",
+                                      "chain, gear, grid_sheet, sphere, torus"}));
+}
+
+// "bad.json: /objects/1/shape/minor_segments: expected an integer in [3, 1048576], got 2"
+TEST(SceneBadInput, TorusWithTwoMinorSegments) {
+  Json scene = validScene();
+  scene["objects"][1]["shape"]["minor_segments"] = 2;
+  EXPECT_TRUE(rejected(parse(scene), {"/objects/1/shape/minor_segments:", "[3,", "got 2"}));
+}
+
+// The generator's own message, at the shape:
+// "bad.json: /objects/1/shape: torus: minor_radius = 1, must be < major_radius = 1"
+TEST(SceneBadInput, TorusMinorRadiusNotBelowMajorRadius) {
+  Json scene = validScene();
+  scene["objects"][1]["shape"]["minor_radius"] = 1;
+  EXPECT_TRUE(rejected(
+      parse(scene), {"/objects/1/shape", "torus", "minor_radius = 1", "must be < major_radius"}));
+}
+
+// "bad.json: /objects/0/shape: gear: pressure_angle_deg = 50, must be in (0, 45)"
+TEST(SceneBadInput, GearPressureAngleOutOfRange) {
+  Json scene = validScene();
+  scene["objects"][0]["shape"] = {{"generator", "gear"}, {"pressure_angle_deg", 50}};
+  EXPECT_TRUE(rejected(parse(scene), {"/objects/0/shape", "gear", "pressure_angle_deg", "45"}));
+}
+
+// "bad.json: /objects/0/shape/radius: radius must be > 0"
+TEST(SceneBadInput, ZeroSphereRadius) {
+  Json scene = validScene();
+  scene["objects"][0]["shape"]["radius"] = 0;
+  EXPECT_TRUE(rejected(parse(scene), {"/objects/0/shape/radius", "> 0"}));
+}
+
+// "bad.json: /objects/0/shape: give exactly one of 'mesh' (a file) or 'generator'"
+TEST(SceneBadInput, ShapeWithBothMeshAndGenerator) {
+  Json scene = validScene();
+  scene["objects"][0]["shape"]["mesh"] = "meshes/bunny.obj";
+  EXPECT_TRUE(rejected(parse(scene), {"/objects/0/shape", "exactly one of 'mesh'"}));
+}
+
+// "bad.json: /objects/0/shape/mesh: <scenes>/meshes/absent.obj: file not found"
+TEST(SceneBadInput, MeshFileMissing) {
+  Json scene = validScene();
+  scene["objects"][0]["shape"] = {{"mesh", "meshes/absent.obj"}};
+  EXPECT_TRUE(
+      rejected(parse(scene), {"/objects/0/shape/mesh:", "meshes/absent.obj", "file not found"}));
+}
+
+// The mesh's own problem comes through with the JSON path:
+// "bad.json: /objects/0/shape/mesh: <dir>/nan.obj: vertex 0 has a non-finite x coordinate (nan)"
+TEST(SceneBadInput, MeshFileWithNan) {
+  const std::string dir = test::makeTempDirectory("bad_scene");
+  test::writeFile(dir + "/nan.obj", "v nan 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  Json scene = validScene();
+  scene["objects"][0]["shape"] = {{"mesh", "nan.obj"}};
+  EXPECT_TRUE(rejected(parseScene(scene.dump(), kLabel, dir),
+                       {"/objects/0/shape/mesh:", "nan.obj", "non-finite"}));
+}
+
+// "bad.json: /objects/0/shape/scale: scale must be > 0"
+TEST(SceneBadInput, NegativeMeshScale) {
+  Json scene = validScene();
+  scene["objects"][0]["shape"] = {{"mesh", "meshes/rob.obj"}, {"scale", -2}};
+  EXPECT_TRUE(rejected(parse(scene), {"/objects/0/shape/scale", "> 0"}));
+}
+
+// ---- frames ----------------------------------------------------------------------------------
+
+// "bad.json: /frames: expected an integer in [1, 1000000], got 0"
+TEST(SceneBadInput, ZeroFrames) {
+  Json scene = validScene();
+  scene["frames"] = 0;
+  EXPECT_TRUE(rejected(parse(scene), {"/frames:", "got 0"}));
+}
+
+// "bad.json: /frames: expected an integer in [1, 1000000], got -3"
+TEST(SceneBadInput, NegativeFrames) {
+  Json scene = validScene();
+  scene["frames"] = -3;
+  EXPECT_TRUE(rejected(parse(scene), {"/frames:", "got -3"}));
+}
+
+// ---- poses -----------------------------------------------------------------------------------
+
+// "bad.json: /objects/1/pose/rotation/matrix: not a rotation: max |R^T R - I| = 3, det = 8 (...)"
+TEST(SceneBadInput, ScaledRotationMatrix) {
+  Json scene = validScene();
+  scene["objects"][1]["pose"]["rotation"] = rotation({{2, 0, 0}, {0, 2, 0}, {0, 0, 2}});
+  EXPECT_TRUE(rejected(parse(scene), {"/objects/1/pose/rotation/matrix:", "not a rotation"}));
+}
+
+// "bad.json: /objects/1/pose/rotation/matrix: not a rotation: max |R^T R - I| = 0.1, det = 1 ..."
+TEST(SceneBadInput, ShearedRotationMatrix) {
+  Json scene = validScene();
+  scene["objects"][1]["pose"]["rotation"] = rotation({{1, 0.1, 0}, {0, 1, 0}, {0, 0, 1}});
+  EXPECT_TRUE(rejected(parse(scene), {"/objects/1/pose/rotation/matrix:", "not a rotation"}));
+}
+
+// A reflection is orthonormal, but its determinant is -1:
+// "bad.json: /objects/1/pose/rotation/matrix: not a rotation: max |R^T R - I| = 0, det = -1 ..."
+TEST(SceneBadInput, ReflectionMatrix) {
+  Json scene = validScene();
+  scene["objects"][1]["pose"]["rotation"] = rotation({{1, 0, 0}, {0, 1, 0}, {0, 0, -1}});
+  EXPECT_TRUE(
+      rejected(parse(scene), {"/objects/1/pose/rotation/matrix:", "not a rotation", "det = -1"}));
+}
+
+// "bad.json: /objects/1/pose/rotation/quaternion: not a unit quaternion (norm 1.414214)"
+TEST(SceneBadInput, NonUnitQuaternion) {
+  Json scene = validScene();
+  scene["objects"][1]["pose"]["rotation"] = {{"quaternion", {1, 1, 0, 0}}};
+  EXPECT_TRUE(rejected(parse(scene),
+                       {"/objects/1/pose/rotation/quaternion:", "not a unit quaternion", "1.41"}));
+}
+
+// "bad.json: /objects/1/pose/rotation/axis: the axis must not be zero"
+TEST(SceneBadInput, ZeroRotationAxis) {
+  Json scene = validScene();
+  scene["objects"][1]["pose"]["rotation"] = {{"axis", {0, 0, 0}}, {"degrees", 30}};
+  EXPECT_TRUE(rejected(parse(scene), {"/objects/1/pose/rotation/axis:", "must not be zero"}));
+}
+
+// "bad.json: /objects/1/pose/rotation: give exactly one of matrix, quaternion, or axis + degrees"
+TEST(SceneBadInput, TwoRotationForms) {
+  Json scene = validScene();
+  scene["objects"][1]["pose"]["rotation"] = {{"quaternion", {1, 0, 0, 0}},
+                                             {"matrix", {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}}};
+  EXPECT_TRUE(rejected(parse(scene), {"/objects/1/pose/rotation:", "exactly one of"}));
+}
+
+// ---- motion ----------------------------------------------------------------------------------
+
+// "bad.json: /objects/1/motion/poses: has 3 poses but the scene has 2 frames"
+TEST(SceneBadInput, PoseListLengthDiffersFromFrames) {
+  Json scene = validScene();
+  scene["objects"][1].erase("pose");
+  scene["objects"][1]["motion"] = {
+      {"poses", Json::array({Json::object(), Json::object(), Json::object()})}};
+  EXPECT_TRUE(rejected(parse(scene), {"/objects/1/motion/poses:", "3 poses", "2 frames"}));
+}
+
+// "bad.json: /objects/1/pose: 'pose' and motion 'poses' exclude each other"
+TEST(SceneBadInput, PoseTogetherWithPoses) {
+  Json scene = validScene();
+  scene["objects"][1]["motion"] = {{"poses", Json::array({Json::object(), Json::object()})}};
+  EXPECT_TRUE(rejected(parse(scene), {"/objects/1/pose:", "exclude each other"}));
+}
+
+// "bad.json: /objects/1/motion: give exactly one of poses, random, jitter"
+TEST(SceneBadInput, TwoMotionKinds) {
+  Json scene = validScene();
+  scene["objects"][1]["motion"] = {{"random", {{"relative_to", "a"}, {"overlap", 0.5}}},
+                                   {"jitter", {{"translation", 0.1}}}};
+  EXPECT_TRUE(rejected(parse(scene), {"/objects/1/motion:", "exactly one of"}));
+}
+
+// "bad.json: /objects/1/motion/random/relative_to: 'c' is not an object defined before this one"
+TEST(SceneBadInput, RandomMotionRelativeToAnUnknownObject) {
+  Json scene = validScene();
+  scene["objects"][1]["motion"] = {{"random", {{"relative_to", "c"}, {"overlap", 0.5}}}};
+  EXPECT_TRUE(
+      rejected(parse(scene), {"/objects/1/motion/random/relative_to:", "'c'", "defined before"}));
+}
+
+// "bad.json: /objects/0/motion/random/relative_to: 'b' is not an object defined before this one"
+TEST(SceneBadInput, RandomMotionRelativeToALaterObject) {
+  Json scene = validScene();
+  scene["objects"][0]["motion"] = {{"random", {{"relative_to", "b"}, {"overlap", 0.5}}}};
+  EXPECT_TRUE(
+      rejected(parse(scene), {"/objects/0/motion/random/relative_to:", "'b'", "defined before"}));
+}
+
+// "bad.json: /objects/1/motion/random/overlap: overlap must satisfy 0 <= low <= high <= 1"
+TEST(SceneBadInput, OverlapAboveOne) {
+  Json scene = validScene();
+  scene["objects"][1]["motion"] = {{"random", {{"relative_to", "a"}, {"overlap", 1.5}}}};
+  EXPECT_TRUE(
+      rejected(parse(scene), {"/objects/1/motion/random/overlap:", "0 <= low <= high <= 1"}));
+}
+
+// "bad.json: /objects/1/motion/random/overlap: overlap must satisfy 0 <= low <= high <= 1"
+TEST(SceneBadInput, OverlapRangeBelowZero) {
+  Json scene = validScene();
+  scene["objects"][1]["motion"] = {{"random", {{"relative_to", "a"}, {"overlap", {-0.1, 0.5}}}}};
+  EXPECT_TRUE(
+      rejected(parse(scene), {"/objects/1/motion/random/overlap:", "0 <= low <= high <= 1"}));
+}
+
+// "bad.json: /objects/1/motion/random/overlap: overlap must satisfy 0 <= low <= high <= 1"
+TEST(SceneBadInput, OverlapRangeReversed) {
+  Json scene = validScene();
+  scene["objects"][1]["motion"] = {{"random", {{"relative_to", "a"}, {"overlap", {0.8, 0.2}}}}};
+  EXPECT_TRUE(
+      rejected(parse(scene), {"/objects/1/motion/random/overlap:", "0 <= low <= high <= 1"}));
+}
+
+// "bad.json: /objects/1/motion/jitter: translation must be >= 0 and rotation_deg in [0, 180]"
+TEST(SceneBadInput, NegativeJitter) {
+  Json scene = validScene();
+  scene["objects"][1]["motion"] = {{"jitter", {{"translation", -0.1}}}};
+  EXPECT_TRUE(rejected(parse(scene), {"/objects/1/motion/jitter", "translation must be >= 0"}));
+}
+
+}  // namespace
+}  // namespace collido
