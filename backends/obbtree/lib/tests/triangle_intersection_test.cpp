@@ -173,7 +173,7 @@ TEST(TriangleIntersection, RandomTouchingPairsMatchTheOracle) {
   std::mt19937_64 rng(9);
   // Dyadic coordinates (multiples of 2^-10 in [-1, 1]) so that midpoints are exact.
   std::uniform_int_distribution<int> q(-1024, 1024);
-  const auto point = [&] { return Vector3d(q(rng), q(rng), q(rng)) / 1024.0; };
+  const auto point = [&]() -> Vector3d { return Vector3d(q(rng), q(rng), q(rng)) / 1024.0; };
   for (int trial = 0; trial < 2000; ++trial) {
     Tri t1{point(), point(), point()};
     Tri t2{point(), point(), point()};
