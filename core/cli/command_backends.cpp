@@ -8,14 +8,6 @@
 namespace collido::cli {
 namespace {
 
-std::string kindsText(QueryKindSet set) {
-  std::string text;
-  for (QueryKind kind : {QueryKind::kBoolean, QueryKind::kAllPairs, QueryKind::kContacts}) {
-    if (set.contains(kind)) text += (text.empty() ? "" : ", ") + std::string(queryKindName(kind));
-  }
-  return text.empty() ? "none" : text;
-}
-
 int listBackends(const PluginOptions& options) {
   const PluginDiscovery found = discoverPlugins(options.paths, !options.no_defaults);
   if (found.plugins.empty()) std::cout << "No plugins found.\n";
@@ -32,7 +24,7 @@ int listBackends(const PluginOptions& options) {
         continue;
       }
       const Capabilities& caps = instance.value()->capabilities();
-      std::cout << "    queries: " << kindsText(caps.queries)
+      std::cout << "    queries: " << queryKindsText(caps.queries)
                 << "; update: " << (caps.update ? "yes" : "no")
                 << "; counts box tests: " << (caps.counts_bv_tests ? "yes" : "no")
                 << "; counts triangle tests: " << (caps.counts_primitive_tests ? "yes" : "no")

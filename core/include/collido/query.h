@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include <Eigen/Core>
@@ -45,6 +46,9 @@ class QueryKindSet {
  private:
   std::uint32_t bits_ = 0;
 };
+
+/// "boolean, all_pairs" style list of the kinds in `set`, or "nothing".
+std::string queryKindsText(QueryKindSet set);
 
 /// An intersecting pair of triangles: index in A, index in B, as given to build().
 struct TrianglePair {

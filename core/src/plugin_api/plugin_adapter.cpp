@@ -89,16 +89,6 @@ bool isSingleQueryKind(std::uint32_t kind) {
          kind == static_cast<std::uint32_t>(QueryKind::kContacts);
 }
 
-std::string kindsText(QueryKindSet set) {
-  std::string text;
-  for (QueryKind kind : {QueryKind::kBoolean, QueryKind::kAllPairs, QueryKind::kContacts}) {
-    if (!set.contains(kind)) continue;
-    if (!text.empty()) text += ", ";
-    text += queryKindName(kind);
-  }
-  return text.empty() ? "nothing" : text;
-}
-
 // Poses must be rigid: a backend may invert them by transposition.
 Status toPose(const CollidoPose* in, const char* which, Pose& out) {
   if (in == nullptr) return {StatusCode::kInvalidArgument, std::string(which) + ": null pose"};
@@ -186,8 +176,8 @@ std::int32_t buildEntry(CollidoInstance* instance, const CollidoShapeView* shape
     const QueryKindSet wanted(needs->query_kinds);
     if (!caps.queries.containsAll(wanted)) {
       return fail(error, StatusCode::kUnsupported,
-                  label + ": the scene needs " + kindsText(wanted) + " but the backend answers " +
-                      kindsText(caps.queries));
+                  label + ": the scene needs " + queryKindsText(wanted) +
+                      " but the backend answers " + queryKindsText(caps.queries));
     }
     const bool deforms = (needs->flags & COLLIDO_NEED_DEFORMS) != 0;
     if (deforms && !caps.update) {
@@ -288,7 +278,7 @@ std::int32_t queryEntry(CollidoInstance* instance, CollidoModelHandle a, const C
       if (!slot->needs.queries.contains(kind)) {
         return fail(error, StatusCode::kInvalidArgument,
                     label + ": query: " + handleText(handle) + " was built for " +
-                        kindsText(slot->needs.queries) + ", not " + queryKindName(kind));
+                        queryKindsText(slot->needs.queries) + ", not " + queryKindName(kind));
       }
     }
     Pose world_a;

@@ -14,4 +14,14 @@ const char* queryKindName(QueryKind kind) {
   return "unknown";
 }
 
+std::string queryKindsText(QueryKindSet set) {
+  std::string text;
+  for (QueryKind kind : {QueryKind::kBoolean, QueryKind::kAllPairs, QueryKind::kContacts}) {
+    if (!set.contains(kind)) continue;
+    if (!text.empty()) text += ", ";
+    text += queryKindName(kind);
+  }
+  return text.empty() ? "nothing" : text;
+}
+
 }  // namespace collido

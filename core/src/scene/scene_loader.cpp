@@ -198,6 +198,13 @@ struct LoadedShape {
   MeshReport report;
 };
 
+// A number as people write it: "0.25", not "0.250000".
+std::string shortNumber(double value) {
+  std::ostringstream out;
+  out << value;
+  return out.str();
+}
+
 using Generator = Result<TriangleMesh> (*)(const Reader&, const Node&, std::string&);
 
 TorusParams readTorusParams(const Reader& r, const Node& n) {
@@ -213,8 +220,8 @@ Result<TriangleMesh> generateTorus(const Reader& r, const Node& n, std::string& 
   r.expectObject(n,
                  {"generator", "major_radius", "minor_radius", "major_segments", "minor_segments"});
   const TorusParams p = readTorusParams(r, n);
-  text = "torus R=" + std::to_string(p.major_radius) + " r=" + std::to_string(p.minor_radius) +
-         " " + std::to_string(p.major_segments) + "x" + std::to_string(p.minor_segments);
+  text = "torus R=" + shortNumber(p.major_radius) + " r=" + shortNumber(p.minor_radius) + " " +
+         std::to_string(p.major_segments) + "x" + std::to_string(p.minor_segments);
   return makeTorus(p);
 }
 
@@ -225,7 +232,8 @@ Result<TriangleMesh> generateChain(const Reader& r, const Node& n, std::string& 
   p.links = static_cast<int>(r.integer(n, "links", p.links, 1, 100000));
   p.clearance = r.number(n, "clearance", p.clearance);
   p.link = readTorusParams(r, n);
-  text = "chain of " + std::to_string(p.links) + " tori";
+  text = "chain of " + std::to_string(p.links) + " tori R=" + shortNumber(p.link.major_radius) +
+         " r=" + shortNumber(p.link.minor_radius) + " clearance=" + shortNumber(p.clearance);
   return makeChain(p);
 }
 
@@ -235,7 +243,7 @@ Result<TriangleMesh> generateSphere(const Reader& r, const Node& n, std::string&
   p.radius = r.positive(n, "radius", p.radius);
   p.slices = static_cast<int>(r.integer(n, "slices", p.slices, 3, 1 << 20));
   p.stacks = static_cast<int>(r.integer(n, "stacks", p.stacks, 2, 1 << 20));
-  text = "sphere r=" + std::to_string(p.radius) + " " + std::to_string(p.slices) + "x" +
+  text = "sphere r=" + shortNumber(p.radius) + " " + std::to_string(p.slices) + "x" +
          std::to_string(p.stacks);
   return makeSphere(p);
 }
@@ -263,7 +271,7 @@ Result<TriangleMesh> generateGear(const Reader& r, const Node& n, std::string& t
   p.pressure_angle_deg = r.positive(n, "pressure_angle_deg", p.pressure_angle_deg);
   p.flank_samples = static_cast<int>(r.integer(n, "flank_samples", p.flank_samples, 2, 1 << 16));
   p.root_samples = static_cast<int>(r.integer(n, "root_samples", p.root_samples, 1, 1 << 16));
-  text = "gear z=" + std::to_string(p.teeth) + " m=" + std::to_string(p.module);
+  text = "gear z=" + std::to_string(p.teeth) + " m=" + shortNumber(p.module);
   return makeGear(p);
 }
 
