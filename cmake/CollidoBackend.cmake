@@ -6,13 +6,44 @@
 #   collido_plugin_<name>   the shared library the collido executable loads with dlopen; it adds
 #                           only the exported entry point that forwards to the static table.
 # Every backend added this way is listed in COLLIDO_BACKENDS (a global property), which the
-# conformance kit and the benchmarks read to cover all backends without naming them.
+# benchmarks read to cover all backends without naming them; every plugin module is listed in
+# COLLIDO_PLUGIN_MODULES, which the conformance kit runs against, one CTest test each.
+#
+# collido_backend(<name> OPTIONAL) makes the backend optional: a cache variable
+# COLLIDO_WITH_<NAME> (AUTO, ON or OFF; default AUTO) decides; the folder finds its engine and
+# calls collido_backend_unavailable("reason") when it is missing, which is an error under ON and
+# a note under AUTO.
 macro(collido_backend name)
-  add_subdirectory(${PROJECT_SOURCE_DIR}/backends/${name} ${PROJECT_BINARY_DIR}/backends/${name})
+  cmake_parse_arguments(COLLIDO_BACKEND_ARG "OPTIONAL" "" "" ${ARGN})
+  string(TOUPPER ${name} COLLIDO_BACKEND_UPPER)
+  set(COLLIDO_BACKEND_SWITCH "ON")
+  if(COLLIDO_BACKEND_ARG_OPTIONAL)
+    set(COLLIDO_WITH_${COLLIDO_BACKEND_UPPER} AUTO CACHE STRING
+        "Build the ${name} backend plugin: AUTO (when its engine is installed), ON or OFF")
+    set_property(CACHE COLLIDO_WITH_${COLLIDO_BACKEND_UPPER} PROPERTY STRINGS AUTO ON OFF)
+    set(COLLIDO_BACKEND_SWITCH ${COLLIDO_WITH_${COLLIDO_BACKEND_UPPER}})
+  endif()
+  if(NOT COLLIDO_BACKEND_SWITCH STREQUAL "OFF")
+    add_subdirectory(${PROJECT_SOURCE_DIR}/backends/${name} ${PROJECT_BINARY_DIR}/backends/${name})
+  else()
+    message(STATUS "Backend ${name}: off (COLLIDO_WITH_${COLLIDO_BACKEND_UPPER}=OFF)")
+  endif()
 endmacro()
 
+# Called by an optional backend's folder when its engine is not installed; the caller returns.
+macro(collido_backend_unavailable reason)
+  if(COLLIDO_BACKEND_SWITCH STREQUAL "ON")
+    message(FATAL_ERROR "Backend ${COLLIDO_BACKEND_UPPER}: ${reason} (COLLIDO_WITH_${COLLIDO_BACKEND_UPPER}=ON)")
+  endif()
+  message(STATUS "Backend ${COLLIDO_BACKEND_UPPER}: not built, ${reason}")
+endmacro()
+
+# collido_add_plugin(<name> SOURCES ... [LIBRARIES ...] [DYNAMIC_ONLY])
+# DYNAMIC_ONLY keeps the backend out of the static registry, for engines that cannot be linked
+# into one program beside another plugin (e.g. Bullet's float and double builds share symbol
+# names); such a plugin is still loaded with dlopen, each in its own namespace.
 function(collido_add_plugin name)
-  cmake_parse_arguments(ARG "" "" "SOURCES;LIBRARIES" ${ARGN})
+  cmake_parse_arguments(ARG "DYNAMIC_ONLY" "" "SOURCES;LIBRARIES" ${ARGN})
   set(static_target collido_backend_${name})
   add_library(${static_target} STATIC ${ARG_SOURCES})
   target_link_libraries(${static_target} PUBLIC collido::plugin_api ${ARG_LIBRARIES})
@@ -38,7 +69,10 @@ function(collido_add_plugin name)
   target_link_options(${module_target} PRIVATE -Wl,--exclude-libs,ALL -Wl,--no-undefined)
 
   add_dependencies(collido_plugins ${module_target})
-  set_property(GLOBAL APPEND PROPERTY COLLIDO_BACKENDS ${name})
+  set_property(GLOBAL APPEND PROPERTY COLLIDO_PLUGIN_MODULES ${module_target})
+  if(NOT ARG_DYNAMIC_ONLY)
+    set_property(GLOBAL APPEND PROPERTY COLLIDO_BACKENDS ${name})
+  endif()
 endfunction()
 
 # collido_static_backends: a library listing every backend added so far, linked statically, as

@@ -17,5 +17,6 @@ struct PluginOptions {
 void addBackendsCommand(CLI::App& app, const PluginOptions& plugins, int& exit_code);
 void addCheckCommand(CLI::App& app, int& exit_code);
 void addRunCommand(CLI::App& app, const PluginOptions& plugins, int& exit_code);
+void addConformanceCommand(CLI::App& app, int& exit_code);
 
 }  // namespace collido::cli

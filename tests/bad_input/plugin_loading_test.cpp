@@ -182,7 +182,7 @@ TEST(PluginLoading, DiscoveryRecordsProblemsInsteadOfFailing) {
   const std::string missing = folder + "/libcollido_plugin_absent.so";
   const PluginDiscovery found =
       discoverPlugins({testPluginPath("wrong_abi_plugin"), testPluginPath("no_entry_plugin"),
-                       missing, folder, test::pluginDirectory()},
+                       missing, folder, test::pluginDirectory() + "/libcollido_plugin_obbtree.so"},
                       /*use_defaults=*/false);
   ASSERT_EQ(found.plugins.size(), 1u);
   EXPECT_EQ(found.plugins[0]->name(), "obbtree");

@@ -43,3 +43,13 @@ const CollidoPluginTable* pluginTable() {
   extern "C" const CollidoPluginTable* collido_plugin_table_##id(void) { \
     return ::collido::detail::pluginTable<&describe>(); /* NOLINT */     \
   }
+
+/// For a plugin library built on its own (not through collido_add_plugin, e.g. outside this
+/// source tree): COLLIDO_DEFINE_PLUGIN plus the exported COLLIDO_PLUGIN_ENTRY_SYMBOL. Use it in
+/// exactly one file of the library.
+#define COLLIDO_EXPORT_PLUGIN(id, describe)                                   \
+  COLLIDO_DEFINE_PLUGIN(id, describe)                                         \
+  extern "C" __attribute__((visibility("default"))) const CollidoPluginTable* \
+  collido_plugin_table(void) {                                                \
+    return collido_plugin_table_##id();                                       \
+  }

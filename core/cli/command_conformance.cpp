@@ -1,0 +1,178 @@
+// collido conformance PLUGIN.so: runs the conformance kit (the collido_conformance executable
+// beside this one) against one plugin file and prints a pass/skip/fail table.
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "commands.h"
+
+extern char** environ;
+
+namespace collido::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct ConformanceArguments {
+  std::string plugin;
+  std::string expectations_dir;
+  std::string write_expectations_dir;
+  std::string scenes_dir;
+  std::string variant;
+};
+
+std::string executableDirectory() {
+  std::error_code ec;
+  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+  return ec ? std::string(".") : exe.parent_path().string();
+}
+
+// Runs `argv` with stdout and stderr into `log`; returns the exit status, or -signal.
+int runTo(const std::vector<std::string>& argv, const std::string& log) {
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, log.c_str(),
+                                   O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
+  std::vector<char*> args;
+  args.reserve(argv.size() + 1);
+  for (const std::string& a : argv)
+    args.push_back(const_cast<char*>(a.c_str()));
+  args.push_back(nullptr);
+  pid_t pid = 0;
+  const int spawned = posix_spawn(&pid, args[0], &actions, nullptr, args.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  if (spawned != 0) return 127;
+  int status = 0;
+  if (waitpid(pid, &status, 0) < 0) return 127;
+  if (WIFSIGNALED(status)) return -WTERMSIG(status);
+  return WEXITSTATUS(status);
+}
+
+// The first line of a failure message that says something: GoogleTest puts "file:line" first.
+std::string firstLine(const std::string& text) {
+  std::istringstream lines(text);
+  std::string line;
+  while (std::getline(lines, line)) {
+    const bool location = line.rfind("/", 0) == 0 && line.find(' ') == std::string::npos;
+    if (!line.empty() && !location && line != "Failed") return line;
+  }
+  return text;
+}
+
+struct Row {
+  std::string check;
+  std::string result;
+  std::string detail;
+};
+
+std::vector<Row> readReport(const std::string& path) {
+  std::vector<Row> rows;
+  std::ifstream in(path);
+  if (!in) return rows;
+  const nlohmann::json report = nlohmann::json::parse(in, nullptr, false);
+  if (report.is_discarded()) return rows;
+  for (const auto& suite : report.value("testsuites", nlohmann::json::array())) {
+    for (const auto& test : suite.value("testsuite", nlohmann::json::array())) {
+      Row row;
+      std::string suite_name = suite.value("name", "");
+      if (const auto slash = suite_name.find('/'); slash != std::string::npos) {
+        suite_name = suite_name.substr(slash + 1);
+      }
+      row.check = suite_name + "." + test.value("name", "");
+      if (test.contains("failures")) {
+        row.result = "FAIL";
+        row.detail = firstLine(test["failures"][0].value("failure", ""));
+      } else if (test.value("result", "") == "SKIPPED") {
+        row.result = "skip";
+        row.detail = test.value("detail", "");
+      } else {
+        row.result = "pass";
+        row.detail = test.value("detail", "");
+      }
+      rows.push_back(row);
+    }
+  }
+  return rows;
+}
+
+int runConformance(const ConformanceArguments& args) {
+  const std::string kit = executableDirectory() + "/collido_conformance";
+  if (!fs::exists(kit)) {
+    std::cerr << "error: the conformance kit is not built (" << kit
+              << "); configure with COLLIDO_BUILD_TESTS=ON\n";
+    return 2;
+  }
+  std::error_code ec;
+  const fs::path work =
+      fs::temp_directory_path() / ("collido_conformance_" + std::to_string(getpid()));
+  fs::create_directories(work, ec);
+  const std::string json = (work / "report.json").string();
+  const std::string log = (work / "kit.log").string();
+  std::vector<std::string> argv = {kit, "--plugin=" + fs::absolute(args.plugin).string(),
+                                   "--gtest_output=json:" + json};
+  if (!args.expectations_dir.empty()) argv.push_back("--expectations-dir=" + args.expectations_dir);
+  if (!args.write_expectations_dir.empty()) {
+    argv.push_back("--write-expectations-dir=" + args.write_expectations_dir);
+  }
+  if (!args.scenes_dir.empty()) argv.push_back("--scenes-dir=" + args.scenes_dir);
+  if (!args.variant.empty()) argv.push_back("--variant=" + args.variant);
+  const int status = runTo(argv, log);
+  const std::vector<Row> rows = readReport(json);
+  if (rows.empty()) {
+    std::ifstream in(log);
+    std::cerr << "error: the kit produced no report (exit " << status << "):\n" << in.rdbuf();
+    return status < 0 ? 1 : (status == 0 ? 1 : status);
+  }
+  std::size_t width = 5;
+  for (const Row& r : rows)
+    width = std::max(width, r.check.size());
+  std::map<std::string, int> totals;
+  std::cout << std::string("check") + std::string(width - 5, ' ') << "  result  detail\n";
+  for (const Row& r : rows) {
+    ++totals[r.result];
+    std::cout << r.check << std::string(width - r.check.size(), ' ') << "  " << r.result
+              << std::string(6 - r.result.size(), ' ') << "  " << r.detail << "\n";
+  }
+  std::cout << "\n"
+            << totals["pass"] << " passed, " << totals["skip"] << " skipped, " << totals["FAIL"]
+            << " failed; full output: " << log << "\n";
+  if (status < 0) std::cout << "the kit died of signal " << -status << "\n";
+  return totals["FAIL"] == 0 && status == 0 ? 0 : 1;
+}
+
+}  // namespace
+
+void addConformanceCommand(CLI::App& app, int& exit_code) {
+  CLI::App* command = app.add_subcommand(
+      "conformance",
+      "Run the plugin conformance kit against a plugin file and print a pass/skip/fail table. "
+      "Answers must match the exact oracle unless an expectations file records the known "
+      "disagreements (see tests/conformance/README.md)");
+  auto args = std::make_shared<ConformanceArguments>();
+  command->add_option("plugin", args->plugin, "the plugin shared library")
+      ->required()
+      ->check(CLI::ExistingFile);
+  command->add_option("--expectations-dir", args->expectations_dir,
+                      "folder of <variant>.json files recording accepted disagreements");
+  command->add_option("--write-expectations-dir", args->write_expectations_dir,
+                      "write the measured disagreements there, for review");
+  command->add_option("--scenes-dir", args->scenes_dir, "scenes to run (default: the bundled)");
+  command->add_option("--variant", args->variant, "test only this variant of the plugin");
+  command->callback([args, &exit_code] { exit_code = runConformance(*args); });
+}
+
+}  // namespace collido::cli

@@ -1,0 +1,98 @@
+// collido_conformance: the plugin conformance kit.
+//   collido_conformance --plugin=PATH.so [--plugin=...] [--variant=NAME]
+//                       [--expectations-dir=DIR] [--write-expectations-dir=DIR] [--scenes-dir=DIR]
+//                       [GoogleTest flags]
+// Every variant of every plugin given is run through the whole suite (conformance_test.cpp).
+#include <cstring>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "conformance_target.h"
+#include "scene_cases.h"
+
+namespace collido::conformance {
+
+std::vector<Target>& targets() {
+  static std::vector<Target> list;
+  return list;
+}
+
+KitSettings& settings() {
+  static KitSettings values;
+  return values;
+}
+
+namespace {
+
+std::string testName(const std::string& variant) {
+  std::string out = variant;
+  for (char& c : out) {
+    if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+  }
+  return out;
+}
+
+bool takeValue(const char* arg, const char* flag, std::string& out) {
+  const std::size_t n = std::strlen(flag);
+  if (std::strncmp(arg, flag, n) != 0 || arg[n] != '=') return false;
+  out = arg + n + 1;
+  return true;
+}
+
+}  // namespace
+}  // namespace collido::conformance
+
+int main(int argc, char** argv) {
+  using namespace collido::conformance;
+  std::vector<std::string> plugins;
+  std::string only_variant;
+  settings().expectations_dir = COLLIDO_SOURCE_DIR "/tests/conformance/expectations";
+  settings().scenes_dir = COLLIDO_SOURCE_DIR "/scenes";
+  std::vector<char*> rest = {argv[0]};
+  for (int i = 1; i < argc; ++i) {
+    std::string value;
+    if (takeValue(argv[i], "--plugin", value)) {
+      plugins.push_back(value);
+    } else if (takeValue(argv[i], "--variant", value)) {
+      only_variant = value;
+    } else if (takeValue(argv[i], "--expectations-dir", value)) {
+      settings().expectations_dir = value;
+    } else if (takeValue(argv[i], "--write-expectations-dir", value)) {
+      settings().write_expectations_dir = value;
+    } else if (takeValue(argv[i], "--scenes-dir", value)) {
+      settings().scenes_dir = value;
+    } else {
+      rest.push_back(argv[i]);
+    }
+  }
+  if (plugins.empty()) {
+    std::cerr << "collido_conformance: give at least one --plugin=PATH\n";
+    return 2;
+  }
+  for (const std::string& path : plugins) {
+    collido::Result<std::shared_ptr<collido::PluginLibrary>> library =
+        collido::PluginLibrary::open(path);
+    if (!library.ok()) {
+      std::cerr << "collido_conformance: " << library.status().message() << "\n";
+      return 2;
+    }
+    for (const collido::VariantInfo& v : library.value()->variants()) {
+      if (!only_variant.empty() && v.name != only_variant) continue;
+      targets().push_back(Target{library.value(), v.name, testName(v.name)});
+    }
+  }
+  if (targets().empty()) {
+    std::cerr << "collido_conformance: no variant '" << only_variant << "' in the plugins given\n";
+    return 2;
+  }
+  if (collido::Status s = loadSceneCases(settings().scenes_dir); !s.ok()) {
+    std::cerr << "collido_conformance: " << s.message() << "\n";
+    return 2;
+  }
+  int rest_count = static_cast<int>(rest.size());
+  ::testing::InitGoogleTest(&rest_count, rest.data());
+  return RUN_ALL_TESTS();
+}

@@ -1,0 +1,327 @@
+// The plugin conformance kit: one parameterised suite, written once, run against every plugin.
+//
+// Hard requirements (any plugin): the table and capabilities are sane, another interface version
+// is refused, unsupported requests answer "unsupported", bad handles are errors, results obey the
+// contact conventions, a crash fails the run (each plugin runs in its own process).
+// Measurements held to a committed record: every answer against the exact oracle on the bundled
+// scenes and the kit's own adversarial scenes. A variant must be exact unless its expectations
+// file (tests/conformance/expectations/<variant>.json) records, per scene and query, the counts
+// of its disagreements; then those counts must be met exactly, so a change in an engine's
+// behaviour, for better or worse, is noticed and reviewed instead of hidden by a tolerance.
+#include <cmath>
+#include <cstring>
+#include <memory>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include <collido/host/backend_instance.h>
+#include <collido/mesh/procedural.h>
+#include <collido/oracle/exact_oracle.h>
+#include <collido/runner/runner.h>
+
+#include "conformance_target.h"
+#include "expectations.h"
+#include "scene_cases.h"
+
+namespace collido::conformance {
+namespace {
+
+// Skips with a reason that also reaches the JSON report (GoogleTest keeps skip messages out of
+// it), where `collido conformance` reads it.
+#define COLLIDO_KIT_SKIP(reason)                            \
+  do {                                                      \
+    const std::string kit_reason_ = (reason);               \
+    ::testing::Test::RecordProperty("detail", kit_reason_); \
+    GTEST_SKIP() << kit_reason_;                            \
+  } while (false)
+
+std::unique_ptr<BackendInstance> createInstance(const Target& target) {
+  Result<std::unique_ptr<BackendInstance>> instance =
+      BackendInstance::create(target.library, target.variant);
+  EXPECT_TRUE(instance.ok()) << instance.status().message();
+  return instance.ok() ? std::move(instance).value() : nullptr;
+}
+
+TriangleMesh sphere(double radius, int slices, int stacks) {
+  Result<TriangleMesh> mesh = makeSphere(SphereParams{radius, slices, stacks});
+  EXPECT_TRUE(mesh.ok());
+  return std::move(mesh).value();
+}
+
+Pose moved(double x) {
+  Pose pose = Pose::Identity();
+  pose.translation() = Eigen::Vector3d(x, 0.0, 0.0);
+  return pose;
+}
+
+// --- the interface ---------------------------------------------------------------------------
+
+class Interface : public ::testing::TestWithParam<std::size_t> {
+ protected:
+  const Target& target() const { return targets()[GetParam()]; }
+};
+
+TEST_P(Interface, TableAndCapabilitiesAreSane) {
+  const CollidoPluginTable& table = target().library->table();
+  EXPECT_EQ(table.abi_version, COLLIDO_PLUGIN_ABI_VERSION);
+  EXPECT_GE(table.struct_size, sizeof(CollidoPluginTable));
+  EXPECT_NE(std::strlen(table.plugin_version), 0u);
+  EXPECT_NE(std::strlen(table.engine_version), 0u);
+  std::unique_ptr<BackendInstance> backend = createInstance(target());
+  ASSERT_TRUE(backend);
+  const Capabilities& caps = backend->capabilities();
+  EXPECT_TRUE(caps.buildsShape(ShapeKind::kTriangleMesh)) << "no triangle meshes";
+  EXPECT_FALSE(caps.queries.empty()) << "answers no query kind";
+}
+
+TEST_P(Interface, RefusesAnotherInterfaceVersion) {
+  CollidoPluginTable altered = target().library->table();
+  altered.abi_version = COLLIDO_PLUGIN_ABI_VERSION + 1;
+  const Status refused = checkPluginTable(&altered, target().library->path());
+  ASSERT_FALSE(refused.ok());
+  EXPECT_NE(refused.message().find(std::to_string(COLLIDO_PLUGIN_ABI_VERSION + 1)),
+            std::string::npos)
+      << refused.message();
+  EXPECT_NE(refused.message().find(std::to_string(COLLIDO_PLUGIN_ABI_VERSION)), std::string::npos);
+}
+
+TEST_P(Interface, RejectsUnknownOptions) {
+  Result<std::unique_ptr<BackendInstance>> instance = BackendInstance::create(
+      target().library, target().variant, {{"no_such_option_anywhere", "1"}});
+  ASSERT_FALSE(instance.ok());
+  EXPECT_EQ(instance.status().code(), StatusCode::kInvalidArgument);
+  EXPECT_NE(instance.status().message().find("no_such_option_anywhere"), std::string::npos)
+      << instance.status().message();
+}
+
+TEST_P(Interface, UnsupportedRequestsAnswerUnsupported) {
+  std::unique_ptr<BackendInstance> backend = createInstance(target());
+  ASSERT_TRUE(backend);
+  const QueryKindSet supported = backend->capabilities().queries;
+  std::vector<QueryKind> missing;
+  for (QueryKind kind : {QueryKind::kBoolean, QueryKind::kAllPairs, QueryKind::kContacts}) {
+    if (!supported.contains(kind)) missing.push_back(kind);
+  }
+  if (missing.empty()) COLLIDO_KIT_SKIP(target().variant + " answers every query kind");
+  const TriangleMesh mesh = sphere(1.0, 8, 4);
+  for (QueryKind kind : missing) {
+    Result<ModelHandle> refused = backend->build(mesh.view(), BuildNeeds{QueryKindSet(kind)});
+    ASSERT_FALSE(refused.ok()) << queryKindName(kind);
+    EXPECT_EQ(refused.status().code(), StatusCode::kUnsupported) << refused.status().message();
+  }
+  Result<ModelHandle> a = backend->build(mesh.view(), BuildNeeds{supported});
+  Result<ModelHandle> b = backend->build(mesh.view(), BuildNeeds{supported});
+  ASSERT_TRUE(a.ok() && b.ok());
+  QueryResult result;
+  for (QueryKind kind : missing) {
+    QueryRequest request;
+    request.kind = kind;
+    const Status s =
+        backend->query(a.value(), Pose::Identity(), b.value(), moved(0.5), request, result);
+    EXPECT_EQ(s.code(), StatusCode::kUnsupported) << queryKindName(kind) << ": " << s.toString();
+  }
+}
+
+TEST_P(Interface, BadHandlesAreErrors) {
+  std::unique_ptr<BackendInstance> backend = createInstance(target());
+  ASSERT_TRUE(backend);
+  const QueryKindSet supported = backend->capabilities().queries;
+  const TriangleMesh mesh = sphere(1.0, 8, 4);
+  Result<ModelHandle> a = backend->build(mesh.view(), BuildNeeds{supported});
+  Result<ModelHandle> b = backend->build(mesh.view(), BuildNeeds{supported});
+  ASSERT_TRUE(a.ok() && b.ok());
+  ASSERT_TRUE(backend->release(b.value()).ok());
+  QueryRequest request;
+  request.kind = supported.contains(QueryKind::kBoolean)    ? QueryKind::kBoolean
+                 : supported.contains(QueryKind::kAllPairs) ? QueryKind::kAllPairs
+                                                            : QueryKind::kContacts;
+  QueryResult result;
+  for (ModelHandle bad : {b.value(), ModelHandle{0}, a.value() + 12345}) {
+    const Status s = backend->query(a.value(), Pose::Identity(), bad, moved(0.5), request, result);
+    EXPECT_EQ(s.code(), StatusCode::kInvalidHandle) << "handle " << bad << ": " << s.toString();
+  }
+  EXPECT_EQ(backend->release(b.value()).code(), StatusCode::kInvalidHandle);
+  EXPECT_FALSE(backend->memory(b.value()).ok());
+}
+
+// --- contacts --------------------------------------------------------------------------------
+
+// Two spheres overlapping along +x: every contact must be finite, its normal a unit vector
+// pointing from A towards B (+x, give or take the facets), its depth >= 0, its triangles real.
+TEST_P(Interface, ContactsFollowTheConventions) {
+  std::unique_ptr<BackendInstance> backend = createInstance(target());
+  ASSERT_TRUE(backend);
+  if (!backend->capabilities().queries.contains(QueryKind::kContacts)) {
+    COLLIDO_KIT_SKIP(target().variant + " does not answer contacts queries");
+  }
+  const TriangleMesh mesh = sphere(1.0, 32, 16);
+  const BuildNeeds needs{QueryKindSet(QueryKind::kContacts)};
+  Result<ModelHandle> a = backend->build(mesh.view(), needs);
+  Result<ModelHandle> b = backend->build(mesh.view(), needs);
+  ASSERT_TRUE(a.ok() && b.ok());
+  QueryRequest request;
+  request.kind = QueryKind::kContacts;
+  QueryResult result;
+  ASSERT_TRUE(
+      backend->query(a.value(), Pose::Identity(), b.value(), moved(1.9), request, result).ok());
+  ASSERT_TRUE(result.intersecting);
+  ASSERT_FALSE(result.contacts.empty()) << "intersecting, but no contact reported";
+  Eigen::Vector3d mean_normal = Eigen::Vector3d::Zero();
+  const auto triangles = static_cast<std::int32_t>(mesh.triangleCount());
+  for (const Contact& c : result.contacts) {
+    ASSERT_TRUE(c.position.allFinite() && c.normal.allFinite() && std::isfinite(c.depth));
+    EXPECT_NEAR(c.normal.norm(), 1.0, 1e-6);
+    EXPECT_GE(c.depth, 0.0);
+    EXPECT_TRUE(c.triangle_a == -1 || (c.triangle_a >= 0 && c.triangle_a < triangles));
+    EXPECT_TRUE(c.triangle_b == -1 || (c.triangle_b >= 0 && c.triangle_b < triangles));
+    // The overlap of the two unit spheres lies within x in [0.9, 1.0], |y|,|z| < 0.45.
+    EXPECT_GT(c.position.x(), 0.85);
+    EXPECT_LT(c.position.x(), 1.05);
+    mean_normal += c.normal;
+  }
+  EXPECT_GT(mean_normal.normalized().x(), 0.9)
+      << "contact normals must point from A towards B (+x); mean " << mean_normal.transpose();
+}
+
+// --- deformation -----------------------------------------------------------------------------
+
+TEST_P(Interface, UpdateThenQueryAnswersForTheNewShape) {
+  std::unique_ptr<BackendInstance> backend = createInstance(target());
+  ASSERT_TRUE(backend);
+  const Capabilities& caps = backend->capabilities();
+  if (!caps.update) COLLIDO_KIT_SKIP(target().variant + " does not update models");
+  const QueryKind kind =
+      caps.queries.contains(QueryKind::kAllPairs) ? QueryKind::kAllPairs : QueryKind::kBoolean;
+  if (!caps.queries.contains(kind)) COLLIDO_KIT_SKIP("answers neither boolean nor all_pairs");
+
+  const TriangleMesh original = sphere(0.5, 24, 12);
+  const TriangleMesh other = sphere(1.0, 24, 12);
+  Result<ModelHandle> a = backend->build(original.view(), BuildNeeds{QueryKindSet(kind), true});
+  Result<ModelHandle> b = backend->build(other.view(), BuildNeeds{QueryKindSet(kind)});
+  ASSERT_TRUE(a.ok() && b.ok());
+  // Apart before the update; the grown, moved sphere overlaps the other one after it.
+  TriangleMesh grown = original;
+  grown.vertices *= 2.2;
+  grown.vertices.row(0).array() += 0.7;
+  const Pose pose_b = moved(2.5);
+  QueryRequest request;
+  request.kind = kind;
+  QueryResult result;
+  ASSERT_TRUE(backend->query(a.value(), Pose::Identity(), b.value(), pose_b, request, result).ok());
+  EXPECT_FALSE(result.intersecting) << "before the update the spheres are 1 apart";
+  ASSERT_TRUE(backend->update(a.value(), grown.vertices).ok());
+  ASSERT_TRUE(backend->query(a.value(), Pose::Identity(), b.value(), pose_b, request, result).ok());
+  const OracleAnswer truth = exactIntersectingPairs(grown, Pose::Identity(), other, pose_b);
+  ASSERT_TRUE(truth.intersecting);
+
+  Disagreement d;
+  d.false_negatives = truth.intersecting && !result.intersecting ? 1 : 0;
+  if (kind == QueryKind::kAllPairs) {
+    std::vector<TrianglePair> reported = result.pairs;
+    std::sort(reported.begin(), reported.end());
+    reported.erase(std::unique(reported.begin(), reported.end()), reported.end());
+    std::vector<TrianglePair> matched;
+    std::set_intersection(reported.begin(), reported.end(), truth.pairs.begin(), truth.pairs.end(),
+                          std::back_inserter(matched));
+    d.missed_pairs = truth.pairs.size() - matched.size();
+    d.extra_pairs = reported.size() - matched.size();
+  }
+  d.disagreeing_frames = d.none() ? 0 : 1;
+  const std::string key = std::string("update/") + queryKindName(kind);
+  Result<Expectations> expectations =
+      loadExpectations(settings().expectations_dir, target().variant);
+  ASSERT_TRUE(expectations.ok()) << expectations.status().message();
+  if (!settings().write_expectations_dir.empty()) {
+    ASSERT_TRUE(
+        recordMeasurement(settings().write_expectations_dir, target().variant, key, d).ok());
+  }
+  if (!expectations.value().expectedFor(key).none()) {
+    RecordProperty("detail", "as recorded: " + expectations.value().expectedFor(key).toString());
+  }
+  if (!(d == expectations.value().expectedFor(key)))
+    ADD_FAILURE() << key << ": measured " << d.toString() << "; expected "
+                  << expectations.value().expectedFor(key).toString() << " ("
+                  << (expectations.value().file.empty() ? "no expectations file: must be exact"
+                                                        : expectations.value().file)
+                  << ")";
+}
+
+// --- answers against the oracle --------------------------------------------------------------
+
+class SceneAnswers : public ::testing::TestWithParam<std::tuple<std::size_t, std::size_t>> {
+ protected:
+  const Target& target() const { return targets()[std::get<0>(GetParam())]; }
+  const SceneCase& scene() const { return sceneCases()[std::get<1>(GetParam())]; }
+};
+
+TEST_P(SceneAnswers, MatchTheOracleOrTheRecordedExpectations) {
+  Result<Expectations> expectations =
+      loadExpectations(settings().expectations_dir, target().variant);
+  ASSERT_TRUE(expectations.ok()) << expectations.status().message();
+  const BackendSpec spec{target().library, target().variant, {}};
+  RunOptions options;
+  options.repetitions = 0;  // answers only; timing belongs to the study
+  const RunReport report = runScenes({*scene().scene}, {spec}, options);
+  ASSERT_TRUE(report.problems.empty()) << report.problems.front();
+  int answered = 0;
+  std::string skipped;
+  std::string recorded;
+  for (const QueryMeasurement& m : report.measurements) {
+    if (m.status.rfind("skipped", 0) == 0) {
+      skipped += "\n  " + m.query + ": " + m.status;
+      continue;
+    }
+    ASSERT_TRUE(m.ok()) << m.query << ": " << m.status;
+    ++answered;
+    const std::string key = scene().name + "/" + m.query;
+    const Disagreement measured = disagreementOf(m);
+    if (!settings().write_expectations_dir.empty()) {
+      ASSERT_TRUE(
+          recordMeasurement(settings().write_expectations_dir, target().variant, key, measured)
+              .ok());
+    }
+    const Disagreement expected = expectations.value().expectedFor(key);
+    if (!expected.none()) recorded += m.query + " as recorded (" + expected.toString() + ") ";
+    if (!(measured == expected))
+      ADD_FAILURE()
+          << key << ": measured " << measured.toString() << "\n  expected " << expected.toString()
+          << " ("
+          << (expectations.value().file.empty() ? "no expectations file: must be exact"
+                                                : expectations.value().file)
+          << ")\n  A comparator's changed count is a finding to review; update the file only "
+             "after reading the differing frames (collido run --json).";
+  }
+  if (answered == 0) COLLIDO_KIT_SKIP("no query of this scene is answered:" + skipped);
+  if (!recorded.empty() || !skipped.empty()) RecordProperty("detail", recorded + skipped);
+}
+
+std::string targetName(const ::testing::TestParamInfo<std::size_t>& info) {
+  return targets()[info.param].test_name;
+}
+
+std::string targetSceneName(
+    const ::testing::TestParamInfo<std::tuple<std::size_t, std::size_t>>& info) {
+  return targets()[std::get<0>(info.param)].test_name + "__" +
+         sceneCases()[std::get<1>(info.param)].test_name;
+}
+
+std::vector<std::size_t> indices(std::size_t n) {
+  std::vector<std::size_t> out(n);
+  for (std::size_t i = 0; i < n; ++i)
+    out[i] = i;
+  return out;
+}
+
+// The generators run when GoogleTest registers the tests, after main() filled the lists.
+INSTANTIATE_TEST_SUITE_P(Plugin, Interface, ::testing::ValuesIn(indices(targets().size())),
+                         targetName);
+INSTANTIATE_TEST_SUITE_P(Plugin, SceneAnswers,
+                         ::testing::Combine(::testing::ValuesIn(indices(targets().size())),
+                                            ::testing::ValuesIn(indices(sceneCases().size()))),
+                         targetSceneName);
+
+}  // namespace
+}  // namespace collido::conformance

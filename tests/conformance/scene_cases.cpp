@@ -1,0 +1,93 @@
+#include "scene_cases.h"
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+
+namespace collido::conformance {
+namespace {
+
+// Adversarial scenes of the kit itself, with exactly representable poses where contact must be
+// exact: the oracle decides them exactly, so an exact backend must agree to the last pair.
+constexpr const char* kKitScenes[] = {
+    // Neighbouring links of a chain at pitch 2(R - r) touch exactly: with an even resolution both
+    // tubes have vertices at the touching points; the quarter turn is an exact matrix.
+    R"({"name": "kit_touching_links", "frames": 1,
+        "objects": [
+          {"name": "a", "shape": {"generator": "torus", "major_radius": 1, "minor_radius": 0.25,
+                                  "major_segments": 32, "minor_segments": 16}},
+          {"name": "b", "shape": {"generator": "torus", "major_radius": 1, "minor_radius": 0.25,
+                                  "major_segments": 32, "minor_segments": 16},
+           "pose": {"translation": [1.5, 0, 0],
+                    "rotation": {"matrix": [[1, 0, 0], [0, 0, -1], [0, 1, 0]]}}}],
+        "queries": [{"name": "all_pairs", "a": "a", "b": "b", "kind": "all_pairs"},
+                    {"name": "boolean", "a": "a", "b": "b", "kind": "boolean"}]})",
+    // Two flat sheets in one plane, the second shifted within it by exact fractions of a cell:
+    // every overlapping pair is coplanar, and many edges and corners touch exactly.
+    R"({"name": "kit_coplanar_sheets", "frames": 2,
+        "objects": [
+          {"name": "a", "shape": {"generator": "grid_sheet", "cells_x": 16, "cells_y": 16}},
+          {"name": "b", "shape": {"generator": "grid_sheet", "cells_x": 16, "cells_y": 16},
+           "motion": {"poses": [{"translation": [0.03125, 0.03125, 0]},
+                                {"translation": [0.0625, 0, 0]}]}}],
+        "queries": [{"name": "all_pairs", "a": "a", "b": "b", "kind": "all_pairs"},
+                    {"name": "boolean", "a": "a", "b": "b", "kind": "boolean"}]})",
+    R"({"name": "kit_random_tori", "frames": 12,
+        "objects": [
+          {"name": "a", "shape": {"generator": "torus", "major_segments": 40, "minor_segments": 20}},
+          {"name": "b", "shape": {"generator": "torus", "major_segments": 40, "minor_segments": 20},
+           "motion": {"random": {"seed": 77, "relative_to": "a", "overlap": [0.2, 0.95]}}}],
+        "queries": [{"name": "all_pairs", "a": "a", "b": "b", "kind": "all_pairs"},
+                    {"name": "boolean", "a": "a", "b": "b", "kind": "boolean"}]})",
+    R"({"name": "kit_sphere_gear", "frames": 12,
+        "objects": [
+          {"name": "gear", "shape": {"generator": "gear", "teeth": 24, "module": 0.1}},
+          {"name": "ball", "shape": {"generator": "sphere", "radius": 0.6, "slices": 24,
+                                     "stacks": 12},
+           "motion": {"random": {"seed": 78, "relative_to": "gear", "overlap": [0.1, 0.6]}}}],
+        "queries": [{"name": "all_pairs", "a": "gear", "b": "ball", "kind": "all_pairs"},
+                    {"name": "boolean", "a": "gear", "b": "ball", "kind": "boolean"}]})",
+};
+
+std::string testName(const std::string& name) {
+  std::string out = name;
+  for (char& c : out) {
+    if (std::isalnum(static_cast<unsigned char>(c)) == 0) c = '_';
+  }
+  return out;
+}
+
+}  // namespace
+
+std::vector<SceneCase>& sceneCases() {
+  static std::vector<SceneCase> cases;
+  return cases;
+}
+
+Status loadSceneCases(const std::string& directory) {
+  std::vector<std::string> files;
+  std::error_code ec;
+  for (const auto& entry : std::filesystem::directory_iterator(directory, ec)) {
+    if (entry.path().extension() == ".json") files.push_back(entry.path().string());
+  }
+  if (ec) return {StatusCode::kInvalidArgument, directory + ": " + ec.message()};
+  std::sort(files.begin(), files.end());
+  const auto add = [](Result<Scene> scene) -> Status {
+    if (!scene.ok()) return scene.status();
+    SceneCase c;
+    c.name = scene.value().name;
+    c.test_name = testName(c.name);
+    c.scene = std::make_shared<const Scene>(std::move(scene).value());
+    sceneCases().push_back(std::move(c));
+    return {};
+  };
+  for (const std::string& file : files) {
+    if (Status s = add(loadScene(file)); !s.ok()) return s;
+  }
+  for (const char* text : kKitScenes) {
+    if (Status s = add(parseScene(text, "conformance kit scene", directory)); !s.ok()) return s;
+  }
+  return {};
+}
+
+}  // namespace collido::conformance

@@ -1,0 +1,27 @@
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <collido/scene/scene.h>
+#include <collido/status.h>
+
+namespace collido::conformance {
+
+/// A scene every plugin is run on.
+struct SceneCase {
+  std::string name;       ///< the scene's name, used in expectation keys
+  std::string test_name;  ///< as a GoogleTest name
+  std::shared_ptr<const Scene> scene;
+};
+
+/// The cases, filled by main() before GoogleTest registers the tests.
+std::vector<SceneCase>& sceneCases();
+
+/// Loads every *.json in `directory` (the bundled scenes) and the kit's own adversarial scenes:
+/// linked tori touching exactly, coplanar overlapping sheets, tori at random poses, and a sphere
+/// against a gear. Fails on the first scene that does not load.
+Status loadSceneCases(const std::string& directory);
+
+}  // namespace collido::conformance
