@@ -9,6 +9,7 @@ packages=(
   libeigen3-dev libcgal-dev libgmp-dev libmpfr-dev libboost-dev
   libassimp-dev nlohmann-json3-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev
+  libfcl-dev libbullet-dev libode-dev
 )
 if [[ "${1:-}" == "--ci" ]]; then
   packages+=(clang clang-format clang-tidy)
