@@ -67,7 +67,7 @@ std::string firstLine(const std::string& text) {
   std::istringstream lines(text);
   std::string line;
   while (std::getline(lines, line)) {
-    const bool location = line.rfind("/", 0) == 0 && line.find(' ') == std::string::npos;
+    const bool location = line.rfind('/', 0) == 0 && line.find(' ') == std::string::npos;
     if (!line.empty() && !location && line != "Failed") return line;
   }
   return text;

@@ -271,7 +271,7 @@ TEST_P(SceneAnswers, MatchTheOracleOrTheRecordedExpectations) {
   std::string recorded;
   for (const QueryMeasurement& m : report.measurements) {
     if (m.status.rfind("skipped", 0) == 0) {
-      skipped += "\n  " + m.query + ": " + m.status;
+      skipped += (skipped.empty() ? "" : "; ") + m.query + " " + m.status;
       continue;
     }
     ASSERT_TRUE(m.ok()) << m.query << ": " << m.status;
@@ -294,7 +294,7 @@ TEST_P(SceneAnswers, MatchTheOracleOrTheRecordedExpectations) {
           << ")\n  A comparator's changed count is a finding to review; update the file only "
              "after reading the differing frames (collido run --json).";
   }
-  if (answered == 0) COLLIDO_KIT_SKIP("no query of this scene is answered:" + skipped);
+  if (answered == 0) COLLIDO_KIT_SKIP("no query of this scene is answered: " + skipped);
   if (!recorded.empty() || !skipped.empty()) RecordProperty("detail", recorded + skipped);
 }
 
