@@ -93,6 +93,7 @@ int main(int argc, char** argv) {
     return 2;
   }
   int rest_count = static_cast<int>(rest.size());
+  rest.push_back(nullptr);  // argv[argc] is null, and GoogleTest moves it along with the flags
   ::testing::InitGoogleTest(&rest_count, rest.data());
   return RUN_ALL_TESTS();
 }

@@ -67,7 +67,11 @@ Result<std::shared_ptr<PluginLibrary>> PluginLibrary::open(const std::string& pa
   std::error_code ec;
   if (!fs::exists(path, ec)) return tableError(path, "file not found");
   dlerror();
-  void* handle = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
+  // RTLD_NODELETE: a plugin stays mapped after dlclose. Engines keep process-wide state (ODE's
+  // dInitODE2 data, per-thread caches) that no one may free while another instance could still
+  // use it; unmapping their code and globals under it would turn that state into dangling
+  // memory (and leak reports), for no gain in a process that loads a handful of plugins.
+  void* handle = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL | RTLD_NODELETE);
   if (handle == nullptr) {
     const char* why = dlerror();
     return tableError(path, std::string("cannot load it as a shared library: ") +
