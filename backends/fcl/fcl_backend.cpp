@@ -135,8 +135,7 @@ class FclBackend final : public Backend {
     return std::unique_ptr<BackendModel>(makeModel(type_, mesh));
   }
 
-  Status update(BackendModel& model,
-                const Eigen::Ref<const Eigen::Matrix3Xd>& positions) override {
+  Status update(BackendModel& model, const Eigen::Ref<const Eigen::Matrix3Xd>& positions) override {
     static_cast<FclModel&>(model).update(positions);
     return {};
   }
