@@ -17,6 +17,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include <collido/host/plugin_library.h>
+
 #include "commands.h"
 
 extern char** environ;
@@ -33,12 +35,6 @@ struct ConformanceArguments {
   std::string scenes_dir;
   std::string variant;
 };
-
-std::string executableDirectory() {
-  std::error_code ec;
-  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-  return ec ? std::string(".") : exe.parent_path().string();
-}
 
 // Runs `argv` with stdout and stderr into `log`; returns the exit status, or -signal.
 int runTo(const std::vector<std::string>& argv, const std::string& log) {
@@ -110,7 +106,8 @@ std::vector<Row> readReport(const std::string& path) {
 }
 
 int runConformance(const ConformanceArguments& args) {
-  const std::string kit = executableDirectory() + "/collido_conformance";
+  const std::string here = executableDirectory();
+  const std::string kit = (here.empty() ? std::string(".") : here) + "/collido_conformance";
   if (!fs::exists(kit)) {
     std::cerr << "error: the conformance kit is not built (" << kit
               << "); configure with COLLIDO_BUILD_TESTS=ON\n";

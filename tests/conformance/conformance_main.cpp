@@ -25,15 +25,15 @@ KitSettings& settings() {
   return values;
 }
 
-namespace {
-
-std::string testName(const std::string& variant) {
-  std::string out = variant;
+std::string gtestName(const std::string& text) {
+  std::string out = text;
   for (char& c : out) {
-    if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+    if (std::isalnum(static_cast<unsigned char>(c)) == 0) c = '_';
   }
   return out;
 }
+
+namespace {
 
 bool takeValue(const char* arg, const char* flag, std::string& out) {
   const std::size_t n = std::strlen(flag);
@@ -81,7 +81,7 @@ int main(int argc, char** argv) {
     }
     for (const collido::VariantInfo& v : library.value()->variants()) {
       if (!only_variant.empty() && v.name != only_variant) continue;
-      targets().push_back(Target{library.value(), v.name, testName(v.name)});
+      targets().push_back(Target{library.value(), v.name, gtestName(v.name)});
     }
   }
   if (targets().empty()) {

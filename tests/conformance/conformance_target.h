@@ -22,6 +22,9 @@ struct KitSettings {
   std::string scenes_dir;              ///< bundled scenes to run
 };
 
+/// `text` as a GoogleTest name: every character but letters and digits becomes '_'.
+std::string gtestName(const std::string& text);
+
 /// The targets and settings, filled by main() before GoogleTest registers the tests.
 std::vector<Target>& targets();
 KitSettings& settings();

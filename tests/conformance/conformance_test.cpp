@@ -217,19 +217,9 @@ TEST_P(Interface, UpdateThenQueryAnswersForTheNewShape) {
   const OracleAnswer truth = exactIntersectingPairs(grown, Pose::Identity(), other, pose_b);
   ASSERT_TRUE(truth.intersecting);
 
-  Disagreement d;
-  d.false_negatives = truth.intersecting && !result.intersecting ? 1 : 0;
-  if (kind == QueryKind::kAllPairs) {
-    std::vector<TrianglePair> reported = result.pairs;
-    std::sort(reported.begin(), reported.end());
-    reported.erase(std::unique(reported.begin(), reported.end()), reported.end());
-    std::vector<TrianglePair> matched;
-    std::set_intersection(reported.begin(), reported.end(), truth.pairs.begin(), truth.pairs.end(),
-                          std::back_inserter(matched));
-    d.missed_pairs = truth.pairs.size() - matched.size();
-    d.extra_pairs = reported.size() - matched.size();
-  }
-  d.disagreeing_frames = d.none() ? 0 : 1;
+  FrameRecord record;
+  compareWithOracle(grown, Pose::Identity(), other, pose_b, kind, result, truth, record);
+  const Disagreement d = disagreementOf(record, kind);
   const std::string key = std::string("update/") + queryKindName(kind);
   Result<Expectations> expectations =
       loadExpectations(settings().expectations_dir, target().variant);

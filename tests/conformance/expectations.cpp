@@ -51,19 +51,32 @@ std::string Disagreement::toString() const {
   return out.str();
 }
 
-Disagreement disagreementOf(const QueryMeasurement& m) {
+Disagreement disagreementOf(const FrameRecord& f, QueryKind kind) {
   Disagreement d;
-  d.false_negatives = m.false_negatives;
-  d.false_positives = m.false_positives;
-  d.disagreeing_frames = m.disagreements;
-  for (const FrameRecord& f : m.frames) {
-    d.invalid_pairs += f.invalid_pairs;
-    if (m.kind != QueryKind::kAllPairs) continue;
+  d.false_negatives = f.oracle_intersecting && !f.reported_intersecting ? 1 : 0;
+  d.false_positives = !f.oracle_intersecting && f.reported_intersecting ? 1 : 0;
+  d.disagreeing_frames = f.disagrees(kind) ? 1 : 0;
+  d.invalid_pairs = f.invalid_pairs;
+  if (kind == QueryKind::kAllPairs) {
     // A truncated answer leaves pairs out on purpose; only its wrong pairs count.
-    if (!f.truncated) d.missed_pairs += f.oracle_pairs - f.matched_pairs;
-    d.extra_pairs += f.reported_pairs - f.matched_pairs;
+    if (!f.truncated) d.missed_pairs = f.oracle_pairs - f.matched_pairs;
+    d.extra_pairs = f.reported_pairs - f.matched_pairs;
   }
   return d;
+}
+
+Disagreement disagreementOf(const QueryMeasurement& m) {
+  Disagreement sum;
+  for (const FrameRecord& f : m.frames) {
+    const Disagreement d = disagreementOf(f, m.kind);
+    sum.disagreeing_frames += d.disagreeing_frames;
+    sum.false_negatives += d.false_negatives;
+    sum.false_positives += d.false_positives;
+    sum.missed_pairs += d.missed_pairs;
+    sum.extra_pairs += d.extra_pairs;
+    sum.invalid_pairs += d.invalid_pairs;
+  }
+  return sum;
 }
 
 Disagreement Expectations::expectedFor(const std::string& key) const {

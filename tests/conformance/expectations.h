@@ -24,7 +24,10 @@ struct Disagreement {
   std::string toString() const;
 };
 
-/// The counts of a measured query.
+/// The counts of one compared frame of a query of kind `kind`.
+Disagreement disagreementOf(const FrameRecord& frame, QueryKind kind);
+
+/// The counts of a measured query: the sum over its frames.
 Disagreement disagreementOf(const QueryMeasurement& m);
 
 /// What a variant is expected to do, from tests/conformance/expectations/<variant>.json:

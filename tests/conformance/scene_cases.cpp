@@ -1,5 +1,7 @@
 #include "scene_cases.h"
 
+#include "conformance_target.h"
+
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
@@ -49,14 +51,6 @@ constexpr const char* kKitScenes[] = {
                     {"name": "boolean", "a": "gear", "b": "ball", "kind": "boolean"}]})",
 };
 
-std::string testName(const std::string& name) {
-  std::string out = name;
-  for (char& c : out) {
-    if (std::isalnum(static_cast<unsigned char>(c)) == 0) c = '_';
-  }
-  return out;
-}
-
 }  // namespace
 
 std::vector<SceneCase>& sceneCases() {
@@ -76,7 +70,7 @@ Status loadSceneCases(const std::string& directory) {
     if (!scene.ok()) return scene.status();
     SceneCase c;
     c.name = scene.value().name;
-    c.test_name = testName(c.name);
+    c.test_name = gtestName(c.name);
     c.scene = std::make_shared<const Scene>(std::move(scene).value());
     sceneCases().push_back(std::move(c));
     return {};

@@ -23,12 +23,6 @@ bool isPluginFileName(const fs::path& file) {
   return name.rfind("libcollido_plugin_", 0) == 0 && file.extension() == ".so";
 }
 
-std::string executableDirectory() {
-  std::error_code ec;
-  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-  return ec ? std::string() : exe.parent_path().string();
-}
-
 }  // namespace
 
 Status checkPluginTable(const CollidoPluginTable* table, const std::string& label) {
@@ -118,6 +112,12 @@ bool PluginLibrary::hasVariant(const std::string& variant) const {
     if (variant == table_->variants[i].name) return true;
   }
   return false;
+}
+
+std::string executableDirectory() {
+  std::error_code ec;
+  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+  return ec ? std::string() : exe.parent_path().string();
 }
 
 std::vector<std::string> defaultPluginDirectories() {

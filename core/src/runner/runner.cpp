@@ -88,46 +88,6 @@ BuiltModel buildModel(BackendInstance& backend, const SceneObject& object,
   return built;
 }
 
-// Compares a backend's answer with the oracle's and fills the answer fields of `record`.
-void compare(const SceneObject& a, const SceneObject& b, std::size_t frame, QueryKind kind,
-             const QueryResult& result, const OracleAnswer& truth, FrameRecord& record) {
-  record.oracle_intersecting = truth.intersecting;
-  record.reported_intersecting = result.intersecting;
-  record.truncated = result.truncated;
-  const auto in_range = [&](const TrianglePair& p) {
-    return p.a >= 0 && static_cast<std::size_t>(p.a) < a.mesh->triangleCount() && p.b >= 0 &&
-           static_cast<std::size_t>(p.b) < b.mesh->triangleCount();
-  };
-  std::vector<TrianglePair> reported;
-  for (const TrianglePair& p : result.pairs) {
-    if (in_range(p)) {
-      reported.push_back(p);
-    } else {
-      ++record.invalid_pairs;
-    }
-  }
-  std::sort(reported.begin(), reported.end());
-  const std::size_t before_dedupe = reported.size();
-  reported.erase(std::unique(reported.begin(), reported.end()), reported.end());
-  record.invalid_pairs += before_dedupe - reported.size();
-
-  if (kind == QueryKind::kBoolean) {
-    // A witness, when given, must really intersect.
-    for (const TrianglePair& p : reported) {
-      if (!exactPairIntersects(*a.mesh, a.poseAt(frame), *b.mesh, b.poseAt(frame), p)) {
-        ++record.invalid_pairs;
-      }
-    }
-    return;
-  }
-  record.oracle_pairs = truth.pairs.size();
-  record.reported_pairs = reported.size();
-  std::vector<TrianglePair> matched;
-  std::set_intersection(reported.begin(), reported.end(), truth.pairs.begin(), truth.pairs.end(),
-                        std::back_inserter(matched));
-  record.matched_pairs = matched.size();
-}
-
 void summarise(QueryMeasurement& m) {
   m.median_us = quantile(m.times_us, 0.5);
   m.p90_us = quantile(m.times_us, 0.9);
@@ -229,7 +189,8 @@ void runSceneOnBackend(const Scene& scene, const BackendSpec& spec, OracleAnswer
         m.status = "failed: frame " + std::to_string(frame) + ": " + s.toString();
         break;
       }
-      compare(a, b, frame, query.request.kind, result, oracle.get(query, frame), record);
+      compareWithOracle(*a.mesh, pose_a, *b.mesh, pose_b, query.request.kind, result,
+                        oracle.get(query, frame), record);
       record.bv_tests = result.counters.bv_tests;
       record.primitive_tests = result.counters.primitive_tests;
       m.counts_bv_tests = result.counters.counts_bv_tests;
@@ -260,6 +221,46 @@ void runSceneOnBackend(const Scene& scene, const BackendSpec& spec, OracleAnswer
 }
 
 }  // namespace
+
+void compareWithOracle(const TriangleMesh& a, const Pose& pose_a, const TriangleMesh& b,
+                       const Pose& pose_b, QueryKind kind, const QueryResult& result,
+                       const OracleAnswer& truth, FrameRecord& record) {
+  record.oracle_intersecting = truth.intersecting;
+  record.reported_intersecting = result.intersecting;
+  record.truncated = result.truncated;
+  const auto in_range = [&](const TrianglePair& p) {
+    return p.a >= 0 && static_cast<std::size_t>(p.a) < a.triangleCount() && p.b >= 0 &&
+           static_cast<std::size_t>(p.b) < b.triangleCount();
+  };
+  std::vector<TrianglePair> reported;
+  for (const TrianglePair& p : result.pairs) {
+    if (in_range(p)) {
+      reported.push_back(p);
+    } else {
+      ++record.invalid_pairs;
+    }
+  }
+  std::sort(reported.begin(), reported.end());
+  const std::size_t before_dedupe = reported.size();
+  reported.erase(std::unique(reported.begin(), reported.end()), reported.end());
+  record.invalid_pairs += before_dedupe - reported.size();
+
+  if (kind == QueryKind::kBoolean) {
+    // A witness, when given, must really intersect.
+    for (const TrianglePair& p : reported) {
+      if (!exactPairIntersects(a, pose_a, b, pose_b, p)) {
+        ++record.invalid_pairs;
+      }
+    }
+    return;
+  }
+  record.oracle_pairs = truth.pairs.size();
+  record.reported_pairs = reported.size();
+  std::vector<TrianglePair> matched;
+  std::set_intersection(reported.begin(), reported.end(), truth.pairs.begin(), truth.pairs.end(),
+                        std::back_inserter(matched));
+  record.matched_pairs = matched.size();
+}
 
 bool FrameRecord::disagrees(QueryKind kind) const {
   if (oracle_intersecting != reported_intersecting || invalid_pairs != 0) return true;

@@ -44,6 +44,9 @@ class PluginLibrary {
 /// with both versions named), then its size, names and function pointers.
 Status checkPluginTable(const CollidoPluginTable* table, const std::string& label);
 
+/// The folder of the running executable ("" when it cannot be read from /proc/self/exe).
+std::string executableDirectory();
+
 /// Where plugins are looked for, in order: the `plugins` folder beside the running executable
 /// (the build tree), `../lib/collido/plugins` relative to it (an install), then each folder of
 /// the COLLIDO_PLUGIN_PATH environment variable (colon-separated).

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include <collido/host/plugin_library.h>
+#include <collido/oracle/exact_oracle.h>
 #include <collido/query.h>
 #include <collido/scene/scene.h>
 
@@ -58,6 +59,14 @@ struct FrameRecord {
   /// Whether the answer differs from the oracle's in any way this query asks about.
   bool disagrees(QueryKind kind) const;
 };
+
+/// Compares a backend's answer with the oracle's for meshes posed by `pose_a` and `pose_b` and
+/// fills the answer fields of `record`: out-of-range and repeated pairs and (for boolean
+/// queries) witnesses that do not intersect count as invalid; all-pairs answers are matched
+/// against the exact set.
+void compareWithOracle(const TriangleMesh& a, const Pose& pose_a, const TriangleMesh& b,
+                       const Pose& pose_b, QueryKind kind, const QueryResult& result,
+                       const OracleAnswer& truth, FrameRecord& record);
 
 /// Results of one (backend, scene, query).
 struct QueryMeasurement {
