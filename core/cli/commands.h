@@ -18,5 +18,7 @@ void addBackendsCommand(CLI::App& app, const PluginOptions& plugins, int& exit_c
 void addCheckCommand(CLI::App& app, int& exit_code);
 void addRunCommand(CLI::App& app, const PluginOptions& plugins, int& exit_code);
 void addConformanceCommand(CLI::App& app, int& exit_code);
+/// study, merge, and the internal worker mode the study starts.
+void addStudyCommands(CLI::App& app, const PluginOptions& plugins, int& exit_code);
 
 }  // namespace collido::cli

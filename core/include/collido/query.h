@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -17,6 +18,9 @@ enum class QueryKind : std::uint32_t {
 
 /// Stable lower-case name ("boolean", "all_pairs", "contacts").
 const char* queryKindName(QueryKind kind);
+
+/// The kind named by queryKindName's text, or empty for any other text.
+std::optional<QueryKind> parseQueryKind(const std::string& name);
 
 /// A set of QueryKind values.
 class QueryKindSet {

@@ -14,6 +14,13 @@ const char* queryKindName(QueryKind kind) {
   return "unknown";
 }
 
+std::optional<QueryKind> parseQueryKind(const std::string& name) {
+  for (QueryKind kind : {QueryKind::kBoolean, QueryKind::kAllPairs, QueryKind::kContacts}) {
+    if (name == queryKindName(kind)) return kind;
+  }
+  return std::nullopt;
+}
+
 std::string queryKindsText(QueryKindSet set) {
   std::string text;
   for (QueryKind kind : {QueryKind::kBoolean, QueryKind::kAllPairs, QueryKind::kContacts}) {

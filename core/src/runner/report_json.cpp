@@ -1,48 +1,125 @@
-#include <nlohmann/json.hpp>
-
-#include <collido/runner/runner.h>
+#include <collido/runner/measurement_json.h>
 
 namespace collido {
+namespace {
+
+using Json = nlohmann::json;
+
+template <typename T>
+Json optionalJson(const std::optional<T>& value) {
+  return value ? Json(*value) : Json();
+}
+
+template <typename T>
+std::optional<T> optionalFrom(const Json& json, const char* key) {
+  const auto found = json.find(key);
+  if (found == json.end() || found->is_null()) return std::nullopt;
+  return found->get<T>();
+}
+
+Json frameJson(const FrameRecord& f, const QueryMeasurement& m) {
+  return {{"frame", f.frame},
+          {"oracle_intersecting", f.oracle_intersecting},
+          {"reported_intersecting", f.reported_intersecting},
+          {"finest_intersecting", optionalJson(f.finest_intersecting)},
+          {"oracle_pairs", f.oracle_pairs},
+          {"reported_pairs", f.reported_pairs},
+          {"matched_pairs", f.matched_pairs},
+          {"invalid_pairs", f.invalid_pairs},
+          {"truncated", f.truncated},
+          {"disagrees", f.disagrees(m.kind)},
+          {"median_us", f.median_us},
+          {"bv_tests", m.counts_bv_tests ? Json(f.bv_tests) : Json()},
+          {"primitive_tests", m.counts_primitive_tests ? Json(f.primitive_tests) : Json()}};
+}
+
+FrameRecord frameFrom(const Json& j) {
+  FrameRecord f;
+  f.frame = j.at("frame").get<std::size_t>();
+  f.oracle_intersecting = j.at("oracle_intersecting").get<bool>();
+  f.reported_intersecting = j.at("reported_intersecting").get<bool>();
+  f.finest_intersecting = optionalFrom<bool>(j, "finest_intersecting");
+  f.oracle_pairs = j.at("oracle_pairs").get<std::size_t>();
+  f.reported_pairs = j.at("reported_pairs").get<std::size_t>();
+  f.matched_pairs = j.at("matched_pairs").get<std::size_t>();
+  f.invalid_pairs = j.at("invalid_pairs").get<std::size_t>();
+  f.truncated = j.at("truncated").get<bool>();
+  f.median_us = j.at("median_us").get<double>();
+  f.bv_tests = optionalFrom<std::uint64_t>(j, "bv_tests").value_or(0);
+  f.primitive_tests = optionalFrom<std::uint64_t>(j, "primitive_tests").value_or(0);
+  return f;
+}
+
+}  // namespace
+
+Json measurementToJson(const QueryMeasurement& m) {
+  Json frames = Json::array();
+  for (const FrameRecord& f : m.frames)
+    frames.push_back(frameJson(f, m));
+  return {{"backend", m.backend},
+          {"scene", m.scene},
+          {"query", m.query},
+          {"kind", queryKindName(m.kind)},
+          {"status", m.status},
+          {"median_us", m.median_us},
+          {"p90_us", m.p90_us},
+          {"p99_us", m.p99_us},
+          {"max_us", m.max_us},
+          {"timed_calls", m.times_us.size()},
+          {"false_negatives", m.false_negatives},
+          {"false_positives", m.false_positives},
+          {"disagreements", m.disagreements},
+          {"finest_disagreements", optionalJson(m.finest_disagreements)},
+          {"recall", m.recall},
+          {"precision", m.precision},
+          {"counts_bv_tests", m.counts_bv_tests},
+          {"counts_primitive_tests", m.counts_primitive_tests},
+          {"build_ms", m.build_ms},
+          {"triangles", m.triangles},
+          {"memory_bytes", m.memory_bytes},
+          {"heap_bytes", optionalJson(m.heap_bytes)},
+          {"heap_peak_bytes", optionalJson(m.heap_peak_bytes)},
+          {"heap_allocations", optionalJson(m.heap_allocations)},
+          {"heap_probe", m.heap_probe},
+          {"times_us", m.times_us},
+          {"frames", frames}};
+}
+
+Result<QueryMeasurement> measurementFromJson(const Json& j) {
+  try {
+    QueryMeasurement m;
+    m.backend = j.at("backend").get<std::string>();
+    m.scene = j.at("scene").get<std::string>();
+    m.query = j.at("query").get<std::string>();
+    const std::string kind = j.at("kind").get<std::string>();
+    const std::optional<QueryKind> parsed = parseQueryKind(kind);
+    if (!parsed) return Status(StatusCode::kInvalidArgument, "unknown query kind '" + kind + "'");
+    m.kind = *parsed;
+    m.status = j.at("status").get<std::string>();
+    m.counts_bv_tests = j.value("counts_bv_tests", false);
+    m.counts_primitive_tests = j.value("counts_primitive_tests", false);
+    m.build_ms = j.at("build_ms").get<double>();
+    m.triangles = j.at("triangles").get<std::size_t>();
+    m.memory_bytes = j.at("memory_bytes").get<std::size_t>();
+    m.heap_bytes = optionalFrom<std::size_t>(j, "heap_bytes");
+    m.heap_peak_bytes = optionalFrom<std::size_t>(j, "heap_peak_bytes");
+    m.heap_allocations = optionalFrom<std::uint64_t>(j, "heap_allocations");
+    m.heap_probe = j.value("heap_probe", "");
+    m.times_us = j.at("times_us").get<std::vector<double>>();
+    for (const Json& frame : j.at("frames"))
+      m.frames.push_back(frameFrom(frame));
+    // Derived figures are recomputed, so a stored file cannot contradict its own records.
+    summariseMeasurement(m);
+    return m;
+  } catch (const Json::exception& e) {
+    return Status(StatusCode::kInvalidArgument, std::string("measurement record: ") + e.what());
+  }
+}
 
 std::string runReportJson(const RunReport& report) {
-  using Json = nlohmann::json;
   Json measurements = Json::array();
-  for (const QueryMeasurement& m : report.measurements) {
-    Json frames = Json::array();
-    for (const FrameRecord& f : m.frames) {
-      frames.push_back(
-          {{"frame", f.frame},
-           {"oracle_intersecting", f.oracle_intersecting},
-           {"reported_intersecting", f.reported_intersecting},
-           {"oracle_pairs", f.oracle_pairs},
-           {"reported_pairs", f.reported_pairs},
-           {"matched_pairs", f.matched_pairs},
-           {"invalid_pairs", f.invalid_pairs},
-           {"truncated", f.truncated},
-           {"disagrees", f.disagrees(m.kind)},
-           {"median_us", f.median_us},
-           {"bv_tests", m.counts_bv_tests ? Json(f.bv_tests) : Json()},
-           {"primitive_tests", m.counts_primitive_tests ? Json(f.primitive_tests) : Json()}});
-    }
-    measurements.push_back({{"backend", m.backend},
-                            {"scene", m.scene},
-                            {"query", m.query},
-                            {"kind", queryKindName(m.kind)},
-                            {"status", m.status},
-                            {"median_us", m.median_us},
-                            {"p90_us", m.p90_us},
-                            {"timed_calls", m.times_us.size()},
-                            {"false_negatives", m.false_negatives},
-                            {"false_positives", m.false_positives},
-                            {"disagreements", m.disagreements},
-                            {"recall", m.recall},
-                            {"precision", m.precision},
-                            {"build_ms", m.build_ms},
-                            {"triangles", m.triangles},
-                            {"memory_bytes", m.memory_bytes},
-                            {"heap_bytes", m.heap_bytes ? Json(*m.heap_bytes) : Json()},
-                            {"frames", frames}});
-  }
+  for (const QueryMeasurement& m : report.measurements)
+    measurements.push_back(measurementToJson(m));
   const Json document = {
       {"collidoscope_run", 1}, {"measurements", measurements}, {"problems", report.problems}};
   return document.dump(2);

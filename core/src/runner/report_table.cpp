@@ -1,25 +1,11 @@
-#include <cstdio>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include <collido/runner/runner.h>
+#include <collido/runner/text_table.h>
 
 namespace collido {
-namespace {
-
-std::string format(const char* pattern, double value) {
-  char buffer[64];
-  std::snprintf(buffer, sizeof(buffer), pattern, value);
-  return buffer;
-}
-
-std::string bytesPerTriangle(std::size_t bytes, std::size_t triangles) {
-  if (triangles == 0) return "-";
-  return format("%.0f", static_cast<double>(bytes) / static_cast<double>(triangles));
-}
-
-}  // namespace
 
 std::string formatRunTable(const RunReport& report) {
   const std::vector<std::string> header = {
@@ -30,41 +16,21 @@ std::string formatRunTable(const RunReport& report) {
   for (const QueryMeasurement& m : report.measurements) {
     if (!m.ok()) {
       notes.push_back(m.backend + " / " + m.scene + " / " + m.query + ": " + m.status);
-      rows.push_back({m.backend, m.scene, m.query, m.status.substr(0, m.status.find(':')), "", "",
-                      "", "", "", "", "", "", "", ""});
+      rows.push_back({m.backend, m.scene, m.query, m.status.substr(0, m.status.find(':'))});
       continue;
     }
     const bool pairs = m.kind == QueryKind::kAllPairs;
     rows.push_back({m.backend, m.scene, m.query, std::to_string(m.frames.size()),
-                    format("%.1f", m.median_us), format("%.1f", m.p90_us),
+                    formatNumber("%.1f", m.median_us), formatNumber("%.1f", m.p90_us),
                     std::to_string(m.false_negatives), std::to_string(m.false_positives),
-                    pairs ? format("%.4f", m.recall) : "-",
-                    pairs ? format("%.4f", m.precision) : "-", std::to_string(m.disagreements),
-                    format("%.2f", m.build_ms), bytesPerTriangle(m.memory_bytes, m.triangles),
-                    m.heap_bytes ? bytesPerTriangle(*m.heap_bytes, m.triangles) : "n/a"});
-  }
-  std::vector<std::size_t> width(header.size());
-  for (std::size_t c = 0; c < header.size(); ++c) {
-    width[c] = header[c].size();
-    for (const auto& row : rows)
-      width[c] = std::max(width[c], row[c].size());
+                    pairs ? formatNumber("%.4f", m.recall) : "-",
+                    pairs ? formatNumber("%.4f", m.precision) : "-",
+                    std::to_string(m.disagreements), formatNumber("%.2f", m.build_ms),
+                    bytesPerTriangleText(m.memory_bytes, m.triangles),
+                    m.heap_bytes ? bytesPerTriangleText(*m.heap_bytes, m.triangles) : "n/a"});
   }
   std::ostringstream out;
-  const auto line = [&](const std::vector<std::string>& cells) {
-    for (std::size_t c = 0; c < cells.size(); ++c) {
-      const bool numeric = c >= 3;
-      const std::string pad(width[c] - cells[c].size(), ' ');
-      out << (c == 0 ? "" : "  ") << (numeric ? pad + cells[c] : cells[c] + pad);
-    }
-    out << "\n";
-  };
-  line(header);
-  std::size_t total = 0;
-  for (std::size_t w : width)
-    total += w + 2;
-  out << std::string(total - 2, '-') << "\n";
-  for (const auto& row : rows)
-    line(row);
+  out << formatTextTable(header, rows, 3);
   for (const std::string& note : notes)
     out << "note: " << note << "\n";
   for (const std::string& problem : report.problems)

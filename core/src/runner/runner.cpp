@@ -30,12 +30,15 @@ double microseconds(Clock::duration d) {
 // Oracle answers of one scene, keyed by (object a, object b, frame), computed on first use.
 class OracleAnswers {
  public:
-  explicit OracleAnswers(const Scene& scene) : scene_(scene) {}
+  // `witness_only`: every answer needs only whether the objects intersect.
+  explicit OracleAnswers(const Scene& scene, bool witness_only = false)
+      : scene_(scene), witness_only_(witness_only) {}
 
   const OracleAnswer& get(const SceneQuery& query, std::size_t frame) {
     // Boolean queries need only a witness; a pair that any all-pairs query also names shares the
     // full answer, which contains the boolean one.
     const bool needs_all =
+        !witness_only_ &&
         std::any_of(scene_.queries.begin(), scene_.queries.end(), [&](const SceneQuery& q) {
           return q.a == query.a && q.b == query.b && q.request.kind != QueryKind::kBoolean;
         });
@@ -55,6 +58,7 @@ class OracleAnswers {
 
  private:
   const Scene& scene_;
+  bool witness_only_;
   std::map<std::tuple<std::size_t, std::size_t, std::size_t>, OracleAnswer> answers_;
 };
 
@@ -63,17 +67,28 @@ struct BuiltModel {
   double build_ms = 0.0;
   std::size_t memory_bytes = 0;
   std::optional<std::size_t> heap_bytes;
+  std::optional<std::size_t> heap_peak_bytes;
+  std::optional<std::uint64_t> heap_allocations;
   std::string error;  // non-empty when the build failed
 };
 
 BuiltModel buildModel(BackendInstance& backend, const SceneObject& object,
                       const BuildNeeds& needs) {
   BuiltModel built;
+  resetHeapPeak();
+  const std::optional<HeapHookSample> hooks_before = heapHookSample();
   const std::optional<std::size_t> heap_before = heapBytesInUse();
   const Clock::time_point start = Clock::now();
   Result<ModelHandle> handle = backend.build(object.mesh->view(), needs);
   const Clock::time_point stop = Clock::now();
   const std::optional<std::size_t> heap_after = heapBytesInUse();
+  const std::optional<HeapHookSample> hooks_after = heapHookSample();
+  if (hooks_before && hooks_after) {
+    built.heap_peak_bytes = hooks_after->peak_bytes > hooks_before->live_bytes
+                                ? hooks_after->peak_bytes - hooks_before->live_bytes
+                                : 0;
+    built.heap_allocations = hooks_after->allocations - hooks_before->allocations;
+  }
   if (!handle.ok()) {
     built.error = handle.status().toString();
     return built;
@@ -88,9 +103,23 @@ BuiltModel buildModel(BackendInstance& backend, const SceneObject& object,
   return built;
 }
 
-void summarise(QueryMeasurement& m) {
+template <typename T>
+std::optional<T> sumIfBoth(const std::optional<T>& a, const std::optional<T>& b) {
+  if (a && b) return *a + *b;
+  return std::nullopt;
+}
+
+}  // namespace
+
+void summariseMeasurement(QueryMeasurement& m) {
   m.median_us = quantile(m.times_us, 0.5);
   m.p90_us = quantile(m.times_us, 0.9);
+  m.p99_us = quantile(m.times_us, 0.99);
+  m.max_us = m.times_us.empty() ? 0.0 : *std::max_element(m.times_us.begin(), m.times_us.end());
+  m.false_negatives = 0;
+  m.false_positives = 0;
+  m.disagreements = 0;
+  m.finest_disagreements.reset();
   std::size_t oracle_pairs = 0;
   std::size_t reported_pairs = 0;
   std::size_t matched_pairs = 0;
@@ -98,6 +127,10 @@ void summarise(QueryMeasurement& m) {
     if (f.oracle_intersecting && !f.reported_intersecting) ++m.false_negatives;
     if (!f.oracle_intersecting && f.reported_intersecting) ++m.false_positives;
     if (f.disagrees(m.kind)) ++m.disagreements;
+    if (f.finest_intersecting) {
+      m.finest_disagreements = m.finest_disagreements.value_or(0) +
+                               (*f.finest_intersecting != f.reported_intersecting ? 1 : 0);
+    }
     oracle_pairs += f.oracle_pairs;
     reported_pairs += f.reported_pairs;
     matched_pairs += f.matched_pairs;
@@ -108,12 +141,14 @@ void summarise(QueryMeasurement& m) {
   }
 }
 
+namespace {
+
 void say(const RunOptions& options, const std::string& line) {
   if (options.progress) options.progress(line);
 }
 
 void runSceneOnBackend(const Scene& scene, const BackendSpec& spec, OracleAnswers& oracle,
-                       const RunOptions& options, RunReport& report) {
+                       OracleAnswers* finest_oracle, const RunOptions& options, RunReport& report) {
   const std::string label = spec.label();
   const auto record_all = [&](const std::string& status) {
     for (const SceneQuery& q : scene.queries) {
@@ -141,12 +176,15 @@ void runSceneOnBackend(const Scene& scene, const BackendSpec& spec, OracleAnswer
   std::map<std::size_t, BuiltModel> models;
   for (std::size_t index : scene.queriedObjects()) {
     BuildNeeds needs = scene.needsOf(index);
+    if (options.build_every_need) needs.queries = caps.queries;
     needs.queries = QueryKindSet(needs.queries.bits() & caps.queries.bits());
     if (needs.queries.empty()) continue;
     say(options, label + ": building " + scene.objects[index].name);
     models[index] = buildModel(backend, scene.objects[index], needs);
   }
 
+  std::size_t frames_done = 0;
+  const std::size_t frames_total = scene.frames * scene.queries.size();
   for (const SceneQuery& query : scene.queries) {
     QueryMeasurement m;
     m.backend = label;
@@ -171,9 +209,10 @@ void runSceneOnBackend(const Scene& scene, const BackendSpec& spec, OracleAnswer
     m.build_ms = model_a.build_ms + model_b.build_ms;
     m.triangles = a.mesh->triangleCount() + b.mesh->triangleCount();
     m.memory_bytes = model_a.memory_bytes + model_b.memory_bytes;
-    if (model_a.heap_bytes && model_b.heap_bytes) {
-      m.heap_bytes = *model_a.heap_bytes + *model_b.heap_bytes;
-    }
+    m.heap_bytes = sumIfBoth(model_a.heap_bytes, model_b.heap_bytes);
+    m.heap_peak_bytes = sumIfBoth(model_a.heap_peak_bytes, model_b.heap_peak_bytes);
+    m.heap_allocations = sumIfBoth(model_a.heap_allocations, model_b.heap_allocations);
+    m.heap_probe = heapProbeName();
     say(options, label + ": " + scene.name + " / " + query.name + " (" +
                      std::to_string(scene.frames) + " frames)");
 
@@ -191,6 +230,9 @@ void runSceneOnBackend(const Scene& scene, const BackendSpec& spec, OracleAnswer
       }
       compareWithOracle(*a.mesh, pose_a, *b.mesh, pose_b, query.request.kind, result,
                         oracle.get(query, frame), record);
+      if (finest_oracle != nullptr) {
+        record.finest_intersecting = finest_oracle->get(query, frame).intersecting;
+      }
       record.bv_tests = result.counters.bv_tests;
       record.primitive_tests = result.counters.primitive_tests;
       m.counts_bv_tests = result.counters.counts_bv_tests;
@@ -211,8 +253,9 @@ void runSceneOnBackend(const Scene& scene, const BackendSpec& spec, OracleAnswer
       record.median_us = quantile(frame_times, 0.5);
       m.times_us.insert(m.times_us.end(), frame_times.begin(), frame_times.end());
       m.frames.push_back(record);
+      if (options.frame_progress) options.frame_progress(++frames_done, frames_total);
     }
-    summarise(m);
+    summariseMeasurement(m);
     report.measurements.push_back(std::move(m));
   }
   for (const auto& [index, model] : models) {
@@ -276,9 +319,20 @@ RunReport runScenes(const std::vector<Scene>& scenes, const std::vector<BackendS
   for (const Scene& scene : scenes) {
     OracleAnswers oracle(scene);
     for (const BackendSpec& spec : backends) {
-      runSceneOnBackend(scene, spec, oracle, options, report);
+      runSceneOnBackend(scene, spec, oracle, nullptr, options, report);
     }
   }
+  return report;
+}
+
+RunReport runScene(const Scene& scene, const BackendSpec& backend, const RunOptions& options,
+                   const Scene* finest) {
+  RunReport report;
+  OracleAnswers oracle(scene);
+  std::optional<OracleAnswers> finest_oracle;
+  if (finest != nullptr) finest_oracle.emplace(*finest, /*witness_only=*/true);
+  runSceneOnBackend(scene, backend, oracle, finest_oracle ? &*finest_oracle : nullptr, options,
+                    report);
   return report;
 }
 

@@ -52,7 +52,14 @@ const char* typeName(const Json& v) {
 
 class Reader {
  public:
-  explicit Reader(std::string label) : label_(std::move(label)) {}
+  Reader(std::string label, double resolution)
+      : label_(std::move(label)), resolution_(resolution) {}
+
+  /// A generator's sample count at the load's resolution, never below the generator's minimum.
+  int resolved(int count, int minimum) const {
+    const double scaled = std::round(static_cast<double>(count) * resolution_);
+    return static_cast<int>(std::max(static_cast<double>(minimum), scaled));
+  }
 
   [[noreturn]] void fail(const Node& node, const std::string& problem) const {
     throw SceneError(label_ + ": " + node.where() + ": " + problem);
@@ -132,6 +139,7 @@ class Reader {
 
  private:
   std::string label_;
+  double resolution_;
 };
 
 // --- poses -----------------------------------------------------------------------------------
@@ -211,8 +219,10 @@ TorusParams readTorusParams(const Reader& r, const Node& n) {
   TorusParams p;
   p.major_radius = r.positive(n, "major_radius", p.major_radius);
   p.minor_radius = r.positive(n, "minor_radius", p.minor_radius);
-  p.major_segments = static_cast<int>(r.integer(n, "major_segments", p.major_segments, 3, 1 << 20));
-  p.minor_segments = static_cast<int>(r.integer(n, "minor_segments", p.minor_segments, 3, 1 << 20));
+  p.major_segments =
+      r.resolved(static_cast<int>(r.integer(n, "major_segments", p.major_segments, 3, 1 << 20)), 3);
+  p.minor_segments =
+      r.resolved(static_cast<int>(r.integer(n, "minor_segments", p.minor_segments, 3, 1 << 20)), 3);
   return p;
 }
 
@@ -241,8 +251,8 @@ Result<TriangleMesh> generateSphere(const Reader& r, const Node& n, std::string&
   r.expectObject(n, {"generator", "radius", "slices", "stacks"});
   SphereParams p;
   p.radius = r.positive(n, "radius", p.radius);
-  p.slices = static_cast<int>(r.integer(n, "slices", p.slices, 3, 1 << 20));
-  p.stacks = static_cast<int>(r.integer(n, "stacks", p.stacks, 2, 1 << 20));
+  p.slices = r.resolved(static_cast<int>(r.integer(n, "slices", p.slices, 3, 1 << 20)), 3);
+  p.stacks = r.resolved(static_cast<int>(r.integer(n, "stacks", p.stacks, 2, 1 << 20)), 2);
   text = "sphere r=" + shortNumber(p.radius) + " " + std::to_string(p.slices) + "x" +
          std::to_string(p.stacks);
   return makeSphere(p);
@@ -253,8 +263,8 @@ Result<TriangleMesh> generateGridSheet(const Reader& r, const Node& n, std::stri
   GridSheetParams p;
   p.width = r.positive(n, "width", p.width);
   p.depth = r.positive(n, "depth", p.depth);
-  p.cells_x = static_cast<int>(r.integer(n, "cells_x", p.cells_x, 1, 1 << 20));
-  p.cells_y = static_cast<int>(r.integer(n, "cells_y", p.cells_y, 1, 1 << 20));
+  p.cells_x = r.resolved(static_cast<int>(r.integer(n, "cells_x", p.cells_x, 1, 1 << 20)), 1);
+  p.cells_y = r.resolved(static_cast<int>(r.integer(n, "cells_y", p.cells_y, 1, 1 << 20)), 1);
   p.amplitude = r.number(n, "amplitude", p.amplitude);
   p.waves = r.number(n, "waves", p.waves);
   text = "grid sheet " + std::to_string(p.cells_x) + "x" + std::to_string(p.cells_y);
@@ -269,8 +279,10 @@ Result<TriangleMesh> generateGear(const Reader& r, const Node& n, std::string& t
   p.module = r.positive(n, "module", p.module);
   p.face_width = r.positive(n, "face_width", p.face_width);
   p.pressure_angle_deg = r.positive(n, "pressure_angle_deg", p.pressure_angle_deg);
-  p.flank_samples = static_cast<int>(r.integer(n, "flank_samples", p.flank_samples, 2, 1 << 16));
-  p.root_samples = static_cast<int>(r.integer(n, "root_samples", p.root_samples, 1, 1 << 16));
+  p.flank_samples =
+      r.resolved(static_cast<int>(r.integer(n, "flank_samples", p.flank_samples, 2, 1 << 16)), 2);
+  p.root_samples =
+      r.resolved(static_cast<int>(r.integer(n, "root_samples", p.root_samples, 1, 1 << 16)), 1);
   text = "gear z=" + std::to_string(p.teeth) + " m=" + shortNumber(p.module);
   return makeGear(p);
 }
@@ -347,9 +359,7 @@ class ShapeLoader {
 
 QueryKind readQueryKind(const Reader& r, const Node& node) {
   const std::string text = r.string(node);
-  for (QueryKind kind : {QueryKind::kBoolean, QueryKind::kAllPairs, QueryKind::kContacts}) {
-    if (text == queryKindName(kind)) return kind;
-  }
+  if (const std::optional<QueryKind> kind = parseQueryKind(text)) return *kind;
   r.fail(node, "unknown query kind '" + text + "' (known: boolean, all_pairs, contacts)");
 }
 
@@ -567,7 +577,11 @@ std::vector<std::size_t> Scene::queriedObjects() const {
 }
 
 Result<Scene> parseScene(const std::string& text, const std::string& label,
-                         const std::string& base_directory) {
+                         const std::string& base_directory, const SceneLoadOptions& options) {
+  if (!(options.resolution > 0.0) || !std::isfinite(options.resolution)) {
+    return Status(StatusCode::kInvalidArgument,
+                  label + ": resolution must be a positive finite number");
+  }
   Json document;
   try {
     document = Json::parse(text, duplicateKeyCheck(label));
@@ -578,8 +592,9 @@ Result<Scene> parseScene(const std::string& text, const std::string& label,
     return Status(StatusCode::kInvalidArgument, e.what());
   }
   try {
-    const Reader reader(label);
+    const Reader reader(label, options.resolution);
     Scene scene = readScene(reader, document, base_directory);
+    scene.resolution = options.resolution;
     if (scene.name.empty()) scene.name = std::filesystem::path(label).stem().string();
     return scene;
   } catch (const SceneError& e) {
@@ -589,7 +604,12 @@ Result<Scene> parseScene(const std::string& text, const std::string& label,
   }
 }
 
-Result<Scene> loadScene(const std::string& path) {
+bool Scene::hasGeneratedShapes() const {
+  return std::any_of(objects.begin(), objects.end(),
+                     [](const SceneObject& o) { return o.report.importer == "generator"; });
+}
+
+Result<Scene> loadScene(const std::string& path, const SceneLoadOptions& options) {
   std::ifstream in(path, std::ios::binary);
   if (!in) {
     std::error_code ec;
@@ -600,7 +620,7 @@ Result<Scene> loadScene(const std::string& path) {
   std::stringstream buffer;
   buffer << in.rdbuf();
   Result<Scene> scene =
-      parseScene(buffer.str(), path, std::filesystem::path(path).parent_path().string());
+      parseScene(buffer.str(), path, std::filesystem::path(path).parent_path().string(), options);
   if (scene.ok()) scene.value().path = path;
   return scene;
 }

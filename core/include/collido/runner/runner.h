@@ -39,7 +39,12 @@ Result<std::vector<BackendSpec>> resolveBackends(
 /// How a run measures.
 struct RunOptions {
   int repetitions = 5;  ///< timed calls per frame and query, after one untimed warm-up call
+  /// Build every object for every query kind the backend answers, not only the ones the scene
+  /// asks of it: shows what building only the needed structures saves.
+  bool build_every_need = false;
   std::function<void(const std::string&)> progress;  ///< called with a line per step; may be empty
+  /// Called after each frame of each query with (frames done, frames in all); may be empty.
+  std::function<void(std::size_t, std::size_t)> frame_progress;
 };
 
 /// The comparison of one frame's answer with the oracle's.
@@ -53,6 +58,8 @@ struct FrameRecord {
   std::size_t invalid_pairs = 0;   ///< out-of-range or duplicate pairs, and false witnesses
   bool truncated = false;
   double median_us = 0.0;  ///< median of this frame's timed calls
+  /// With a finest scene: whether the objects, meshed at the finest resolution, intersect.
+  std::optional<bool> finest_intersecting;
   std::uint64_t bv_tests = 0;
   std::uint64_t primitive_tests = 0;
 
@@ -79,17 +86,25 @@ struct QueryMeasurement {
   std::vector<double> times_us;  ///< every timed call
   double median_us = 0.0;
   double p90_us = 0.0;
+  double p99_us = 0.0;
+  double max_us = 0.0;
   std::size_t false_negatives = 0;  ///< frames reported disjoint that intersect
   std::size_t false_positives = 0;  ///< frames reported intersecting that are disjoint
   std::size_t disagreements = 0;    ///< frames whose answer differs from the oracle's
+  /// With a finest scene: frames whose boolean answer differs from the finest meshes' truth,
+  /// the error of answering on a coarser mesh.
+  std::optional<std::size_t> finest_disagreements;
   double recall = 1.0;     ///< kAllPairs: matched / exact pairs over all frames (1 if none)
   double precision = 1.0;  ///< kAllPairs: matched / reported pairs over all frames (1 if none)
   bool counts_bv_tests = false;
   bool counts_primitive_tests = false;
-  double build_ms = 0.0;                  ///< both objects
-  std::size_t triangles = 0;              ///< both objects
-  std::size_t memory_bytes = 0;           ///< both objects, as the backend reports
-  std::optional<std::size_t> heap_bytes;  ///< both objects, measured around build
+  double build_ms = 0.0;                          ///< both objects
+  std::size_t triangles = 0;                      ///< both objects
+  std::size_t memory_bytes = 0;                   ///< both objects, as the backend reports
+  std::optional<std::size_t> heap_bytes;          ///< both objects, measured around build
+  std::optional<std::size_t> heap_peak_bytes;     ///< both objects, most live during build (hooks)
+  std::optional<std::uint64_t> heap_allocations;  ///< both objects, calls during build (hooks)
+  std::string heap_probe;                         ///< which probe measured: heapProbeName()
 
   bool ok() const { return status == "ok"; }
 };
@@ -106,6 +121,15 @@ struct RunReport {
 /// silently dropped.
 RunReport runScenes(const std::vector<Scene>& scenes, const std::vector<BackendSpec>& backends,
                     const RunOptions& options);
+
+/// Runs one scene on one backend. With `finest` (the same scene meshed at its finest
+/// resolution, with the same poses), each frame also records whether the finest meshes
+/// intersect, so the error of a coarse mesh is measured against the shape it stands for.
+RunReport runScene(const Scene& scene, const BackendSpec& backend, const RunOptions& options,
+                   const Scene* finest = nullptr);
+
+/// Summary statistics of a measurement from its frames and timed calls.
+void summariseMeasurement(QueryMeasurement& measurement);
 
 /// The table people read: one row per (backend, scene, query).
 std::string formatRunTable(const RunReport& report);

@@ -43,6 +43,10 @@ struct Scene {
   std::size_t frames = 1;
   std::vector<SceneObject> objects;
   std::vector<SceneQuery> queries;
+  double resolution = 1.0;  ///< the SceneLoadOptions::resolution it was loaded with
+
+  /// Whether some object comes from a generator (whose resolution a load option can change).
+  bool hasGeneratedShapes() const;
 
   /// What the scene will ask of an object: the kinds of every query naming it.
   BuildNeeds needsOf(std::size_t object) const;
@@ -50,13 +54,21 @@ struct Scene {
   std::vector<std::size_t> queriedObjects() const;
 };
 
+/// How a scene is loaded.
+struct SceneLoadOptions {
+  /// Scales every generator's sample counts (segments, slices, cells, flank samples) by this
+  /// factor, down to each generator's minimum: 0.5 meshes each curve with half the samples.
+  /// Mesh files are read as they are.
+  double resolution = 1.0;
+};
+
 /// Reads and validates a scene file (format: scenes/README.md). Every error names the file, the
 /// JSON path (e.g. /objects/2/shape/minor_radius) and the problem; meshes are loaded and
 /// generated here, so a scene that loads is a scene that runs.
-Result<Scene> loadScene(const std::string& path);
+Result<Scene> loadScene(const std::string& path, const SceneLoadOptions& options = {});
 
 /// As loadScene, from text; `label` names it in messages, `base_directory` resolves mesh paths.
 Result<Scene> parseScene(const std::string& text, const std::string& label,
-                         const std::string& base_directory);
+                         const std::string& base_directory, const SceneLoadOptions& options = {});
 
 }  // namespace collido

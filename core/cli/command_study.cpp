@@ -1,0 +1,492 @@
+// collido study / worker / merge: the study driver. The driver plans backends × scenes ×
+// settings, runs each combination in a worker process (this executable in worker mode), and
+// stores each finished combination atomically, so a crash costs one combination and an
+// interrupted study resumes where it stopped.
+#include <unistd.h>
+
+#include <atomic>
+#include <csignal>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <filesystem>
+#include <iostream>
+#include <set>
+
+#include <collido/study/outputs.h>
+#include <collido/study/progress.h>
+#include <collido/study/result_store.h>
+#include <collido/study/sweep.h>
+#include <collido/study/worker.h>
+#include <collido/study/worker_process.h>
+
+#include "commands.h"
+
+namespace collido::cli {
+namespace {
+
+using study::Combination;
+using study::CombinationResult;
+using study::ResultStore;
+
+std::atomic<bool> stop_requested{false};
+
+extern "C" void requestStop(int /*signal*/) { stop_requested.store(true); }
+
+struct StudyArguments {
+  std::vector<std::string> scenes;
+  std::vector<std::string> backends;
+  std::string sweep_path;
+  std::string out;
+  std::string shard;
+  bool resume = false;
+  bool retry_failed = false;
+  double timeout_s = 0.0;
+  int repetitions = 0;
+  bool quiet = false;
+};
+
+std::string thisExecutable() {
+  std::error_code ec;
+  const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
+  return ec ? std::string() : self.string();
+}
+
+// LD_PRELOAD for the allocation hooks, when they were built beside this executable.
+std::vector<std::string> workerEnvironment() {
+#ifdef COLLIDO_HEAP_HOOKS_FILE
+  const std::filesystem::path hooks =
+      std::filesystem::path(executableDirectory()) / COLLIDO_HEAP_HOOKS_FILE;
+  std::error_code ec;
+  if (std::filesystem::is_regular_file(hooks, ec)) {
+    const char* existing = std::getenv("LD_PRELOAD");
+    return {"LD_PRELOAD=" + hooks.string() +
+            (existing != nullptr && *existing != '\0' ? std::string(":") + existing : "")};
+  }
+#endif
+  return {};
+}
+
+std::vector<std::string> pluginArguments(const PluginOptions& plugins) {
+  std::vector<std::string> args;
+  for (const std::string& path : plugins.paths) {
+    args.push_back("--plugin");
+    args.push_back(std::filesystem::absolute(path).string());
+  }
+  if (plugins.no_defaults) args.push_back("--no-default-plugins");
+  return args;
+}
+
+// The backend settings to run: the sweep's (restricted to the variants --backends names, plus
+// any --backends entry the sweep does not mention), else --backends, else every variant found.
+std::vector<std::string> backendSettings(const StudyArguments& args, const study::Sweep& sweep,
+                                         const PluginDiscovery& found) {
+  std::vector<std::string> settings;
+  std::set<std::string> named;
+  for (const std::string& text : args.backends) {
+    Result<std::pair<std::string, std::map<std::string, std::string>>> parsed =
+        parseBackendText(text);
+    named.insert(parsed.ok() ? parsed.value().first : text);
+  }
+  std::set<std::string> swept;
+  for (const study::SweepBackend& backend : sweep.backends) {
+    swept.insert(backend.variant);
+    if (!named.empty() && named.count(backend.variant) == 0) continue;
+    for (const std::string& setting : backend.settings())
+      settings.push_back(setting);
+  }
+  for (const std::string& text : args.backends) {
+    Result<std::pair<std::string, std::map<std::string, std::string>>> parsed =
+        parseBackendText(text);
+    if (!parsed.ok() || swept.count(parsed.value().first) == 0) settings.push_back(text);
+  }
+  if (settings.empty() && args.backends.empty() && sweep.backends.empty()) {
+    for (const auto& plugin : found.plugins)
+      for (const VariantInfo& v : plugin->variants())
+        settings.push_back(v.name);
+  }
+  return settings;
+}
+
+// Runs one combination in a worker and reads its answer back.
+CombinationResult runInWorker(const Combination& c, const ResultStore& store,
+                              const StudyArguments& args, int repetitions, double timeout_s,
+                              const PluginOptions& plugins, study::StudyProgress& progress) {
+  const std::string request_path = store.scratchPath(c.id + ".request");
+  const std::string answer_path = store.scratchPath(c.id);
+  std::filesystem::remove(answer_path);
+  CombinationResult result;
+  result.combination = c;
+  if (Status s = study::writeFileAtomically(request_path, study::combinationToJson(c).dump());
+      !s.ok()) {
+    result.outcome.status = "failed";
+    result.outcome.log_tail = s.message();
+    return result;
+  }
+  study::WorkerLaunch launch;
+  launch.executable = thisExecutable();
+  launch.arguments = pluginArguments(plugins);
+  for (const std::string& a : {std::string("worker"), std::string("--request"), request_path,
+                               std::string("--out"), answer_path, std::string("--repetitions"),
+                               std::to_string(repetitions)}) {
+    launch.arguments.push_back(a);
+  }
+  launch.environment = workerEnvironment();
+  launch.log_path = store.logPath(c.id);
+  launch.timeout_s = timeout_s;
+  launch.stop = &stop_requested;
+  launch.on_progress = [&progress](std::size_t done, std::size_t total) {
+    progress.frames(done, total);
+  };
+  launch.on_tick = [&progress] { progress.tick(); };
+  (void)args;
+  result.outcome = study::runWorkerProcess(launch);
+  if (result.outcome.ok()) {
+    std::ifstream in(answer_path, std::ios::binary);
+    std::stringstream text;
+    text << in.rdbuf();
+    Result<CombinationResult> answer = Result<CombinationResult>(
+        Status(StatusCode::kInvalidArgument, answer_path + ": the worker wrote no answer"));
+    try {
+      if (in) answer = study::resultFromJson(nlohmann::json::parse(text.str()), answer_path);
+    } catch (const nlohmann::json::exception& e) {
+      answer = Status(StatusCode::kInvalidArgument, answer_path + ": " + e.what());
+    }
+    if (answer.ok()) {
+      result.measurements = std::move(answer.value().measurements);
+      result.problems = std::move(answer.value().problems);
+    } else {
+      result.outcome.status = "unfinished";
+      result.outcome.log_tail = answer.status().message();
+    }
+  }
+  std::filesystem::remove(answer_path);
+  std::filesystem::remove(request_path);
+  return result;
+}
+
+std::string outcomeText(const CombinationResult& r) {
+  if (!r.outcome.ok()) {
+    std::string text = r.outcome.status;
+    if (!r.outcome.signal_name.empty()) text += " (" + r.outcome.signal_name + ")";
+    if (r.outcome.status == "failed") text += " (exit " + std::to_string(r.outcome.exit_code) + ")";
+    return text;
+  }
+  std::size_t disagreements = 0;
+  std::size_t failed = 0;
+  for (const QueryMeasurement& m : r.measurements) {
+    disagreements += m.disagreements;
+    failed += m.status.rfind("failed", 0) == 0 ? 1 : 0;
+  }
+  std::string text = "ok in " + study::formatDuration(r.outcome.wall_s);
+  if (disagreements != 0) text += ", " + std::to_string(disagreements) + " wrong answers";
+  if (failed != 0) text += ", " + std::to_string(failed) + " failed queries";
+  return text;
+}
+
+int runStudy(const StudyArguments& args, const PluginOptions& plugins) {
+  study::Sweep sweep;
+  if (!args.sweep_path.empty()) {
+    Result<study::Sweep> loaded = study::loadSweep(args.sweep_path);
+    if (!loaded.ok()) {
+      std::cerr << "error: " << loaded.status().message() << "\n";
+      return 2;
+    }
+    sweep = std::move(loaded).value();
+  }
+  std::vector<study::PlannedScene> scenes;
+  for (const std::string& path : args.scenes) {
+    Result<Scene> scene = loadScene(path);
+    if (!scene.ok()) {
+      std::cerr << "error: " << scene.status().message() << "\n";
+      return 2;
+    }
+    scenes.push_back({std::filesystem::absolute(path).lexically_normal().string(),
+                      scene.value().name, scene.value().hasGeneratedShapes()});
+  }
+  const PluginDiscovery found = discoverPlugins(plugins.paths, !plugins.no_defaults);
+  for (const std::string& problem : found.problems)
+    std::cerr << "warning: " << problem << "\n";
+  const std::vector<std::string> settings = backendSettings(args, sweep, found);
+  if (Result<std::vector<BackendSpec>> specs = resolveBackends(settings, found.plugins);
+      !specs.ok()) {
+    std::cerr << "error: " << specs.status().message() << "\n";
+    return 2;
+  }
+  if (settings.empty()) {
+    std::cerr << "error: no backends to run (build the plugins or pass --plugin)\n";
+    return 2;
+  }
+  std::size_t shard_index = 0;
+  std::size_t shard_count = 1;
+  if (!args.shard.empty()) {
+    Result<std::pair<std::size_t, std::size_t>> shard = study::parseShard(args.shard);
+    if (!shard.ok()) {
+      std::cerr << "error: " << shard.status().message() << "\n";
+      return 2;
+    }
+    std::tie(shard_index, shard_count) = shard.value();
+  }
+  const std::vector<Combination> plan =
+      study::shardOf(study::planStudy(scenes, settings, sweep), shard_index, shard_count);
+
+  const ResultStore store(args.out);
+  Result<std::vector<Combination>> stored_plan = store.readPlan();
+  if (!stored_plan.ok()) {
+    std::cerr << "error: " << stored_plan.status().message() << "\n";
+    return 2;
+  }
+  if (!stored_plan.value().empty()) {
+    if (!args.resume) {
+      std::cerr << "error: " << args.out
+                << " already holds a study; pass --resume to continue it, or another --out\n";
+      return 2;
+    }
+    std::set<std::string> before;
+    for (const Combination& c : stored_plan.value())
+      before.insert(c.id);
+    std::set<std::string> now;
+    for (const Combination& c : plan)
+      now.insert(c.id);
+    if (before != now) {
+      std::cerr << "error: " << args.out
+                << " holds a different study (other scenes, backends, sweep or shard); resume "
+                   "with the same arguments, or choose another --out\n";
+      return 2;
+    }
+  }
+  if (Status s = store.prepare(); !s.ok()) {
+    std::cerr << "error: " << s.message() << "\n";
+    return 2;
+  }
+  if (Status s = store.writePlan(plan); !s.ok()) {
+    std::cerr << "error: " << s.message() << "\n";
+    return 2;
+  }
+
+  std::vector<const Combination*> todo;
+  for (const Combination& c : plan) {
+    if (args.resume && store.has(c.id)) {
+      if (!args.retry_failed) continue;
+      std::ifstream in(store.resultPath(c.id));
+      std::stringstream text;
+      text << in.rdbuf();
+      try {
+        Result<CombinationResult> stored =
+            study::resultFromJson(nlohmann::json::parse(text.str()), store.resultPath(c.id));
+        if (stored.ok() && stored.value().outcome.ok()) continue;
+      } catch (const nlohmann::json::exception&) {
+        // unreadable: run it again
+      }
+    }
+    todo.push_back(&c);
+  }
+  const int repetitions = args.repetitions > 0 ? args.repetitions : sweep.repetitions.value_or(5);
+  const double timeout_s = args.timeout_s > 0 ? args.timeout_s : sweep.timeout_s.value_or(600.0);
+  std::cerr << "study: " << plan.size() << " combinations"
+            << (shard_count > 1 ? " in shard " + args.shard : "") << ", " << todo.size()
+            << " to run, results in " << args.out << "\n";
+
+  stop_requested.store(false);
+  std::signal(SIGINT, requestStop);
+  std::signal(SIGTERM, requestStop);
+  study::StudyProgress progress(std::cerr, todo.size(), !args.quiet && isatty(STDERR_FILENO) != 0);
+  bool interrupted = false;
+  for (std::size_t i = 0; i < todo.size(); ++i) {
+    const Combination& c = *todo[i];
+    progress.start(i, c.label());
+    CombinationResult result =
+        runInWorker(c, store, args, repetitions, timeout_s, plugins, progress);
+    if (result.outcome.status == "interrupted") {
+      interrupted = true;
+      break;
+    }
+    if (Status s = store.write(result); !s.ok()) {
+      std::cerr << "\nerror: " << s.message() << "\n";
+      return 2;
+    }
+    if (!args.quiet) progress.finish(outcomeText(result));
+    Result<std::vector<CombinationResult>> all = store.readAll();
+    if (all.ok()) (void)study::writeStudyOutputs(store.directory(), all.value());
+    if (stop_requested.load()) {
+      interrupted = true;
+      break;
+    }
+  }
+  std::signal(SIGINT, SIG_DFL);
+  std::signal(SIGTERM, SIG_DFL);
+
+  Result<std::vector<CombinationResult>> all = store.readAll();
+  if (!all.ok()) {
+    std::cerr << "error: " << all.status().message() << "\n";
+    return 2;
+  }
+  if (Status s = study::writeStudyOutputs(store.directory(), all.value()); !s.ok()) {
+    std::cerr << "error: " << s.message() << "\n";
+    return 2;
+  }
+  if (interrupted) {
+    std::cerr << "\nstudy interrupted: " << all.value().size() << " of " << plan.size()
+              << " combinations are stored; continue with the same command and --resume\n";
+    return 130;
+  }
+  std::cout << study::studyTable(all.value());
+  std::cerr << "results: " << store.directory() << "/{table.txt,records.jsonl,summary.json}\n";
+  return 0;
+}
+
+int runWorkerMode(const std::string& request_path, const std::string& out_path, int repetitions,
+                  const PluginOptions& plugins) {
+  std::ifstream in(request_path, std::ios::binary);
+  if (!in) {
+    std::cerr << "error: " << request_path << ": cannot be read\n";
+    return 2;
+  }
+  std::stringstream text;
+  text << in.rdbuf();
+  Result<Combination> combination = Status(StatusCode::kInvalidArgument, "");
+  try {
+    combination = study::combinationFromJson(nlohmann::json::parse(text.str()));
+  } catch (const nlohmann::json::exception& e) {
+    combination = Status(StatusCode::kInvalidArgument, e.what());
+  }
+  if (!combination.ok()) {
+    std::cerr << "error: " << request_path << ": " << combination.status().message() << "\n";
+    return 2;
+  }
+  study::WorkerRequest request;
+  request.combination = combination.value();
+  request.plugin_paths = plugins.paths;
+  request.default_plugins = !plugins.no_defaults;
+  request.repetitions = repetitions;
+  request.progress = [](std::size_t done, std::size_t total) {
+    std::cout << "progress " << done << " " << total << std::endl;
+  };
+  Result<CombinationResult> result = study::runCombination(request);
+  if (!result.ok()) {
+    std::cerr << "error: " << result.status().message() << "\n";
+    return 2;
+  }
+  if (Status s = study::writeFileAtomically(out_path, study::resultToJson(result.value()).dump());
+      !s.ok()) {
+    std::cerr << "error: " << s.message() << "\n";
+    return 2;
+  }
+  return 0;
+}
+
+int runMerge(const std::string& out, const std::vector<std::string>& inputs) {
+  std::vector<Combination> plan;
+  std::set<std::string> planned;
+  std::map<std::string, CombinationResult> results;
+  for (const std::string& input : inputs) {
+    const ResultStore shard(input);
+    Result<std::vector<Combination>> shard_plan = shard.readPlan();
+    Result<std::vector<CombinationResult>> shard_results = shard.readAll();
+    if (!shard_plan.ok() || !shard_results.ok()) {
+      std::cerr << "error: "
+                << (shard_plan.ok() ? shard_results.status() : shard_plan.status()).message()
+                << "\n";
+      return 2;
+    }
+    if (shard_plan.value().empty() && shard_results.value().empty()) {
+      std::cerr << "error: " << input << ": no study here (no plan.json, no results/)\n";
+      return 2;
+    }
+    for (const Combination& c : shard_plan.value())
+      if (planned.insert(c.id).second) plan.push_back(c);
+    for (CombinationResult& r : shard_results.value()) {
+      if (planned.insert(r.combination.id).second) plan.push_back(r.combination);
+      const auto existing = results.find(r.combination.id);
+      // The same combination in two inputs: keep a finished run over a failed one.
+      if (existing == results.end() || (!existing->second.outcome.ok() && r.outcome.ok())) {
+        results[r.combination.id] = std::move(r);
+      }
+    }
+  }
+  const ResultStore store(out);
+  if (Status s = store.prepare(); !s.ok()) {
+    std::cerr << "error: " << s.message() << "\n";
+    return 2;
+  }
+  std::vector<CombinationResult> merged;
+  for (auto& [id, result] : results) {
+    if (Status s = store.write(result); !s.ok()) {
+      std::cerr << "error: " << s.message() << "\n";
+      return 2;
+    }
+    merged.push_back(result);
+  }
+  if (Status s = store.writePlan(plan); !s.ok()) {
+    std::cerr << "error: " << s.message() << "\n";
+    return 2;
+  }
+  if (Status s = study::writeStudyOutputs(out, merged); !s.ok()) {
+    std::cerr << "error: " << s.message() << "\n";
+    return 2;
+  }
+  std::cout << study::studyTable(merged);
+  const std::size_t missing = plan.size() - merged.size();
+  std::cerr << "merged " << merged.size() << " of " << plan.size() << " planned combinations into "
+            << out << (missing != 0 ? " (" + std::to_string(missing) + " not run yet)" : "")
+            << "\n";
+  return 0;
+}
+
+}  // namespace
+
+void addStudyCommands(CLI::App& app, const PluginOptions& plugins, int& exit_code) {
+  CLI::App* command = app.add_subcommand(
+      "study",
+      "Run every combination of scenes x backend settings x sweep in worker processes, each "
+      "answer checked against the exact oracle; a crash or hang costs one combination. Writes "
+      "OUT/table.txt, OUT/records.jsonl, OUT/summary.json (Google Benchmark format) and "
+      "OUT/results/. Exit code: 0 done, 2 bad input, 130 interrupted (resume with --resume)");
+  auto args = std::make_shared<StudyArguments>();
+  command->add_option("scenes", args->scenes, "scene files (JSON)")->required();
+  command
+      ->add_option("--backends", args->backends,
+                   "backends, NAME or NAME[key=value;...]; with --sweep, only these variants")
+      ->delimiter(',');
+  command->add_option("--sweep", args->sweep_path, "sweep file (JSON; docs/STUDY.md)");
+  command->add_option("--out", args->out, "study folder")->required();
+  command->add_flag("--resume", args->resume,
+                    "continue the study in --out, skipping combinations already stored");
+  command->add_flag("--retry-failed", args->retry_failed,
+                    "with --resume, also run again combinations that crashed, failed or timed out");
+  command->add_option("--shard", args->shard,
+                      "run only part I of N (0 <= I < N), e.g. $SLURM_ARRAY_TASK_ID/4");
+  command->add_option("--timeout", args->timeout_s,
+                      "seconds a combination may run before its worker is killed (default: the "
+                      "sweep's timeout_s, else 600)")
+      ->check(CLI::PositiveNumber);
+  command->add_option("--repetitions", args->repetitions,
+                      "timed calls per frame and query (default: the sweep's, else 5)")
+      ->check(CLI::Range(1, 1000000));
+  command->add_flag("--quiet", args->quiet, "no progress on stderr");
+  command->callback([args, &plugins, &exit_code] { exit_code = runStudy(*args, plugins); });
+
+  CLI::App* worker = app.add_subcommand("worker", "");  // internal: one combination
+  worker->group("");
+  auto request = std::make_shared<std::string>();
+  auto out = std::make_shared<std::string>();
+  auto repetitions = std::make_shared<int>(5);
+  worker->add_option("--request", *request)->required();
+  worker->add_option("--out", *out)->required();
+  worker->add_option("--repetitions", *repetitions);
+  worker->callback([request, out, repetitions, &plugins, &exit_code] {
+    exit_code = runWorkerMode(*request, *out, *repetitions, plugins);
+  });
+
+  CLI::App* merge = app.add_subcommand(
+      "merge",
+      "Join the folders of a sharded study (collido study --shard I/N) into one, with its "
+      "table, records and summary");
+  auto merge_out = std::make_shared<std::string>();
+  auto inputs = std::make_shared<std::vector<std::string>>();
+  merge->add_option("inputs", *inputs, "study folders to join")->required();
+  merge->add_option("--out", *merge_out, "the joined study folder")->required();
+  merge->callback([merge_out, inputs, &exit_code] { exit_code = runMerge(*merge_out, *inputs); });
+}
+
+}  // namespace collido::cli

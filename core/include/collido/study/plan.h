@@ -1,0 +1,56 @@
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include <collido/status.h>
+#include <collido/study/sweep.h>
+
+namespace collido::study {
+
+/// One unit of a study: one scene at one resolution on one backend setting, run by one worker.
+struct Combination {
+  std::string id;  ///< stable, file-name safe, unique within a plan
+  std::string scene_path;
+  std::string scene_name;
+  double resolution = 1.0;
+  std::string backend;  ///< backend text: "variant" or "variant[key=value;...]"
+  NeedsMode needs = NeedsMode::kDeclared;
+  std::uint64_t limit = 0;  ///< max_pairs / max_contacts cap; 0 = the scene's own
+
+  /// "bunny_vs_bunny · obbtree[max_leaf_triangles=4] · every needs · r=0.5 · limit 16", only the
+  /// parts that differ from the defaults.
+  std::string label() const;
+  /// The setting beyond the backend text: "", or e.g. "needs=every r=0.5 limit=16".
+  std::string settingText() const;
+};
+
+/// A scene as the planner sees it.
+struct PlannedScene {
+  std::string path;
+  std::string name;
+  bool has_generated_shapes = false;  ///< resolutions other than 1 apply only to these
+};
+
+/// Every combination of scenes × resolutions × backend settings × needs × limits, in that
+/// nesting order. Resolutions other than 1 are planned only for scenes with generated shapes.
+std::vector<Combination> planStudy(const std::vector<PlannedScene>& scenes,
+                                   const std::vector<std::string>& backends, const Sweep& sweep);
+
+/// The part of a plan that shard `index` of `count` runs (every count-th combination from
+/// `index`, so each shard gets a fair mix of cheap and dear ones).
+std::vector<Combination> shardOf(const std::vector<Combination>& plan, std::size_t index,
+                                 std::size_t count);
+
+/// Reads "I/N" (0 <= I < N), as a Slurm array passes $SLURM_ARRAY_TASK_ID/$SLURM_ARRAY_TASK_COUNT.
+Result<std::pair<std::size_t, std::size_t>> parseShard(const std::string& text);
+
+nlohmann::json combinationToJson(const Combination& combination);
+Result<Combination> combinationFromJson(const nlohmann::json& json);
+
+}  // namespace collido::study

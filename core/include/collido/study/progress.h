@@ -1,0 +1,47 @@
+#pragma once
+
+#include <chrono>
+#include <cstddef>
+#include <ostream>
+#include <string>
+
+namespace collido::study {
+
+/// The study's progress on a terminal: a bar for the whole study with an estimate of the time
+/// left, and one for the running combination's frames, redrawn in place. On anything but a
+/// terminal it prints one line per finished combination instead.
+class StudyProgress {
+ public:
+  StudyProgress(std::ostream& out, std::size_t combinations, bool interactive);
+
+  void start(std::size_t index, const std::string& label);
+  void frames(std::size_t done, std::size_t total);
+  void finish(const std::string& outcome);
+  /// Redraws the bars (at most ten times a second).
+  void tick();
+  /// "1m05s": the estimated time left, from the mean time per combination so far.
+  std::string estimateLeft() const;
+
+ private:
+  using Clock = std::chrono::steady_clock;
+  void draw();
+
+  std::ostream& out_;
+  std::size_t combinations_;
+  bool interactive_;
+  Clock::time_point started_ = Clock::now();
+  Clock::time_point last_draw_{};
+  std::size_t finished_ = 0;
+  std::size_t index_ = 0;
+  std::string label_;
+  std::size_t frames_done_ = 0;
+  std::size_t frames_total_ = 0;
+};
+
+/// A duration in seconds as people read it: "42s", "3m07s", "1h02m".
+std::string formatDuration(double seconds);
+
+/// A bar of `width` cells filled to `fraction` (clamped to [0, 1]).
+std::string progressBar(double fraction, std::size_t width);
+
+}  // namespace collido::study

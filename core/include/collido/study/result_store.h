@@ -1,0 +1,71 @@
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include <collido/runner/runner.h>
+#include <collido/status.h>
+#include <collido/study/plan.h>
+
+namespace collido::study {
+
+/// How a worker process ended.
+struct WorkerOutcome {
+  /// "ok" (results written), "failed" (exited non-zero), "crashed" (killed by a signal),
+  /// "timeout" (killed after the time limit) or "unfinished" (no result could be read).
+  std::string status = "ok";
+  int exit_code = 0;
+  int signal = 0;
+  std::string signal_name;  ///< "SIGSEGV", ...; empty without a signal
+  double wall_s = 0.0;
+  std::size_t peak_rss_bytes = 0;  ///< the worker's maximum resident set
+  std::string log_tail;            ///< the end of its stderr, for failures
+
+  bool ok() const { return status == "ok"; }
+};
+
+/// Everything one combination produced.
+struct CombinationResult {
+  Combination combination;
+  WorkerOutcome outcome;
+  std::vector<QueryMeasurement> measurements;  ///< empty unless the worker finished
+  std::vector<std::string> problems;
+};
+
+nlohmann::json resultToJson(const CombinationResult& result);
+Result<CombinationResult> resultFromJson(const nlohmann::json& json, const std::string& label);
+
+/// Writes `text` to a temporary file beside `path`, then renames it over `path`: a reader (or a
+/// study killed mid-write) never sees half a file.
+Status writeFileAtomically(const std::string& path, const std::string& text);
+
+/// A study's folder: plan.json, results/<id>.json (one per finished combination, written
+/// atomically), logs/<id>.log (each worker's stderr), and the outputs made from the results.
+class ResultStore {
+ public:
+  explicit ResultStore(std::string directory) : directory_(std::move(directory)) {}
+
+  const std::string& directory() const { return directory_; }
+  Status prepare() const;  ///< creates the folders
+
+  bool has(const std::string& id) const;
+  Status write(const CombinationResult& result) const;
+  /// Every stored result, in id order; unreadable files are errors naming the file.
+  Result<std::vector<CombinationResult>> readAll() const;
+
+  Status writePlan(const std::vector<Combination>& plan) const;
+  /// The stored plan, or an empty one when none was written.
+  Result<std::vector<Combination>> readPlan() const;
+
+  std::string resultPath(const std::string& id) const;
+  std::string logPath(const std::string& id) const;
+  std::string scratchPath(const std::string& id) const;  ///< where a worker writes its answer
+
+ private:
+  std::string directory_;
+};
+
+}  // namespace collido::study

@@ -1,0 +1,46 @@
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <collido/status.h>
+
+namespace collido::study {
+
+/// What each object is built for: the scene's own queries, or every query kind the backend
+/// answers (to show what building only the needed structures saves).
+enum class NeedsMode { kDeclared, kEvery };
+
+/// "declared" or "every".
+const char* needsModeName(NeedsMode mode);
+std::optional<NeedsMode> parseNeedsMode(const std::string& name);
+
+/// One backend variant of a sweep and the option values to try; every combination of the
+/// listed values is one setting.
+struct SweepBackend {
+  std::string variant;
+  std::vector<std::pair<std::string, std::vector<std::string>>> options;  ///< name, values
+
+  /// Every setting as backend text: "variant" or "variant[a=1;b=x]", options in file order.
+  std::vector<std::string> settings() const;
+};
+
+/// The settings a study sweeps (format: docs/STUDY.md). Every list has at least one entry.
+struct Sweep {
+  std::vector<SweepBackend> backends;  ///< empty: every variant found (or --backends)
+  std::vector<double> resolutions{1.0};
+  std::vector<NeedsMode> needs{NeedsMode::kDeclared};
+  /// Caps on all-pairs and contacts answers (max_pairs / max_contacts); 0 keeps the scene's.
+  std::vector<std::uint64_t> limits{0};
+  std::optional<int> repetitions;
+  std::optional<double> timeout_s;
+};
+
+/// Reads a sweep; every error names `label`, the JSON path and the problem.
+Result<Sweep> parseSweep(const std::string& text, const std::string& label);
+Result<Sweep> loadSweep(const std::string& path);
+
+}  // namespace collido::study

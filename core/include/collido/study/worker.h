@@ -1,0 +1,28 @@
+#pragma once
+
+#include <cstddef>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <collido/status.h>
+#include <collido/study/result_store.h>
+
+namespace collido::study {
+
+/// What a worker process is asked to do: one combination.
+struct WorkerRequest {
+  Combination combination;
+  std::vector<std::string> plugin_paths;  ///< --plugin, searched first
+  bool default_plugins = true;
+  int repetitions = 5;
+  std::function<void(std::size_t, std::size_t)> progress;  ///< frames done, frames in all
+};
+
+/// Runs one combination in this process: loads the scene at the combination's resolution
+/// (and, when coarser than 1, at resolution 1 with the same poses, as the finest truth), caps
+/// answers at its limit, builds for its needs, and measures. Errors are bad input (scene,
+/// backend); an engine's failure is recorded in the measurements instead.
+Result<CombinationResult> runCombination(const WorkerRequest& request);
+
+}  // namespace collido::study

@@ -1,0 +1,36 @@
+#pragma once
+
+#include <atomic>
+#include <cstddef>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <collido/study/result_store.h>
+
+namespace collido::study {
+
+/// A worker process to start: the collido executable in worker mode, one combination.
+struct WorkerLaunch {
+  std::string executable;
+  std::vector<std::string> arguments;   ///< after the program name
+  std::vector<std::string> environment;  ///< "NAME=value" set on top of ours
+  std::string log_path;                  ///< receives the worker's stderr
+  double timeout_s = 0.0;                ///< 0: no limit
+  /// Called with (done, total) for each "progress D T" line the worker prints on stdout.
+  std::function<void(std::size_t, std::size_t)> on_progress;
+  /// Called a few times a second while the worker runs (to redraw a progress bar).
+  std::function<void()> on_tick;
+  /// When it becomes true the worker is killed and the outcome is "interrupted".
+  const std::atomic<bool>* stop = nullptr;
+};
+
+/// Starts the worker in its own process group, follows its progress, kills it (and anything it
+/// started) at the time limit, and reports how it ended: exit code or signal, wall time, peak
+/// resident memory and the tail of its log. Never throws for anything the worker does.
+WorkerOutcome runWorkerProcess(const WorkerLaunch& launch);
+
+/// The last `bytes` bytes of a file ("" when it cannot be read).
+std::string fileTail(const std::string& path, std::size_t bytes);
+
+}  // namespace collido::study

@@ -1,0 +1,254 @@
+#include <collido/study/outputs.h>
+
+#include <unistd.h>
+
+#include <chrono>
+#include <ctime>
+#include <filesystem>
+#include <map>
+#include <sstream>
+#include <thread>
+
+#include <nlohmann/json.hpp>
+
+#include <collido/runner/text_table.h>
+
+namespace collido::study {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+template <typename T>
+Json optionalJson(const std::optional<T>& value) {
+  return value ? Json(*value) : Json();
+}
+
+std::string benchmarkName(const Combination& c, const QueryMeasurement& m) {
+  const std::string setting = c.settingText();
+  std::string name = c.backend + "/" + c.scene_name + "/" + m.query;
+  if (!setting.empty()) name += "/" + setting;
+  return name;
+}
+
+std::string localTime() {
+  const std::time_t now = std::time(nullptr);
+  std::tm parts{};
+  localtime_r(&now, &parts);
+  char text[64];
+  std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%S%z", &parts);
+  return text;
+}
+
+std::string hostName() {
+  char name[256] = {};
+  if (gethostname(name, sizeof name - 1) != 0) return "";
+  return name;
+}
+
+double perQuery(std::uint64_t total, std::size_t frames) {
+  return frames == 0 ? 0.0 : static_cast<double>(total) / static_cast<double>(frames);
+}
+
+}  // namespace
+
+std::string recordsJsonLines(const std::vector<CombinationResult>& results) {
+  std::ostringstream out;
+  for (const CombinationResult& r : results) {
+    const Combination& c = r.combination;
+    for (const QueryMeasurement& m : r.measurements) {
+      for (const FrameRecord& f : m.frames) {
+        const Json line = {
+            {"combination", c.id},
+            {"backend", c.backend},
+            {"scene", c.scene_name},
+            {"resolution", c.resolution},
+            {"needs", needsModeName(c.needs)},
+            {"limit", c.limit},
+            {"query", m.query},
+            {"kind", queryKindName(m.kind)},
+            {"frame", f.frame},
+            {"median_us", f.median_us},
+            {"oracle_intersecting", f.oracle_intersecting},
+            {"reported_intersecting", f.reported_intersecting},
+            {"finest_intersecting", optionalJson(f.finest_intersecting)},
+            {"oracle_pairs", f.oracle_pairs},
+            {"reported_pairs", f.reported_pairs},
+            {"matched_pairs", f.matched_pairs},
+            {"invalid_pairs", f.invalid_pairs},
+            {"truncated", f.truncated},
+            {"disagrees", f.disagrees(m.kind)},
+            {"bv_tests", m.counts_bv_tests ? Json(f.bv_tests) : Json()},
+            {"primitive_tests", m.counts_primitive_tests ? Json(f.primitive_tests) : Json()}};
+        out << line.dump() << "\n";
+      }
+    }
+  }
+  return out.str();
+}
+
+std::string benchmarkJson(const std::vector<CombinationResult>& results) {
+  Json benchmarks = Json::array();
+  for (const CombinationResult& r : results) {
+    for (const QueryMeasurement& m : r.measurements) {
+      if (!m.ok()) continue;
+      const std::string name = benchmarkName(r.combination, m);
+      const double triangles = m.triangles == 0 ? 1.0 : static_cast<double>(m.triangles);
+      Json entry = {{"name", name},
+                    {"family_index", benchmarks.size()},
+                    {"per_family_instance_index", 0},
+                    {"run_name", name},
+                    {"run_type", "iteration"},
+                    {"repetitions", 1},
+                    {"repetition_index", 0},
+                    {"threads", 1},
+                    {"iterations", m.times_us.size()},
+                    {"real_time", m.median_us},
+                    {"cpu_time", m.median_us},
+                    {"time_unit", "us"},
+                    {"p90_us", m.p90_us},
+                    {"p99_us", m.p99_us},
+                    {"max_us", m.max_us},
+                    {"frames", m.frames.size()},
+                    {"disagreements", m.disagreements},
+                    {"false_negatives", m.false_negatives},
+                    {"false_positives", m.false_positives},
+                    {"recall", m.recall},
+                    {"precision", m.precision},
+                    {"build_ms", m.build_ms},
+                    {"triangles", m.triangles},
+                    {"bytes_per_triangle", static_cast<double>(m.memory_bytes) / triangles},
+                    {"peak_rss_bytes", r.outcome.peak_rss_bytes}};
+      if (m.heap_bytes) {
+        entry["heap_bytes_per_triangle"] = static_cast<double>(*m.heap_bytes) / triangles;
+      }
+      if (m.finest_disagreements) entry["finest_disagreements"] = *m.finest_disagreements;
+      std::uint64_t bv = 0;
+      std::uint64_t primitive = 0;
+      for (const FrameRecord& f : m.frames) {
+        bv += f.bv_tests;
+        primitive += f.primitive_tests;
+      }
+      if (m.counts_bv_tests) entry["bv_tests"] = perQuery(bv, m.frames.size());
+      if (m.counts_primitive_tests) {
+        entry["primitive_tests"] = perQuery(primitive, m.frames.size());
+      }
+      benchmarks.push_back(entry);
+    }
+  }
+  const unsigned cpus = std::thread::hardware_concurrency();
+  const Json context = {{"date", localTime()},
+                        {"host_name", hostName()},
+                        {"executable", "collido study"},
+                        {"num_cpus", cpus},
+                        {"mhz_per_cpu", 0},
+                        {"cpu_scaling_enabled", false},
+                        {"caches", Json::array()},
+                        {"load_avg", Json::array()},
+#ifdef NDEBUG
+                        {"library_build_type", "release"}
+#else
+                        {"library_build_type", "debug"}
+#endif
+  };
+  return Json{{"context", context}, {"benchmarks", benchmarks}}.dump(2) + "\n";
+}
+
+std::string studyTable(const std::vector<CombinationResult>& results) {
+  const std::vector<std::string> header = {
+      "backend",  "setting",   "scene",  "query",  "frames",    "median us",
+      "p90 us",   "p99 us",    "max us", "FN",     "FP",        "recall",
+      "precision", "disagree", "coarse err", "build ms", "B/tri", "B/tri heap",
+      "RSS MiB"};
+  std::vector<std::vector<std::string>> rows;
+  std::vector<std::string> failures;
+  for (const CombinationResult& r : results) {
+    const Combination& c = r.combination;
+    if (!r.outcome.ok()) {
+      std::string why = r.outcome.status;
+      if (!r.outcome.signal_name.empty()) why += " (" + r.outcome.signal_name + ")";
+      if (r.outcome.status == "failed") why += " (exit " + std::to_string(r.outcome.exit_code) + ")";
+      rows.push_back({c.backend, c.settingText(), c.scene_name, "*", why});
+      failures.push_back(c.label() + ": worker " + why);
+      continue;
+    }
+    for (const QueryMeasurement& m : r.measurements) {
+      if (!m.ok()) {
+        rows.push_back({c.backend, c.settingText(), c.scene_name, m.query,
+                        m.status.substr(0, m.status.find(':'))});
+        if (m.status.rfind("failed", 0) == 0) failures.push_back(c.label() + " / " + m.query + ": " + m.status);
+        continue;
+      }
+      const bool pairs = m.kind == QueryKind::kAllPairs;
+      rows.push_back(
+          {c.backend, c.settingText(), c.scene_name, m.query, std::to_string(m.frames.size()),
+           formatNumber("%.1f", m.median_us), formatNumber("%.1f", m.p90_us),
+           formatNumber("%.1f", m.p99_us), formatNumber("%.1f", m.max_us),
+           std::to_string(m.false_negatives), std::to_string(m.false_positives),
+           pairs ? formatNumber("%.4f", m.recall) : "-",
+           pairs ? formatNumber("%.4f", m.precision) : "-", std::to_string(m.disagreements),
+           m.finest_disagreements ? std::to_string(*m.finest_disagreements) : "-",
+           formatNumber("%.2f", m.build_ms), bytesPerTriangleText(m.memory_bytes, m.triangles),
+           m.heap_bytes ? bytesPerTriangleText(*m.heap_bytes, m.triangles) : "n/a",
+           formatNumber("%.0f", static_cast<double>(r.outcome.peak_rss_bytes) / 1048576.0)});
+    }
+  }
+  std::ostringstream out;
+  out << formatTextTable(header, rows, 4);
+
+  // What building only the declared needs saves: pairs of combinations differing in needs only.
+  std::map<std::string, const CombinationResult*> declared;
+  for (const CombinationResult& r : results) {
+    if (r.outcome.ok() && r.combination.needs == NeedsMode::kDeclared) {
+      Combination key = r.combination;
+      declared[key.scene_name + "|" + key.backend + "|" + std::to_string(key.resolution) + "|" +
+               std::to_string(key.limit)] = &r;
+    }
+  }
+  std::vector<std::vector<std::string>> savings;
+  for (const CombinationResult& every : results) {
+    const Combination& c = every.combination;
+    if (!every.outcome.ok() || c.needs != NeedsMode::kEvery) continue;
+    const auto found = declared.find(c.scene_name + "|" + c.backend + "|" +
+                                     std::to_string(c.resolution) + "|" + std::to_string(c.limit));
+    if (found == declared.end()) continue;
+    for (const QueryMeasurement& e : every.measurements) {
+      for (const QueryMeasurement& d : found->second->measurements) {
+        if (d.query != e.query || !d.ok() || !e.ok()) continue;
+        savings.push_back({c.backend, c.scene_name, d.query, formatNumber("%.2f", d.build_ms),
+                           formatNumber("%.2f", e.build_ms), formatNumber("%.1f", d.median_us),
+                           formatNumber("%.1f", e.median_us),
+                           bytesPerTriangleText(d.memory_bytes, d.triangles),
+                           bytesPerTriangleText(e.memory_bytes, e.triangles)});
+      }
+    }
+  }
+  if (!savings.empty()) {
+    out << "\nBuilding only what the scene needs (declared) against every query kind (every):\n";
+    out << formatTextTable({"backend", "scene", "query", "build ms declared", "build ms every",
+                            "median us declared", "median us every", "B/tri declared",
+                            "B/tri every"},
+                           savings, 3);
+  }
+  if (!failures.empty()) {
+    out << "\nFailures:\n";
+    for (const std::string& f : failures)
+      out << "  " << f << "\n";
+  }
+  return out.str();
+}
+
+Status writeStudyOutputs(const std::string& directory,
+                         const std::vector<CombinationResult>& results) {
+  const std::filesystem::path folder(directory);
+  if (Status s = writeFileAtomically((folder / "records.jsonl").string(), recordsJsonLines(results));
+      !s.ok()) {
+    return s;
+  }
+  if (Status s = writeFileAtomically((folder / "summary.json").string(), benchmarkJson(results));
+      !s.ok()) {
+    return s;
+  }
+  return writeFileAtomically((folder / "table.txt").string(), studyTable(results));
+}
+
+}  // namespace collido::study

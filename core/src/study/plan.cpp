@@ -1,0 +1,141 @@
+#include <collido/study/plan.h>
+
+#include <cctype>
+#include <cstdio>
+#include <sstream>
+
+namespace collido::study {
+namespace {
+
+std::string shortNumber(double value) {
+  std::ostringstream out;
+  out << value;
+  return out.str();
+}
+
+// FNV-1a: a short, stable fingerprint that keeps ids unique after unsafe characters are folded.
+std::uint32_t fingerprint(const std::string& text) {
+  std::uint32_t hash = 2166136261u;
+  for (const unsigned char c : text) {
+    hash ^= c;
+    hash *= 16777619u;
+  }
+  return hash;
+}
+
+std::string fileSafe(const std::string& text) {
+  std::string out;
+  for (const unsigned char c : text)
+    out += std::isalnum(c) != 0 || c == '-' || c == '.' ? static_cast<char>(c) : '_';
+  return out;
+}
+
+std::string makeId(const Combination& c) {
+  const std::string key = c.scene_path + "\n" + c.scene_name + "\n" + shortNumber(c.resolution) +
+                          "\n" + c.backend + "\n" + needsModeName(c.needs) + "\n" +
+                          std::to_string(c.limit);
+  char hash[9];
+  std::snprintf(hash, sizeof hash, "%08x", fingerprint(key));
+  std::string readable = fileSafe(c.scene_name + "~" + c.backend);
+  if (readable.size() > 80) readable.resize(80);
+  return readable + "~" + hash;
+}
+
+}  // namespace
+
+std::string Combination::settingText() const {
+  std::string text;
+  const auto add = [&text](const std::string& part) { text += (text.empty() ? "" : " ") + part; };
+  if (needs != NeedsMode::kDeclared) add(std::string("needs=") + needsModeName(needs));
+  if (resolution != 1.0) add("r=" + shortNumber(resolution));
+  if (limit != 0) add("limit=" + std::to_string(limit));
+  return text;
+}
+
+std::string Combination::label() const {
+  const std::string setting = settingText();
+  return scene_name + " · " + backend + (setting.empty() ? "" : " · " + setting);
+}
+
+std::vector<Combination> planStudy(const std::vector<PlannedScene>& scenes,
+                                   const std::vector<std::string>& backends, const Sweep& sweep) {
+  std::vector<Combination> plan;
+  for (const PlannedScene& scene : scenes) {
+    for (const double resolution : sweep.resolutions) {
+      if (resolution != 1.0 && !scene.has_generated_shapes) continue;
+      for (const std::string& backend : backends) {
+        for (const NeedsMode needs : sweep.needs) {
+          for (const std::uint64_t limit : sweep.limits) {
+            Combination c;
+            c.scene_path = scene.path;
+            c.scene_name = scene.name;
+            c.resolution = resolution;
+            c.backend = backend;
+            c.needs = needs;
+            c.limit = limit;
+            c.id = makeId(c);
+            plan.push_back(std::move(c));
+          }
+        }
+      }
+    }
+  }
+  return plan;
+}
+
+std::vector<Combination> shardOf(const std::vector<Combination>& plan, std::size_t index,
+                                 std::size_t count) {
+  std::vector<Combination> part;
+  for (std::size_t i = index; count != 0 && i < plan.size(); i += count)
+    part.push_back(plan[i]);
+  return part;
+}
+
+Result<std::pair<std::size_t, std::size_t>> parseShard(const std::string& text) {
+  const Status bad(StatusCode::kInvalidArgument,
+                   "--shard '" + text + "': expected I/N with 0 <= I < N, e.g. 0/4");
+  const std::size_t slash = text.find('/');
+  if (slash == std::string::npos || slash == 0 || slash + 1 == text.size()) return bad;
+  const std::string index_text = text.substr(0, slash);
+  const std::string count_text = text.substr(slash + 1);
+  const auto digits = [](const std::string& s) {
+    for (const unsigned char c : s)
+      if (std::isdigit(c) == 0) return false;
+    return s.size() <= 9;
+  };
+  if (!digits(index_text) || !digits(count_text)) return bad;
+  const std::size_t index = std::stoul(index_text);
+  const std::size_t count = std::stoul(count_text);
+  if (count == 0 || index >= count) return bad;
+  return std::make_pair(index, count);
+}
+
+nlohmann::json combinationToJson(const Combination& c) {
+  return {{"id", c.id},
+          {"scene_path", c.scene_path},
+          {"scene", c.scene_name},
+          {"resolution", c.resolution},
+          {"backend", c.backend},
+          {"needs", needsModeName(c.needs)},
+          {"limit", c.limit}};
+}
+
+Result<Combination> combinationFromJson(const nlohmann::json& json) {
+  try {
+    Combination c;
+    c.id = json.at("id").get<std::string>();
+    c.scene_path = json.at("scene_path").get<std::string>();
+    c.scene_name = json.at("scene").get<std::string>();
+    c.resolution = json.at("resolution").get<double>();
+    c.backend = json.at("backend").get<std::string>();
+    const std::optional<NeedsMode> needs = parseNeedsMode(json.at("needs").get<std::string>());
+    if (!needs) return Status(StatusCode::kInvalidArgument, "combination: unknown needs mode");
+    c.needs = *needs;
+    c.limit = json.at("limit").get<std::uint64_t>();
+    return c;
+  } catch (const nlohmann::json::exception& e) {
+    return Status(StatusCode::kInvalidArgument, std::string("combination: ") + e.what());
+  }
+}
+
+}  // namespace collido::study

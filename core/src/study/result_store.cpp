@@ -1,0 +1,190 @@
+#include <collido/study/result_store.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include <collido/runner/measurement_json.h>
+
+namespace collido::study {
+namespace {
+
+using Json = nlohmann::json;
+namespace fs = std::filesystem;
+
+Result<Json> readJsonFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return Status(StatusCode::kInvalidArgument, path + ": cannot be read");
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  try {
+    return Json::parse(buffer.str());
+  } catch (const Json::parse_error& e) {
+    return Status(StatusCode::kInvalidArgument, path + ": not valid JSON: " + e.what());
+  }
+}
+
+}  // namespace
+
+Json resultToJson(const CombinationResult& r) {
+  Json measurements = Json::array();
+  for (const QueryMeasurement& m : r.measurements)
+    measurements.push_back(measurementToJson(m));
+  return {{"collidoscope_combination", 1},
+          {"combination", combinationToJson(r.combination)},
+          {"outcome",
+           {{"status", r.outcome.status},
+            {"exit_code", r.outcome.exit_code},
+            {"signal", r.outcome.signal},
+            {"signal_name", r.outcome.signal_name},
+            {"wall_s", r.outcome.wall_s},
+            {"peak_rss_bytes", r.outcome.peak_rss_bytes},
+            {"log_tail", r.outcome.log_tail}}},
+          {"measurements", measurements},
+          {"problems", r.problems}};
+}
+
+Result<CombinationResult> resultFromJson(const Json& json, const std::string& label) {
+  const auto bad = [&label](const std::string& problem) {
+    return Status(StatusCode::kInvalidArgument, label + ": " + problem);
+  };
+  try {
+    if (json.value("collidoscope_combination", 0) != 1) {
+      return bad("not a Collidoscope combination result (collidoscope_combination != 1)");
+    }
+    CombinationResult r;
+    Result<Combination> combination = combinationFromJson(json.at("combination"));
+    if (!combination.ok()) return bad(combination.status().message());
+    r.combination = std::move(combination).value();
+    const Json& o = json.at("outcome");
+    r.outcome.status = o.at("status").get<std::string>();
+    r.outcome.exit_code = o.at("exit_code").get<int>();
+    r.outcome.signal = o.at("signal").get<int>();
+    r.outcome.signal_name = o.at("signal_name").get<std::string>();
+    r.outcome.wall_s = o.at("wall_s").get<double>();
+    r.outcome.peak_rss_bytes = o.at("peak_rss_bytes").get<std::size_t>();
+    r.outcome.log_tail = o.at("log_tail").get<std::string>();
+    for (const Json& m : json.at("measurements")) {
+      Result<QueryMeasurement> measurement = measurementFromJson(m);
+      if (!measurement.ok()) return bad(measurement.status().message());
+      r.measurements.push_back(std::move(measurement).value());
+    }
+    r.problems = json.at("problems").get<std::vector<std::string>>();
+    return r;
+  } catch (const Json::exception& e) {
+    return bad(e.what());
+  }
+}
+
+Status writeFileAtomically(const std::string& path, const std::string& text) {
+  const std::string temporary = path + ".partial";
+  {
+    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+    if (!out || !(out << text) || !out.flush()) {
+      return Status(StatusCode::kInvalidArgument, temporary + ": cannot be written");
+    }
+  }
+  std::error_code ec;
+  fs::rename(temporary, path, ec);
+  if (ec) return Status(StatusCode::kInvalidArgument, path + ": cannot be replaced: " + ec.message());
+  return Status();
+}
+
+Status ResultStore::prepare() const {
+  std::error_code ec;
+  for (const char* sub : {"results", "logs", "scratch"}) {
+    fs::create_directories(fs::path(directory_) / sub, ec);
+    if (ec) {
+      return Status(StatusCode::kInvalidArgument,
+                    (fs::path(directory_) / sub).string() + ": cannot be created: " + ec.message());
+    }
+  }
+  return Status();
+}
+
+std::string ResultStore::resultPath(const std::string& id) const {
+  return (fs::path(directory_) / "results" / (id + ".json")).string();
+}
+std::string ResultStore::logPath(const std::string& id) const {
+  return (fs::path(directory_) / "logs" / (id + ".log")).string();
+}
+std::string ResultStore::scratchPath(const std::string& id) const {
+  return (fs::path(directory_) / "scratch" / (id + ".json")).string();
+}
+
+bool ResultStore::has(const std::string& id) const {
+  std::error_code ec;
+  return fs::is_regular_file(resultPath(id), ec);
+}
+
+Status ResultStore::write(const CombinationResult& result) const {
+  return writeFileAtomically(resultPath(result.combination.id), resultToJson(result).dump(1));
+}
+
+Result<std::vector<CombinationResult>> ResultStore::readAll() const {
+  std::vector<std::string> files;
+  std::error_code ec;
+  const fs::path folder = fs::path(directory_) / "results";
+  if (fs::is_directory(folder, ec)) {
+    for (const fs::directory_entry& entry : fs::directory_iterator(folder, ec)) {
+      if (entry.path().extension() == ".json") files.push_back(entry.path().string());
+    }
+  }
+  std::sort(files.begin(), files.end());
+  std::vector<CombinationResult> results;
+  // In plan order, so tables follow the study's nesting; results outside the plan go last.
+  std::map<std::string, std::size_t> rank;
+  if (Result<std::vector<Combination>> plan = readPlan(); plan.ok()) {
+    for (std::size_t i = 0; i < plan.value().size(); ++i)
+      rank.emplace(plan.value()[i].id, i);
+  }
+  for (const std::string& file : files) {
+    Result<Json> json = readJsonFile(file);
+    if (!json.ok()) return json.status();
+    Result<CombinationResult> result = resultFromJson(json.value(), file);
+    if (!result.ok()) return result.status();
+    results.push_back(std::move(result).value());
+  }
+  std::stable_sort(results.begin(), results.end(),
+                   [&rank](const CombinationResult& a, const CombinationResult& b) {
+                     const auto order = [&rank](const CombinationResult& r) {
+                       const auto found = rank.find(r.combination.id);
+                       return found == rank.end() ? rank.size() : found->second;
+                     };
+                     return order(a) < order(b);
+                   });
+  return results;
+}
+
+Status ResultStore::writePlan(const std::vector<Combination>& plan) const {
+  Json list = Json::array();
+  for (const Combination& c : plan)
+    list.push_back(combinationToJson(c));
+  return writeFileAtomically((fs::path(directory_) / "plan.json").string(),
+                             Json{{"collidoscope_plan", 1}, {"combinations", list}}.dump(1));
+}
+
+Result<std::vector<Combination>> ResultStore::readPlan() const {
+  const std::string path = (fs::path(directory_) / "plan.json").string();
+  std::error_code ec;
+  if (!fs::exists(path, ec)) return std::vector<Combination>{};
+  Result<Json> json = readJsonFile(path);
+  if (!json.ok()) return json.status();
+  std::vector<Combination> plan;
+  try {
+    for (const Json& c : json.value().at("combinations")) {
+      Result<Combination> combination = combinationFromJson(c);
+      if (!combination.ok()) {
+        return Status(StatusCode::kInvalidArgument, path + ": " + combination.status().message());
+      }
+      plan.push_back(std::move(combination).value());
+    }
+  } catch (const Json::exception& e) {
+    return Status(StatusCode::kInvalidArgument, path + ": " + e.what());
+  }
+  return plan;
+}
+
+}  // namespace collido::study

@@ -1,0 +1,200 @@
+#include <collido/study/sweep.h>
+
+#include <cmath>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+namespace collido::study {
+namespace {
+
+using Json = nlohmann::json;
+
+struct SweepError {
+  std::string message;
+};
+
+class Checker {
+ public:
+  explicit Checker(std::string label) : label_(std::move(label)) {}
+
+  [[noreturn]] void fail(const std::string& where, const std::string& problem) const {
+    throw SweepError{label_ + ": " + (where.empty() ? "/" : where) + ": " + problem};
+  }
+
+  void allowKeys(const Json& node, const std::string& where,
+                 const std::set<std::string>& allowed) const {
+    if (!node.is_object()) fail(where, std::string("expected an object, got ") + node.type_name());
+    for (const auto& item : node.items()) {
+      if (item.key() == "comment" || allowed.count(item.key()) != 0) continue;
+      std::string list;
+      for (const std::string& key : allowed)
+        list += (list.empty() ? "" : ", ") + key;
+      fail(where, "unknown key '" + item.key() + "' (allowed: " + list + ")");
+    }
+  }
+
+  const Json& nonEmptyArray(const Json& node, const std::string& where) const {
+    if (!node.is_array()) fail(where, std::string("expected an array, got ") + node.type_name());
+    if (node.empty()) fail(where, "expected at least one entry");
+    return node;
+  }
+
+ private:
+  std::string label_;
+};
+
+std::string at(const std::string& where, const std::string& key) { return where + "/" + key; }
+std::string at(const std::string& where, std::size_t index) {
+  return where + "/" + std::to_string(index);
+}
+
+// Option values are passed to plugins as text; numbers keep the shortest form people wrote.
+std::string optionText(const Checker& c, const Json& value, const std::string& where) {
+  if (value.is_string()) return value.get<std::string>();
+  if (value.is_boolean()) return value.get<bool>() ? "true" : "false";
+  if (value.is_number_integer()) return value.dump();
+  if (value.is_number()) {
+    std::ostringstream out;
+    out.precision(17);
+    out << value.get<double>();
+    return out.str();
+  }
+  c.fail(where, std::string("expected a number, string or boolean, got ") + value.type_name());
+}
+
+SweepBackend readBackend(const Checker& c, const Json& node, const std::string& where) {
+  if (node.is_string()) return SweepBackend{node.get<std::string>(), {}};
+  c.allowKeys(node, where, {"variant", "options"});
+  if (!node.contains("variant") || !node.at("variant").is_string()) {
+    c.fail(where, "missing 'variant' (a backend name such as \"fcl:obb\")");
+  }
+  SweepBackend backend{node.at("variant").get<std::string>(), {}};
+  if (backend.variant.empty()) c.fail(at(where, "variant"), "must not be empty");
+  if (node.contains("options")) {
+    const std::string options_at = at(where, "options");
+    const Json& options = node.at("options");
+    if (!options.is_object()) c.fail(options_at, "expected an object of option: [values]");
+    for (const auto& item : options.items()) {
+      const std::string option_at = at(options_at, item.key());
+      std::vector<std::string> values;
+      if (item.value().is_array()) {
+        c.nonEmptyArray(item.value(), option_at);
+        for (std::size_t i = 0; i < item.value().size(); ++i)
+          values.push_back(optionText(c, item.value()[i], at(option_at, i)));
+      } else {
+        values.push_back(optionText(c, item.value(), option_at));
+      }
+      backend.options.emplace_back(item.key(), values);
+    }
+  }
+  return backend;
+}
+
+Sweep readSweep(const Checker& c, const Json& root) {
+  c.allowKeys(root, "", {"backends", "resolutions", "needs", "limits", "repetitions", "timeout_s"});
+  Sweep sweep;
+  if (root.contains("backends")) {
+    const Json& list = c.nonEmptyArray(root.at("backends"), "/backends");
+    for (std::size_t i = 0; i < list.size(); ++i)
+      sweep.backends.push_back(readBackend(c, list[i], at("/backends", i)));
+  }
+  if (root.contains("resolutions")) {
+    sweep.resolutions.clear();
+    const Json& list = c.nonEmptyArray(root.at("resolutions"), "/resolutions");
+    for (std::size_t i = 0; i < list.size(); ++i) {
+      if (!list[i].is_number() || !(list[i].get<double>() > 0.0) ||
+          !std::isfinite(list[i].get<double>())) {
+        c.fail(at("/resolutions", i), "expected a positive number (1 = as the scene says)");
+      }
+      sweep.resolutions.push_back(list[i].get<double>());
+    }
+  }
+  if (root.contains("needs")) {
+    sweep.needs.clear();
+    const Json& list = c.nonEmptyArray(root.at("needs"), "/needs");
+    for (std::size_t i = 0; i < list.size(); ++i) {
+      const std::optional<NeedsMode> mode =
+          list[i].is_string() ? parseNeedsMode(list[i].get<std::string>()) : std::nullopt;
+      if (!mode) c.fail(at("/needs", i), "expected \"declared\" or \"every\"");
+      sweep.needs.push_back(*mode);
+    }
+  }
+  if (root.contains("limits")) {
+    sweep.limits.clear();
+    const Json& list = c.nonEmptyArray(root.at("limits"), "/limits");
+    for (std::size_t i = 0; i < list.size(); ++i) {
+      if (!list[i].is_number_unsigned() && !(list[i].is_number_integer() && list[i] >= 0)) {
+        c.fail(at("/limits", i), "expected a whole number >= 0 (0 = the scene's own limit)");
+      }
+      sweep.limits.push_back(list[i].get<std::uint64_t>());
+    }
+  }
+  if (root.contains("repetitions")) {
+    const Json& value = root.at("repetitions");
+    if (!value.is_number_integer() || value.get<long long>() < 1 ||
+        value.get<long long>() > 1000000) {
+      c.fail("/repetitions", "expected a whole number from 1 to 1000000");
+    }
+    sweep.repetitions = value.get<int>();
+  }
+  if (root.contains("timeout_s")) {
+    const Json& value = root.at("timeout_s");
+    if (!value.is_number() || !(value.get<double>() > 0.0)) {
+      c.fail("/timeout_s", "expected a positive number of seconds");
+    }
+    sweep.timeout_s = value.get<double>();
+  }
+  return sweep;
+}
+
+}  // namespace
+
+const char* needsModeName(NeedsMode mode) {
+  return mode == NeedsMode::kDeclared ? "declared" : "every";
+}
+
+std::optional<NeedsMode> parseNeedsMode(const std::string& name) {
+  if (name == "declared") return NeedsMode::kDeclared;
+  if (name == "every") return NeedsMode::kEvery;
+  return std::nullopt;
+}
+
+std::vector<std::string> SweepBackend::settings() const {
+  std::vector<std::string> texts{""};
+  for (const auto& [name, values] : options) {
+    std::vector<std::string> next;
+    for (const std::string& prefix : texts) {
+      for (const std::string& value : values)
+        next.push_back(prefix + (prefix.empty() ? "" : ";") + name + "=" + value);
+    }
+    texts = std::move(next);
+  }
+  for (std::string& text : texts)
+    text = text.empty() ? variant : variant + "[" + text + "]";
+  return texts;
+}
+
+Result<Sweep> parseSweep(const std::string& text, const std::string& label) {
+  try {
+    const Json root = Json::parse(text);
+    return readSweep(Checker(label), root);
+  } catch (const Json::parse_error& e) {
+    return Status(StatusCode::kInvalidArgument,
+                  label + ": not valid JSON (byte " + std::to_string(e.byte) + "): " + e.what());
+  } catch (const SweepError& e) {
+    return Status(StatusCode::kInvalidArgument, e.message);
+  }
+}
+
+Result<Sweep> loadSweep(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return Status(StatusCode::kInvalidArgument, path + ": cannot be read");
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  return parseSweep(buffer.str(), path);
+}
+
+}  // namespace collido::study

@@ -1,0 +1,47 @@
+#include <collido/study/worker.h>
+
+#include <collido/runner/runner.h>
+#include <collido/scene/scene.h>
+
+namespace collido::study {
+
+Result<CombinationResult> runCombination(const WorkerRequest& request) {
+  const Combination& c = request.combination;
+  Result<Scene> loaded = loadScene(c.scene_path, SceneLoadOptions{c.resolution});
+  if (!loaded.ok()) return loaded.status();
+  Scene scene = std::move(loaded).value();
+  std::optional<Scene> finest;
+  if (c.resolution != 1.0) {
+    Result<Scene> fine = loadScene(c.scene_path);
+    if (!fine.ok()) return fine.status();
+    finest = std::move(fine).value();
+    // Motions placed relative to bounding spheres differ a little between resolutions; the
+    // coarse mesh must answer for the poses the finest one is judged at.
+    for (std::size_t i = 0; i < scene.objects.size(); ++i)
+      scene.objects[i].poses = finest->objects[i].poses;
+  }
+  if (c.limit != 0) {
+    for (SceneQuery& q : scene.queries) {
+      if (q.request.kind == QueryKind::kAllPairs) q.request.max_pairs = c.limit;
+      if (q.request.kind == QueryKind::kContacts) q.request.max_contacts = c.limit;
+    }
+  }
+
+  const PluginDiscovery found = discoverPlugins(request.plugin_paths, request.default_plugins);
+  Result<std::vector<BackendSpec>> specs = resolveBackends({c.backend}, found.plugins);
+  if (!specs.ok()) return specs.status();
+
+  RunOptions options;
+  options.repetitions = request.repetitions;
+  options.build_every_need = c.needs == NeedsMode::kEvery;
+  options.frame_progress = request.progress;
+  RunReport report = runScene(scene, specs.value().front(), options, finest ? &*finest : nullptr);
+
+  CombinationResult result;
+  result.combination = c;
+  result.measurements = std::move(report.measurements);
+  result.problems = std::move(report.problems);
+  return result;
+}
+
+}  // namespace collido::study

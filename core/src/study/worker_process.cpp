@@ -1,0 +1,166 @@
+// Worker processes: each combination runs in a child so that a crash, abort or hang of an
+// engine costs that combination only. The child gets its own process group, so a timeout kills
+// whatever the engine started too.
+#include <collido/study/worker_process.h>
+
+#include <fcntl.h>
+#include <poll.h>
+#include <signal.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <chrono>
+#include <cstring>
+#include <fstream>
+
+namespace collido::study {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+std::string signalName(int signal) {
+  const char* abbreviation = sigabbrev_np(signal);
+  return abbreviation != nullptr ? std::string("SIG") + abbreviation
+                                 : "signal " + std::to_string(signal);
+}
+
+// Parses complete "progress D T" lines out of `buffer`, keeping a partial last line.
+void consumeProgress(std::string& buffer, const WorkerLaunch& launch) {
+  std::size_t newline;
+  while ((newline = buffer.find('\n')) != std::string::npos) {
+    const std::string line = buffer.substr(0, newline);
+    buffer.erase(0, newline + 1);
+    unsigned long long done = 0;
+    unsigned long long total = 0;
+    if (std::sscanf(line.c_str(), "progress %llu %llu", &done, &total) == 2 &&
+        launch.on_progress) {
+      launch.on_progress(static_cast<std::size_t>(done), static_cast<std::size_t>(total));
+    }
+  }
+}
+
+[[noreturn]] void execChild(const WorkerLaunch& launch, int stdout_fd) {
+  setpgid(0, 0);
+  dup2(stdout_fd, STDOUT_FILENO);
+  const int log = open(launch.log_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (log >= 0) dup2(log, STDERR_FILENO);
+  for (const std::string& assignment : launch.environment) {
+    const std::size_t equals = assignment.find('=');
+    if (equals != std::string::npos) {
+      setenv(assignment.substr(0, equals).c_str(), assignment.substr(equals + 1).c_str(), 1);
+    }
+  }
+  std::vector<std::string> storage{launch.executable};
+  storage.insert(storage.end(), launch.arguments.begin(), launch.arguments.end());
+  std::vector<char*> argv;
+  for (std::string& s : storage)
+    argv.push_back(s.data());
+  argv.push_back(nullptr);
+  execv(launch.executable.c_str(), argv.data());
+  const std::string message =
+      "cannot start " + launch.executable + ": " + std::strerror(errno) + "\n";
+  (void)!write(STDERR_FILENO, message.data(), message.size());
+  _exit(127);
+}
+
+}  // namespace
+
+std::string fileTail(const std::string& path, std::size_t bytes) {
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
+  if (!in) return "";
+  const std::streamoff size = in.tellg();
+  const std::streamoff start = size > static_cast<std::streamoff>(bytes)
+                                   ? size - static_cast<std::streamoff>(bytes)
+                                   : 0;
+  in.seekg(start);
+  std::string text(static_cast<std::size_t>(size - start), '\0');
+  in.read(text.data(), static_cast<std::streamsize>(text.size()));
+  return text;
+}
+
+WorkerOutcome runWorkerProcess(const WorkerLaunch& launch) {
+  WorkerOutcome outcome;
+  int pipe_fds[2];
+  if (pipe2(pipe_fds, O_CLOEXEC) != 0) {
+    outcome.status = "failed";
+    outcome.log_tail = std::string("cannot create a pipe: ") + std::strerror(errno);
+    return outcome;
+  }
+  const Clock::time_point start = Clock::now();
+  const pid_t pid = fork();
+  if (pid < 0) {
+    close(pipe_fds[0]);
+    close(pipe_fds[1]);
+    outcome.status = "failed";
+    outcome.log_tail = std::string("cannot fork: ") + std::strerror(errno);
+    return outcome;
+  }
+  if (pid == 0) {
+    close(pipe_fds[0]);
+    // dup2 clears close-on-exec on the copy, so stdout survives the exec.
+    execChild(launch, pipe_fds[1]);
+  }
+  setpgid(pid, pid);  // also here: whichever of parent and child runs first
+  close(pipe_fds[1]);
+  const int reader = pipe_fds[0];
+  fcntl(reader, F_SETFL, fcntl(reader, F_GETFL) | O_NONBLOCK);
+
+  std::string buffer;
+  bool reader_open = true;
+  bool timed_out = false;
+  bool interrupted = false;
+  int wait_status = 0;
+  struct rusage usage {};
+  for (;;) {
+    if (reader_open) {
+      pollfd descriptor{reader, POLLIN, 0};
+      if (poll(&descriptor, 1, 200) > 0) {
+        char chunk[4096];
+        const ssize_t got = read(reader, chunk, sizeof chunk);
+        if (got > 0) {
+          buffer.append(chunk, static_cast<std::size_t>(got));
+          consumeProgress(buffer, launch);
+        } else if (got == 0 || (errno != EAGAIN && errno != EINTR)) {
+          reader_open = false;
+        }
+      }
+    } else {
+      usleep(50 * 1000);
+    }
+    const pid_t done = wait4(pid, &wait_status, WNOHANG, &usage);
+    if (done == pid) break;
+    const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
+    const bool stop_asked = launch.stop != nullptr && launch.stop->load();
+    if (!timed_out && !interrupted &&
+        ((launch.timeout_s > 0.0 && elapsed > launch.timeout_s) || stop_asked)) {
+      (stop_asked ? interrupted : timed_out) = true;
+      kill(-pid, SIGKILL);
+      kill(pid, SIGKILL);
+    }
+    if (launch.on_tick) launch.on_tick();
+  }
+  close(reader);
+
+  outcome.wall_s = std::chrono::duration<double>(Clock::now() - start).count();
+  outcome.peak_rss_bytes = static_cast<std::size_t>(usage.ru_maxrss) * 1024;  // Linux: KiB
+  if (WIFEXITED(wait_status)) outcome.exit_code = WEXITSTATUS(wait_status);
+  if (WIFSIGNALED(wait_status)) {
+    outcome.signal = WTERMSIG(wait_status);
+    outcome.signal_name = signalName(outcome.signal);
+  }
+  if (interrupted) {
+    outcome.status = "interrupted";
+  } else if (timed_out) {
+    outcome.status = "timeout";
+  } else if (outcome.signal != 0) {
+    outcome.status = "crashed";
+  } else if (outcome.exit_code != 0) {
+    outcome.status = "failed";
+  }
+  if (!outcome.ok()) outcome.log_tail = fileTail(launch.log_path, 4000);
+  return outcome;
+}
+
+}  // namespace collido::study
