@@ -4,5 +4,6 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 tools/install_deps.sh
+tools/web_deps.sh
 tools/configure.sh release
 ctest --preset release "$@"

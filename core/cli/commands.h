@@ -19,6 +19,7 @@ void addCheckCommand(CLI::App& app, int& exit_code);
 void addRunCommand(CLI::App& app, const PluginOptions& plugins, int& exit_code);
 void addConformanceCommand(CLI::App& app, int& exit_code);
 /// study, merge, and the internal worker mode the study starts.
+void addReportCommand(CLI::App& app, int& exit_code);
 void addStudyCommands(CLI::App& app, const PluginOptions& plugins, int& exit_code);
 
 }  // namespace collido::cli

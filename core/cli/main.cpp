@@ -22,6 +22,7 @@ int main(int argc, char** argv) {
   collido::cli::addRunCommand(app, plugins, exit_code);
   collido::cli::addConformanceCommand(app, exit_code);
   collido::cli::addStudyCommands(app, plugins, exit_code);
+  collido::cli::addReportCommand(app, exit_code);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

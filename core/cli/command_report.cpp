@@ -1,0 +1,87 @@
+// collido report: the dashboard of a study folder as one self-contained HTML page.
+#include <filesystem>
+#include <iostream>
+
+#include <collido/study/report_html.h>
+#include <collido/study/result_store.h>
+
+#include "commands.h"
+
+namespace collido::cli {
+namespace {
+
+struct ReportArguments {
+  std::string directory;
+  std::string output;
+  std::string baseline;
+  std::string web;
+  std::string title;
+};
+
+Result<std::vector<study::CombinationResult>> readStudy(const std::string& directory) {
+  std::error_code ec;
+  if (!std::filesystem::is_directory(std::filesystem::path(directory) / "results", ec)) {
+    return Status(StatusCode::kInvalidArgument,
+                  directory + ": not a study folder (no results/; make one with collido study)");
+  }
+  return study::ResultStore(directory).readAll();
+}
+
+int runReport(const ReportArguments& args) {
+  Result<std::vector<study::CombinationResult>> results = readStudy(args.directory);
+  if (!results.ok()) {
+    std::cerr << "error: " << results.status().message() << "\n";
+    return 2;
+  }
+  std::vector<study::CombinationResult> baseline;
+  if (!args.baseline.empty()) {
+    Result<std::vector<study::CombinationResult>> before = readStudy(args.baseline);
+    if (!before.ok()) {
+      std::cerr << "error: " << before.status().message() << "\n";
+      return 2;
+    }
+    baseline = std::move(before).value();
+  }
+  const std::string title =
+      args.title.empty()
+          ? std::filesystem::absolute(args.directory).lexically_normal().filename().string()
+          : args.title;
+  Result<std::string> html = study::renderReport(
+      study::reportData(results.value(), baseline, title), study::webDirectory(args.web));
+  if (!html.ok()) {
+    std::cerr << "error: " << html.status().message() << "\n";
+    return 2;
+  }
+  const std::string output = args.output.empty()
+                                 ? (std::filesystem::path(args.directory) / "report.html").string()
+                                 : args.output;
+  if (Status s = study::writeFileAtomically(output, html.value()); !s.ok()) {
+    std::cerr << "error: " << s.message() << "\n";
+    return 2;
+  }
+  std::cerr << "report: " << output << " (" << results.value().size() << " combinations"
+            << (baseline.empty() ? "" : ", against " + args.baseline) << ")\n";
+  return 0;
+}
+
+}  // namespace
+
+void addReportCommand(CLI::App& app, int& exit_code) {
+  CLI::App* command = app.add_subcommand(
+      "report",
+      "Write a study's dashboard: one HTML file that opens offline, with time against error, "
+      "time distributions, memory, scaling, failures, needs, and a comparison with a baseline");
+  auto args = std::make_shared<ReportArguments>();
+  command->add_option("directory", args->directory, "study folder (collido study --out)")
+      ->required();
+  command->add_option("-o,--output", args->output,
+                      "the HTML file (default: DIRECTORY/report.html)");
+  command->add_option("--baseline", args->baseline,
+                      "an earlier study folder to compare with (before/after)");
+  command->add_option("--web", args->web,
+                      "the front-end folder (default: $COLLIDO_WEB_DIR, else the source web/)");
+  command->add_option("--title", args->title, "the page's title (default: the folder's name)");
+  command->callback([args, &exit_code] { exit_code = runReport(*args); });
+}
+
+}  // namespace collido::cli

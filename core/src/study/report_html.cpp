@@ -1,0 +1,296 @@
+#include <collido/study/report_html.h>
+
+#include <cctype>
+#include <cstdlib>
+#include <ctime>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+
+namespace collido::study {
+namespace {
+
+using Json = nlohmann::json;
+
+Json nullable(const std::optional<double>& value) {
+  return value ? Json(*value) : Json();
+}
+
+std::optional<double> perTriangle(const std::optional<std::size_t>& bytes, std::size_t triangles) {
+  if (!bytes || triangles == 0) return std::nullopt;
+  return static_cast<double>(*bytes) / static_cast<double>(triangles);
+}
+
+std::string backendLabel(const Combination& c) {
+  const std::string setting = c.settingText();
+  return setting.empty() ? c.backend : c.backend + " " + setting;
+}
+
+Json row(const CombinationResult& r, const QueryMeasurement& m) {
+  const Combination& c = r.combination;
+  const double frames = m.frames.empty() ? 1.0 : static_cast<double>(m.frames.size());
+  std::uint64_t bv = 0;
+  std::uint64_t primitive = 0;
+  for (const FrameRecord& f : m.frames) {
+    bv += f.bv_tests;
+    primitive += f.primitive_tests;
+  }
+  const std::size_t variant_end = c.backend.find('[');
+  return {{"key", c.backend + "|" + c.settingText() + "|" + c.scene_name + "|" + m.query},
+          {"label", backendLabel(c)},
+          {"backend", c.backend},
+          {"variant", c.backend.substr(0, variant_end)},
+          {"setting", c.settingText()},
+          {"scene", c.scene_name},
+          {"resolution", c.resolution},
+          {"needs", needsModeName(c.needs)},
+          {"limit", c.limit},
+          {"query", m.query},
+          {"kind", queryKindName(m.kind)},
+          {"status", m.status},
+          {"frames", m.frames.size()},
+          {"median_us", m.median_us},
+          {"p90_us", m.p90_us},
+          {"p99_us", m.p99_us},
+          {"max_us", m.max_us},
+          {"disagreements", m.disagreements},
+          {"error_rate", static_cast<double>(m.disagreements) / frames},
+          {"false_negatives", m.false_negatives},
+          {"false_positives", m.false_positives},
+          {"recall", m.recall},
+          {"precision", m.precision},
+          {"finest_error_rate", m.finest_disagreements
+                                    ? Json(static_cast<double>(*m.finest_disagreements) / frames)
+                                    : Json()},
+          {"build_ms", m.build_ms},
+          {"triangles", m.triangles},
+          {"bytes_per_triangle",
+           m.triangles == 0 ? 0.0 : static_cast<double>(m.memory_bytes) / m.triangles},
+          {"heap_bytes_per_triangle", nullable(perTriangle(m.heap_bytes, m.triangles))},
+          {"heap_peak_bytes_per_triangle", nullable(perTriangle(m.heap_peak_bytes, m.triangles))},
+          {"peak_rss_mib", static_cast<double>(r.outcome.peak_rss_bytes) / 1048576.0},
+          {"bv_tests", m.counts_bv_tests ? Json(static_cast<double>(bv) / frames) : Json()},
+          {"primitive_tests",
+           m.counts_primitive_tests ? Json(static_cast<double>(primitive) / frames) : Json()}};
+}
+
+Json rowsOf(const std::vector<CombinationResult>& results) {
+  Json rows = Json::array();
+  for (const CombinationResult& r : results) {
+    for (const QueryMeasurement& m : r.measurements)
+      rows.push_back(row(r, m));
+  }
+  return rows;
+}
+
+Json failuresOf(const std::vector<CombinationResult>& results) {
+  Json failures = Json::array();
+  for (const CombinationResult& r : results) {
+    const Combination& c = r.combination;
+    if (!r.outcome.ok()) {
+      std::string detail = "worker " + r.outcome.status;
+      if (!r.outcome.signal_name.empty()) detail += " by " + r.outcome.signal_name;
+      if (r.outcome.status == "failed")
+        detail += " with exit code " + std::to_string(r.outcome.exit_code);
+      detail += " after " + std::to_string(r.outcome.wall_s).substr(0, 5) + " s";
+      failures.push_back({{"what", r.outcome.status},
+                          {"label", backendLabel(c)},
+                          {"scene", c.scene_name},
+                          {"query", "*"},
+                          {"detail", detail},
+                          {"log", r.outcome.log_tail}});
+      continue;
+    }
+    for (const QueryMeasurement& m : r.measurements) {
+      std::string what;
+      std::string detail = m.status;
+      if (m.status.rfind("skipped", 0) == 0) {
+        what = "unsupported";
+      } else if (!m.ok()) {
+        what = "failed";
+      } else if (m.disagreements != 0) {
+        what = "wrong answers";
+        std::ostringstream text;
+        text << m.disagreements << " of " << m.frames.size() << " frames differ from the oracle ("
+             << m.false_negatives << " missed contacts, " << m.false_positives << " false contacts";
+        if (m.kind == QueryKind::kAllPairs) {
+          text << ", pair recall " << m.recall << ", precision " << m.precision;
+        }
+        text << ")";
+        detail = text.str();
+      } else {
+        continue;
+      }
+      failures.push_back({{"what", what},
+                          {"label", backendLabel(c)},
+                          {"scene", c.scene_name},
+                          {"query", m.query},
+                          {"detail", detail},
+                          {"log", ""}});
+    }
+  }
+  return failures;
+}
+
+Json timesOf(const std::vector<CombinationResult>& results) {
+  Json times = Json::array();
+  for (const CombinationResult& r : results) {
+    for (const QueryMeasurement& m : r.measurements) {
+      if (!m.ok()) continue;
+      // Every timed call up to a cap, evenly thinned beyond it: the page stays small while the
+      // shape of each distribution survives.
+      const std::size_t cap = 600;
+      const std::size_t step = m.times_us.size() > cap ? (m.times_us.size() + cap - 1) / cap : 1;
+      for (std::size_t i = 0; i < m.times_us.size(); i += step) {
+        times.push_back({{"label", backendLabel(r.combination)},
+                         {"scene", r.combination.scene_name},
+                         {"query", m.query},
+                         {"us", m.times_us[i]}});
+      }
+    }
+  }
+  return times;
+}
+
+Result<std::string> readText(const std::filesystem::path& path, const std::string& hint) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    return Status(StatusCode::kInvalidArgument,
+                  "report: " + path.string() + " not found" + (hint.empty() ? "" : ": " + hint));
+  }
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  return buffer.str();
+}
+
+// A script inlined in the page must not close its <script> element early: only "</script"
+// (any case) does, and "<\/script" means the same inside the strings and regular expressions
+// where it can occur in code.
+std::string scriptSafe(const std::string& text) {
+  std::string out;
+  out.reserve(text.size());
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (text[i] == '<' && i + 1 < text.size() && text[i + 1] == '/' && i + 8 <= text.size()) {
+      std::string word = text.substr(i + 2, 6);
+      for (char& c : word)
+        c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+      if (word == "script") {
+        out += "<\\/";
+        ++i;
+        continue;
+      }
+    }
+    out += text[i];
+  }
+  return out;
+}
+
+// JSON inlined as data: "<\/" is an escape JSON allows, so no "</" (nor "<!--") survives.
+std::string dataSafe(const std::string& json) {
+  std::string out;
+  out.reserve(json.size());
+  for (std::size_t i = 0; i < json.size(); ++i) {
+    if (json[i] == '<' && i + 1 < json.size() && (json[i + 1] == '/' || json[i + 1] == '!')) {
+      out += "\\u003c";
+      continue;
+    }
+    out += json[i];
+  }
+  return out;
+}
+
+// Fills "@NAME@" markers in one left-to-right pass over the template only, so text inside the
+// inserted libraries is never taken for a marker.
+Result<std::string> fillTemplate(const std::string& page,
+                                 const std::map<std::string, std::string>& values) {
+  std::string out;
+  std::size_t at = 0;
+  std::set<std::string> used;
+  while (at < page.size()) {
+    const std::size_t open = page.find('@', at);
+    const std::size_t close = open == std::string::npos ? open : page.find('@', open + 1);
+    if (close == std::string::npos) break;
+    const std::string marker = page.substr(open, close - open + 1);
+    const auto found = values.find(marker);
+    if (found == values.end()) {
+      out += page.substr(at, close - at);
+      at = close;
+      continue;
+    }
+    out += page.substr(at, open - at) + found->second;
+    used.insert(marker);
+    at = close + 1;
+  }
+  out += page.substr(std::min(at, page.size()));
+  for (const auto& [marker, value] : values) {
+    if (used.count(marker) == 0) {
+      return Status(StatusCode::kInvalidArgument, "report: the template has no " + marker);
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+Json reportData(const std::vector<CombinationResult>& results,
+                const std::vector<CombinationResult>& baseline, const std::string& title) {
+  const std::time_t now = std::time(nullptr);
+  std::tm parts{};
+  gmtime_r(&now, &parts);
+  char generated[32];
+  std::strftime(generated, sizeof generated, "%Y-%m-%d %H:%M UTC", &parts);
+  return {{"title", title},
+          {"generated", generated},
+          {"rows", rowsOf(results)},
+          {"baseline_rows", rowsOf(baseline)},
+          {"times", timesOf(results)},
+          {"failures", failuresOf(results)}};
+}
+
+std::string webDirectory(const std::string& explicit_directory) {
+  if (!explicit_directory.empty()) return explicit_directory;
+  if (const char* env = std::getenv("COLLIDO_WEB_DIR"); env != nullptr && *env != '\0') return env;
+#ifdef COLLIDO_WEB_SOURCE_DIR
+  return COLLIDO_WEB_SOURCE_DIR;
+#else
+  return "web";
+#endif
+}
+
+Result<std::string> renderReport(const Json& data, const std::string& web_directory) {
+  const std::filesystem::path web(web_directory);
+  const std::string npm_hint = "install the front-end with `npm ci --prefix " + web.string() +
+                               "` (tools/study.sh does), or point --web / COLLIDO_WEB_DIR at it";
+  struct Part {
+    const char* marker;
+    std::filesystem::path file;
+    bool script;
+  };
+  const Part parts[] = {
+      {"@CSS@", web / "report" / "report.css", false},
+      {"@VEGA@", web / "node_modules" / "vega" / "build" / "vega.min.js", true},
+      {"@VEGA_LITE@", web / "node_modules" / "vega-lite" / "build" / "vega-lite.min.js", true},
+      {"@VEGA_EMBED@", web / "node_modules" / "vega-embed" / "build" / "vega-embed.min.js", true},
+      {"@REPORT_JS@", web / "report" / "report.js", true},
+  };
+  Result<std::string> page = readText(web / "report" / "template.html", "");
+  if (!page.ok()) return page.status();
+  std::string title = data.value("title", std::string("study"));
+  for (const auto& [from, to] :
+       {std::pair<std::string, std::string>{"&", "&amp;"}, {"<", "&lt;"}}) {
+    for (std::size_t at = 0; (at = title.find(from, at)) != std::string::npos; at += to.size())
+      title.replace(at, from.size(), to);
+  }
+  std::map<std::string, std::string> values{{"@TITLE@", title}, {"@DATA@", dataSafe(data.dump())}};
+  for (const Part& part : parts) {
+    Result<std::string> text = readText(
+        part.file, part.file.string().find("node_modules") != std::string::npos ? npm_hint : "");
+    if (!text.ok()) return text.status();
+    values[part.marker] = part.script ? scriptSafe(text.value()) : text.value();
+  }
+  return fillTemplate(page.value(), values);
+}
+
+}  // namespace collido::study

@@ -1,0 +1,27 @@
+#!/usr/bin/env bash
+# The dashboard in a real browser: runs a small study (two backends, needs declared and every,
+# two resolutions so the scaling view has curves), writes its report with itself as the
+# baseline, and opens it in headless Chromium (web/tests/report.test.mjs): every chart drawn,
+# no console error, no network request.
+# Usage: browser_report_test.sh COLLIDO_EXECUTABLE SOURCE_DIR WORK_DIR
+set -euo pipefail
+collido="$1"
+source_dir="$2"
+work="$3"
+rm -rf "$work"
+mkdir -p "$work"
+cat > "$work/sweep.json" <<'JSON'
+{
+  "backends": [{"variant": "obbtree", "options": {"max_leaf_triangles": [1, 4]}}, "ode"],
+  "resolutions": [0.5, 1],
+  "needs": ["declared", "every"],
+  "repetitions": 1
+}
+JSON
+"$collido" study "$source_dir/scenes/interlocked_tori.json" --sweep "$work/sweep.json" \
+  --out "$work/study" --quiet > "$work/table.txt"
+"$collido" report "$work/study" --baseline "$work/study" -o "$work/report.html"
+COLLIDO_REPORT_HTML="$work/report.html" \
+COLLIDO_EXPECT_VIEWS="time-vs-error,time-distribution,memory,scaling,needs,comparison" \
+COLLIDO_REPORT_SCREENSHOT="$work/report.png" \
+  node --test "$source_dir/web/tests/"

@@ -1,0 +1,354 @@
+// Collidoscope's dashboard: builds the views of `collido report` from the study data inlined in
+// the page, with Vega-Lite. Each chart container gets data-rendered="true" once drawn (or
+// data-error with the reason), which the browser test checks.
+(function () {
+  'use strict';
+  const data = JSON.parse(document.getElementById('collido-data').textContent);
+  const views = document.getElementById('views');
+  const toc = document.getElementById('toc');
+  const pending = [];
+  window.COLLIDO_REPORT = { ready: null, errors: [] };
+
+  // --- helpers --------------------------------------------------------------------------------
+  function el(tag, attrs, children) {
+    const node = document.createElement(tag);
+    for (const [k, v] of Object.entries(attrs || {})) {
+      if (k === 'text') node.textContent = v;
+      else node.setAttribute(k, v);
+    }
+    for (const child of children || []) node.appendChild(child);
+    return node;
+  }
+  function section(id, title, explain) {
+    const s = el('section', { class: 'view', id: id }, [
+      el('h2', { text: title }), el('p', { class: 'explain', text: explain })]);
+    views.appendChild(s);
+    toc.appendChild(el('a', { href: '#' + id, text: title }));
+    return s;
+  }
+  function chart(parent, name, spec) {
+    const holder = el('div', { class: 'chart', 'data-view': name });
+    parent.appendChild(holder);
+    spec.$schema = 'https://vega.github.io/schema/vega-lite/v6.json';
+    spec.config = Object.assign({ font: 'system-ui, sans-serif', axis: { labelFontSize: 11 } },
+      spec.config || {});
+    pending.push(vegaEmbed(holder, spec, { actions: { export: true, source: false, compiled: false,
+      editor: false }, renderer: 'svg' })
+      .then(() => holder.setAttribute('data-rendered', 'true'))
+      .catch((e) => {
+        holder.setAttribute('data-error', String(e));
+        window.COLLIDO_REPORT.errors.push(name + ': ' + e);
+        console.error('chart ' + name + ' failed: ' + e);
+      }));
+    return holder;
+  }
+  function table(parent, header, rows, classes) {
+    const t = el('table');
+    t.appendChild(el('tr', {}, header.map((h) => el('th', { text: h }))));
+    for (const row of rows) {
+      t.appendChild(el('tr', {}, row.map((cell, i) => {
+        const td = el('td', { class: (classes && classes[i]) || '' });
+        if (cell instanceof Node) td.appendChild(cell); else td.textContent = cell;
+        return td;
+      })));
+    }
+    parent.appendChild(t);
+    return t;
+  }
+  function empty(parent, text) { parent.appendChild(el('p', { class: 'empty', text: text })); }
+  const fmt = (x, digits) => (x === null || x === undefined || Number.isNaN(x)) ? '-' :
+    Number(x).toFixed(digits === undefined ? 1 : digits);
+  const ok = data.rows.filter((r) => r.status === 'ok');
+  const groupBy = (items, key) => {
+    const map = new Map();
+    for (const item of items) {
+      const k = key(item);
+      if (!map.has(k)) map.set(k, []);
+      map.get(k).push(item);
+    }
+    return map;
+  };
+  const colour = { field: 'label', type: 'nominal', title: 'backend / setting',
+    legend: { labelLimit: 260 } };
+
+  // The points no other point beats on both time and error (lower is better on each).
+  function paretoFront(points) {
+    const sorted = points.slice().sort((a, b) => a.median_us - b.median_us || a.error_rate - b.error_rate);
+    const front = [];
+    let best = Infinity;
+    for (const p of sorted) {
+      if (p.error_rate < best) { front.push(p); best = p.error_rate; }
+    }
+    return front;
+  }
+
+  // Least-squares slope of log(y) on log(x): the exponent of y ~ x^k.
+  function fittedExponent(points, x, y) {
+    const usable = points.filter((p) => p[x] > 0 && p[y] > 0);
+    if (usable.length < 2) return null;
+    const lx = usable.map((p) => Math.log(p[x]));
+    const ly = usable.map((p) => Math.log(p[y]));
+    const mx = lx.reduce((a, b) => a + b, 0) / lx.length;
+    const my = ly.reduce((a, b) => a + b, 0) / ly.length;
+    let sxy = 0;
+    let sxx = 0;
+    for (let i = 0; i < lx.length; ++i) { sxy += (lx[i] - mx) * (ly[i] - my); sxx += (lx[i] - mx) ** 2; }
+    return sxx > 0 ? sxy / sxx : null;
+  }
+
+  // --- summary line ---------------------------------------------------------------------------
+  const backends = new Set(data.rows.map((r) => r.label));
+  const scenes = new Set(data.rows.map((r) => r.scene));
+  const wrong = ok.filter((r) => r.disagreements > 0).length;
+  document.getElementById('summary').textContent =
+    `${data.title} · ${backends.size} backend settings × ${scenes.size} scenes · ` +
+    `${ok.length} measured queries, ${wrong} with wrong answers, ${data.failures.length} failures ` +
+    `or gaps · generated ${data.generated}`;
+
+  // --- 1. time against error ------------------------------------------------------------------
+  {
+    const s = section('time-vs-error', 'Run time against error',
+      'One point per backend setting: median time per query (log scale) against the share of ' +
+      'frames whose answer differs from the exact oracle. The line joins the Pareto front: the ' +
+      'settings no other one beats on both. Points at 0 are exact on every frame of the scene.');
+    const box = el('div', { class: 'charts' });
+    s.appendChild(box);
+    const groups = groupBy(ok, (r) => r.scene + ' · ' + r.query);
+    if (groups.size === 0) empty(s, 'No measured query.');
+    for (const [name, points] of groups) {
+      const front = paretoFront(points).map((p) => ({ median_us: p.median_us, error_rate: p.error_rate }));
+      chart(box, 'time-vs-error:' + name, {
+        title: name, width: 360, height: 220,
+        layer: [
+          { data: { values: front }, mark: { type: 'line', interpolate: 'step-after', color: '#888',
+            strokeDash: [4, 3] },
+            encoding: { x: { field: 'median_us', type: 'quantitative', scale: { type: 'log' } },
+              y: { field: 'error_rate', type: 'quantitative' } } },
+          { data: { values: points }, mark: { type: 'point', filled: true, size: 70 },
+            encoding: {
+              x: { field: 'median_us', type: 'quantitative', scale: { type: 'log' },
+                title: 'median time per query (µs)' },
+              y: { field: 'error_rate', type: 'quantitative', title: 'share of frames wrong',
+                scale: { domainMin: 0 } },
+              color: colour, shape: { field: 'kind', type: 'nominal', title: 'query' },
+              tooltip: [{ field: 'label' }, { field: 'median_us', format: '.1f' },
+                { field: 'p99_us', format: '.1f' }, { field: 'error_rate', format: '.3f' },
+                { field: 'recall', format: '.4f' }, { field: 'precision', format: '.4f' },
+                { field: 'finest_error_rate', format: '.3f' }] } }] });
+    }
+  }
+
+  // --- 2. time distributions ------------------------------------------------------------------
+  {
+    const s = section('time-distributions', 'Time distributions',
+      'Every timed call per backend setting (log scale): the box spans the middle half and the ' +
+      'median, the whiskers the fastest and slowest call. Long tails are frames with dense contact.');
+    const box = el('div', { class: 'charts' });
+    s.appendChild(box);
+    const groups = groupBy(data.times, (t) => t.scene + ' · ' + t.query);
+    if (groups.size === 0) empty(s, 'No timed call.');
+    for (const [name, values] of groups) {
+      chart(box, 'time-distribution:' + name, {
+        title: name, width: 360, height: { step: 18 }, data: { values: values },
+        mark: { type: 'boxplot', extent: 'min-max', size: 12 },
+        encoding: { y: { field: 'label', type: 'nominal', title: null, axis: { labelLimit: 220 } },
+          x: { field: 'us', type: 'quantitative', scale: { type: 'log' }, title: 'time per call (µs)' },
+          color: Object.assign({}, colour, { legend: null }) } });
+    }
+  }
+
+  // --- 3. memory per triangle -----------------------------------------------------------------
+  {
+    const s = section('memory', 'Memory per triangle',
+      'Bytes per triangle of the built structures of both objects: what the backend says, and ' +
+      'what its build kept on the heap, counted by allocation hooks in the worker ' +
+      '(independent of the backend). The tooltip adds the build peak and the worker\'s peak RSS.');
+    const rows = [];
+    const seen = new Set();
+    for (const r of ok) {
+      const key = r.label + '|' + r.scene;
+      if (seen.has(key)) continue;
+      seen.add(key);
+      rows.push({ label: r.label, scene: r.scene, measure: 'backend figure', bytes: r.bytes_per_triangle,
+        peak_rss_mib: r.peak_rss_mib, heap_peak: r.heap_peak_bytes_per_triangle });
+      if (r.heap_bytes_per_triangle !== null) {
+        rows.push({ label: r.label, scene: r.scene, measure: 'heap kept (hooks)',
+          bytes: r.heap_bytes_per_triangle, peak_rss_mib: r.peak_rss_mib,
+          heap_peak: r.heap_peak_bytes_per_triangle });
+      }
+    }
+    if (rows.length === 0) {
+      empty(s, 'No built structure.');
+    } else {
+      const box = el('div', { class: 'charts' });
+      s.appendChild(box);
+      chart(box, 'memory', {
+        data: { values: rows }, width: 360, height: { step: 12 },
+        facet: { column: { field: 'scene', type: 'nominal', title: null } },
+        spec: { width: 300, height: { step: 10 }, mark: 'bar',
+          encoding: { y: { field: 'label', type: 'nominal', title: null, axis: { labelLimit: 220 } },
+            yOffset: { field: 'measure' },
+            x: { field: 'bytes', type: 'quantitative', title: 'bytes per triangle' },
+            color: { field: 'measure', type: 'nominal', title: null },
+            tooltip: [{ field: 'label' }, { field: 'measure' }, { field: 'bytes', format: '.0f' },
+              { field: 'heap_peak', title: 'build peak B/tri', format: '.0f' },
+              { field: 'peak_rss_mib', title: 'worker peak RSS (MiB)', format: '.0f' }] } },
+        resolve: { scale: { x: 'independent' } } });
+    }
+  }
+
+  // --- 4. scaling -----------------------------------------------------------------------------
+  {
+    const s = section('scaling', 'Scaling',
+      'Median time per query and memory against the number of triangles (log-log), for scenes ' +
+      'run at several resolutions. The table gives the fitted exponent k of time ~ n^k.');
+    const families = groupBy(ok, (r) => r.scene + ' · ' + r.query);
+    const curves = [];
+    const exponents = [];
+    for (const [name, rows] of families) {
+      if (new Set(rows.map((r) => r.triangles)).size < 2) continue;
+      for (const r of rows) curves.push(Object.assign({ family: name, backend_only: r.backend }, r));
+      for (const [backend, points] of groupBy(rows, (r) => r.backend + (r.needs !== 'declared' ? ' needs=' + r.needs : '') +
+          (r.limit ? ' limit=' + r.limit : ''))) {
+        exponents.push([name, backend, String(new Set(points.map((p) => p.triangles)).size),
+          fmt(fittedExponent(points, 'triangles', 'median_us'), 2),
+          fmt(fittedExponent(points, 'triangles', 'bytes_per_triangle'), 2)]);
+      }
+    }
+    if (curves.length === 0) {
+      empty(s, 'No scene was run at more than one size: add "resolutions" to the sweep ' +
+        '(e.g. scenes/sweeps/full.json) to see scaling.');
+    } else {
+      const box = el('div', { class: 'charts' });
+      s.appendChild(box);
+      for (const [name, rows] of groupBy(curves, (r) => r.family)) {
+        chart(box, 'scaling:' + name, {
+          title: name, width: 360, height: 240, data: { values: rows },
+          encoding: { x: { field: 'triangles', type: 'quantitative', scale: { type: 'log' },
+            title: 'triangles (both objects)' },
+          y: { field: 'median_us', type: 'quantitative', scale: { type: 'log' }, title: 'median µs' },
+          color: { field: 'backend_only', type: 'nominal', title: 'backend' } },
+          layer: [{ mark: { type: 'line', point: true },
+            encoding: { detail: { field: 'label' },
+              tooltip: [{ field: 'label' }, { field: 'triangles' }, { field: 'median_us', format: '.1f' }] } }] });
+      }
+      table(s, ['scene · query', 'backend', 'sizes', 'time exponent', 'B/tri exponent'], exponents,
+        ['', '', 'num', 'num', 'num']);
+    }
+  }
+
+  // --- 5. failures ----------------------------------------------------------------------------
+  {
+    const s = section('failures', 'Failures, wrong answers and gaps',
+      'Crashes, timeouts and failed workers (the study went on without them), queries with ' +
+      'answers that differ from the exact oracle, and queries a backend does not answer.');
+    if (data.failures.length === 0) {
+      empty(s, 'None: every backend answered every query, and every answer matched the oracle.');
+    } else {
+      table(s, ['what', 'backend / setting', 'scene', 'query', 'detail'], data.failures.map((f) => {
+        const detail = el('div', { text: f.detail });
+        if (f.log) detail.appendChild(el('pre', { class: 'log', text: f.log }));
+        return [f.what, f.label, f.scene, f.query, detail];
+      }), ['bad']);
+    }
+  }
+
+  // --- 6. needs -------------------------------------------------------------------------------
+  {
+    const s = section('needs', 'Building only what is needed',
+      'Each scene run once with each object built for the queries it is asked (declared) and once ' +
+      'for every query kind the backend answers (every): what skipping the unneeded saves.');
+    const pairs = [];
+    const declared = new Map(ok.filter((r) => r.needs === 'declared')
+      .map((r) => [r.backend + '|' + r.scene + '|' + r.resolution + '|' + r.limit + '|' + r.query, r]));
+    for (const e of ok.filter((r) => r.needs === 'every')) {
+      const d = declared.get(e.backend + '|' + e.scene + '|' + e.resolution + '|' + e.limit + '|' + e.query);
+      if (!d) continue;
+      pairs.push({ backend: e.backend, scene: e.scene, query: e.query, needs: 'declared', build_ms: d.build_ms,
+        bytes: d.bytes_per_triangle, median_us: d.median_us });
+      pairs.push({ backend: e.backend, scene: e.scene, query: e.query, needs: 'every', build_ms: e.build_ms,
+        bytes: e.bytes_per_triangle, median_us: e.median_us });
+    }
+    if (pairs.length === 0) {
+      empty(s, 'The study ran no scene both ways: add "needs": ["declared", "every"] to the sweep.');
+    } else {
+      const box = el('div', { class: 'charts' });
+      s.appendChild(box);
+      for (const [field, title] of [['build_ms', 'build (ms)'], ['bytes', 'bytes per triangle'],
+        ['median_us', 'median query (µs)']]) {
+        chart(box, 'needs:' + field, {
+          title: title, width: 300, height: { step: 10 }, data: { values: pairs }, mark: 'bar',
+          encoding: { y: { field: 'backend', type: 'nominal', title: null },
+            yOffset: { field: 'needs' }, x: { field: field, type: 'quantitative', title: title,
+              aggregate: 'median' },
+            color: { field: 'needs', type: 'nominal' },
+            row: { field: 'scene', type: 'nominal', title: null } } });
+      }
+    }
+  }
+
+  // --- 7. before / after ----------------------------------------------------------------------
+  {
+    const s = section('comparison', 'Against a baseline',
+      'The ratio of median times against an earlier study of the same settings ' +
+      '(collido report DIR --baseline OLD): below 1 is faster now. Changes in error are listed.');
+    if (!data.baseline_rows || data.baseline_rows.length === 0) {
+      empty(s, 'No baseline given: run collido report DIR --baseline EARLIER_DIR.');
+    } else {
+      const before = new Map(data.baseline_rows.filter((r) => r.status === 'ok').map((r) => [r.key, r]));
+      const ratios = [];
+      const changes = [];
+      for (const r of ok) {
+        const b = before.get(r.key);
+        if (!b) continue;
+        ratios.push({ label: r.label, scene: r.scene, query: r.query, ratio: r.median_us / b.median_us,
+          now: r.median_us, before: b.median_us });
+        if (b.disagreements !== r.disagreements) {
+          changes.push([r.label, r.scene, r.query, String(b.disagreements), String(r.disagreements)]);
+        }
+      }
+      if (ratios.length === 0) {
+        empty(s, 'The baseline shares no measured setting with this study.');
+      } else {
+        const box = el('div', { class: 'charts' });
+        s.appendChild(box);
+        chart(box, 'comparison', {
+          data: { values: ratios }, width: 420, height: { step: 16 },
+          facet: { row: { field: 'scene', type: 'nominal', title: null } },
+          spec: { width: 420, height: { step: 16 },
+            layer: [
+              { mark: { type: 'rule', color: '#888', strokeDash: [4, 3] },
+                encoding: { x: { datum: 1, type: 'quantitative' } } },
+              { mark: { type: 'point', filled: true, size: 70 },
+                encoding: {
+                  y: { field: 'label', type: 'nominal', title: null, axis: { labelLimit: 220 } },
+                  x: { field: 'ratio', type: 'quantitative', scale: { type: 'log' },
+                    title: 'now / before (median time)' },
+                  shape: { field: 'query', type: 'nominal' },
+                  color: { condition: { test: 'datum.ratio > 1', value: '#b3261e' }, value: '#1b7f3b' },
+                  tooltip: [{ field: 'label' }, { field: 'query' }, { field: 'before', format: '.1f' },
+                    { field: 'now', format: '.1f' }, { field: 'ratio', format: '.3f' }] } }] } });
+        if (changes.length) {
+          table(s, ['backend / setting', 'scene', 'query', 'wrong frames before', 'now'], changes,
+            ['', '', '', 'num', 'num']);
+        }
+      }
+    }
+  }
+
+  // --- the table ------------------------------------------------------------------------------
+  {
+    const s = section('table', 'All measurements', 'Every (backend setting, scene, query).');
+    table(s, ['backend / setting', 'scene', 'query', 'status', 'median µs', 'p90', 'p99', 'max',
+      'wrong', 'recall', 'precision', 'build ms', 'B/tri', 'B/tri heap'],
+    data.rows.map((r) => [r.label, r.scene, r.query, r.status, fmt(r.median_us), fmt(r.p90_us),
+      fmt(r.p99_us), fmt(r.max_us), r.status === 'ok' ? String(r.disagreements) : '-',
+      r.kind === 'all_pairs' ? fmt(r.recall, 4) : '-', r.kind === 'all_pairs' ? fmt(r.precision, 4) : '-',
+      fmt(r.build_ms, 2), fmt(r.bytes_per_triangle, 0), fmt(r.heap_bytes_per_triangle, 0)]),
+    ['', '', '', '', 'num', 'num', 'num', 'num', 'num', 'num', 'num', 'num', 'num', 'num']);
+  }
+
+  window.COLLIDO_REPORT.ready = Promise.all(pending).then(() => {
+    document.body.setAttribute('data-ready', 'true');
+  });
+})();
