@@ -3,7 +3,9 @@
 // pointer of the culprit and the problem. The comment above each test shows the message.
 #include <collido/scene/scene.h>
 
+#include <cmath>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -300,12 +302,12 @@ TEST(SceneBadInput, NegativeMaxPairs) {
 // ---- shapes ----------------------------------------------------------------------------------
 
 // "bad.json: /objects/0/shape/generator: unknown generator 'cube' (known: chain, gear,
-//  grid_sheet, sphere, torus)"
+//  grid_sheet, sphere, station_module, torus)"
 TEST(SceneBadInput, UnknownGenerator) {
   Json scene = validScene();
   scene["objects"][0]["shape"] = {{"generator", "cube"}};
   EXPECT_TRUE(rejected(parse(scene), {"/objects/0/shape/generator:", "unknown generator 'cube'",
-                                      "chain, gear, grid_sheet, sphere, torus"}));
+                                      "chain, gear, grid_sheet, sphere, station_module, torus"}));
 }
 
 // "bad.json: /objects/1/shape/minor_segments: expected an integer in [3, 1048576], got 2"
@@ -453,7 +455,7 @@ TEST(SceneBadInput, PoseTogetherWithPoses) {
   EXPECT_TRUE(rejected(parse(scene), {"/objects/1/pose:", "exclude each other"}));
 }
 
-// "bad.json: /objects/1/motion: give exactly one of poses, random, jitter"
+// "bad.json: /objects/1/motion: give exactly one of poses, random, jitter, linear"
 TEST(SceneBadInput, TwoMotionKinds) {
   Json scene = validScene();
   scene["objects"][1]["motion"] = {{"random", {{"relative_to", "a"}, {"overlap", 0.5}}},
@@ -506,6 +508,166 @@ TEST(SceneBadInput, NegativeJitter) {
   Json scene = validScene();
   scene["objects"][1]["motion"] = {{"jitter", {{"translation", -0.1}}}};
   EXPECT_TRUE(rejected(parse(scene), {"/objects/1/motion/jitter", "translation must be >= 0"}));
+}
+
+// ---- linear motion ---------------------------------------------------------------------------
+
+/// The valid scene with object "b" moving linearly over `frames` frames (its fixed pose removed).
+Json linearScene(int frames, const Json& from, const Json& to) {
+  Json scene = validScene();
+  scene["frames"] = frames;
+  scene["objects"][1].erase("pose");
+  scene["objects"][1]["motion"] = {{"linear", {{"from", from}, {"to", to}}}};
+  return scene;
+}
+
+// Frame f of F: translation from + (to - from) f / (F - 1), rotation slerp; the ends exact.
+TEST(SceneBadInput, LinearMotionInterpolatesBetweenTheEnds) {
+  const Json from = {{"translation", {1, 2, 3}}};
+  const Json to = {{"translation", {5, -2, 3}},
+                   {"rotation", {{"axis", {0, 0, 1}}, {"degrees", 90}}}};
+  Result<Scene> scene = parse(linearScene(5, from, to));
+  ASSERT_TRUE(scene.ok()) << scene.status().toString();
+  const std::vector<Pose>& poses = scene.value().objects[1].poses;
+  ASSERT_EQ(poses.size(), 5u);
+  const Eigen::Matrix3d quarter_turn =
+      Eigen::AngleAxisd(M_PI / 2.0, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  EXPECT_TRUE(poses[0].translation() == Eigen::Vector3d(1, 2, 3));
+  EXPECT_TRUE(poses[0].linear() == Eigen::Matrix3d::Identity());
+  EXPECT_TRUE(poses[4].translation() == Eigen::Vector3d(5, -2, 3));
+  EXPECT_TRUE(poses[4].linear() == quarter_turn);
+  for (int f = 1; f < 4; ++f) {
+    SCOPED_TRACE("frame " + std::to_string(f));
+    const Pose& pose = poses[static_cast<std::size_t>(f)];
+    // (to - from) f / (F - 1) = (4, -4, 0) f / 4: every operation exact.
+    EXPECT_TRUE(pose.translation() == Eigen::Vector3d(1 + f, 2 - f, 3));
+    const Eigen::Matrix3d expected =
+        Eigen::AngleAxisd(M_PI / 8.0 * f, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+    EXPECT_LT((pose.linear() - expected).cwiseAbs().maxCoeff(), 1e-15);
+  }
+}
+
+// Equal rotations at both ends are kept exactly, bit for bit, in every frame; one frame is `from`.
+TEST(SceneBadInput, LinearMotionKeepsAnEqualRotationExactly) {
+  const Json flip = {{"matrix", {{-1, 0, 0}, {0, 1, 0}, {0, 0, -1}}}};
+  Result<Scene> scene = parse(linearScene(7, {{"translation", {0, 0, 9.04}}, {"rotation", flip}},
+                                          {{"translation", {0, 0, 8.994}}, {"rotation", flip}}));
+  ASSERT_TRUE(scene.ok()) << scene.status().toString();
+  Eigen::Matrix3d flipped;
+  flipped << -1, 0, 0, 0, 1, 0, 0, 0, -1;
+  for (const Pose& pose : scene.value().objects[1].poses) {
+    EXPECT_TRUE(pose.linear() == flipped);
+    EXPECT_EQ(pose.translation().x(), 0.0);
+    EXPECT_EQ(pose.translation().y(), 0.0);
+  }
+  scene = parse(linearScene(1, {{"translation", {1, 0, 0}}}, {{"translation", {2, 0, 0}}}));
+  ASSERT_TRUE(scene.ok()) << scene.status().toString();
+  ASSERT_EQ(scene.value().objects[1].poses.size(), 1u);
+  EXPECT_EQ(scene.value().objects[1].poses[0].translation().x(), 1.0);
+}
+
+// "bad.json: /objects/1/motion/linear: missing 'to'"
+TEST(SceneBadInput, LinearMotionWithoutTo) {
+  Json scene = linearScene(2, Json::object(), Json::object());
+  scene["objects"][1]["motion"]["linear"].erase("to");
+  EXPECT_TRUE(rejected(parse(scene), {kLabel, "/objects/1/motion/linear:", "missing 'to'"}));
+}
+
+// "bad.json: /objects/1/motion/linear: missing 'from'"
+TEST(SceneBadInput, LinearMotionWithoutFrom) {
+  Json scene = linearScene(2, Json::object(), Json::object());
+  scene["objects"][1]["motion"]["linear"].erase("from");
+  EXPECT_TRUE(rejected(parse(scene), {"/objects/1/motion/linear:", "missing 'from'"}));
+}
+
+// "bad.json: /objects/1/motion/linear: unknown key 'via' (allowed: from, to)"
+TEST(SceneBadInput, UnknownKeyInLinearMotion) {
+  Json scene = linearScene(2, Json::object(), Json::object());
+  scene["objects"][1]["motion"]["linear"]["via"] = Json::object();
+  EXPECT_TRUE(rejected(parse(scene),
+                       {"/objects/1/motion/linear:", "unknown key 'via'", "allowed: from, to"}));
+}
+
+// "bad.json: /objects/1/motion/linear: expected an object, got array"
+TEST(SceneBadInput, LinearMotionNotAnObject) {
+  Json scene = validScene();
+  scene["objects"][1].erase("pose");
+  scene["objects"][1]["motion"] = {{"linear", Json::array({1, 2})}};
+  EXPECT_TRUE(rejected(parse(scene), {"/objects/1/motion/linear:", "expected an object"}));
+}
+
+// "bad.json: /objects/1/motion/linear/to/translation: expected 3 numbers, got 2"
+TEST(SceneBadInput, LinearMotionWithABadEnd) {
+  Json scene = linearScene(2, Json::object(), {{"translation", {1, 2}}});
+  EXPECT_TRUE(
+      rejected(parse(scene), {"/objects/1/motion/linear/to/translation:", "expected 3 numbers"}));
+}
+
+// "bad.json: /objects/1/motion/linear/from/rotation/quaternion: not a unit quaternion (norm 2)"
+TEST(SceneBadInput, LinearMotionWithANonUnitQuaternion) {
+  Json scene = linearScene(2, {{"rotation", {{"quaternion", {2, 0, 0, 0}}}}}, Json::object());
+  EXPECT_TRUE(rejected(parse(scene), {"/objects/1/motion/linear/from/rotation/quaternion:",
+                                      "not a unit quaternion"}));
+}
+
+// "bad.json: /objects/1/pose: 'pose' and motion 'linear' exclude each other"
+TEST(SceneBadInput, PoseTogetherWithLinearMotion) {
+  Json scene = validScene();
+  scene["objects"][1]["motion"] = {{"linear", {{"from", Json::object()}, {"to", Json::object()}}}};
+  EXPECT_TRUE(rejected(parse(scene), {"/objects/1/pose:", "'pose' and motion 'linear'"}));
+}
+
+// "bad.json: /objects/1/motion: give exactly one of poses, random, jitter, linear"
+TEST(SceneBadInput, LinearTogetherWithJitter) {
+  Json scene = linearScene(2, Json::object(), Json::object());
+  scene["objects"][1]["motion"]["jitter"] = {{"translation", 0.1}};
+  EXPECT_TRUE(rejected(parse(scene), {"/objects/1/motion:", "exactly one of", "linear"}));
+}
+
+// ---- station module --------------------------------------------------------------------------
+
+// The generator's own message, at the shape:
+// "bad.json: /objects/0/shape: station module: port_radius = 1.5, must be < radius = 1"
+TEST(SceneBadInput, StationModulePortWiderThanTheHull) {
+  Json scene = validScene();
+  scene["objects"][0]["shape"] = {{"generator", "station_module"}, {"port_radius", 1.5}};
+  EXPECT_TRUE(rejected(parse(scene), {"/objects/0/shape:", "station module", "port_radius = 1.5",
+                                      "must be < radius = 1"}));
+}
+
+// "bad.json: /objects/0/shape: unknown key 'panels' (allowed: generator, length, panel_span,
+//  panel_width, port_length, port_radius, radius, rings, segments, truss_bays)"
+TEST(SceneBadInput, UnknownKeyInStationModule) {
+  Json scene = validScene();
+  scene["objects"][0]["shape"] = {{"generator", "station_module"}, {"panels", 2}};
+  EXPECT_TRUE(rejected(parse(scene), {"/objects/0/shape:", "unknown key 'panels'",
+                                      "allowed: generator, length, panel_span, panel_width, "
+                                      "port_length, port_radius, radius, rings, segments, "
+                                      "truss_bays"}));
+}
+
+// "bad.json: /objects/0/shape/truss_bays: expected an integer in [1, 100000], got 0"
+TEST(SceneBadInput, StationModuleWithoutTrussBays) {
+  Json scene = validScene();
+  scene["objects"][0]["shape"] = {{"generator", "station_module"}, {"truss_bays", 0}};
+  EXPECT_TRUE(rejected(parse(scene), {"/objects/0/shape/truss_bays:", "[1, 100000]", "got 0"}));
+}
+
+// Segments and rings follow the load's resolution (down to their minimums); bays do not.
+TEST(SceneBadInput, StationModuleSampleCountsFollowTheResolution) {
+  Json scene = validScene();
+  scene["objects"][0]["shape"] = {
+      {"generator", "station_module"}, {"segments", 40}, {"rings", 1}, {"truss_bays", 3}};
+  const auto triangles = [&](double resolution) {
+    Result<Scene> loaded =
+        parseScene(scene.dump(), kLabel, test::sourcePath("scenes"), {resolution});
+    EXPECT_TRUE(loaded.ok()) << loaded.status().toString();
+    return loaded.ok() ? loaded.value().objects[0].mesh->triangleCount() : 0;
+  };
+  const std::size_t boxes = 12 * (8 * 3 + 11);
+  EXPECT_EQ(triangles(1.0), 4u * 40 * 2 + boxes);
+  EXPECT_EQ(triangles(0.5), 4u * 20 * 2 + boxes);  // rings stays at its minimum, 1
+  EXPECT_EQ(triangles(2.0), 4u * 80 * 3 + boxes);
 }
 
 }  // namespace

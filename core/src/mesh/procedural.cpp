@@ -121,6 +121,91 @@ void appendTorus(const TorusParams& p, const Eigen::Isometry3d& place, Eigen::In
   }
 }
 
+/// Appends a closed cylinder around the z axis, z in [z0, z1] (z0 < z1), at column `vertex_base`
+/// / `triangle_base`, and advances both past what it wrote. Layout: rings k = 0 .. rings of
+/// `segments` vertices, vertex (k, i) at angle phi = 2 pi i / segments and z = z0 + (z1 - z0) k /
+/// rings, then the bottom and the top cap centre.
+///
+/// P(phi, z) = (r cos phi, r sin phi, z) has dP/dphi x dP/dz = (r cos phi, r sin phi, 0), the
+/// outward normal, so the side quad (k, i) -> (k, i+1) -> (k+1, i+1) -> (k+1, i) is
+/// counter-clockwise seen from outside. The caps are fans from their centres: (centre, (k, i),
+/// (k, i+1)) faces +z, so the top cap uses it and the bottom cap the reverse.
+void appendCylinder(double radius, double z0, double z1, int segments, int rings,
+                    Eigen::Index& vertex_base, Eigen::Index& triangle_base, TriangleMesh& mesh) {
+  const auto index = [&](int k, int i) {
+    return static_cast<int>(vertex_base) + k * segments + (i % segments);
+  };
+  for (int k = 0; k <= rings; ++k) {
+    // Pin the last ring to z1 exactly: it must not depend on the rounding of the step.
+    const double z = k == rings ? z1 : z0 + (z1 - z0) * k / rings;
+    for (int i = 0; i < segments; ++i) {
+      const double phi = 2.0 * kPi * i / segments;
+      mesh.vertices.col(index(k, i)) =
+          Eigen::Vector3d(radius * std::cos(phi), radius * std::sin(phi), z);
+    }
+  }
+  const int bottom = static_cast<int>(vertex_base) + (rings + 1) * segments;
+  const int top = bottom + 1;
+  mesh.vertices.col(bottom) = Eigen::Vector3d(0.0, 0.0, z0);
+  mesh.vertices.col(top) = Eigen::Vector3d(0.0, 0.0, z1);
+  Eigen::Index t = triangle_base;
+  for (int k = 0; k < rings; ++k) {
+    for (int i = 0; i < segments; ++i) {
+      const int a = index(k, i);
+      const int b = index(k, i + 1);
+      const int c = index(k + 1, i + 1);
+      const int d = index(k + 1, i);
+      mesh.triangles.col(t++) = Eigen::Vector3i(a, b, c);
+      mesh.triangles.col(t++) = Eigen::Vector3i(a, c, d);
+    }
+  }
+  for (int i = 0; i < segments; ++i) {
+    mesh.triangles.col(t++) = Eigen::Vector3i(bottom, index(0, i + 1), index(0, i));
+    mesh.triangles.col(t++) = Eigen::Vector3i(top, index(rings, i), index(rings, i + 1));
+  }
+  vertex_base = top + 1;
+  triangle_base = t;
+}
+
+/// Appends the closed box (parallelepiped) with corner `origin` and edges e0, e1, e2, which must
+/// be right-handed (e0 x e1 . e2 > 0), and advances vertex_base / triangle_base past it. Corner (i,
+/// j, k) in {0, 1}^3 is origin + i e0 + j e1 + k e2, at column vertex_base + i + 2 j + 4 k. The
+/// faces of the unit cube, each as two triangles counter-clockwise seen from outside, stay outward
+/// under a map with positive determinant.
+void appendBox(const Eigen::Vector3d& origin, const Eigen::Vector3d& e0, const Eigen::Vector3d& e1,
+               const Eigen::Vector3d& e2, Eigen::Index& vertex_base, Eigen::Index& triangle_base,
+               TriangleMesh& mesh) {
+  for (int c = 0; c < 8; ++c) {
+    Eigen::Vector3d corner = origin;
+    if ((c & 1) != 0) corner += e0;
+    if ((c & 2) != 0) corner += e1;
+    if ((c & 4) != 0) corner += e2;
+    mesh.vertices.col(vertex_base + c) = corner;
+  }
+  // -e2, +e2, -e1, +e1, -e0, +e0 faces.
+  static constexpr int kFaces[12][3] = {{0, 2, 3}, {0, 3, 1}, {4, 5, 7}, {4, 7, 6},
+                                        {0, 1, 5}, {0, 5, 4}, {2, 6, 7}, {2, 7, 3},
+                                        {0, 4, 6}, {0, 6, 2}, {1, 3, 7}, {1, 7, 5}};
+  const int base = static_cast<int>(vertex_base);
+  for (const auto& face : kFaces) {
+    mesh.triangles.col(triangle_base++) =
+        Eigen::Vector3i(base + face[0], base + face[1], base + face[2]);
+  }
+  vertex_base += 8;
+}
+
+/// Appends a beam of square section (side `thickness`) whose centre line runs from p to q;
+/// `across` is a unit vector perpendicular to q - p that orients the section. With d the unit
+/// direction, (across, d x across, d) is right-handed, as appendBox needs.
+void appendBeam(const Eigen::Vector3d& p, const Eigen::Vector3d& q, const Eigen::Vector3d& across,
+                double thickness, Eigen::Index& vertex_base, Eigen::Index& triangle_base,
+                TriangleMesh& mesh) {
+  const Eigen::Vector3d axis = q - p;
+  const Eigen::Vector3d u = thickness * across;
+  const Eigen::Vector3d v = thickness * axis.normalized().cross(across);
+  appendBox(p - 0.5 * u - 0.5 * v, u, v, axis, vertex_base, triangle_base, mesh);
+}
+
 // ---- gear geometry ---------------------------------------------------------------------------
 //
 // Involute spur gear, standard full-depth proportions (ISO 53 / AGMA basic rack, as in Shigley's
@@ -258,6 +343,46 @@ Status checkGear(const GearParams& p) {
                    "angle");
   }
   return {};
+}
+
+/// Boxes of the station module: 4 chords, 4 (bays + 1) cross beams, 4 bays diagonals, the mast
+/// and two panels.
+double stationBoxes(int truss_bays) {
+  return 8.0 * truss_bays + 11.0;
+}
+
+Status checkStationModule(const StationModuleParams& p) {
+  const std::string where = "station module: ";
+  Status status = checkPositive(where, "radius", p.radius);
+  if (status.ok()) status = checkPositive(where, "length", p.length);
+  if (status.ok()) status = checkAtLeast(where, "segments", p.segments, 3);
+  if (status.ok()) status = checkAtLeast(where, "rings", p.rings, 1);
+  if (status.ok()) status = checkPositive(where, "port_radius", p.port_radius);
+  if (status.ok()) status = checkPositive(where, "port_length", p.port_length);
+  if (status.ok()) status = checkAtLeast(where, "truss_bays", p.truss_bays, 1);
+  if (status.ok()) status = checkPositive(where, "panel_span", p.panel_span);
+  if (status.ok()) status = checkPositive(where, "panel_width", p.panel_width);
+  if (!status.ok()) return status;
+  if (p.port_radius >= p.radius) {
+    return invalid(where + "port_radius = " + formatNumber(p.port_radius) +
+                   ", must be < radius = " + formatNumber(p.radius));
+  }
+  // The port reaches port_length / 2 into the hull; its inner cap must stay inside.
+  if (p.port_length > p.length) {
+    return invalid(where + "port_length = " + formatNumber(p.port_length) +
+                   ", must be <= length = " + formatNumber(p.length));
+  }
+  // A bay shorter than two beam thicknesses (R / 10) would merge its frames into a block.
+  if (p.length / p.truss_bays < p.radius / 10.0) {
+    return invalid(where + "truss_bays = " + std::to_string(p.truss_bays) + " gives bays " +
+                   formatNumber(p.length / p.truss_bays) + " long, must be >= radius / 10 = " +
+                   formatNumber(p.radius / 10.0) + " (twice the beam thickness)");
+  }
+  return checkTriangleBudget(
+      where,
+      "segments * (rings + 1) = " + std::to_string(p.segments) + " * (" + std::to_string(p.rings) +
+          " + 1) with truss_bays = " + std::to_string(p.truss_bays),
+      4.0 * p.segments * (p.rings + 1.0) + 12.0 * stationBoxes(p.truss_bays));
 }
 
 }  // namespace
@@ -496,6 +621,80 @@ Result<TriangleMesh> makeGear(const GearParams& params) {
     mesh.triangles.col(t++) = Eigen::Vector3i(a, b, n + b);
     mesh.triangles.col(t++) = Eigen::Vector3i(a, n + b, n + a);
   }
+  return mesh;
+}
+
+Result<TriangleMesh> makeStationModule(const StationModuleParams& params) {
+  Status status = checkStationModule(params);
+  if (!status.ok()) return status;
+  const double r = params.radius;
+  const double l = params.length;
+  const double t = r / 20.0;  // beam thickness
+  const double w = r / 2.0;   // truss width and depth
+  const int bays = params.truss_bays;
+  const Eigen::Index cylinder_vertices = Eigen::Index{params.segments} * (params.rings + 1) + 2;
+  const Eigen::Index cylinder_triangles = 2 * Eigen::Index{params.segments} * (params.rings + 1);
+  const auto boxes = static_cast<Eigen::Index>(stationBoxes(bays));
+  TriangleMesh mesh;
+  mesh.vertices.resize(3, 2 * cylinder_vertices + 8 * boxes);
+  mesh.triangles.resize(3, 2 * cylinder_triangles + 12 * boxes);
+  Eigen::Index v = 0;
+  Eigen::Index f = 0;
+
+  // Hull and port: the port reaches port_length / 2 into the hull so that no vertex of one lies
+  // on the other (a port starting at z = L would put both cap centres at (0, 0, L)).
+  appendCylinder(r, 0.0, l, params.segments, params.rings, v, f, mesh);
+  appendCylinder(params.port_radius, l - 0.5 * params.port_length, l + params.port_length,
+                 params.segments, params.rings, v, f, mesh);
+
+  // Truss: the four chords' centre lines are the edges of a w x w prism on the hull's +y side,
+  // the lower ones on the hull surface. Corner c = (cx, cy) in {0, 1}^2 is at
+  // x = (cx - 1/2) w, y = yb + cy w.
+  const Eigen::Vector3d x_axis = Eigen::Vector3d::UnitX();
+  const Eigen::Vector3d y_axis = Eigen::Vector3d::UnitY();
+  const Eigen::Vector3d z_axis = Eigen::Vector3d::UnitZ();
+  const double yb = std::sqrt(r * r - 0.25 * w * w);
+  const auto node = [&](int cx, int cy, double z) {
+    return Eigen::Vector3d((cx - 0.5) * w, yb + cy * w, z);
+  };
+  const auto station = [&](int k) { return k == bays ? l : l * k / bays; };
+  for (int c = 0; c < 4; ++c) {
+    appendBeam(node(c & 1, c >> 1, 0.0), node(c & 1, c >> 1, l), x_axis, t, v, f, mesh);
+  }
+  // Frames: bottom and top beams along x, side beams along y.
+  for (int k = 0; k <= bays; ++k) {
+    const double z = station(k);
+    appendBeam(node(0, 0, z), node(1, 0, z), y_axis, t, v, f, mesh);
+    appendBeam(node(0, 1, z), node(1, 1, z), y_axis, t, v, f, mesh);
+    appendBeam(node(0, 0, z), node(0, 1, z), z_axis, t, v, f, mesh);
+    appendBeam(node(1, 0, z), node(1, 1, z), z_axis, t, v, f, mesh);
+  }
+  // Diagonals: in each face, bay k runs from one chord at station k to the other at station
+  // k + 1, starting on the first chord in even bays and on the second in odd ones. The section
+  // is oriented by the face normal, which is perpendicular to every diagonal in the face.
+  for (int k = 0; k < bays; ++k) {
+    const int s0 = k % 2;
+    const int s1 = 1 - s0;
+    const double z0 = station(k);
+    const double z1 = station(k + 1);
+    appendBeam(node(s0, 0, z0), node(s1, 0, z1), y_axis, t, v, f, mesh);  // bottom face
+    appendBeam(node(s0, 1, z0), node(s1, 1, z1), y_axis, t, v, f, mesh);  // top face
+    appendBeam(node(0, s0, z0), node(0, s1, z1), x_axis, t, v, f, mesh);  // -x face
+    appendBeam(node(1, s0, z0), node(1, s1, z1), x_axis, t, v, f, mesh);  // +x face
+  }
+
+  // Mast from the middle of the truss top up by R, and the two panels hanging from its top.
+  const double mast_top = yb + w + r;
+  appendBeam(Eigen::Vector3d(0.0, yb + w, 0.5 * l), Eigen::Vector3d(0.0, mast_top, 0.5 * l), z_axis,
+             2.0 * t, v, f, mesh);
+  const Eigen::Vector3d span(params.panel_span, 0.0, 0.0);
+  const Eigen::Vector3d thick(0.0, t, 0.0);
+  const Eigen::Vector3d wide(0.0, 0.0, params.panel_width);
+  const double panel_y = mast_top - 1.5 * t;  // bottom face; the panel is centred on top - t
+  const double panel_z = 0.5 * (l - params.panel_width);
+  appendBox(Eigen::Vector3d(0.5 * t, panel_y, panel_z), span, thick, wide, v, f, mesh);
+  appendBox(Eigen::Vector3d(-0.5 * t - params.panel_span, panel_y, panel_z), span, thick, wide, v,
+            f, mesh);
   return mesh;
 }
 

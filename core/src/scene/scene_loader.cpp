@@ -287,12 +287,31 @@ Result<TriangleMesh> generateGear(const Reader& r, const Node& n, std::string& t
   return makeGear(p);
 }
 
+Result<TriangleMesh> generateStationModule(const Reader& r, const Node& n, std::string& text) {
+  r.expectObject(n, {"generator", "radius", "length", "segments", "rings", "port_radius",
+                     "port_length", "truss_bays", "panel_span", "panel_width"});
+  StationModuleParams p;
+  p.radius = r.positive(n, "radius", p.radius);
+  p.length = r.positive(n, "length", p.length);
+  p.segments = r.resolved(static_cast<int>(r.integer(n, "segments", p.segments, 3, 1 << 20)), 3);
+  p.rings = r.resolved(static_cast<int>(r.integer(n, "rings", p.rings, 1, 1 << 20)), 1);
+  p.port_radius = r.positive(n, "port_radius", p.port_radius);
+  p.port_length = r.positive(n, "port_length", p.port_length);
+  // Bays are structure, not sampling: the resolution option leaves them alone.
+  p.truss_bays = static_cast<int>(r.integer(n, "truss_bays", p.truss_bays, 1, 100000));
+  p.panel_span = r.positive(n, "panel_span", p.panel_span);
+  p.panel_width = r.positive(n, "panel_width", p.panel_width);
+  text = "station module R=" + shortNumber(p.radius) + " L=" + shortNumber(p.length) + " " +
+         std::to_string(p.segments) + "x" + std::to_string(p.rings) + ", " +
+         std::to_string(p.truss_bays) + " truss bays";
+  return makeStationModule(p);
+}
+
 const std::map<std::string, Generator>& generators() {
-  static const std::map<std::string, Generator> table = {{"torus", &generateTorus},
-                                                         {"chain", &generateChain},
-                                                         {"sphere", &generateSphere},
-                                                         {"grid_sheet", &generateGridSheet},
-                                                         {"gear", &generateGear}};
+  static const std::map<std::string, Generator> table = {
+      {"torus", &generateTorus},   {"chain", &generateChain},
+      {"sphere", &generateSphere}, {"grid_sheet", &generateGridSheet},
+      {"gear", &generateGear},     {"station_module", &generateStationModule}};
   return table;
 }
 
@@ -462,9 +481,9 @@ Scene readScene(const Reader& r, const Json& document, const std::string& base_d
     object.poses = {base};
     if (node.has("motion")) {
       const Node motion = node.at("motion");
-      r.expectObject(motion, {"poses", "random", "jitter"});
+      r.expectObject(motion, {"poses", "random", "jitter", "linear"});
       if (motion.value.size() - (motion.has("comment") ? 1 : 0) != 1) {
-        r.fail(motion, "give exactly one of poses, random, jitter");
+        r.fail(motion, "give exactly one of poses, random, jitter, linear");
       }
       if (motion.has("poses")) {
         if (node.has("pose"))
@@ -506,6 +525,18 @@ Scene readScene(const Reader& r, const Json& document, const std::string& base_d
         const SceneObject& reference = scene.objects[found->second];
         object.poses = randomOverlapPoses(spec, *reference.mesh, reference.poses, *object.mesh,
                                           base, scene.frames);
+      } else if (motion.has("linear")) {
+        if (node.has("pose"))
+          r.fail(node.at("pose"), "'pose' and motion 'linear' exclude each other");
+        const Node linear = motion.at("linear");
+        r.expectObject(linear, {"from", "to"});
+        LinearMotion spec;
+        for (const char* end : {"from", "to"}) {
+          if (!linear.has(end)) r.fail(linear, std::string("missing '") + end + "'");
+        }
+        spec.from = readPose(r, linear.at("from"));
+        spec.to = readPose(r, linear.at("to"));
+        object.poses = linearPoses(spec, scene.frames);
       } else {
         const Node jitter = motion.at("jitter");
         r.expectObject(jitter, {"seed", "translation", "rotation_deg"});

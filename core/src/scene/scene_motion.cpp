@@ -98,4 +98,38 @@ std::vector<Pose> jitterPoses(const JitterMotion& spec, const Pose& base, std::s
   return poses;
 }
 
+std::vector<Pose> linearPoses(const LinearMotion& spec, std::size_t frames) {
+  std::vector<Pose> poses;
+  poses.reserve(frames);
+  const bool same_rotation = spec.from.linear() == spec.to.linear();
+  const Eigen::Quaterniond from_rotation(spec.from.linear());
+  const Eigen::Quaterniond to_rotation(spec.to.linear());
+  for (std::size_t f = 0; f < frames; ++f) {
+    // The ends are the given poses themselves, not the interpolation's rounding of them.
+    if (f == 0) {
+      poses.push_back(spec.from);
+      continue;
+    }
+    if (f + 1 == frames) {
+      poses.push_back(spec.to);
+      continue;
+    }
+    const double s = static_cast<double>(f) / static_cast<double>(frames - 1);
+    Pose pose = Pose::Identity();
+    // (to - from) f / (F - 1), multiplied before dividing: when the step is a multiple of F - 1
+    // in binary (e.g. 23 * 2^-9 over 24 frames) every operation is exact, so a scene can put a
+    // frame exactly at a contact whatever the rounding mode or FMA contraction.
+    pose.translation() =
+        spec.from.translation() + (spec.to.translation() - spec.from.translation()) *
+                                      static_cast<double>(f) / static_cast<double>(frames - 1);
+    // Eigen's slerp takes the shorter arc (it flips the sign of one quaternion when their dot
+    // product is negative); normalising keeps the matrix a rotation to rounding.
+    pose.linear() = same_rotation
+                        ? Eigen::Matrix3d(spec.from.linear())
+                        : from_rotation.slerp(s, to_rotation).normalized().toRotationMatrix();
+    poses.push_back(pose);
+  }
+  return poses;
+}
+
 }  // namespace collido

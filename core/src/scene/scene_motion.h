@@ -29,6 +29,16 @@ struct JitterMotion {
   double rotation_deg = 0.0;
 };
 
+/// A straight approach between two poses: frame f of F has the translation
+/// from + ((to - from) f) / (F - 1) (in that order) and the rotation slerp(from, to, f / (F - 1))
+/// (the shorter arc between the two orientations). Frame 0 is `from` and frame F - 1 is `to`,
+/// exactly as given; with one frame it is `from`. When both rotations are equal, every frame keeps
+/// that rotation exactly, and a translation component equal at both ends stays exactly that value.
+struct LinearMotion {
+  Pose from = Pose::Identity();
+  Pose to = Pose::Identity();
+};
+
 /// One pose per frame. The reference's poses have one entry per frame or one for all; the
 /// object's `base` rotation is composed with the random one (so a shape's own orientation is
 /// kept in the mix). Deterministic for a seed on every platform (own sampling on mt19937_64).
@@ -40,5 +50,8 @@ std::vector<Pose> randomOverlapPoses(const RandomOverlapMotion& spec,
 
 /// One pose per frame around `base`.
 std::vector<Pose> jitterPoses(const JitterMotion& spec, const Pose& base, std::size_t frames);
+
+/// One pose per frame from `spec.from` to `spec.to`.
+std::vector<Pose> linearPoses(const LinearMotion& spec, std::size_t frames);
 
 }  // namespace collido

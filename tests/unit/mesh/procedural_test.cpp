@@ -866,5 +866,170 @@ TEST(ProceduralGear, RejectsBadParameters) {
   expectInvalid(makeGear(p), "gear", "triangles");
 }
 
+// ---- station module --------------------------------------------------------------------------
+
+StationModuleParams stationParams(int segments, int rings, int truss_bays) {
+  StationModuleParams params;
+  params.segments = segments;
+  params.rings = rings;
+  params.truss_bays = truss_bays;
+  return params;
+}
+
+/// Boxes of the documented layout: 4 chords, 4 (bays + 1) cross beams, 4 bays diagonals, the mast
+/// and two panels.
+int stationBoxCount(int truss_bays) {
+  return 8 * truss_bays + 11;
+}
+
+TEST(ProceduralStationModule, CountsFollowTheResolution) {
+  for (const auto& [segments, rings, bays] :
+       std::vector<std::array<int, 3>>{{3, 1, 1}, {8, 3, 2}, {48, 16, 8}, {96, 24, 8}}) {
+    const TriangleMesh mesh = build(makeStationModule(stationParams(segments, rings, bays)));
+    const int boxes = stationBoxCount(bays);
+    EXPECT_EQ(mesh.vertexCount(),
+              static_cast<std::size_t>(2 * (segments * (rings + 1) + 2) + 8 * boxes));
+    EXPECT_EQ(mesh.triangleCount(),
+              static_cast<std::size_t>(4 * segments * (rings + 1) + 12 * boxes));
+  }
+  // The bundled docking scene's module.
+  EXPECT_EQ(build(makeStationModule(stationParams(96, 24, 8))).triangleCount(), 10500u);
+}
+
+TEST(ProceduralStationModule, IsAUnionOfWatertightPartsWithDistinctVertices) {
+  for (const auto& [segments, rings, bays] :
+       std::vector<std::array<int, 3>>{{3, 1, 1}, {7, 2, 3}, {48, 16, 8}}) {
+    SCOPED_TRACE(std::to_string(segments) + " x " + std::to_string(rings) + ", " +
+                 std::to_string(bays) + " bays");
+    // Every part is a closed genus-0 surface: V - E + F = 2 for each of the two cylinders and
+    // every box.
+    expectWatertight(build(makeStationModule(stationParams(segments, rings, bays))),
+                     2 * (2 + stationBoxCount(bays)), 1e-6);
+  }
+}
+
+TEST(ProceduralStationModule, VolumeIsTheSumOfItsParts) {
+  // The divergence theorem sums the parts' volumes, overlaps included, so the total is exact in
+  // closed form: two inscribed polygonal prisms and the boxes of the documented layout.
+  StationModuleParams p = stationParams(40, 6, 5);
+  p.radius = 1.2;
+  p.length = 5.0;
+  p.port_radius = 0.5;
+  p.port_length = 0.8;
+  p.panel_span = 2.5;
+  p.panel_width = 0.9;
+  const double t = p.radius / 20.0;
+  const double w = p.radius / 2.0;
+  const auto prism = [&](double radius, double length) {
+    return 0.5 * p.segments * radius * radius * std::sin(2.0 * kPi / p.segments) * length;
+  };
+  const double bay = p.length / p.truss_bays;
+  const double expected = prism(p.radius, p.length) + prism(p.port_radius, 1.5 * p.port_length) +
+                          t * t *
+                              (4.0 * p.length + 4.0 * (p.truss_bays + 1) * w +
+                               4.0 * p.truss_bays * std::hypot(w, bay)) +
+                          4.0 * t * t * p.radius + 2.0 * p.panel_span * t * p.panel_width;
+  EXPECT_NEAR(enclosedVolume(build(makeStationModule(p))), expected, 1e-12 * expected);
+}
+
+TEST(ProceduralStationModule, BoundingBoxAndPartsFollowTheLayout) {
+  const StationModuleParams p = stationParams(48, 16, 8);  // segments divisible by 4
+  const TriangleMesh mesh = build(makeStationModule(p));
+  const double t = p.radius / 20.0;
+  const double w = p.radius / 2.0;
+  const double mast_top = std::sqrt(p.radius * p.radius - 0.25 * w * w) + w + p.radius;
+  const double half_span = 0.5 * t + p.panel_span;
+  // The truss frames at z = 0 and z = L are t thick, so they stick out t / 2 beyond the hull's
+  // bottom (and beyond its top, under the port).
+  expectBox(mesh, {-half_span, -p.radius, -0.5 * t},
+            {half_span, mast_top, p.length + p.port_length});
+
+  // The hull's vertices, then the port's: on their radii, between their end planes, the cap
+  // centres on the axis.
+  const Eigen::Index cylinder = Eigen::Index{p.segments} * (p.rings + 1) + 2;
+  const auto expectCylinder = [&](Eigen::Index first, double radius, double z0, double z1) {
+    for (Eigen::Index v = first; v < first + cylinder; ++v) {
+      const Eigen::Vector3d x = mesh.vertices.col(v);
+      const bool centre = v >= first + cylinder - 2;
+      EXPECT_NEAR(x.head<2>().norm(), centre ? 0.0 : radius, 1e-12) << "vertex " << v;
+      EXPECT_GE(x.z(), z0) << "vertex " << v;
+      EXPECT_LE(x.z(), z1) << "vertex " << v;
+    }
+    EXPECT_EQ(mesh.vertices(2, first + cylinder - 2), z0);
+    EXPECT_EQ(mesh.vertices(2, first + cylinder - 1), z1);
+  };
+  expectCylinder(0, p.radius, 0.0, p.length);
+  expectCylinder(cylinder, p.port_radius, p.length - 0.5 * p.port_length, p.length + p.port_length);
+  // The docking face is the port's top cap, the mesh's only triangles in the plane
+  // z = L + port_length.
+  int docking_face = 0;
+  for (std::size_t f = 0; f < mesh.triangleCount(); ++f) {
+    bool on_face = true;
+    for (int k = 0; k < 3; ++k)
+      on_face = on_face && mesh.corner(f, k).z() == p.length + p.port_length;
+    docking_face += on_face ? 1 : 0;
+  }
+  EXPECT_EQ(docking_face, p.segments);
+}
+
+TEST(ProceduralStationModule, IsDeterministic) {
+  const StationModuleParams p = stationParams(33, 7, 5);
+  const TriangleMesh first = build(makeStationModule(p));
+  const TriangleMesh second = build(makeStationModule(p));
+  EXPECT_TRUE(first.vertices == second.vertices);
+  EXPECT_TRUE(first.triangles == second.triangles);
+}
+
+TEST(ProceduralStationModule, RejectsBadParameters) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  const std::string name = "station module";
+  StationModuleParams p;
+  p.radius = 0.0;
+  expectInvalid(makeStationModule(p), name, "radius = 0");
+  p = {};
+  p.length = nan;
+  expectInvalid(makeStationModule(p), name, "length");
+  p = {};
+  p.segments = 2;
+  expectInvalid(makeStationModule(p), name, "segments = 2, must be >= 3");
+  p = {};
+  p.rings = 0;
+  expectInvalid(makeStationModule(p), name, "rings = 0, must be >= 1");
+  p = {};
+  p.port_radius = -0.4;
+  expectInvalid(makeStationModule(p), name, "port_radius");
+  p = {};
+  p.port_radius = 1.0;
+  expectInvalid(makeStationModule(p), name, "port_radius = 1, must be < radius = 1");
+  p = {};
+  p.port_length = 0.0;
+  expectInvalid(makeStationModule(p), name, "port_length");
+  p = {};
+  p.port_length = 4.5;
+  expectInvalid(makeStationModule(p), name, "port_length = 4.5, must be <= length = 4");
+  p.port_length = 4.0;
+  EXPECT_TRUE(makeStationModule(p).ok());
+  p = {};
+  p.truss_bays = 0;
+  expectInvalid(makeStationModule(p), name, "truss_bays");
+  // Bays of length L / bays must stay >= R / 10 = 0.1: 40 bays of 0.1 are fine, 41 are not.
+  p = {};
+  p.truss_bays = 41;
+  expectInvalid(makeStationModule(p), name, "truss_bays = 41");
+  p.truss_bays = 40;
+  EXPECT_TRUE(makeStationModule(p).ok());
+  p = {};
+  p.panel_span = -3.0;
+  expectInvalid(makeStationModule(p), name, "panel_span");
+  p = {};
+  p.panel_width = inf;
+  expectInvalid(makeStationModule(p), name, "panel_width");
+  p = {};
+  p.segments = 1 << 20;
+  p.rings = 1 << 20;
+  expectInvalid(makeStationModule(p), name, "triangles");
+}
+
 }  // namespace
 }  // namespace collido

@@ -10,7 +10,8 @@ namespace collido {
 // >= 3"); non-finite numbers are rejected, and so is any resolution that would give more than
 // 50 million triangles. Closed meshes (torus, chain, sphere, gear) are watertight 2-manifolds:
 // every edge has exactly two triangles, counter-clockwise seen from outside, no zero-area
-// triangles and no duplicate vertices. Lengths are in the caller's unit.
+// triangles and no duplicate vertices; the station module is a union of such parts. Lengths are
+// in the caller's unit.
 
 /// Ring torus around the z axis, centred at the origin: major_segments * minor_segments vertices
 /// and twice as many triangles. Vertex i * minor_segments + j lies at u = 2 pi i / major_segments
@@ -86,11 +87,53 @@ struct GearParams {
   int root_samples = 3;            ///< points along each root arc, >= 1
 };
 
+/// The space-station module of the dissertation's application (assembly of a station from
+/// modules): a union of closed parts in one mesh. The parts touch or overlap one another (it is
+/// a collision mesh, not a solid model); each part is a watertight 2-manifold wound outward, no
+/// two parts share a vertex, and no vertex of one part coincides with a vertex of another.
+/// With R = radius, L = length, t = R / 20 (beam thickness), w = R / 2 (truss width and depth),
+/// in this order:
+///   hull   closed cylinder of radius R around the z axis, z in [0, L], `rings` rings along z;
+///   port   closed cylinder of radius port_radius around the z axis, z in
+///          [L - port_length / 2, L + port_length]: it sticks out port_length beyond the hull's
+///          +z end (the docking face is the disk z = L + port_length) and reaches port_length / 2
+///          into the hull; also `rings` rings along z;
+///   truss  a box lattice on the hull's +y side over z in [0, L]: four chords along z at
+///          x = +-w / 2, y = yb and yb + w with yb = sqrt(R^2 - w^2 / 4) (the lower chords'
+///          centre lines lie on the hull), truss_bays + 1 square frames of four cross beams at
+///          z = L k / truss_bays, and one diagonal per bay on each of the four faces, alternating
+///          in direction from bay to bay (a Warren truss); beams t x t in section (so the
+///          frames at z = 0 and z = L reach t / 2 beyond the hull's ends);
+///   mast   a 2t x 2t beam along +y from the truss top (y = yb + w) at z = L / 2, R long;
+///   panels two solar panels, thin boxes t thick (in y) and panel_width wide (in z), centred
+///          on z = L / 2 and y = yb + w + R - t, one along +x and one along -x, each reaching
+///          from |x| = t / 2 (inside the mast) to |x| = t / 2 + panel_span.
+/// Each cylinder has segments * (rings + 1) + 2 vertices (rings of `segments` vertices, ring k at
+/// z0 + (z1 - z0) k / rings, vertex i at angle 2 pi i / segments from +x towards +y, then the
+/// bottom and top cap centres) and 2 * segments * (rings + 1) triangles (the side quads ring by
+/// ring, then the two cap fans). Each box (beam or panel) has 8 vertices and 12 triangles; there
+/// are B = 8 * truss_bays + 11 of them (4 chords, 4 (truss_bays + 1) cross beams, 4 truss_bays
+/// diagonals, the mast, two panels). In total 2 (segments (rings + 1) + 2) + 8 B vertices and
+/// 4 segments (rings + 1) + 12 B triangles, laid out in the order above.
+struct StationModuleParams {
+  double radius = 1.0;       ///< hull radius, > 0
+  double length = 4.0;       ///< hull length along z, > 0
+  int segments = 48;         ///< resolution around z of the hull and the port, >= 3
+  int rings = 16;            ///< subdivisions along z of the hull and of the port, >= 1
+  double port_radius = 0.4;  ///< docking port radius, > 0 and < radius
+  double port_length = 0.5;  ///< how far the port sticks out beyond the hull, > 0 and <= length
+  int truss_bays = 8;        ///< bays of the truss along the hull, >= 1 and <= 10 L / R (a
+                             ///< bay at least two beam thicknesses long)
+  double panel_span = 3.0;   ///< length of each solar panel along x, > 0
+  double panel_width = 1.0;  ///< width of each solar panel along z, > 0
+};
+
 /// Generators. Each checks its parameters and returns kInvalidArgument naming the bad one.
 Result<TriangleMesh> makeTorus(const TorusParams& params);
 Result<TriangleMesh> makeChain(const ChainParams& params);
 Result<TriangleMesh> makeSphere(const SphereParams& params);
 Result<TriangleMesh> makeGridSheet(const GridSheetParams& params);
 Result<TriangleMesh> makeGear(const GearParams& params);
+Result<TriangleMesh> makeStationModule(const StationModuleParams& params);
 
 }  // namespace collido
