@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <vector>
 
@@ -113,6 +114,69 @@ void queryBenchmark(benchmark::State& state, const Variant& variant,
   state.counters["frames"] = static_cast<double>(scene->frames);
 }
 
+// Refit after a deformation: every vertex moved a little (a breathing scale about the centroid,
+// alternating between two states so each call really moves the vertices).
+void refitBenchmark(benchmark::State& state, const Variant& variant,
+                    const std::shared_ptr<const Scene>& scene, std::size_t object) {
+  std::unique_ptr<BackendInstance> backend = createOrSkip(variant, state);
+  if (!backend) return;
+  if (!backend->capabilities().update) {
+    state.SkipWithError("the backend does not update models");
+    return;
+  }
+  const TriangleMesh& mesh = *scene->objects[object].mesh;
+  BuildNeeds needs = scene->needsOf(object);
+  needs.queries = QueryKindSet(needs.queries.bits() & backend->capabilities().queries.bits());
+  needs.deforms = true;
+  Result<ModelHandle> model = backend->build(mesh.view(), needs);
+  if (!model.ok()) {
+    state.SkipWithError(model.status().message().c_str());
+    return;
+  }
+  const Eigen::Vector3d centre = mesh.vertices.rowwise().mean();
+  Eigen::Matrix3Xd states[2] = {mesh.vertices, mesh.vertices};
+  states[1] = ((mesh.vertices.colwise() - centre) * 1.01).colwise() + centre;
+  std::size_t which = 0;
+  for (auto _ : state) {
+    which ^= 1u;
+    const Status status = backend->update(model.value(), states[which]);
+    if (!status.ok()) {
+      state.SkipWithError(status.message().c_str());
+      return;
+    }
+  }
+  state.counters["triangles"] = static_cast<double>(mesh.triangleCount());
+  (void)backend->release(model.value());
+}
+
+// The scaling family: scenes/scaling_spheres.json at resolutions giving about 1k, 10k, 100k and
+// 1M triangles per sphere; Google Benchmark fits the growth (BigO) over the four sizes.
+constexpr double kScalingResolutions[] = {0.1, 0.316, 1.0, 3.16};
+
+std::shared_ptr<const Scene> scalingScene(const std::string& file, int size_index) {
+  static std::map<int, std::shared_ptr<const Scene>> cache;
+  auto found = cache.find(size_index);
+  if (found != cache.end()) return found->second;
+  Result<Scene> loaded =
+      loadScene(file, SceneLoadOptions{kScalingResolutions[static_cast<std::size_t>(size_index)]});
+  std::shared_ptr<const Scene> scene =
+      loaded.ok() ? std::make_shared<const Scene>(std::move(loaded).value()) : nullptr;
+  cache.emplace(size_index, scene);
+  return scene;
+}
+
+void scalingBenchmark(benchmark::State& state, const Variant& variant, const std::string& file,
+                      std::size_t query_index) {
+  const std::shared_ptr<const Scene> scene = scalingScene(file, static_cast<int>(state.range(0)));
+  if (!scene) {
+    state.SkipWithError(("cannot load " + file).c_str());
+    return;
+  }
+  queryBenchmark(state, variant, scene, query_index);
+  state.SetComplexityN(static_cast<benchmark::IterationCount>(
+      scene->objects[scene->queries[query_index].a].mesh->triangleCount()));
+}
+
 }  // namespace
 
 int registerSceneBenchmarks(const std::string& scenes_directory) {
@@ -134,12 +198,32 @@ int registerSceneBenchmarks(const std::string& scenes_directory) {
             "build/" + variant.name + "/" + scene->name + "/" + scene->objects[object].name;
         benchmark::RegisterBenchmark(name.c_str(), buildBenchmark, variant, scene, object)
             ->Unit(benchmark::kMicrosecond);
-        ++registered;
+        const std::string refit =
+            "refit/" + variant.name + "/" + scene->name + "/" + scene->objects[object].name;
+        benchmark::RegisterBenchmark(refit.c_str(), refitBenchmark, variant, scene, object)
+            ->Unit(benchmark::kMicrosecond);
+        registered += 2;
       }
       for (std::size_t q = 0; q < scene->queries.size(); ++q) {
         const std::string name =
             "query/" + variant.name + "/" + scene->name + "/" + scene->queries[q].name;
         benchmark::RegisterBenchmark(name.c_str(), queryBenchmark, variant, scene, q)
+            ->Unit(benchmark::kMicrosecond);
+        ++registered;
+      }
+    }
+  }
+  const std::string scaling_file =
+      (std::filesystem::path(scenes_directory) / "scaling_spheres.json").string();
+  if (std::filesystem::exists(scaling_file, ec)) {
+    for (const Variant& variant : variants) {
+      for (const auto& [query_index, query_name] :
+           {std::pair<std::size_t, const char*>{0, "all_pairs"}, {1, "boolean"}}) {
+        const std::string name = "scaling/" + variant.name + "/" + query_name;
+        benchmark::RegisterBenchmark(name.c_str(), scalingBenchmark, variant, scaling_file,
+                                     query_index)
+            ->DenseRange(0, 3)
+            ->Complexity(benchmark::oAuto)
             ->Unit(benchmark::kMicrosecond);
         ++registered;
       }

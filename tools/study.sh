@@ -1,10 +1,40 @@
 #!/usr/bin/env bash
-# The default study: installs what is missing, builds Release, and runs every backend plugin
-# on the bundled scenes, printing the table of answers checked against the exact oracle.
-# Results: build/release/study/run.json. Extra arguments go to `collido run`.
+# The default study: installs what is missing, builds Release, and runs every backend variant
+# on the bundled scenes with the default sweep (scenes/sweeps/default.json), each combination in
+# its own worker process, every answer checked against the exact oracle. Prints the table and
+# writes the dashboard. Results: build/release/study/ (table.txt, records.jsonl, summary.json,
+# report.html). An interrupted run resumes where it stopped; a finished one is kept as
+# build/release/study.previous and the new report compares against it.
+# Extra arguments go to `collido study` (e.g. --repetitions 5).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 tools/install_deps.sh
+tools/web_deps.sh
 tools/configure.sh release --target collido collido_plugins
-mkdir -p build/release/study
-build/release/collido run scenes/*.json --json build/release/study/run.json "$@"
+out=build/release/study
+previous=build/release/study.previous
+study=(build/release/collido study scenes/*.json --sweep scenes/sweeps/default.json --out "$out")
+
+if [[ -f "$out/plan.json" && ! -f "$out/.complete" ]]; then
+  # Interrupted earlier: finish it. A different plan (scenes or sweep changed) starts afresh.
+  "${study[@]}" --resume "$@" || status=$?
+  if [[ ${status:-0} -eq 2 ]]; then
+    rm -rf "$previous"
+    mv "$out" "$previous"
+    "${study[@]}" "$@"
+  elif [[ ${status:-0} -ne 0 ]]; then
+    exit "$status"
+  fi
+else
+  if [[ -d "$out" ]]; then
+    rm -rf "$previous"
+    mv "$out" "$previous"
+  fi
+  "${study[@]}" "$@"
+fi
+touch "$out/.complete"
+baseline=()
+if [[ -f "$previous/.complete" ]]; then
+  baseline=(--baseline "$previous")
+fi
+build/release/collido report "$out" "${baseline[@]}" -o "$out/report.html"

@@ -6,12 +6,12 @@
 
 #include <atomic>
 #include <csignal>
-#include <fstream>
-#include <map>
-#include <sstream>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
+#include <map>
 #include <set>
+#include <sstream>
 
 #include <collido/study/outputs.h>
 #include <collido/study/progress.h>
@@ -31,7 +31,9 @@ using study::ResultStore;
 
 std::atomic<bool> stop_requested{false};
 
-extern "C" void requestStop(int /*signal*/) { stop_requested.store(true); }
+extern "C" void requestStop(int /*signal*/) {
+  stop_requested.store(true);
+}
 
 struct StudyArguments {
   std::vector<std::string> scenes;
@@ -126,9 +128,9 @@ CombinationResult runInWorker(const Combination& c, const ResultStore& store,
   study::WorkerLaunch launch;
   launch.executable = thisExecutable();
   launch.arguments = pluginArguments(plugins);
-  for (const std::string& a : {std::string("worker"), std::string("--request"), request_path,
-                               std::string("--out"), answer_path, std::string("--repetitions"),
-                               std::to_string(repetitions)}) {
+  for (const std::string& a :
+       {std::string("worker"), std::string("--request"), request_path, std::string("--out"),
+        answer_path, std::string("--repetitions"), std::to_string(repetitions)}) {
     launch.arguments.push_back(a);
   }
   launch.environment = workerEnvironment();
@@ -456,12 +458,14 @@ void addStudyCommands(CLI::App& app, const PluginOptions& plugins, int& exit_cod
                     "with --resume, also run again combinations that crashed, failed or timed out");
   command->add_option("--shard", args->shard,
                       "run only part I of N (0 <= I < N), e.g. $SLURM_ARRAY_TASK_ID/4");
-  command->add_option("--timeout", args->timeout_s,
-                      "seconds a combination may run before its worker is killed (default: the "
-                      "sweep's timeout_s, else 600)")
+  command
+      ->add_option("--timeout", args->timeout_s,
+                   "seconds a combination may run before its worker is killed (default: the "
+                   "sweep's timeout_s, else 600)")
       ->check(CLI::PositiveNumber);
-  command->add_option("--repetitions", args->repetitions,
-                      "timed calls per frame and query (default: the sweep's, else 5)")
+  command
+      ->add_option("--repetitions", args->repetitions,
+                   "timed calls per frame and query (default: the sweep's, else 5)")
       ->check(CLI::Range(1, 1000000));
   command->add_flag("--quiet", args->quiet, "no progress on stderr");
   command->callback([args, &plugins, &exit_code] { exit_code = runStudy(*args, plugins); });

@@ -14,6 +14,9 @@
 
 #include <collido/runner/heap_hooks_api.h>
 
+// glibc's own entry points: reserved names by design, the only way to reach the real allocator
+// without calling back into these hooks.
+// NOLINTBEGIN(bugprone-reserved-identifier)
 extern "C" {
 void* __libc_malloc(std::size_t size);
 void* __libc_calloc(std::size_t count, std::size_t size);
@@ -21,6 +24,7 @@ void* __libc_realloc(void* pointer, std::size_t size);
 void* __libc_memalign(std::size_t alignment, std::size_t size);
 void __libc_free(void* pointer);
 }
+// NOLINTEND(bugprone-reserved-identifier)
 
 namespace {
 
@@ -30,8 +34,7 @@ std::atomic<std::uint64_t> allocation_count{0};
 
 void notePeak(std::int64_t live) {
   std::int64_t peak = peak_bytes.load(std::memory_order_relaxed);
-  while (live > peak &&
-         !peak_bytes.compare_exchange_weak(peak, live, std::memory_order_relaxed)) {
+  while (live > peak && !peak_bytes.compare_exchange_weak(peak, live, std::memory_order_relaxed)) {
   }
 }
 
@@ -51,7 +54,9 @@ void uncount(void* pointer) {
   }
 }
 
-bool isPowerOfTwo(std::size_t value) { return value != 0 && (value & (value - 1)) == 0; }
+bool isPowerOfTwo(std::size_t value) {
+  return value != 0 && (value & (value - 1)) == 0;
+}
 
 }  // namespace
 

@@ -155,10 +155,9 @@ std::string benchmarkJson(const std::vector<CombinationResult>& results) {
 
 std::string studyTable(const std::vector<CombinationResult>& results) {
   const std::vector<std::string> header = {
-      "backend",  "setting",   "scene",  "query",  "frames",    "median us",
-      "p90 us",   "p99 us",    "max us", "FN",     "FP",        "recall",
-      "precision", "disagree", "coarse err", "build ms", "B/tri", "B/tri heap",
-      "RSS MiB"};
+      "backend",    "setting",  "scene", "query",      "frames", "median us", "p90 us",
+      "p99 us",     "max us",   "FN",    "FP",         "recall", "precision", "disagree",
+      "coarse err", "build ms", "B/tri", "B/tri heap", "RSS MiB"};
   std::vector<std::vector<std::string>> rows;
   std::vector<std::string> failures;
   for (const CombinationResult& r : results) {
@@ -166,7 +165,8 @@ std::string studyTable(const std::vector<CombinationResult>& results) {
     if (!r.outcome.ok()) {
       std::string why = r.outcome.status;
       if (!r.outcome.signal_name.empty()) why += " (" + r.outcome.signal_name + ")";
-      if (r.outcome.status == "failed") why += " (exit " + std::to_string(r.outcome.exit_code) + ")";
+      if (r.outcome.status == "failed")
+        why += " (exit " + std::to_string(r.outcome.exit_code) + ")";
       rows.push_back({c.backend, c.settingText(), c.scene_name, "*", why});
       failures.push_back(c.label() + ": worker " + why);
       continue;
@@ -175,7 +175,8 @@ std::string studyTable(const std::vector<CombinationResult>& results) {
       if (!m.ok()) {
         rows.push_back({c.backend, c.settingText(), c.scene_name, m.query,
                         m.status.substr(0, m.status.find(':'))});
-        if (m.status.rfind("failed", 0) == 0) failures.push_back(c.label() + " / " + m.query + ": " + m.status);
+        if (m.status.rfind("failed", 0) == 0)
+          failures.push_back(c.label() + " / " + m.query + ": " + m.status);
         continue;
       }
       const bool pairs = m.kind == QueryKind::kAllPairs;
@@ -224,10 +225,10 @@ std::string studyTable(const std::vector<CombinationResult>& results) {
   }
   if (!savings.empty()) {
     out << "\nBuilding only what the scene needs (declared) against every query kind (every):\n";
-    out << formatTextTable({"backend", "scene", "query", "build ms declared", "build ms every",
-                            "median us declared", "median us every", "B/tri declared",
-                            "B/tri every"},
-                           savings, 3);
+    out << formatTextTable(
+        {"backend", "scene", "query", "build ms declared", "build ms every", "median us declared",
+         "median us every", "B/tri declared", "B/tri every"},
+        savings, 3);
   }
   if (!failures.empty()) {
     out << "\nFailures:\n";
@@ -240,7 +241,8 @@ std::string studyTable(const std::vector<CombinationResult>& results) {
 Status writeStudyOutputs(const std::string& directory,
                          const std::vector<CombinationResult>& results) {
   const std::filesystem::path folder(directory);
-  if (Status s = writeFileAtomically((folder / "records.jsonl").string(), recordsJsonLines(results));
+  if (Status s =
+          writeFileAtomically((folder / "records.jsonl").string(), recordsJsonLines(results));
       !s.ok()) {
     return s;
   }

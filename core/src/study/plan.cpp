@@ -13,6 +13,15 @@ std::string shortNumber(double value) {
   return out.str();
 }
 
+// Every digit a double needs, so that resolutions which print alike ("0.5" and 0.50000001)
+// still get different ids; values people write (1, 0.5, 0.25) come out as short as before.
+std::string exactNumber(double value) {
+  std::ostringstream out;
+  out.precision(17);
+  out << value;
+  return out.str();
+}
+
 // FNV-1a: a short, stable fingerprint that keeps ids unique after unsafe characters are folded.
 std::uint32_t fingerprint(const std::string& text) {
   std::uint32_t hash = 2166136261u;
@@ -31,7 +40,7 @@ std::string fileSafe(const std::string& text) {
 }
 
 std::string makeId(const Combination& c) {
-  const std::string key = c.scene_path + "\n" + c.scene_name + "\n" + shortNumber(c.resolution) +
+  const std::string key = c.scene_path + "\n" + c.scene_name + "\n" + exactNumber(c.resolution) +
                           "\n" + c.backend + "\n" + needsModeName(c.needs) + "\n" +
                           std::to_string(c.limit);
   char hash[9];
@@ -61,7 +70,7 @@ std::vector<Combination> planStudy(const std::vector<PlannedScene>& scenes,
                                    const std::vector<std::string>& backends, const Sweep& sweep) {
   std::vector<Combination> plan;
   for (const PlannedScene& scene : scenes) {
-    for (const double resolution : sweep.resolutions) {
+    for (const double resolution : sweep.resolutionsOf(scene.name)) {
       if (resolution != 1.0 && !scene.has_generated_shapes) continue;
       for (const std::string& backend : backends) {
         for (const NeedsMode needs : sweep.needs) {

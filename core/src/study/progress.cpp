@@ -56,6 +56,9 @@ std::string StudyProgress::estimateLeft() const {
 
 void StudyProgress::finish(const std::string& outcome) {
   ++finished_;
+  // The finished combination now counts whole; its frames must not count a second time.
+  frames_done_ = 0;
+  frames_total_ = 0;
   if (interactive_) {
     out_ << "\r\x1b[K";
   }

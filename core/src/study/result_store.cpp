@@ -88,7 +88,8 @@ Status writeFileAtomically(const std::string& path, const std::string& text) {
   }
   std::error_code ec;
   fs::rename(temporary, path, ec);
-  if (ec) return Status(StatusCode::kInvalidArgument, path + ": cannot be replaced: " + ec.message());
+  if (ec)
+    return Status(StatusCode::kInvalidArgument, path + ": cannot be replaced: " + ec.message());
   return Status();
 }
 

@@ -10,7 +10,8 @@
 namespace collido::study {
 namespace {
 
-using Json = nlohmann::json;
+// Ordered: options keep the order the file gives them (SweepBackend::settings() follows it).
+using Json = nlohmann::ordered_json;
 
 struct SweepError {
   std::string message;
@@ -46,7 +47,9 @@ class Checker {
   std::string label_;
 };
 
-std::string at(const std::string& where, const std::string& key) { return where + "/" + key; }
+std::string at(const std::string& where, const std::string& key) {
+  return where + "/" + key;
+}
 std::string at(const std::string& where, std::size_t index) {
   return where + "/" + std::to_string(index);
 }
@@ -55,13 +58,9 @@ std::string at(const std::string& where, std::size_t index) {
 std::string optionText(const Checker& c, const Json& value, const std::string& where) {
   if (value.is_string()) return value.get<std::string>();
   if (value.is_boolean()) return value.get<bool>() ? "true" : "false";
-  if (value.is_number_integer()) return value.dump();
-  if (value.is_number()) {
-    std::ostringstream out;
-    out.precision(17);
-    out << value.get<double>();
-    return out.str();
-  }
+  // nlohmann writes the shortest text that reads back as the same number: 0.1, not
+  // 0.10000000000000001.
+  if (value.is_number()) return value.dump();
   c.fail(where, std::string("expected a number, string or boolean, got ") + value.type_name());
 }
 
@@ -93,6 +92,19 @@ SweepBackend readBackend(const Checker& c, const Json& node, const std::string& 
   return backend;
 }
 
+std::vector<double> readResolutions(const Checker& c, const Json& node, const std::string& where) {
+  const Json& list = c.nonEmptyArray(node, where);
+  std::vector<double> resolutions;
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    if (!list[i].is_number() || !(list[i].get<double>() > 0.0) ||
+        !std::isfinite(list[i].get<double>())) {
+      c.fail(at(where, i), "expected a positive number (1 = as the scene says)");
+    }
+    resolutions.push_back(list[i].get<double>());
+  }
+  return resolutions;
+}
+
 Sweep readSweep(const Checker& c, const Json& root) {
   c.allowKeys(root, "", {"backends", "resolutions", "needs", "limits", "repetitions", "timeout_s"});
   Sweep sweep;
@@ -102,14 +114,19 @@ Sweep readSweep(const Checker& c, const Json& root) {
       sweep.backends.push_back(readBackend(c, list[i], at("/backends", i)));
   }
   if (root.contains("resolutions")) {
-    sweep.resolutions.clear();
-    const Json& list = c.nonEmptyArray(root.at("resolutions"), "/resolutions");
-    for (std::size_t i = 0; i < list.size(); ++i) {
-      if (!list[i].is_number() || !(list[i].get<double>() > 0.0) ||
-          !std::isfinite(list[i].get<double>())) {
-        c.fail(at("/resolutions", i), "expected a positive number (1 = as the scene says)");
+    const Json& node = root.at("resolutions");
+    if (node.is_object()) {
+      // {"scene name": [..], "*": [..]}: per scene, "*" for the others.
+      for (const auto& item : node.items()) {
+        std::vector<double> list = readResolutions(c, item.value(), "/resolutions/" + item.key());
+        if (item.key() == "*") {
+          sweep.resolutions = std::move(list);
+        } else {
+          sweep.scene_resolutions[item.key()] = std::move(list);
+        }
       }
-      sweep.resolutions.push_back(list[i].get<double>());
+    } else {
+      sweep.resolutions = readResolutions(c, node, "/resolutions");
     }
   }
   if (root.contains("needs")) {
@@ -162,18 +179,30 @@ std::optional<NeedsMode> parseNeedsMode(const std::string& name) {
   return std::nullopt;
 }
 
+const std::vector<double>& Sweep::resolutionsOf(const std::string& scene) const {
+  const auto found = scene_resolutions.find(scene);
+  return found == scene_resolutions.end() ? resolutions : found->second;
+}
+
 std::vector<std::string> SweepBackend::settings() const {
   std::vector<std::string> texts{""};
   for (const auto& [name, values] : options) {
     std::vector<std::string> next;
     for (const std::string& prefix : texts) {
-      for (const std::string& value : values)
-        next.push_back(prefix + (prefix.empty() ? "" : ";") + name + "=" + value);
+      for (const std::string& value : values) {
+        std::string setting = prefix;
+        if (!setting.empty()) setting += ';';
+        setting.append(name).append("=").append(value);
+        next.push_back(std::move(setting));
+      }
     }
     texts = std::move(next);
   }
-  for (std::string& text : texts)
-    text = text.empty() ? variant : variant + "[" + text + "]";
+  for (std::string& text : texts) {
+    std::string full = variant;
+    if (!text.empty()) full.append("[").append(text).append("]");
+    text = std::move(full);
+  }
   return texts;
 }
 

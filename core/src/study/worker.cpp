@@ -11,7 +11,8 @@ Result<CombinationResult> runCombination(const WorkerRequest& request) {
   if (!loaded.ok()) return loaded.status();
   Scene scene = std::move(loaded).value();
   std::optional<Scene> finest;
-  if (c.resolution != 1.0) {
+  // Only a coarser mesh is judged against the finest one; a finer one is itself the finest.
+  if (c.resolution < 1.0) {
     Result<Scene> fine = loadScene(c.scene_path);
     if (!fine.ok()) return fine.status();
     finest = std::move(fine).value();

@@ -34,8 +34,7 @@ void consumeProgress(std::string& buffer, const WorkerLaunch& launch) {
     buffer.erase(0, newline + 1);
     unsigned long long done = 0;
     unsigned long long total = 0;
-    if (std::sscanf(line.c_str(), "progress %llu %llu", &done, &total) == 2 &&
-        launch.on_progress) {
+    if (std::sscanf(line.c_str(), "progress %llu %llu", &done, &total) == 2 && launch.on_progress) {
       launch.on_progress(static_cast<std::size_t>(done), static_cast<std::size_t>(total));
     }
   }
@@ -55,6 +54,7 @@ void consumeProgress(std::string& buffer, const WorkerLaunch& launch) {
   std::vector<std::string> storage{launch.executable};
   storage.insert(storage.end(), launch.arguments.begin(), launch.arguments.end());
   std::vector<char*> argv;
+  argv.reserve(storage.size() + 1);
   for (std::string& s : storage)
     argv.push_back(s.data());
   argv.push_back(nullptr);
@@ -71,9 +71,8 @@ std::string fileTail(const std::string& path, std::size_t bytes) {
   std::ifstream in(path, std::ios::binary | std::ios::ate);
   if (!in) return "";
   const std::streamoff size = in.tellg();
-  const std::streamoff start = size > static_cast<std::streamoff>(bytes)
-                                   ? size - static_cast<std::streamoff>(bytes)
-                                   : 0;
+  const std::streamoff start =
+      size > static_cast<std::streamoff>(bytes) ? size - static_cast<std::streamoff>(bytes) : 0;
   in.seekg(start);
   std::string text(static_cast<std::size_t>(size - start), '\0');
   in.read(text.data(), static_cast<std::streamsize>(text.size()));

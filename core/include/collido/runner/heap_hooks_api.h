@@ -10,9 +10,9 @@ extern "C" {
 
 /// What the hooks have counted since the process started.
 typedef struct CollidoHeapHookCounters {
-  int64_t live_bytes;    /* bytes handed out and not yet freed */
-  int64_t peak_bytes;    /* the most live_bytes reached since the last reset */
-  uint64_t allocations;  /* successful allocation calls */
+  int64_t live_bytes;   /* bytes handed out and not yet freed */
+  int64_t peak_bytes;   /* the most live_bytes reached since the last reset */
+  uint64_t allocations; /* successful allocation calls */
 } CollidoHeapHookCounters;
 
 typedef CollidoHeapHookCounters (*CollidoHeapHooksRead)(void);

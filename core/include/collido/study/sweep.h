@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <string>
 #include <utility>
@@ -30,13 +31,18 @@ struct SweepBackend {
 
 /// The settings a study sweeps (format: docs/STUDY.md). Every list has at least one entry.
 struct Sweep {
-  std::vector<SweepBackend> backends;  ///< empty: every variant found (or --backends)
-  std::vector<double> resolutions{1.0};
+  std::vector<SweepBackend> backends;    ///< empty: every variant found (or --backends)
+  std::vector<double> resolutions{1.0};  ///< for scenes with no entry below
+  /// Per scene name: its own resolutions (a sweep may size one scene family for scaling).
+  std::map<std::string, std::vector<double>> scene_resolutions;
   std::vector<NeedsMode> needs{NeedsMode::kDeclared};
   /// Caps on all-pairs and contacts answers (max_pairs / max_contacts); 0 keeps the scene's.
   std::vector<std::uint64_t> limits{0};
   std::optional<int> repetitions;
   std::optional<double> timeout_s;
+
+  /// The resolutions to run `scene` at.
+  const std::vector<double>& resolutionsOf(const std::string& scene) const;
 };
 
 /// Reads a sweep; every error names `label`, the JSON path and the problem.

@@ -13,7 +13,7 @@ namespace collido::study {
 /// A worker process to start: the collido executable in worker mode, one combination.
 struct WorkerLaunch {
   std::string executable;
-  std::vector<std::string> arguments;   ///< after the program name
+  std::vector<std::string> arguments;    ///< after the program name
   std::vector<std::string> environment;  ///< "NAME=value" set on top of ours
   std::string log_path;                  ///< receives the worker's stderr
   double timeout_s = 0.0;                ///< 0: no limit

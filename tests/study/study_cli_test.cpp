@@ -1,0 +1,582 @@
+// `collido study` and `collido merge` end to end: the built executable runs studies that mix the
+// obbtree backend with a test plugin that crashes, aborts, hangs and exits on purpose
+// (tests/study/plugins/misbehaving_plugin.cpp), and the tests read the study folder back.
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <collido/study/plan.h>
+#include <collido/study/result_store.h>
+
+#include "support/test_paths.h"
+
+namespace collido::study {
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+struct CommandRun {
+  int exit_code = -1;  ///< 128 + signal when killed by one
+  std::string out;
+  std::string err;
+};
+
+std::string readText(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+/// Starts `collido --plugin <test plugins> args...` with stdout and stderr sent to files.
+pid_t startCollido(const std::vector<std::string>& args, const std::string& out_path,
+                   const std::string& err_path) {
+  std::vector<std::string> storage = {COLLIDO_EXECUTABLE, "--plugin", COLLIDO_TEST_PLUGIN_DIR};
+  storage.insert(storage.end(), args.begin(), args.end());
+  std::vector<char*> argv;
+  for (std::string& s : storage)
+    argv.push_back(s.data());
+  argv.push_back(nullptr);
+  const pid_t pid = fork();
+  if (pid == 0) {
+    const int out = open(out_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    const int err = open(err_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    if (out < 0 || err < 0) _exit(126);
+    dup2(out, STDOUT_FILENO);
+    dup2(err, STDERR_FILENO);
+    execv(argv[0], argv.data());
+    _exit(127);
+  }
+  return pid;
+}
+
+/// Waits for `pid` at most `limit_s` seconds (then kills it); the exit code, or 128 + signal.
+int waitFor(pid_t pid, double limit_s) {
+  const Clock::time_point start = Clock::now();
+  int status = 0;
+  for (;;) {
+    const pid_t done = waitpid(pid, &status, WNOHANG);
+    if (done == pid) break;
+    if (std::chrono::duration<double>(Clock::now() - start).count() > limit_s) {
+      ADD_FAILURE() << "collido still running after " << limit_s << " s; killed";
+      kill(pid, SIGKILL);
+      waitpid(pid, &status, 0);
+      return -1;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  if (WIFEXITED(status)) return WEXITSTATUS(status);
+  if (WIFSIGNALED(status)) return 128 + WTERMSIG(status);
+  return -1;
+}
+
+/// Runs collido to the end; `dir` receives its stdout and stderr.
+CommandRun collido(const std::vector<std::string>& args, const std::string& dir) {
+  static int serial = 0;
+  const std::string stem = dir + "/command" + std::to_string(++serial);
+  CommandRun run;
+  run.exit_code = waitFor(startCollido(args, stem + ".out", stem + ".err"), 60.0);
+  run.out = readText(stem + ".out");
+  run.err = readText(stem + ".err");
+  return run;
+}
+
+std::string describe(const CommandRun& run) {
+  return "exit code " + std::to_string(run.exit_code) + "\nstderr:\n" + run.err + "\nstdout:\n" +
+         run.out;
+}
+
+/// Two thick tori linked through each other (intersecting in every frame), 3 jittered frames:
+/// every backend here runs it in well under a second, even the brute force under sanitizers.
+std::string writeSmallScene(const std::string& dir) {
+  const std::string path = dir + "/linked.json";
+  test::writeFile(path, R"({
+    "name": "linked",
+    "frames": 3,
+    "objects": [
+      {"name": "a", "shape": {"generator": "torus", "minor_radius": 0.4,
+                              "major_segments": 12, "minor_segments": 6}},
+      {"name": "b", "shape": {"generator": "torus", "minor_radius": 0.4,
+                              "major_segments": 12, "minor_segments": 6},
+       "pose": {"translation": [1.5, 0, 0], "rotation": {"axis": [1, 0, 0], "degrees": 90}},
+       "motion": {"jitter": {"seed": 5, "translation": 0.05, "rotation_deg": 5}}}
+    ],
+    "queries": [
+      {"name": "pairs", "a": "a", "b": "b", "kind": "all_pairs"},
+      {"name": "hit", "a": "a", "b": "b", "kind": "boolean"}
+    ]})");
+  return path;
+}
+
+std::vector<CombinationResult> readResults(const std::string& out) {
+  const Result<std::vector<CombinationResult>> all = ResultStore(out).readAll();
+  if (!all.ok()) {
+    ADD_FAILURE() << all.status().message();
+    return {};
+  }
+  return all.value();
+}
+
+std::map<std::string, CombinationResult> byBackend(const std::vector<CombinationResult>& results) {
+  std::map<std::string, CombinationResult> map;
+  for (const CombinationResult& r : results)
+    map[r.combination.backend] = r;
+  return map;
+}
+
+std::vector<std::string> jsonFilesIn(const std::string& folder) {
+  std::vector<std::string> names;
+  std::error_code ec;
+  for (const fs::directory_entry& entry : fs::directory_iterator(folder, ec)) {
+    if (entry.path().extension() == ".json") names.push_back(entry.path().filename().string());
+  }
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+std::size_t lineCount(const std::string& text) {
+  return static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n'));
+}
+
+std::vector<std::string> studyArgs(const std::string& scene, const std::string& backends,
+                                   const std::string& out) {
+  return {"study", scene, "--backends", backends, "--out", out, "--repetitions", "1"};
+}
+
+// A crash, an abort and a hang each cost one combination; the rest of the study is whole.
+TEST(StudyCli, CrashAbortAndHangCostOneCombinationEach) {
+  const std::string dir = test::makeTempDirectory("study_mixed");
+  const std::string out = dir + "/study";
+  std::vector<std::string> args = studyArgs(
+      writeSmallScene(dir), "obbtree,misbehaving:crash,misbehaving:abort,misbehaving:hang", out);
+  args.insert(args.end(), {"--timeout", "3"});
+  const Clock::time_point start = Clock::now();
+  const CommandRun run = collido(args, dir);
+  const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
+  ASSERT_EQ(run.exit_code, 0) << describe(run);
+  EXPECT_NE(run.err.find("study: 4 combinations, 4 to run"), std::string::npos) << run.err;
+  EXPECT_LT(elapsed, 30.0);
+
+  const std::vector<CombinationResult> results = readResults(out);
+  ASSERT_EQ(results.size(), 4u);
+  EXPECT_EQ(jsonFilesIn(out + "/results").size(), 4u);
+  // In plan order: the backends as --backends lists them.
+  EXPECT_EQ(results[0].combination.backend, "obbtree");
+  EXPECT_EQ(results[1].combination.backend, "misbehaving:crash");
+  EXPECT_EQ(results[2].combination.backend, "misbehaving:abort");
+  EXPECT_EQ(results[3].combination.backend, "misbehaving:hang");
+
+  const CombinationResult& obbtree = results[0];
+  EXPECT_EQ(obbtree.outcome.status, "ok");
+  EXPECT_EQ(obbtree.combination.scene_name, "linked");
+  ASSERT_EQ(obbtree.measurements.size(), 2u);
+  for (const QueryMeasurement& m : obbtree.measurements) {
+    SCOPED_TRACE(m.query);
+    EXPECT_EQ(m.status, "ok");
+    EXPECT_EQ(m.frames.size(), 3u);
+    EXPECT_EQ(m.times_us.size(), 3u);  // --repetitions 1
+    EXPECT_EQ(m.disagreements, 0u);
+  }
+  EXPECT_GT(obbtree.outcome.peak_rss_bytes, 0u);
+
+  const CombinationResult& crash = results[1];
+  EXPECT_EQ(crash.outcome.status, "crashed");
+  EXPECT_EQ(crash.outcome.signal, SIGSEGV);
+  EXPECT_EQ(crash.outcome.signal_name, "SIGSEGV");
+  EXPECT_TRUE(crash.measurements.empty());
+  const CombinationResult& abort = results[2];
+  EXPECT_EQ(abort.outcome.status, "crashed");
+  EXPECT_EQ(abort.outcome.signal_name, "SIGABRT");
+  EXPECT_TRUE(abort.measurements.empty());
+  const CombinationResult& hang = results[3];
+  EXPECT_EQ(hang.outcome.status, "timeout");
+  EXPECT_GE(hang.outcome.wall_s, 3.0);
+  EXPECT_LT(hang.outcome.wall_s, 10.0);
+  EXPECT_TRUE(hang.measurements.empty());
+
+  // Every worker left its log; no request or answer is left behind in scratch/.
+  for (const CombinationResult& r : results)
+    EXPECT_TRUE(fs::exists(out + "/logs/" + r.combination.id + ".log")) << r.combination.id;
+  EXPECT_TRUE(fs::is_empty(out + "/scratch"));
+
+  // The outputs.
+  const std::string table = readText(out + "/table.txt");
+  EXPECT_NE(table.find("obbtree"), std::string::npos) << table;
+  EXPECT_NE(table.find("linked · misbehaving:crash: worker crashed (SIGSEGV)"), std::string::npos)
+      << table;
+  EXPECT_NE(table.find("linked · misbehaving:abort: worker crashed (SIGABRT)"), std::string::npos)
+      << table;
+  EXPECT_NE(table.find("linked · misbehaving:hang: worker timeout"), std::string::npos) << table;
+  EXPECT_EQ(run.out, table);  // the table is also what stdout shows
+  const std::string records = readText(out + "/records.jsonl");
+  EXPECT_EQ(lineCount(records), 2u * 3u);  // obbtree's frames only
+  std::istringstream lines(records);
+  for (std::string line; std::getline(lines, line);) {
+    const nlohmann::json record = nlohmann::json::parse(line);
+    EXPECT_EQ(record.at("backend"), "obbtree");
+    EXPECT_EQ(record.at("disagrees"), false);
+  }
+  const nlohmann::json summary = nlohmann::json::parse(readText(out + "/summary.json"));
+  ASSERT_EQ(summary.at("benchmarks").size(), 2u);
+  EXPECT_EQ(summary.at("benchmarks")[0].at("name"), "obbtree/linked/pairs");
+  EXPECT_TRUE(summary.contains("context"));
+}
+
+// A bundled scene from mesh files, through a worker and the stored result, agrees with the
+// oracle (no time limit: under the sanitizers this takes a while).
+TEST(StudyCli, EnvRobOnObbtreeAgreesWithTheOracle) {
+  const std::string dir = test::makeTempDirectory("study_env_rob");
+  const std::string out = dir + "/study";
+  const CommandRun run =
+      collido(studyArgs(test::sourcePath("scenes/env_rob.json"), "obbtree", out), dir);
+  ASSERT_EQ(run.exit_code, 0) << describe(run);
+  const std::vector<CombinationResult> results = readResults(out);
+  ASSERT_EQ(results.size(), 1u);
+  EXPECT_EQ(results[0].outcome.status, "ok");
+  EXPECT_EQ(results[0].combination.scene_name, "env_rob");
+  ASSERT_EQ(results[0].measurements.size(), 2u);
+  for (const QueryMeasurement& m : results[0].measurements) {
+    SCOPED_TRACE(m.query);
+    EXPECT_EQ(m.status, "ok");
+    EXPECT_EQ(m.frames.size(), 40u);
+    EXPECT_EQ(m.disagreements, 0u);
+    EXPECT_EQ(m.triangles, 2180u + 216u);
+  }
+  EXPECT_EQ(lineCount(readText(out + "/records.jsonl")), 2u * 40u);
+  const nlohmann::json summary = nlohmann::json::parse(readText(out + "/summary.json"));
+  ASSERT_EQ(summary.at("benchmarks").size(), 2u);
+  EXPECT_EQ(summary.at("benchmarks")[0].at("name"), "obbtree/env_rob/all_pairs");
+}
+
+// Failures that are not signals: an exit code, an exception (caught by the adapter: the worker
+// finishes, its queries fail), and wrong answers (counted, not failed).
+TEST(StudyCli, ExitThrowAndWrongAnswersAreRecorded) {
+  const std::string dir = test::makeTempDirectory("study_other");
+  const std::string out = dir + "/study";
+  const CommandRun run = collido(
+      studyArgs(writeSmallScene(dir),
+                "misbehaving:exit,misbehaving:throw,misbehaving:wrong,misbehaving:exact", out),
+      dir);
+  ASSERT_EQ(run.exit_code, 0) << describe(run);
+  std::map<std::string, CombinationResult> results = byBackend(readResults(out));
+  ASSERT_EQ(results.size(), 4u);
+
+  const CombinationResult& exited = results["misbehaving:exit"];
+  EXPECT_EQ(exited.outcome.status, "failed");
+  EXPECT_EQ(exited.outcome.exit_code, 7);
+  EXPECT_EQ(exited.outcome.signal, 0);
+
+  const CombinationResult& threw = results["misbehaving:throw"];
+  EXPECT_EQ(threw.outcome.status, "ok");
+  ASSERT_EQ(threw.measurements.size(), 2u);
+  for (const QueryMeasurement& m : threw.measurements) {
+    EXPECT_EQ(m.status.rfind("failed: ", 0), 0u) << m.status;
+    EXPECT_NE(m.status.find("throws on purpose"), std::string::npos) << m.status;
+  }
+
+  const CombinationResult& wrong = results["misbehaving:wrong"];
+  EXPECT_EQ(wrong.outcome.status, "ok");
+  ASSERT_EQ(wrong.measurements.size(), 2u);
+  for (const QueryMeasurement& m : wrong.measurements) {
+    SCOPED_TRACE(m.query);
+    EXPECT_EQ(m.status, "ok");
+    EXPECT_EQ(m.disagreements, 3u);
+    EXPECT_EQ(m.false_negatives, 3u);
+  }
+
+  const CombinationResult& exact = results["misbehaving:exact"];
+  EXPECT_EQ(exact.outcome.status, "ok");
+  for (const QueryMeasurement& m : exact.measurements) {
+    EXPECT_EQ(m.status, "ok");
+    EXPECT_EQ(m.disagreements, 0u) << m.query;
+  }
+
+  const std::string table = readText(out + "/table.txt");
+  EXPECT_NE(table.find("linked · misbehaving:exit: worker failed (exit 7)"), std::string::npos)
+      << table;
+  EXPECT_NE(table.find("linked · misbehaving:throw / hit: failed: "), std::string::npos) << table;
+}
+
+// A study stores each combination as it finishes; --resume runs only what is missing.
+TEST(StudyCli, ResumeRunsOnlyWhatIsMissing) {
+  const std::string dir = test::makeTempDirectory("study_resume");
+  const std::string out = dir + "/study";
+  const std::string scene = writeSmallScene(dir);
+  const std::vector<std::string> args = studyArgs(scene, "obbtree,misbehaving:exact", out);
+  const CommandRun first = collido(args, dir);
+  ASSERT_EQ(first.exit_code, 0) << describe(first);
+  const std::vector<CombinationResult> stored = readResults(out);
+  ASSERT_EQ(stored.size(), 2u);
+  const std::string kept = out + "/results/" + stored[0].combination.id + ".json";
+  const std::string removed = out + "/results/" + stored[1].combination.id + ".json";
+  const std::string kept_text = readText(kept);
+  ASSERT_TRUE(fs::remove(removed));
+
+  std::vector<std::string> resume = args;
+  resume.push_back("--resume");
+  const CommandRun second = collido(resume, dir);
+  ASSERT_EQ(second.exit_code, 0) << describe(second);
+  EXPECT_NE(second.err.find("study: 2 combinations, 1 to run"), std::string::npos) << second.err;
+  EXPECT_TRUE(fs::exists(removed));
+  EXPECT_EQ(readText(kept), kept_text);  // not run again
+  const std::vector<CombinationResult> again = readResults(out);
+  ASSERT_EQ(again.size(), 2u);
+  EXPECT_EQ(again[1].combination.id, stored[1].combination.id);
+  EXPECT_EQ(again[1].outcome.status, "ok");
+
+  const CommandRun nothing_left = collido(resume, dir);
+  ASSERT_EQ(nothing_left.exit_code, 0) << describe(nothing_left);
+  EXPECT_NE(nothing_left.err.find("0 to run"), std::string::npos) << nothing_left.err;
+
+  // The same folder without --resume is refused, and so is another study with --resume.
+  const CommandRun refused = collido(args, dir);
+  EXPECT_EQ(refused.exit_code, 2) << describe(refused);
+  EXPECT_NE(refused.err.find("already holds a study"), std::string::npos) << refused.err;
+  std::vector<std::string> other = studyArgs(scene, "obbtree", out);
+  other.push_back("--resume");
+  const CommandRun different = collido(other, dir);
+  EXPECT_EQ(different.exit_code, 2) << describe(different);
+  EXPECT_NE(different.err.find("holds a different study"), std::string::npos) << different.err;
+  EXPECT_EQ(readResults(out).size(), 2u);  // neither touched the results
+}
+
+TEST(StudyCli, RetryFailedRunsFailuresAgain) {
+  const std::string dir = test::makeTempDirectory("study_retry");
+  const std::string out = dir + "/study";
+  std::vector<std::string> args = studyArgs(writeSmallScene(dir), "obbtree,misbehaving:crash", out);
+  args.push_back("--resume");  // also fine on a fresh folder
+  const CommandRun first = collido(args, dir);
+  ASSERT_EQ(first.exit_code, 0) << describe(first);
+  EXPECT_NE(first.err.find("2 to run"), std::string::npos) << first.err;
+  const CommandRun resumed = collido(args, dir);
+  EXPECT_NE(resumed.err.find("0 to run"), std::string::npos) << resumed.err;
+  args.push_back("--retry-failed");
+  const CommandRun retried = collido(args, dir);
+  ASSERT_EQ(retried.exit_code, 0) << describe(retried);
+  EXPECT_NE(retried.err.find("1 to run"), std::string::npos) << retried.err;
+  EXPECT_EQ(byBackend(readResults(out))["misbehaving:crash"].outcome.status, "crashed");
+}
+
+// Ctrl-C (SIGINT to the study) kills the running worker, keeps what finished, and exits 130;
+// --resume then completes the study.
+TEST(StudyCli, InterruptedStudyResumes) {
+  const std::string dir = test::makeTempDirectory("study_interrupt");
+  const std::string out = dir + "/study";
+  std::vector<std::string> args =
+      studyArgs(writeSmallScene(dir), "misbehaving:hang,misbehaving:exact", out);
+  std::vector<std::string> first_args = args;
+  first_args.insert(first_args.end(), {"--timeout", "60"});
+  const pid_t pid = startCollido(first_args, dir + "/first.out", dir + "/first.err");
+  // The hang worker has started once its log exists (the study installs its SIGINT handler
+  // before it starts any worker).
+  const Clock::time_point start = Clock::now();
+  const auto worker_started = [&out] {
+    std::error_code ec;
+    return fs::is_directory(out + "/logs", ec) && !fs::is_empty(out + "/logs", ec);
+  };
+  while (!worker_started() && Clock::now() - start < std::chrono::seconds(20))
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  if (!worker_started()) {
+    kill(pid, SIGINT);
+    waitFor(pid, 20.0);
+    FAIL() << "no worker started\n" << readText(dir + "/first.err");
+  }
+  std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  ASSERT_EQ(kill(pid, SIGINT), 0);
+  const int code = waitFor(pid, 20.0);
+  const std::string err = readText(dir + "/first.err");
+  EXPECT_EQ(code, 130) << err;
+  EXPECT_LT(std::chrono::duration<double>(Clock::now() - start).count(), 20.0);
+  EXPECT_NE(err.find("study interrupted: 0 of 2 combinations are stored"), std::string::npos)
+      << err;
+  EXPECT_TRUE(jsonFilesIn(out + "/results").empty());
+  EXPECT_TRUE(fs::exists(out + "/table.txt"));
+
+  std::vector<std::string> resume = args;
+  resume.insert(resume.end(), {"--resume", "--timeout", "3"});
+  const CommandRun second = collido(resume, dir);
+  ASSERT_EQ(second.exit_code, 0) << describe(second);
+  EXPECT_NE(second.err.find("2 to run"), std::string::npos) << second.err;
+  std::map<std::string, CombinationResult> results = byBackend(readResults(out));
+  ASSERT_EQ(results.size(), 2u);
+  EXPECT_EQ(results["misbehaving:hang"].outcome.status, "timeout");
+  EXPECT_EQ(results["misbehaving:exact"].outcome.status, "ok");
+}
+
+// Shards split the plan; merge joins them into the whole study.
+TEST(StudyCli, ShardsMergeIntoTheWholeStudy) {
+  const std::string dir = test::makeTempDirectory("study_shards");
+  const std::string scene = writeSmallScene(dir);
+  const std::string backends = "obbtree,misbehaving:exact,misbehaving:wrong";
+  std::vector<std::string> a = studyArgs(scene, backends, dir + "/a");
+  a.insert(a.end(), {"--shard", "0/2"});
+  std::vector<std::string> b = studyArgs(scene, backends, dir + "/b");
+  b.insert(b.end(), {"--shard", "1/2"});
+  const CommandRun run_a = collido(a, dir);
+  ASSERT_EQ(run_a.exit_code, 0) << describe(run_a);
+  EXPECT_NE(run_a.err.find("study: 2 combinations in shard 0/2"), std::string::npos) << run_a.err;
+  const CommandRun run_b = collido(b, dir);
+  ASSERT_EQ(run_b.exit_code, 0) << describe(run_b);
+  EXPECT_NE(run_b.err.find("study: 1 combinations in shard 1/2"), std::string::npos) << run_b.err;
+
+  const CommandRun merged = collido({"merge", "--out", dir + "/m", dir + "/a", dir + "/b"}, dir);
+  ASSERT_EQ(merged.exit_code, 0) << describe(merged);
+  EXPECT_NE(merged.err.find("merged 3 of 3 planned combinations"), std::string::npos) << merged.err;
+
+  // The merged folder holds exactly the plan an unsharded study would have.
+  const std::vector<Combination> plan = planStudy(
+      {{scene, "linked", true}}, {"obbtree", "misbehaving:exact", "misbehaving:wrong"}, Sweep{});
+  std::set<std::string> planned;
+  for (const Combination& c : plan)
+    planned.insert(c.id + ".json");
+  const std::vector<std::string> files = jsonFilesIn(dir + "/m/results");
+  EXPECT_EQ(std::set<std::string>(files.begin(), files.end()), planned);
+  const Result<std::vector<Combination>> merged_plan = ResultStore(dir + "/m").readPlan();
+  ASSERT_TRUE(merged_plan.ok()) << merged_plan.status().message();
+  EXPECT_EQ(merged_plan.value().size(), 3u);
+  std::map<std::string, CombinationResult> results = byBackend(readResults(dir + "/m"));
+  ASSERT_EQ(results.size(), 3u);
+  for (const auto& [backend, r] : results)
+    EXPECT_EQ(r.outcome.status, "ok") << backend;
+  EXPECT_EQ(results["misbehaving:wrong"].measurements.at(0).disagreements, 3u);
+  for (const char* file : {"table.txt", "records.jsonl", "summary.json"})
+    EXPECT_TRUE(fs::exists(dir + "/m/" + file)) << file;
+  EXPECT_EQ(lineCount(readText(dir + "/m/records.jsonl")), 3u * 2u * 3u);
+  EXPECT_EQ(merged.out, readText(dir + "/m/table.txt"));
+
+  const CommandRun not_a_study = collido({"merge", "--out", dir + "/n", dir}, dir);
+  EXPECT_EQ(not_a_study.exit_code, 2) << describe(not_a_study);
+  EXPECT_NE(not_a_study.err.find("no study here"), std::string::npos) << not_a_study.err;
+}
+
+// A sweep file: option grid, needs, resolutions, limits and its own repetitions.
+TEST(StudyCli, SweepFileSetsTheGrid) {
+  const std::string dir = test::makeTempDirectory("study_sweep");
+  const std::string out = dir + "/study";
+  const std::string sweep = dir + "/sweep.json";
+  test::writeFile(sweep, R"({
+    "backends": [{"variant": "misbehaving:exact", "options": {"build_mib": [0, 1]}}],
+    "needs": ["declared", "every"],
+    "resolutions": [1, 0.5],
+    "limits": [2],
+    "repetitions": 2,
+    "timeout_s": 60})");
+  const CommandRun run =
+      collido({"study", writeSmallScene(dir), "--sweep", sweep, "--out", out}, dir);
+  ASSERT_EQ(run.exit_code, 0) << describe(run);
+  EXPECT_NE(run.err.find("study: 8 combinations, 8 to run"), std::string::npos) << run.err;
+  const std::vector<CombinationResult> results = readResults(out);
+  ASSERT_EQ(results.size(), 8u);
+  std::set<std::string> settings;
+  for (const CombinationResult& r : results) {
+    SCOPED_TRACE(r.combination.label());
+    settings.insert(r.combination.backend);
+    EXPECT_EQ(r.outcome.status, "ok");
+    EXPECT_EQ(r.combination.limit, 2u);
+    ASSERT_EQ(r.measurements.size(), 2u);
+    for (const QueryMeasurement& m : r.measurements) {
+      EXPECT_EQ(m.status, "ok");
+      EXPECT_EQ(m.times_us.size(), 3u * 2u);  // the sweep's repetitions
+      EXPECT_EQ(m.disagreements, 0u);
+      EXPECT_EQ(m.finest_disagreements.has_value(), r.combination.resolution != 1.0);
+      if (m.kind == QueryKind::kAllPairs) {
+        for (const FrameRecord& f : m.frames)
+          EXPECT_TRUE(f.truncated);
+      }
+    }
+  }
+  EXPECT_EQ(settings, (std::set<std::string>{"misbehaving:exact[build_mib=0]",
+                                             "misbehaving:exact[build_mib=1]"}));
+  const std::string table = readText(out + "/table.txt");
+  EXPECT_NE(table.find("Building only what the scene needs"), std::string::npos) << table;
+  EXPECT_NE(table.find("needs=every r=0.5 limit=2"), std::string::npos) << table;
+  EXPECT_EQ(table.find("Failures"), std::string::npos) << table;
+  const nlohmann::json summary = nlohmann::json::parse(readText(out + "/summary.json"));
+  EXPECT_EQ(summary.at("benchmarks").size(), 16u);
+
+  // A bad sweep is refused before anything runs, naming the file and the value.
+  test::writeFile(sweep, R"({"backends": [{"variant": "misbehaving:exact",
+                                           "options": {"build_mib": []}}]})");
+  const CommandRun bad =
+      collido({"study", writeSmallScene(dir), "--sweep", sweep, "--out", dir + "/bad"}, dir);
+  EXPECT_EQ(bad.exit_code, 2) << describe(bad);
+  EXPECT_NE(bad.err.find(sweep + ": /backends/0/options/build_mib: "), std::string::npos)
+      << bad.err;
+  EXPECT_FALSE(fs::exists(dir + "/bad/plan.json"));
+}
+
+TEST(StudyCli, BadArgumentsAreRefused) {
+  const std::string dir = test::makeTempDirectory("study_bad");
+  const std::string scene = writeSmallScene(dir);
+  std::vector<std::string> shard = studyArgs(scene, "obbtree", dir + "/s");
+  shard.insert(shard.end(), {"--shard", "2/2"});
+  const CommandRun bad_shard = collido(shard, dir);
+  EXPECT_EQ(bad_shard.exit_code, 2) << describe(bad_shard);
+  EXPECT_NE(bad_shard.err.find("--shard '2/2'"), std::string::npos) << bad_shard.err;
+
+  const CommandRun unknown = collido(studyArgs(scene, "misbehaving:nothing", dir + "/u"), dir);
+  EXPECT_EQ(unknown.exit_code, 2) << describe(unknown);
+  EXPECT_NE(unknown.err.find("misbehaving:nothing"), std::string::npos) << unknown.err;
+
+  const CommandRun no_scene = collido(studyArgs(dir + "/none.json", "obbtree", dir + "/n"), dir);
+  EXPECT_EQ(no_scene.exit_code, 2) << describe(no_scene);
+  EXPECT_NE(no_scene.err.find(dir + "/none.json"), std::string::npos) << no_scene.err;
+  for (const char* folder : {"/s", "/u", "/n"})
+    EXPECT_FALSE(fs::exists(dir + folder)) << folder;
+}
+
+// The allocation hooks are preloaded into every worker: build memory is measured by them, also
+// what a backend leaves out of its own count.
+TEST(StudyCli, WorkersMeasureBuildsWithTheAllocationHooks) {
+#ifndef COLLIDO_HAS_HEAP_HOOKS
+  GTEST_SKIP() << "built with sanitizers: the allocation hooks are not built";
+#else
+  const std::string dir = test::makeTempDirectory("study_heap");
+  const std::string out = dir + "/study";
+  const CommandRun run =
+      collido(studyArgs(writeSmallScene(dir), "obbtree,misbehaving:exact[build_mib=4]", out), dir);
+  ASSERT_EQ(run.exit_code, 0) << describe(run);
+  std::map<std::string, CombinationResult> results = byBackend(readResults(out));
+  ASSERT_EQ(results.size(), 2u);
+  for (const auto& [backend, r] : results) {
+    ASSERT_EQ(r.measurements.size(), 2u) << backend;
+    for (const QueryMeasurement& m : r.measurements) {
+      SCOPED_TRACE(backend + " " + m.query);
+      EXPECT_EQ(m.heap_probe, "hooks");
+      ASSERT_TRUE(m.heap_bytes.has_value());
+      ASSERT_TRUE(m.heap_peak_bytes.has_value());
+      ASSERT_TRUE(m.heap_allocations.has_value());
+      EXPECT_GT(*m.heap_bytes, 0u);
+      EXPECT_GE(*m.heap_peak_bytes, *m.heap_bytes);
+      EXPECT_GE(*m.heap_allocations, 2u);
+    }
+  }
+  // 4 MiB of ballast per model that the backend does not report; the hooks see both.
+  const QueryMeasurement& ballast = results["misbehaving:exact[build_mib=4]"].measurements[0];
+  EXPECT_GE(*ballast.heap_bytes, 2u * 4u * 1024u * 1024u);
+  EXPECT_LT(ballast.memory_bytes, 1024u * 1024u);
+  // The stored file says so too.
+  const std::string text =
+      readText(out + "/results/" + results["obbtree"].combination.id + ".json");
+  EXPECT_NE(text.find("\"heap_probe\": \"hooks\""), std::string::npos);
+#endif
+}
+
+}  // namespace
+}  // namespace collido::study

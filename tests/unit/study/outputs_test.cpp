@@ -1,0 +1,185 @@
+// The study's outputs: per-frame JSON lines, the Google Benchmark summary and the table.
+#include <collido/study/outputs.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "study_test_data.h"
+#include "support/test_paths.h"
+
+namespace collido::study {
+namespace {
+
+std::vector<std::string> linesOf(const std::string& text) {
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);)
+    lines.push_back(line);
+  return lines;
+}
+
+/// ok (obbtree, declared), ok (obbtree, every), crashed (fcl:obb), failed (bullet, exit 3).
+std::vector<CombinationResult> mixedResults() {
+  CombinationResult failed = testdata::crashedResult(testdata::combination("bullet"));
+  failed.outcome.status = "failed";
+  failed.outcome.signal = 0;
+  failed.outcome.signal_name.clear();
+  failed.outcome.exit_code = 3;
+  return {testdata::okResult(testdata::combination("obbtree")),
+          testdata::okResult(testdata::combination("obbtree", NeedsMode::kEvery)),
+          testdata::crashedResult(testdata::combination("fcl:obb")), failed};
+}
+
+TEST(RecordsJsonLines, OneValidLinePerFrame) {
+  const std::vector<CombinationResult> results = mixedResults();
+  const std::string text = recordsJsonLines(results);
+  ASSERT_FALSE(text.empty());
+  EXPECT_EQ(text.back(), '\n');
+  const std::vector<std::string> lines = linesOf(text);
+  // Per finished combination: 3 all-pairs frames + 2 boolean frames; none for the skipped
+  // query or the workers that died.
+  ASSERT_EQ(lines.size(), 2u * 5u);
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    SCOPED_TRACE(lines[i]);
+    const nlohmann::json line = nlohmann::json::parse(lines[i]);
+    ASSERT_TRUE(line.is_object());
+    const CombinationResult& r = results[i / 5];
+    EXPECT_EQ(line.at("combination"), r.combination.id);
+    EXPECT_EQ(line.at("backend"), "obbtree");
+    EXPECT_EQ(line.at("scene"), "tori");
+    EXPECT_EQ(line.at("needs"), needsModeName(r.combination.needs));
+    EXPECT_EQ(line.at("resolution"), 1.0);
+    EXPECT_EQ(line.at("limit"), 0);
+    for (const char* key :
+         {"frame", "median_us", "oracle_intersecting", "reported_intersecting",
+          "finest_intersecting", "oracle_pairs", "reported_pairs", "matched_pairs", "invalid_pairs",
+          "truncated", "disagrees", "bv_tests", "primitive_tests"}) {
+      EXPECT_TRUE(line.contains(key)) << key;
+    }
+  }
+  const nlohmann::json wrong = nlohmann::json::parse(lines[1]);
+  EXPECT_EQ(wrong.at("query"), "all_pairs");
+  EXPECT_EQ(wrong.at("kind"), "all_pairs");
+  EXPECT_EQ(wrong.at("frame"), 1);
+  EXPECT_EQ(wrong.at("disagrees"), true);
+  EXPECT_EQ(wrong.at("oracle_pairs"), 4);
+  EXPECT_EQ(wrong.at("median_us"), 20.0);
+  EXPECT_EQ(wrong.at("bv_tests"), 101);
+  const nlohmann::json boolean = nlohmann::json::parse(lines[3]);
+  EXPECT_EQ(boolean.at("kind"), "boolean");
+  EXPECT_EQ(boolean.at("disagrees"), false);
+  EXPECT_TRUE(boolean.at("bv_tests").is_null());  // not counted by this backend
+  EXPECT_TRUE(boolean.at("finest_intersecting").is_null());
+  EXPECT_EQ(recordsJsonLines({}), "");
+}
+
+TEST(BenchmarkJson, GoogleBenchmarkFormat) {
+  const std::vector<CombinationResult> results = mixedResults();
+  const nlohmann::json summary = nlohmann::json::parse(benchmarkJson(results));
+  ASSERT_TRUE(summary.contains("context"));
+  ASSERT_TRUE(summary.contains("benchmarks"));
+  const nlohmann::json& context = summary.at("context");
+  for (const char* key : {"date", "host_name", "executable", "num_cpus", "library_build_type"})
+    EXPECT_TRUE(context.contains(key)) << key;
+  const nlohmann::json& benchmarks = summary.at("benchmarks");
+  ASSERT_TRUE(benchmarks.is_array());
+  // Two answered queries per finished combination; the skipped one and dead workers are absent.
+  ASSERT_EQ(benchmarks.size(), 4u);
+  for (const nlohmann::json& b : benchmarks) {
+    SCOPED_TRACE(b.dump());
+    for (const char* key : {"name", "run_name", "iterations", "real_time", "cpu_time"})
+      EXPECT_TRUE(b.contains(key)) << key;
+    EXPECT_EQ(b.at("time_unit"), "us");
+    EXPECT_EQ(b.at("run_type"), "iteration");
+    EXPECT_EQ(b.at("name"), b.at("run_name"));
+    EXPECT_EQ(b.at("peak_rss_bytes"), 48u * 1024u * 1024u);
+  }
+  EXPECT_EQ(benchmarks[0].at("name"), "obbtree/tori/all_pairs");
+  EXPECT_EQ(benchmarks[0].at("real_time"), 20.0);
+  EXPECT_EQ(benchmarks[0].at("iterations"), 3);
+  EXPECT_EQ(benchmarks[0].at("max_us"), 40.0);
+  EXPECT_EQ(benchmarks[0].at("disagreements"), 1);
+  EXPECT_EQ(benchmarks[0].at("false_negatives"), 1);
+  EXPECT_EQ(benchmarks[0].at("finest_disagreements"), 1);
+  EXPECT_DOUBLE_EQ(benchmarks[0].at("recall").get<double>(), 0.6);
+  EXPECT_DOUBLE_EQ(benchmarks[0].at("bytes_per_triangle").get<double>(), 300.0);
+  EXPECT_DOUBLE_EQ(benchmarks[0].at("heap_bytes_per_triangle").get<double>(), 310.0);
+  EXPECT_DOUBLE_EQ(benchmarks[0].at("bv_tests").get<double>(), 101.0);  // per query
+  EXPECT_EQ(benchmarks[1].at("name"), "obbtree/tori/boolean");
+  EXPECT_FALSE(benchmarks[1].contains("bv_tests"));
+  EXPECT_FALSE(benchmarks[1].contains("finest_disagreements"));
+  EXPECT_EQ(benchmarks[2].at("name"), "obbtree/tori/all_pairs/needs=every");
+  // Names are unique, so dashboards tell the rows apart.
+  std::set<std::string> names;
+  for (const nlohmann::json& b : benchmarks)
+    names.insert(b.at("name").get<std::string>());
+  EXPECT_EQ(names.size(), benchmarks.size());
+
+  const nlohmann::json empty = nlohmann::json::parse(benchmarkJson({}));
+  EXPECT_TRUE(empty.at("benchmarks").empty());
+}
+
+TEST(StudyTable, RowsSavingsAndFailures) {
+  const std::string table = studyTable(mixedResults());
+  for (const char* column : {"backend", "setting", "median us", "p99 us", "max us", "disagree",
+                             "coarse err", "B/tri heap", "RSS MiB"})
+    EXPECT_NE(table.find(column), std::string::npos) << column;
+  EXPECT_NE(table.find("needs=every"), std::string::npos) << table;
+  EXPECT_NE(table.find("skipped"), std::string::npos) << table;
+  // The declared/every pair of obbtree on tori gives the savings section.
+  EXPECT_NE(table.find("Building only what the scene needs"), std::string::npos) << table;
+  // Both dead workers are in the failures, with their signal or exit code.
+  const std::size_t failures = table.find("\nFailures:\n");
+  ASSERT_NE(failures, std::string::npos) << table;
+  const std::string tail = table.substr(failures);
+  EXPECT_NE(tail.find("tori · fcl:obb: worker crashed (SIGSEGV)"), std::string::npos) << tail;
+  EXPECT_NE(tail.find("tori · bullet: worker failed (exit 3)"), std::string::npos) << tail;
+  EXPECT_EQ(tail.find("obbtree"), std::string::npos) << tail;
+}
+
+TEST(StudyTable, NoSavingsWithoutAPairAndNoFailuresWhenAllFinish) {
+  const std::string table = studyTable({testdata::okResult(testdata::combination("obbtree"))});
+  EXPECT_EQ(table.find("Building only what the scene needs"), std::string::npos) << table;
+  EXPECT_EQ(table.find("Failures"), std::string::npos) << table;
+  EXPECT_NE(table.find("obbtree"), std::string::npos) << table;
+}
+
+TEST(StudyTable, FailedQueriesAreListedAsFailures) {
+  CombinationResult r = testdata::okResult(testdata::combination("ode"));
+  r.measurements[1].status = "failed: frame 0: engine failure: out of cheese";
+  const std::string table = studyTable({r});
+  const std::size_t failures = table.find("\nFailures:\n");
+  ASSERT_NE(failures, std::string::npos) << table;
+  EXPECT_NE(
+      table.find("tori · ode / boolean: failed: frame 0: engine failure: out of cheese", failures),
+      std::string::npos)
+      << table;
+}
+
+TEST(WriteStudyOutputs, WritesTheThreeFiles) {
+  const std::string dir = test::makeTempDirectory("outputs");
+  const std::vector<CombinationResult> results = mixedResults();
+  ASSERT_TRUE(writeStudyOutputs(dir, results).ok());
+  std::vector<std::string> names;
+  for (const auto& entry : std::filesystem::directory_iterator(dir))
+    names.push_back(entry.path().filename().string());
+  std::sort(names.begin(), names.end());
+  EXPECT_EQ(names, (std::vector<std::string>{"records.jsonl", "summary.json", "table.txt"}));
+  std::ifstream table(dir + "/table.txt");
+  std::stringstream text;
+  text << table.rdbuf();
+  EXPECT_EQ(text.str(), studyTable(results));
+  const Status missing = writeStudyOutputs(dir + "/missing", results);
+  EXPECT_FALSE(missing.ok());
+}
+
+}  // namespace
+}  // namespace collido::study

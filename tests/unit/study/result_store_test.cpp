@@ -1,0 +1,340 @@
+// The study folder: atomic writes, stored results and plans, and the measurement JSON they hold.
+#include <collido/study/result_store.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include <collido/runner/measurement_json.h>
+
+#include "study_test_data.h"
+#include "support/test_paths.h"
+
+namespace collido::study {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string readText(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+std::vector<std::string> filesIn(const std::string& folder) {
+  std::vector<std::string> names;
+  for (const fs::directory_entry& entry : fs::directory_iterator(folder))
+    names.push_back(entry.path().filename().string());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+void expectSameMeasurement(const QueryMeasurement& a, const QueryMeasurement& b) {
+  EXPECT_EQ(a.backend, b.backend);
+  EXPECT_EQ(a.scene, b.scene);
+  EXPECT_EQ(a.query, b.query);
+  EXPECT_EQ(a.kind, b.kind);
+  EXPECT_EQ(a.status, b.status);
+  EXPECT_EQ(a.times_us, b.times_us);
+  EXPECT_EQ(a.median_us, b.median_us);
+  EXPECT_EQ(a.p90_us, b.p90_us);
+  EXPECT_EQ(a.p99_us, b.p99_us);
+  EXPECT_EQ(a.max_us, b.max_us);
+  EXPECT_EQ(a.false_negatives, b.false_negatives);
+  EXPECT_EQ(a.false_positives, b.false_positives);
+  EXPECT_EQ(a.disagreements, b.disagreements);
+  EXPECT_EQ(a.finest_disagreements, b.finest_disagreements);
+  EXPECT_EQ(a.recall, b.recall);
+  EXPECT_EQ(a.precision, b.precision);
+  EXPECT_EQ(a.counts_bv_tests, b.counts_bv_tests);
+  EXPECT_EQ(a.counts_primitive_tests, b.counts_primitive_tests);
+  EXPECT_EQ(a.build_ms, b.build_ms);
+  EXPECT_EQ(a.triangles, b.triangles);
+  EXPECT_EQ(a.memory_bytes, b.memory_bytes);
+  EXPECT_EQ(a.heap_bytes, b.heap_bytes);
+  EXPECT_EQ(a.heap_peak_bytes, b.heap_peak_bytes);
+  EXPECT_EQ(a.heap_allocations, b.heap_allocations);
+  EXPECT_EQ(a.heap_probe, b.heap_probe);
+  ASSERT_EQ(a.frames.size(), b.frames.size());
+  for (std::size_t i = 0; i < a.frames.size(); ++i) {
+    SCOPED_TRACE("frame " + std::to_string(i));
+    const FrameRecord& x = a.frames[i];
+    const FrameRecord& y = b.frames[i];
+    EXPECT_EQ(x.frame, y.frame);
+    EXPECT_EQ(x.oracle_intersecting, y.oracle_intersecting);
+    EXPECT_EQ(x.reported_intersecting, y.reported_intersecting);
+    EXPECT_EQ(x.finest_intersecting, y.finest_intersecting);
+    EXPECT_EQ(x.oracle_pairs, y.oracle_pairs);
+    EXPECT_EQ(x.reported_pairs, y.reported_pairs);
+    EXPECT_EQ(x.matched_pairs, y.matched_pairs);
+    EXPECT_EQ(x.invalid_pairs, y.invalid_pairs);
+    EXPECT_EQ(x.truncated, y.truncated);
+    EXPECT_EQ(x.median_us, y.median_us);
+    EXPECT_EQ(x.bv_tests, y.bv_tests);
+    EXPECT_EQ(x.primitive_tests, y.primitive_tests);
+  }
+}
+
+TEST(MeasurementJson, RoundTripsEveryField) {
+  for (const QueryMeasurement& m :
+       {testdata::pairsMeasurement("obbtree", true), testdata::pairsMeasurement("fcl:obb", false),
+        testdata::booleanMeasurement("ode"), testdata::skippedMeasurement("ode")}) {
+    SCOPED_TRACE(m.backend + " " + m.query);
+    const Result<QueryMeasurement> back = measurementFromJson(measurementToJson(m));
+    ASSERT_TRUE(back.ok()) << back.status().message();
+    expectSameMeasurement(back.value(), m);
+    // Through text as well: doubles survive nlohmann's shortest round-trip form.
+    const Result<QueryMeasurement> reparsed =
+        measurementFromJson(nlohmann::json::parse(measurementToJson(m).dump()));
+    ASSERT_TRUE(reparsed.ok()) << reparsed.status().message();
+    expectSameMeasurement(reparsed.value(), m);
+  }
+}
+
+TEST(MeasurementJson, OptionalFieldsStayEmpty) {
+  const QueryMeasurement m = testdata::pairsMeasurement("fcl:obb", false);
+  const nlohmann::json json = measurementToJson(m);
+  EXPECT_TRUE(json.at("heap_bytes").is_null());
+  EXPECT_TRUE(json.at("heap_peak_bytes").is_null());
+  EXPECT_TRUE(json.at("heap_allocations").is_null());
+  EXPECT_TRUE(json.at("finest_disagreements").is_null());
+  EXPECT_TRUE(json.at("frames").at(0).at("finest_intersecting").is_null());
+  EXPECT_TRUE(json.at("frames").at(0).at("bv_tests").is_null());  // not counted
+  EXPECT_EQ(json.at("timed_calls"), m.times_us.size());
+  // Absent keys read as empty too (an older or hand-written record).
+  nlohmann::json trimmed = json;
+  for (const char* key : {"heap_bytes", "heap_peak_bytes", "heap_allocations", "heap_probe",
+                          "finest_disagreements", "counts_bv_tests", "counts_primitive_tests"})
+    trimmed.erase(key);
+  const Result<QueryMeasurement> back = measurementFromJson(trimmed);
+  ASSERT_TRUE(back.ok()) << back.status().message();
+  EXPECT_FALSE(back.value().heap_bytes.has_value());
+  EXPECT_FALSE(back.value().finest_disagreements.has_value());
+  EXPECT_EQ(back.value().heap_probe, "");
+}
+
+TEST(MeasurementJson, DerivedFiguresAreRecomputed) {
+  const QueryMeasurement m = testdata::pairsMeasurement("obbtree", true);
+  nlohmann::json json = measurementToJson(m);
+  // A file that contradicts its own records: the records win.
+  json["median_us"] = 1e9;
+  json["p90_us"] = -1;
+  json["max_us"] = 0;
+  json["disagreements"] = 99;
+  json["false_negatives"] = 42;
+  json["recall"] = 0.0;
+  json["precision"] = 0.0;
+  json["finest_disagreements"] = 17;
+  json["frames"][1]["disagrees"] = false;
+  const Result<QueryMeasurement> back = measurementFromJson(json);
+  ASSERT_TRUE(back.ok()) << back.status().message();
+  expectSameMeasurement(back.value(), m);
+  EXPECT_EQ(back.value().median_us, 20.0);
+  EXPECT_EQ(back.value().max_us, 40.0);
+  EXPECT_EQ(back.value().disagreements, 1u);
+  EXPECT_EQ(back.value().false_negatives, 1u);
+  EXPECT_EQ(back.value().finest_disagreements, 1u);
+  EXPECT_DOUBLE_EQ(back.value().recall, 0.6);
+  EXPECT_DOUBLE_EQ(back.value().precision, 1.0);
+}
+
+TEST(MeasurementJson, MissingOrMistypedFieldsAreErrors) {
+  const nlohmann::json good = measurementToJson(testdata::pairsMeasurement("obbtree", true));
+  for (const char* key : {"backend", "scene", "query", "kind", "status", "build_ms", "triangles",
+                          "memory_bytes", "times_us", "frames"}) {
+    nlohmann::json bad = good;
+    bad.erase(key);
+    const Result<QueryMeasurement> m = measurementFromJson(bad);
+    ASSERT_FALSE(m.ok()) << "accepted without " << key;
+    EXPECT_NE(m.status().message().find(key), std::string::npos) << m.status().message();
+  }
+  nlohmann::json bad_kind = good;
+  bad_kind["kind"] = "nearest";
+  const Result<QueryMeasurement> kind = measurementFromJson(bad_kind);
+  ASSERT_FALSE(kind.ok());
+  EXPECT_NE(kind.status().message().find("nearest"), std::string::npos);
+  nlohmann::json bad_frame = good;
+  bad_frame["frames"][0].erase("truncated");
+  EXPECT_FALSE(measurementFromJson(bad_frame).ok());
+  nlohmann::json bad_type = good;
+  bad_type["triangles"] = "many";
+  EXPECT_FALSE(measurementFromJson(bad_type).ok());
+}
+
+TEST(ResultJson, RoundTripsOutcomeMeasurementsAndProblems) {
+  const CombinationResult r = testdata::okResult(testdata::combination("obbtree"));
+  const Result<CombinationResult> back = resultFromJson(resultToJson(r), "label.json");
+  ASSERT_TRUE(back.ok()) << back.status().message();
+  EXPECT_EQ(back.value().combination.id, r.combination.id);
+  EXPECT_EQ(back.value().outcome.status, "ok");
+  EXPECT_EQ(back.value().outcome.wall_s, r.outcome.wall_s);
+  EXPECT_EQ(back.value().outcome.peak_rss_bytes, r.outcome.peak_rss_bytes);
+  EXPECT_EQ(back.value().problems, r.problems);
+  ASSERT_EQ(back.value().measurements.size(), r.measurements.size());
+  for (std::size_t i = 0; i < r.measurements.size(); ++i)
+    expectSameMeasurement(back.value().measurements[i], r.measurements[i]);
+
+  const CombinationResult crashed = testdata::crashedResult(testdata::combination("fcl:obb"));
+  const Result<CombinationResult> crash = resultFromJson(resultToJson(crashed), "label.json");
+  ASSERT_TRUE(crash.ok()) << crash.status().message();
+  EXPECT_EQ(crash.value().outcome.status, "crashed");
+  EXPECT_EQ(crash.value().outcome.signal, crashed.outcome.signal);
+  EXPECT_EQ(crash.value().outcome.signal_name, "SIGSEGV");
+  EXPECT_EQ(crash.value().outcome.log_tail, crashed.outcome.log_tail);
+  EXPECT_TRUE(crash.value().measurements.empty());
+}
+
+TEST(ResultJson, ErrorsNameTheLabel) {
+  const nlohmann::json good = resultToJson(testdata::okResult(testdata::combination("obbtree")));
+  nlohmann::json not_ours = good;
+  not_ours.erase("collidoscope_combination");
+  const Result<CombinationResult> a = resultFromJson(not_ours, "r/a.json");
+  ASSERT_FALSE(a.ok());
+  EXPECT_EQ(a.status().message().rfind("r/a.json: ", 0), 0u) << a.status().message();
+  nlohmann::json no_outcome = good;
+  no_outcome.erase("outcome");
+  const Result<CombinationResult> b = resultFromJson(no_outcome, "r/b.json");
+  ASSERT_FALSE(b.ok());
+  EXPECT_EQ(b.status().message().rfind("r/b.json: ", 0), 0u) << b.status().message();
+  nlohmann::json bad_measurement = good;
+  bad_measurement["measurements"][0].erase("frames");
+  const Result<CombinationResult> c = resultFromJson(bad_measurement, "r/c.json");
+  ASSERT_FALSE(c.ok());
+  EXPECT_EQ(c.status().message().rfind("r/c.json: ", 0), 0u) << c.status().message();
+  nlohmann::json bad_combination = good;
+  bad_combination["combination"]["needs"] = "some";
+  EXPECT_FALSE(resultFromJson(bad_combination, "r/d.json").ok());
+}
+
+TEST(WriteFileAtomically, ReplacesTheFileAndLeavesNoPartialFile) {
+  const std::string dir = test::makeTempDirectory("atomic");
+  const std::string path = dir + "/out.json";
+  ASSERT_TRUE(writeFileAtomically(path, "first").ok());
+  EXPECT_EQ(readText(path), "first");
+  ASSERT_TRUE(writeFileAtomically(path, "second, longer").ok());
+  EXPECT_EQ(readText(path), "second, longer");
+  ASSERT_TRUE(writeFileAtomically(path, "").ok());
+  EXPECT_EQ(readText(path), "");
+  EXPECT_EQ(filesIn(dir), (std::vector<std::string>{"out.json"}));
+  EXPECT_FALSE(fs::exists(path + ".partial"));
+}
+
+TEST(WriteFileAtomically, FailsWithTheFileNamedWhenTheFolderIsMissing) {
+  const std::string dir = test::makeTempDirectory("atomic_missing");
+  const std::string path = dir + "/no/such/folder/out.json";
+  const Status s = writeFileAtomically(path, "text");
+  ASSERT_FALSE(s.ok());
+  EXPECT_NE(s.message().find(path), std::string::npos) << s.message();
+  EXPECT_TRUE(filesIn(dir).empty());
+}
+
+TEST(ResultStore, WritesHasAndReadsBackInPlanOrder) {
+  const std::string dir = test::makeTempDirectory("store") + "/study";
+  const ResultStore store(dir);
+  ASSERT_TRUE(store.prepare().ok());
+  for (const char* sub : {"results", "logs", "scratch"})
+    EXPECT_TRUE(fs::is_directory(dir + "/" + sub)) << sub;
+  EXPECT_EQ(store.resultPath("x~1"), dir + "/results/x~1.json");
+  EXPECT_EQ(store.logPath("x~1"), dir + "/logs/x~1.log");
+  EXPECT_EQ(store.scratchPath("x~1"), dir + "/scratch/x~1.json");
+
+  // Ids in reverse alphabetical order, so plan order and file order differ.
+  std::vector<Combination> plan = {testdata::combination("zz"), testdata::combination("mm"),
+                                   testdata::combination("aa")};
+  ASSERT_TRUE(plan[0].id > plan[1].id && plan[1].id > plan[2].id);
+  const Result<std::vector<Combination>> none = store.readPlan();
+  ASSERT_TRUE(none.ok());
+  EXPECT_TRUE(none.value().empty());
+  ASSERT_TRUE(store.writePlan(plan).ok());
+  const Result<std::vector<Combination>> stored_plan = store.readPlan();
+  ASSERT_TRUE(stored_plan.ok()) << stored_plan.status().message();
+  ASSERT_EQ(stored_plan.value().size(), 3u);
+  for (std::size_t i = 0; i < plan.size(); ++i)
+    EXPECT_EQ(stored_plan.value()[i].id, plan[i].id);
+
+  EXPECT_FALSE(store.has(plan[0].id));
+  ASSERT_TRUE(store.write(testdata::okResult(plan[2])).ok());
+  ASSERT_TRUE(store.write(testdata::crashedResult(plan[0])).ok());
+  EXPECT_TRUE(store.has(plan[0].id));
+  EXPECT_FALSE(store.has(plan[1].id));
+  EXPECT_TRUE(store.has(plan[2].id));
+  // A result outside the plan (e.g. from an older plan) comes last.
+  const Combination stray = testdata::combination("00");
+  ASSERT_TRUE(store.write(testdata::okResult(stray)).ok());
+  // A half-written file of a killed study is not a result.
+  test::writeFile(store.resultPath(plan[1].id) + ".partial", "{\"collidosc");
+
+  const Result<std::vector<CombinationResult>> all = store.readAll();
+  ASSERT_TRUE(all.ok()) << all.status().message();
+  ASSERT_EQ(all.value().size(), 3u);
+  EXPECT_EQ(all.value()[0].combination.id, plan[0].id);
+  EXPECT_EQ(all.value()[0].outcome.status, "crashed");
+  EXPECT_EQ(all.value()[1].combination.id, plan[2].id);
+  EXPECT_EQ(all.value()[1].outcome.status, "ok");
+  EXPECT_EQ(all.value()[1].measurements.size(), 3u);
+  EXPECT_EQ(all.value()[2].combination.id, stray.id);
+}
+
+TEST(ResultStore, ReadAllWithoutAPlanIsInIdOrder) {
+  const ResultStore store(test::makeTempDirectory("store_noplan"));
+  ASSERT_TRUE(store.prepare().ok());
+  for (const char* backend : {"mm", "zz", "aa"})
+    ASSERT_TRUE(store.write(testdata::okResult(testdata::combination(backend))).ok());
+  const Result<std::vector<CombinationResult>> all = store.readAll();
+  ASSERT_TRUE(all.ok()) << all.status().message();
+  ASSERT_EQ(all.value().size(), 3u);
+  EXPECT_LT(all.value()[0].combination.id, all.value()[1].combination.id);
+  EXPECT_LT(all.value()[1].combination.id, all.value()[2].combination.id);
+}
+
+TEST(ResultStore, EmptyOrMissingFolderHasNothing) {
+  const ResultStore store(test::makeTempDirectory("store_empty") + "/not_made");
+  const Result<std::vector<CombinationResult>> all = store.readAll();
+  ASSERT_TRUE(all.ok());
+  EXPECT_TRUE(all.value().empty());
+  const Result<std::vector<Combination>> plan = store.readPlan();
+  ASSERT_TRUE(plan.ok());
+  EXPECT_TRUE(plan.value().empty());
+  EXPECT_FALSE(store.has("anything"));
+}
+
+TEST(ResultStore, UnreadableFilesAreErrorsNamingTheFile) {
+  const std::string dir = test::makeTempDirectory("store_bad");
+  const ResultStore store(dir);
+  ASSERT_TRUE(store.prepare().ok());
+  ASSERT_TRUE(store.write(testdata::okResult(testdata::combination("obbtree"))).ok());
+  test::writeFile(dir + "/results/broken.json", "{ not json");
+  const Result<std::vector<CombinationResult>> all = store.readAll();
+  ASSERT_FALSE(all.ok());
+  EXPECT_NE(all.status().message().find(dir + "/results/broken.json"), std::string::npos)
+      << all.status().message();
+  test::writeFile(dir + "/results/broken.json", R"({"collidoscope_combination": 2})");
+  const Result<std::vector<CombinationResult>> other = store.readAll();
+  ASSERT_FALSE(other.ok());
+  EXPECT_NE(other.status().message().find("broken.json"), std::string::npos);
+
+  test::writeFile(dir + "/plan.json", R"({"collidoscope_plan": 1, "combinations": [{"id": 1}]})");
+  const Result<std::vector<Combination>> plan = store.readPlan();
+  ASSERT_FALSE(plan.ok());
+  EXPECT_NE(plan.status().message().find(dir + "/plan.json"), std::string::npos)
+      << plan.status().message();
+  test::writeFile(dir + "/plan.json", "[");
+  EXPECT_FALSE(store.readPlan().ok());
+}
+
+TEST(ResultStore, PrepareFailsWithTheFolderNamed) {
+  const std::string dir = test::makeTempDirectory("store_file");
+  test::writeFile(dir + "/taken", "a file where the study folder should go");
+  const Status s = ResultStore(dir + "/taken").prepare();
+  ASSERT_FALSE(s.ok());
+  EXPECT_NE(s.message().find(dir + "/taken"), std::string::npos) << s.message();
+}
+
+}  // namespace
+}  // namespace collido::study

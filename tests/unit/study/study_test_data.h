@@ -1,0 +1,135 @@
+#pragma once
+
+// Hand-made measurements and results for the study's unit tests, with figures simple enough to
+// check by hand.
+#include <csignal>
+#include <string>
+
+#include <collido/runner/runner.h>
+#include <collido/study/plan.h>
+#include <collido/study/result_store.h>
+
+namespace collido::study::testdata {
+
+/// A combination of the scene "tori" on `backend`, with the id the planner gives it.
+inline Combination combination(const std::string& backend, NeedsMode needs = NeedsMode::kDeclared,
+                               double resolution = 1.0) {
+  Sweep sweep;
+  sweep.needs = {needs};
+  sweep.resolutions = {resolution};
+  return planStudy({{"/scenes/tori.json", "tori", true}}, {backend}, sweep).front();
+}
+
+/// An all-pairs measurement of three frames:
+///   frame 0: intersecting, 6 exact pairs, all 6 reported        (agrees)
+///   frame 1: intersecting, 4 exact pairs, reported disjoint     (disagrees, false negative)
+///   frame 2: disjoint, reported disjoint, finest mesh intersects (agrees; coarse error)
+/// Timed calls 10, 20, 40 us: median 20, max 40; recall 6/10, precision 1.
+/// `hooks`: with the optional figures (heap counts, finest truth, work counters).
+inline QueryMeasurement pairsMeasurement(const std::string& backend, bool hooks) {
+  QueryMeasurement m;
+  m.backend = backend;
+  m.scene = "tori";
+  m.query = "all_pairs";
+  m.kind = QueryKind::kAllPairs;
+  m.times_us = {10.0, 20.0, 40.0};
+  const bool oracle[3] = {true, true, false};
+  const bool reported[3] = {true, false, false};
+  const std::size_t exact[3] = {6, 4, 0};
+  const std::size_t given[3] = {6, 0, 0};
+  const bool finest[3] = {true, false, true};
+  for (std::size_t i = 0; i < 3; ++i) {
+    FrameRecord f;
+    f.frame = i;
+    f.oracle_intersecting = oracle[i];
+    f.reported_intersecting = reported[i];
+    f.oracle_pairs = exact[i];
+    f.reported_pairs = given[i];
+    f.matched_pairs = given[i];
+    f.median_us = m.times_us[i];
+    if (hooks) {
+      f.finest_intersecting = finest[i];
+      f.bv_tests = 100 + i;
+      f.primitive_tests = 10 + i;
+    }
+    m.frames.push_back(f);
+  }
+  m.counts_bv_tests = hooks;
+  m.counts_primitive_tests = hooks;
+  m.build_ms = 1.25;
+  m.triangles = 1000;
+  m.memory_bytes = 300000;
+  if (hooks) {
+    m.heap_bytes = 310000;
+    m.heap_peak_bytes = 450000;
+    m.heap_allocations = 37;
+    m.heap_probe = "hooks";
+  } else {
+    m.heap_probe = "none";
+  }
+  summariseMeasurement(m);
+  return m;
+}
+
+/// A boolean measurement of two frames, both right.
+inline QueryMeasurement booleanMeasurement(const std::string& backend) {
+  QueryMeasurement m;
+  m.backend = backend;
+  m.scene = "tori";
+  m.query = "boolean";
+  m.kind = QueryKind::kBoolean;
+  m.times_us = {2.0, 3.0, 2.5, 3.5};
+  for (std::size_t i = 0; i < 2; ++i) {
+    FrameRecord f;
+    f.frame = i;
+    f.oracle_intersecting = i == 0;
+    f.reported_intersecting = i == 0;
+    f.median_us = 2.5 + static_cast<double>(i);
+    m.frames.push_back(f);
+  }
+  m.build_ms = 0.5;
+  m.triangles = 1000;
+  m.memory_bytes = 64000;
+  m.heap_bytes = 64000;
+  m.heap_probe = "mallinfo2";
+  summariseMeasurement(m);
+  return m;
+}
+
+/// A query the backend does not answer.
+inline QueryMeasurement skippedMeasurement(const std::string& backend) {
+  QueryMeasurement m;
+  m.backend = backend;
+  m.scene = "tori";
+  m.query = "all_pairs";
+  m.kind = QueryKind::kAllPairs;
+  m.status = "skipped: " + backend + " does not answer all_pairs queries";
+  summariseMeasurement(m);
+  return m;
+}
+
+/// A worker that finished: an all-pairs, a boolean and a skipped measurement.
+inline CombinationResult okResult(const Combination& c) {
+  CombinationResult r;
+  r.combination = c;
+  r.outcome.wall_s = 0.75;
+  r.outcome.peak_rss_bytes = 48u * 1024u * 1024u;
+  r.measurements = {pairsMeasurement(c.backend, true), booleanMeasurement(c.backend),
+                    skippedMeasurement(c.backend)};
+  r.problems = {"a problem worth keeping"};
+  return r;
+}
+
+/// A worker killed by SIGSEGV.
+inline CombinationResult crashedResult(const Combination& c) {
+  CombinationResult r;
+  r.combination = c;
+  r.outcome.status = "crashed";
+  r.outcome.signal = SIGSEGV;
+  r.outcome.signal_name = "SIGSEGV";
+  r.outcome.wall_s = 0.1;
+  r.outcome.log_tail = "building torus_a\n";
+  return r;
+}
+
+}  // namespace collido::study::testdata

@@ -1,0 +1,172 @@
+// Sweep files: what a valid file gives, and that every error names the file's label, the JSON
+// pointer of the offending value and the problem.
+#include <collido/study/sweep.h>
+
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "support/test_paths.h"
+
+namespace collido::study {
+namespace {
+
+constexpr const char* kLabel = "sweeps/mine.json";
+
+/// The error message of a sweep that must be refused (empty, after a failure, when accepted).
+std::string errorOf(const std::string& text) {
+  const Result<Sweep> sweep = parseSweep(text, kLabel);
+  if (sweep.ok()) {
+    ADD_FAILURE() << "accepted: " << text;
+    return "";
+  }
+  EXPECT_EQ(sweep.status().code(), StatusCode::kInvalidArgument);
+  return sweep.status().message();
+}
+
+/// Asserts the message starts with the label and the pointer, and mentions `problem`.
+void expectError(const std::string& text, const std::string& pointer, const std::string& problem) {
+  SCOPED_TRACE(text);
+  const std::string message = errorOf(text);
+  EXPECT_EQ(message.rfind(std::string(kLabel) + ": " + pointer + ": ", 0), 0u) << message;
+  EXPECT_NE(message.find(problem), std::string::npos) << message;
+}
+
+TEST(Sweep, ValidFileGivesEveryList) {
+  const Result<Sweep> parsed = parseSweep(R"({
+    "comment": "a sweep",
+    "backends": ["fcl:obb",
+                 {"variant": "obbtree", "options": {"max_leaf_triangles": [1, 4],
+                                                    "split": "median",
+                                                    "margin": [0.25, true]}}],
+    "resolutions": [1, 0.5],
+    "needs": ["declared", "every"],
+    "limits": [0, 16],
+    "repetitions": 3,
+    "timeout_s": 2.5})",
+                                          kLabel);
+  ASSERT_TRUE(parsed.ok()) << parsed.status().message();
+  const Sweep& sweep = parsed.value();
+  ASSERT_EQ(sweep.backends.size(), 2u);
+  EXPECT_EQ(sweep.backends[0].variant, "fcl:obb");
+  EXPECT_TRUE(sweep.backends[0].options.empty());
+  EXPECT_EQ(sweep.backends[1].variant, "obbtree");
+  ASSERT_EQ(sweep.backends[1].options.size(), 3u);
+  // Options keep the order the file gives them in (the setting texts follow it).
+  EXPECT_EQ(sweep.backends[1].options[0].first, "max_leaf_triangles");
+  EXPECT_EQ(sweep.backends[1].options[0].second, (std::vector<std::string>{"1", "4"}));
+  EXPECT_EQ(sweep.backends[1].options[1].first, "split");
+  EXPECT_EQ(sweep.backends[1].options[1].second, (std::vector<std::string>{"median"}));
+  EXPECT_EQ(sweep.backends[1].options[2].first, "margin");
+  EXPECT_EQ(sweep.backends[1].options[2].second, (std::vector<std::string>{"0.25", "true"}));
+  EXPECT_EQ(sweep.resolutions, (std::vector<double>{1.0, 0.5}));
+  EXPECT_EQ(sweep.needs, (std::vector<NeedsMode>{NeedsMode::kDeclared, NeedsMode::kEvery}));
+  EXPECT_EQ(sweep.limits, (std::vector<std::uint64_t>{0, 16}));
+  EXPECT_EQ(sweep.repetitions, 3);
+  EXPECT_EQ(sweep.timeout_s, 2.5);
+  EXPECT_EQ(sweep.backends[1].settings(),
+            (std::vector<std::string>{"obbtree[max_leaf_triangles=1;split=median;margin=0.25]",
+                                      "obbtree[max_leaf_triangles=1;split=median;margin=true]",
+                                      "obbtree[max_leaf_triangles=4;split=median;margin=0.25]",
+                                      "obbtree[max_leaf_triangles=4;split=median;margin=true]"}));
+}
+
+TEST(Sweep, EmptyObjectKeepsTheDefaults) {
+  const Result<Sweep> parsed = parseSweep("{}", kLabel);
+  ASSERT_TRUE(parsed.ok()) << parsed.status().message();
+  EXPECT_TRUE(parsed.value().backends.empty());
+  EXPECT_EQ(parsed.value().resolutions, (std::vector<double>{1.0}));
+  EXPECT_EQ(parsed.value().needs, (std::vector<NeedsMode>{NeedsMode::kDeclared}));
+  EXPECT_EQ(parsed.value().limits, (std::vector<std::uint64_t>{0}));
+  EXPECT_FALSE(parsed.value().repetitions.has_value());
+  EXPECT_FALSE(parsed.value().timeout_s.has_value());
+}
+
+TEST(Sweep, OptionNumbersKeepTheirShortestForm) {
+  const Result<Sweep> parsed = parseSweep(
+      R"({"backends": [{"variant": "x", "options": {"a": [0.1, 2, -3, 1e-3, 2.5]}}]})", kLabel);
+  ASSERT_TRUE(parsed.ok()) << parsed.status().message();
+  EXPECT_EQ(parsed.value().backends[0].options[0].second,
+            (std::vector<std::string>{"0.1", "2", "-3", "0.001", "2.5"}));
+}
+
+TEST(Sweep, ErrorsNameLabelPointerAndProblem) {
+  expectError("[1]", "/", "expected an object");
+  expectError(R"({"backend": []})", "/", "unknown key 'backend'");
+  expectError(R"({"backends": []})", "/backends", "at least one entry");
+  expectError(R"({"backends": "obbtree"})", "/backends", "expected an array");
+  expectError(R"({"backends": [3]})", "/backends/0", "expected an object");
+  expectError(R"({"backends": ["obbtree", {"options": {}}]})", "/backends/1", "missing 'variant'");
+  expectError(R"({"backends": [{"variant": ""}]})", "/backends/0/variant", "must not be empty");
+  expectError(R"({"backends": [{"variant": "x", "opts": {}}]})", "/backends/0",
+              "unknown key 'opts'");
+  expectError(R"({"backends": [{"variant": "x", "options": [1]}]})", "/backends/0/options",
+              "expected an object");
+  expectError(R"({"backends": ["a", {"variant": "x", "options": {"margin": []}}]})",
+              "/backends/1/options/margin", "at least one entry");
+  expectError(R"({"backends": ["a", {"variant": "x", "options": {"margin": {"v": 1}}}]})",
+              "/backends/1/options/margin", "expected a number, string or boolean");
+  expectError(R"({"backends": [{"variant": "x", "options": {"margin": [1, null]}}]})",
+              "/backends/0/options/margin/1", "expected a number, string or boolean");
+  expectError(R"({"resolutions": []})", "/resolutions", "at least one entry");
+  expectError(R"({"resolutions": [1, 0]})", "/resolutions/1", "positive number");
+  expectError(R"({"resolutions": [-0.5]})", "/resolutions/0", "positive number");
+  expectError(R"({"resolutions": ["1"]})", "/resolutions/0", "positive number");
+  expectError(R"({"needs": []})", "/needs", "at least one entry");
+  expectError(R"({"needs": ["declared", "all"]})", "/needs/1", R"("declared" or "every")");
+  expectError(R"({"needs": [1]})", "/needs/0", R"("declared" or "every")");
+  expectError(R"({"limits": []})", "/limits", "at least one entry");
+  expectError(R"({"limits": [0, -1]})", "/limits/1", "whole number >= 0");
+  expectError(R"({"limits": [2.5]})", "/limits/0", "whole number >= 0");
+  expectError(R"({"limits": ["8"]})", "/limits/0", "whole number >= 0");
+  expectError(R"({"repetitions": 0})", "/repetitions", "from 1 to 1000000");
+  expectError(R"({"repetitions": 2.5})", "/repetitions", "from 1 to 1000000");
+  expectError(R"({"repetitions": 1000001})", "/repetitions", "from 1 to 1000000");
+  expectError(R"({"timeout_s": 0})", "/timeout_s", "positive number of seconds");
+  expectError(R"({"timeout_s": -1})", "/timeout_s", "positive number of seconds");
+  expectError(R"({"timeout_s": "60"})", "/timeout_s", "positive number of seconds");
+}
+
+TEST(Sweep, InvalidJsonNamesTheLabel) {
+  const std::string message = errorOf(R"({"backends": [)");
+  EXPECT_EQ(message.rfind(std::string(kLabel) + ": not valid JSON", 0), 0u) << message;
+}
+
+TEST(Sweep, LoadSweepNamesTheFile) {
+  const std::string dir = test::makeTempDirectory("sweep");
+  const std::string path = dir + "/sweep.json";
+  test::writeFile(path, R"({"limits": [-4]})");
+  const Result<Sweep> bad = loadSweep(path);
+  ASSERT_FALSE(bad.ok());
+  EXPECT_EQ(bad.status().message().rfind(path + ": /limits/0: ", 0), 0u) << bad.status().message();
+  test::writeFile(path, R"({"limits": [4]})");
+  const Result<Sweep> good = loadSweep(path);
+  ASSERT_TRUE(good.ok()) << good.status().message();
+  EXPECT_EQ(good.value().limits, (std::vector<std::uint64_t>{4}));
+  const Result<Sweep> missing = loadSweep(dir + "/none.json");
+  ASSERT_FALSE(missing.ok());
+  EXPECT_NE(missing.status().message().find(dir + "/none.json"), std::string::npos);
+}
+
+TEST(SweepBackend, SettingsAreTheCartesianProductInOptionOrder) {
+  EXPECT_EQ((SweepBackend{"obbtree", {}}.settings()), (std::vector<std::string>{"obbtree"}));
+  const SweepBackend backend{"obbtree", {{"a", {"1", "2"}}, {"b", {"x", "y", "z"}}}};
+  EXPECT_EQ(backend.settings(),
+            (std::vector<std::string>{"obbtree[a=1;b=x]", "obbtree[a=1;b=y]", "obbtree[a=1;b=z]",
+                                      "obbtree[a=2;b=x]", "obbtree[a=2;b=y]", "obbtree[a=2;b=z]"}));
+  const SweepBackend reversed{"fcl:obb", {{"b", {"x"}}, {"a", {"1"}}}};
+  EXPECT_EQ(reversed.settings(), (std::vector<std::string>{"fcl:obb[b=x;a=1]"}));
+}
+
+TEST(NeedsMode, NamesRoundTrip) {
+  for (const NeedsMode mode : {NeedsMode::kDeclared, NeedsMode::kEvery})
+    EXPECT_EQ(parseNeedsMode(needsModeName(mode)), mode);
+  EXPECT_STREQ(needsModeName(NeedsMode::kDeclared), "declared");
+  EXPECT_STREQ(needsModeName(NeedsMode::kEvery), "every");
+  EXPECT_FALSE(parseNeedsMode("Every").has_value());
+  EXPECT_FALSE(parseNeedsMode("").has_value());
+}
+
+}  // namespace
+}  // namespace collido::study

@@ -1,0 +1,193 @@
+// Worker processes, with small shell scripts standing in for the worker: how each ending is
+// reported, progress lines, time limits, stop requests and the log tail.
+#include <collido/study/worker_process.h>
+
+#include <signal.h>
+
+#include <atomic>
+#include <chrono>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <utility>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "support/test_paths.h"
+
+namespace collido::study {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+/// A launch of `/bin/sh -c script` logging into a fresh folder.
+WorkerLaunch shell(const std::string& script, const std::string& hint) {
+  WorkerLaunch launch;
+  launch.executable = "/bin/sh";
+  launch.arguments = {"-c", script};
+  launch.log_path = test::makeTempDirectory(hint) + "/worker.log";
+  return launch;
+}
+
+std::string readText(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+/// Whether `pid` is gone or a zombie waiting for a parent that is not us.
+bool processEnded(pid_t pid) {
+  std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
+  if (!stat) return true;
+  std::string line;
+  std::getline(stat, line);
+  const std::size_t close = line.rfind(')');
+  return close != std::string::npos && close + 2 < line.size() && line[close + 2] == 'Z';
+}
+
+TEST(RunWorkerProcess, CleanExitIsOk) {
+  WorkerLaunch launch = shell("echo 'to stderr' >&2; exit 0", "worker_ok");
+  const WorkerOutcome outcome = runWorkerProcess(launch);
+  EXPECT_EQ(outcome.status, "ok");
+  EXPECT_TRUE(outcome.ok());
+  EXPECT_EQ(outcome.exit_code, 0);
+  EXPECT_EQ(outcome.signal, 0);
+  EXPECT_EQ(outcome.signal_name, "");
+  EXPECT_EQ(outcome.log_tail, "");  // only failures carry the log
+  EXPECT_EQ(readText(launch.log_path), "to stderr\n");
+  EXPECT_GT(outcome.wall_s, 0.0);
+  EXPECT_LT(outcome.wall_s, 10.0);
+  EXPECT_GT(outcome.peak_rss_bytes, 0u);
+}
+
+TEST(RunWorkerProcess, NonZeroExitIsFailedWithItsCodeAndLog) {
+  const WorkerOutcome outcome =
+      runWorkerProcess(shell("echo 'error: the scene is bad' >&2; exit 3", "worker_exit"));
+  EXPECT_EQ(outcome.status, "failed");
+  EXPECT_FALSE(outcome.ok());
+  EXPECT_EQ(outcome.exit_code, 3);
+  EXPECT_EQ(outcome.signal, 0);
+  EXPECT_EQ(outcome.log_tail, "error: the scene is bad\n");
+}
+
+TEST(RunWorkerProcess, SignalDeathIsCrashedWithTheSignalNamed) {
+  for (const auto& [name, number] : std::vector<std::pair<std::string, int>>{
+           {"SEGV", SIGSEGV}, {"ABRT", SIGABRT}, {"BUS", SIGBUS}, {"FPE", SIGFPE}}) {
+    SCOPED_TRACE(name);
+    const WorkerOutcome outcome = runWorkerProcess(
+        shell("echo 'building torus_a' >&2; kill -" + name + " $$", "worker_signal"));
+    EXPECT_EQ(outcome.status, "crashed");
+    EXPECT_EQ(outcome.signal, number);
+    EXPECT_EQ(outcome.signal_name, "SIG" + name);
+    EXPECT_EQ(outcome.exit_code, 0);
+    EXPECT_EQ(outcome.log_tail, "building torus_a\n");
+  }
+}
+
+TEST(RunWorkerProcess, TimeoutKillsTheWorkerAndEverythingItStarted) {
+  const std::string dir = test::makeTempDirectory("worker_timeout");
+  WorkerLaunch launch;
+  launch.executable = "/bin/sh";
+  // A grandchild in the background, as an engine's helper process would be.
+  launch.arguments = {"-c", "sleep 30 & echo $! > " + dir + "/child.pid; sleep 30"};
+  launch.log_path = dir + "/worker.log";
+  launch.timeout_s = 0.5;
+  std::size_t ticks = 0;
+  launch.on_tick = [&ticks] { ++ticks; };
+  const Clock::time_point start = Clock::now();
+  const WorkerOutcome outcome = runWorkerProcess(launch);
+  const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
+  EXPECT_EQ(outcome.status, "timeout");
+  EXPECT_EQ(outcome.signal, SIGKILL);
+  EXPECT_GE(outcome.wall_s, 0.5);
+  EXPECT_LT(elapsed, 5.0);
+  EXPECT_GE(ticks, 1u);
+  std::ifstream pid_file(dir + "/child.pid");
+  pid_t child = 0;
+  ASSERT_TRUE(pid_file >> child) << "the script wrote no pid";
+  // The kill reached the whole process group; give the kernel a moment to finish it.
+  bool ended = false;
+  for (int i = 0; i < 50 && !ended; ++i) {
+    ended = processEnded(child);
+    if (!ended) std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  EXPECT_TRUE(ended) << "process " << child << " survived the timeout";
+  if (!ended) kill(child, SIGKILL);
+}
+
+TEST(RunWorkerProcess, ProgressLinesReachTheCallback) {
+  // The last sleep keeps the script alive until its output has been read: runWorkerProcess stops
+  // reading once the worker has exited, so lines written just before the exit may go unseen.
+  WorkerLaunch launch = shell(
+      "echo progress 2 5; echo 'not progress'; printf 'progr'; sleep 0.3; printf 'ess 3 5\\n';"
+      "echo progress 5 5; printf 'progress 6 5'; sleep 0.3",
+      "worker_progress");
+  std::vector<std::pair<std::size_t, std::size_t>> seen;
+  launch.on_progress = [&seen](std::size_t done, std::size_t total) {
+    seen.emplace_back(done, total);
+  };
+  const WorkerOutcome outcome = runWorkerProcess(launch);
+  EXPECT_EQ(outcome.status, "ok");
+  // A line split across writes is read whole; an unfinished last line is not a report.
+  EXPECT_EQ(seen, (std::vector<std::pair<std::size_t, std::size_t>>{{2, 5}, {3, 5}, {5, 5}}));
+}
+
+TEST(RunWorkerProcess, EnvironmentIsAddedToOurs) {
+  WorkerLaunch launch =
+      shell("echo \"$COLLIDO_STUDY_TEST_VALUE:${HOME:+home}\" >&2; exit 1", "worker_env");
+  launch.environment = {"COLLIDO_STUDY_TEST_VALUE=a=b c", "NOT AN ASSIGNMENT"};
+  const WorkerOutcome outcome = runWorkerProcess(launch);
+  EXPECT_EQ(outcome.status, "failed");
+  const bool has_home = std::getenv("HOME") != nullptr && *std::getenv("HOME") != '\0';
+  EXPECT_EQ(outcome.log_tail, std::string("a=b c:") + (has_home ? "home" : "") + "\n");
+}
+
+TEST(RunWorkerProcess, MissingExecutableIsFailed127) {
+  WorkerLaunch launch = shell("", "worker_missing");
+  launch.executable = "/no/such/collido";
+  launch.arguments.clear();
+  const WorkerOutcome outcome = runWorkerProcess(launch);
+  EXPECT_EQ(outcome.status, "failed");
+  EXPECT_EQ(outcome.exit_code, 127);
+  EXPECT_NE(outcome.log_tail.find("cannot start /no/such/collido"), std::string::npos)
+      << outcome.log_tail;
+}
+
+TEST(RunWorkerProcess, StopRequestKillsTheWorkerAsInterrupted) {
+  WorkerLaunch launch = shell("sleep 30", "worker_stop");
+  std::atomic<bool> stop{false};
+  launch.stop = &stop;
+  const Clock::time_point start = Clock::now();
+  launch.on_tick = [&stop, start] {
+    if (Clock::now() - start > std::chrono::milliseconds(300)) stop.store(true);
+  };
+  const WorkerOutcome outcome = runWorkerProcess(launch);
+  EXPECT_EQ(outcome.status, "interrupted");
+  EXPECT_EQ(outcome.signal, SIGKILL);
+  EXPECT_LT(outcome.wall_s, 5.0);
+}
+
+TEST(RunWorkerProcess, ExitBeforeTheTimeoutIsNotATimeout) {
+  WorkerLaunch launch = shell("sleep 0.2; exit 0", "worker_quick");
+  launch.timeout_s = 20.0;
+  const WorkerOutcome outcome = runWorkerProcess(launch);
+  EXPECT_EQ(outcome.status, "ok");
+  EXPECT_GE(outcome.wall_s, 0.2);
+  EXPECT_LT(outcome.wall_s, 10.0);
+}
+
+TEST(FileTail, LastBytesOrAll) {
+  const std::string path = test::makeTempDirectory("tail") + "/log";
+  test::writeFile(path, "0123456789");
+  EXPECT_EQ(fileTail(path, 4), "6789");
+  EXPECT_EQ(fileTail(path, 10), "0123456789");
+  EXPECT_EQ(fileTail(path, 100), "0123456789");
+  EXPECT_EQ(fileTail(path, 0), "");
+  EXPECT_EQ(fileTail(path + ".missing", 10), "");
+}
+
+}  // namespace
+}  // namespace collido::study
