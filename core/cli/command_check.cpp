@@ -27,8 +27,12 @@ int checkScenes(const std::vector<std::string>& paths) {
                 << (o.poses.size() == 1 ? ", fixed pose" : ", moving") << "\n";
     }
     for (const SceneQuery& q : scene.queries) {
-      std::cout << "  query " << q.name << ": " << queryKindName(q.request.kind) << " "
-                << scene.objects[q.a].name << " vs " << scene.objects[q.b].name;
+      std::cout << "  query " << q.name << ": " << queryKindName(q.request.kind) << " ";
+      if (q.isGroup()) {
+        std::cout << "among " << q.among.size() << " objects, after a shared broad phase";
+      } else {
+        std::cout << scene.objects[q.a].name << " vs " << scene.objects[q.b].name;
+      }
       if (q.request.max_pairs != 0) std::cout << ", at most " << q.request.max_pairs << " pairs";
       std::cout << "\n";
     }

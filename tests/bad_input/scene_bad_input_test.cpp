@@ -160,13 +160,75 @@ TEST(SceneBadInput, UnknownKeyInRotation) {
                                       "allowed: axis, degrees, matrix, quaternion"}));
 }
 
-// "bad.json: /queries/0: unknown key 'max_pair' (allowed: a, b, kind, max_contacts, max_pairs,
-//  name)"
+// "bad.json: /queries/0: unknown key 'max_pair' (allowed: a, among, b, kind, max_contacts,
+//  max_pairs, name)"
 TEST(SceneBadInput, UnknownKeyInQuery) {
   Json scene = validScene();
   scene["queries"][0]["max_pair"] = 3;
-  EXPECT_TRUE(rejected(parse(scene), {"/queries/0:", "unknown key 'max_pair'",
-                                      "allowed: a, b, kind, max_contacts, max_pairs, name"}));
+  EXPECT_TRUE(
+      rejected(parse(scene), {"/queries/0:", "unknown key 'max_pair'",
+                              "allowed: a, among, b, kind, max_contacts, max_pairs, name"}));
+}
+
+// ---- group queries ---------------------------------------------------------------------------
+
+Json groupScene(const Json& among) {
+  Json scene = validScene();
+  scene["queries"] = Json::array({Json{{"among", among}, {"kind", "all_pairs"}}});
+  return scene;
+}
+
+TEST(SceneBadInput, AGroupQueryOverEveryObjectLoads) {
+  Result<Scene> scene = parse(groupScene("*"));
+  ASSERT_TRUE(scene.ok()) << scene.status().toString();
+  const SceneQuery& q = scene.value().queries[0];
+  EXPECT_TRUE(q.isGroup());
+  EXPECT_EQ(q.among, (std::vector<std::size_t>{0, 1}));
+  EXPECT_EQ(q.name, "2 objects all_pairs");
+  EXPECT_TRUE(scene.value().needsOf(1).queries.contains(QueryKind::kAllPairs));
+}
+
+TEST(SceneBadInput, AGroupQueryByNamesLoadsInObjectOrder) {
+  Result<Scene> scene = parse(groupScene(Json::array({"b", "a"})));
+  ASSERT_TRUE(scene.ok()) << scene.status().toString();
+  EXPECT_EQ(scene.value().queries[0].among, (std::vector<std::size_t>{0, 1}));
+}
+
+// "bad.json: /queries/0: a query names either 'a' and 'b' or 'among', not both"
+TEST(SceneBadInput, GroupQueryWithAAndB) {
+  Json scene = groupScene("*");
+  scene["queries"][0]["a"] = "a";
+  EXPECT_TRUE(rejected(parse(scene), {"/queries/0:", "either 'a' and 'b' or 'among'"}));
+}
+
+// "bad.json: /queries/0/among: a group query needs at least two objects"
+TEST(SceneBadInput, GroupOfOneObject) {
+  EXPECT_TRUE(rejected(parse(groupScene(Json::array({"a"}))),
+                       {"/queries/0/among:", "at least two objects"}));
+}
+
+// "bad.json: /queries/0/among/1: no object named 'c'"
+TEST(SceneBadInput, GroupNamesAnUnknownObject) {
+  EXPECT_TRUE(rejected(parse(groupScene(Json::array({"a", "c"}))),
+                       {"/queries/0/among/1:", "no object named 'c'"}));
+}
+
+// "bad.json: /queries/0/among/2: object named twice"
+TEST(SceneBadInput, GroupNamesAnObjectTwice) {
+  EXPECT_TRUE(rejected(parse(groupScene(Json::array({"a", "b", "a"}))),
+                       {"/queries/0/among/2:", "object named twice"}));
+}
+
+// "bad.json: /queries/0/among: 'among' is "*" or an array of object names"
+TEST(SceneBadInput, GroupIsAnUnknownWord) {
+  EXPECT_TRUE(rejected(parse(groupScene("all")), {"/queries/0/among:", "'among' is \"*\""}));
+}
+
+// "bad.json: /queries/0/kind: a group query ('among') asks all_pairs only, not boolean"
+TEST(SceneBadInput, GroupAsksABooleanQuestion) {
+  Json scene = groupScene("*");
+  scene["queries"][0]["kind"] = "boolean";
+  EXPECT_TRUE(rejected(parse(scene), {"/queries/0/kind:", "all_pairs only, not boolean"}));
 }
 
 // ---- wrong types -----------------------------------------------------------------------------

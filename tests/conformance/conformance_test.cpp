@@ -254,7 +254,7 @@ TEST_P(SceneAnswers, MatchTheOracleOrTheRecordedExpectations) {
   const BackendSpec spec{target().library, target().variant, {}};
   RunOptions options;
   options.repetitions = 0;  // answers only; timing belongs to the study
-  const RunReport report = runScenes({*scene().scene}, {spec}, options);
+  const RunReport report = runScene(*scene().scene, spec, options, *scene().oracle);
   ASSERT_TRUE(report.problems.empty()) << report.problems.front();
   int answered = 0;
   std::string skipped;

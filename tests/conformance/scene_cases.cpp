@@ -72,6 +72,7 @@ Status loadSceneCases(const std::string& directory) {
     c.name = scene.value().name;
     c.test_name = gtestName(c.name);
     c.scene = std::make_shared<const Scene>(std::move(scene).value());
+    c.oracle = std::make_shared<OracleCache>(*c.scene);
     sceneCases().push_back(std::move(c));
     return {};
   };

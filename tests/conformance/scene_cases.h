@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include <collido/runner/runner.h>
 #include <collido/scene/scene.h>
 #include <collido/status.h>
 
@@ -14,6 +15,8 @@ struct SceneCase {
   std::string name;       ///< the scene's name, used in expectation keys
   std::string test_name;  ///< as a GoogleTest name
   std::shared_ptr<const Scene> scene;
+  /// The oracle's answers on `scene`, shared by every variant the kit tests (computed once).
+  std::shared_ptr<OracleCache> oracle;
 };
 
 /// The cases, filled by main() before GoogleTest registers the tests.

@@ -27,6 +27,7 @@ Json frameJson(const FrameRecord& f, const QueryMeasurement& m) {
           {"matched_pairs", f.matched_pairs},
           {"invalid_pairs", f.invalid_pairs},
           {"truncated", f.truncated},
+          {"object_pairs", f.object_pairs},
           {"disagrees", f.disagrees(m.kind)},
           {"median_us", f.median_us},
           {"bv_tests", m.counts_bv_tests ? Json(f.bv_tests) : Json()},
@@ -44,6 +45,7 @@ FrameRecord frameFrom(const Json& j) {
   f.matched_pairs = j.at("matched_pairs").get<std::size_t>();
   f.invalid_pairs = j.at("invalid_pairs").get<std::size_t>();
   f.truncated = j.at("truncated").get<bool>();
+  f.object_pairs = optionalFrom<std::size_t>(j, "object_pairs").value_or(1);
   f.median_us = j.at("median_us").get<double>();
   f.bv_tests = optionalFrom<std::uint64_t>(j, "bv_tests").value_or(0);
   f.primitive_tests = optionalFrom<std::uint64_t>(j, "primitive_tests").value_or(0);

@@ -17,6 +17,7 @@
 #include <collido/runner/heap_probe.h>
 #include <collido/runner/runner.h>
 #include <collido/runner/statistics.h>
+#include <collido/scene/broad_phase.h>
 
 namespace collido {
 namespace {
@@ -26,41 +27,6 @@ using Clock = std::chrono::steady_clock;
 double microseconds(Clock::duration d) {
   return std::chrono::duration<double, std::micro>(d).count();
 }
-
-// Oracle answers of one scene, keyed by (object a, object b, frame), computed on first use.
-class OracleAnswers {
- public:
-  // `witness_only`: every answer needs only whether the objects intersect.
-  explicit OracleAnswers(const Scene& scene, bool witness_only = false)
-      : scene_(scene), witness_only_(witness_only) {}
-
-  const OracleAnswer& get(const SceneQuery& query, std::size_t frame) {
-    // Boolean queries need only a witness; a pair that any all-pairs query also names shares the
-    // full answer, which contains the boolean one.
-    const bool needs_all =
-        !witness_only_ &&
-        std::any_of(scene_.queries.begin(), scene_.queries.end(), [&](const SceneQuery& q) {
-          return q.a == query.a && q.b == query.b && q.request.kind != QueryKind::kBoolean;
-        });
-    const auto key = std::make_tuple(query.a, query.b, frame);
-    auto found = answers_.find(key);
-    if (found == answers_.end()) {
-      const SceneObject& a = scene_.objects[query.a];
-      const SceneObject& b = scene_.objects[query.b];
-      found = answers_
-                  .emplace(key, exactIntersectingPairs(
-                                    *a.mesh, a.poseAt(frame), *b.mesh, b.poseAt(frame),
-                                    needs_all ? OracleMode::kAllPairs : OracleMode::kFirstPair))
-                  .first;
-    }
-    return found->second;
-  }
-
- private:
-  const Scene& scene_;
-  bool witness_only_;
-  std::map<std::tuple<std::size_t, std::size_t, std::size_t>, OracleAnswer> answers_;
-};
 
 struct BuiltModel {
   ModelHandle handle = 0;
@@ -111,6 +77,29 @@ std::optional<T> sumIfBoth(const std::optional<T>& a, const std::optional<T>& b)
 
 }  // namespace
 
+const OracleAnswer& OracleCache::get(std::size_t ia, std::size_t ib, std::size_t frame) {
+  // Boolean queries need only a witness; a pair that any all-pairs query also names shares the
+  // full answer, which contains the boolean one.
+  const bool needs_all =
+      !witness_only_ &&
+      std::any_of(scene_.queries.begin(), scene_.queries.end(), [&](const SceneQuery& q) {
+        return q.request.kind != QueryKind::kBoolean &&
+               (q.isGroup() ? q.names(ia) && q.names(ib) : q.a == ia && q.b == ib);
+      });
+  const auto key = std::make_tuple(ia, ib, frame);
+  auto found = answers_.find(key);
+  if (found == answers_.end()) {
+    const SceneObject& a = scene_.objects[ia];
+    const SceneObject& b = scene_.objects[ib];
+    found = answers_
+                .emplace(key, exactIntersectingPairs(
+                                  *a.mesh, a.poseAt(frame), *b.mesh, b.poseAt(frame),
+                                  needs_all ? OracleMode::kAllPairs : OracleMode::kFirstPair))
+                .first;
+  }
+  return found->second;
+}
+
 void summariseMeasurement(QueryMeasurement& m) {
   m.median_us = quantile(m.times_us, 0.5);
   m.p90_us = quantile(m.times_us, 0.9);
@@ -143,12 +132,34 @@ void summariseMeasurement(QueryMeasurement& m) {
 
 namespace {
 
+// Adds one object pair's answer to a frame's record (a group query's frame sums its pairs).
+void addAnswer(const FrameRecord& one, FrameRecord& frame) {
+  frame.oracle_intersecting = frame.oracle_intersecting || one.oracle_intersecting;
+  frame.reported_intersecting = frame.reported_intersecting || one.reported_intersecting;
+  frame.oracle_pairs += one.oracle_pairs;
+  frame.reported_pairs += one.reported_pairs;
+  frame.matched_pairs += one.matched_pairs;
+  frame.invalid_pairs += one.invalid_pairs;
+  frame.truncated = frame.truncated || one.truncated;
+}
+
+// Whether the finest meshes intersect in `frame`: for a group query, whether any pair does
+// (the finest scene's own broad phase picks the candidates).
+bool finestIntersecting(OracleCache& finest, const SceneQuery& query, std::size_t frame) {
+  if (!query.isGroup()) return finest.get(query.a, query.b, frame).intersecting;
+  const BroadPhase broad_phase(finest.scene(), query);
+  for (const auto& [ia, ib] : broad_phase.pairsAt(frame)) {
+    if (finest.get(ia, ib, frame).intersecting) return true;
+  }
+  return false;
+}
+
 void say(const RunOptions& options, const std::string& line) {
   if (options.progress) options.progress(line);
 }
 
-void runSceneOnBackend(const Scene& scene, const BackendSpec& spec, OracleAnswers& oracle,
-                       OracleAnswers* finest_oracle, const RunOptions& options, RunReport& report) {
+void runSceneOnBackend(const Scene& scene, const BackendSpec& spec, OracleCache& oracle,
+                       OracleCache* finest_oracle, const RunOptions& options, RunReport& report) {
   const std::string label = spec.label();
   const auto record_all = [&](const std::string& status) {
     for (const SceneQuery& q : scene.queries) {
@@ -191,58 +202,82 @@ void runSceneOnBackend(const Scene& scene, const BackendSpec& spec, OracleAnswer
     m.scene = scene.name;
     m.query = query.name;
     m.kind = query.request.kind;
-    const SceneObject& a = scene.objects[query.a];
-    const SceneObject& b = scene.objects[query.b];
     if (!caps.queries.contains(query.request.kind)) {
       m.status = std::string("skipped: ") + label + " does not answer " +
                  queryKindName(query.request.kind) + " queries";
       report.measurements.push_back(m);
       continue;
     }
-    const BuiltModel& model_a = models[query.a];
-    const BuiltModel& model_b = models[query.b];
-    if (!model_a.error.empty() || !model_b.error.empty()) {
-      m.status = "failed: build: " + (model_a.error.empty() ? model_b.error : model_a.error);
+    const std::vector<std::size_t> objects = query.objects();
+    const auto failed_build = std::find_if(objects.begin(), objects.end(),
+                                           [&](std::size_t i) { return !models[i].error.empty(); });
+    if (failed_build != objects.end()) {
+      m.status = "failed: build: " + models[*failed_build].error;
       report.measurements.push_back(m);
       continue;
     }
-    m.build_ms = model_a.build_ms + model_b.build_ms;
-    m.triangles = a.mesh->triangleCount() + b.mesh->triangleCount();
-    m.memory_bytes = model_a.memory_bytes + model_b.memory_bytes;
-    m.heap_bytes = sumIfBoth(model_a.heap_bytes, model_b.heap_bytes);
-    m.heap_peak_bytes = sumIfBoth(model_a.heap_peak_bytes, model_b.heap_peak_bytes);
-    m.heap_allocations = sumIfBoth(model_a.heap_allocations, model_b.heap_allocations);
+    std::optional<std::size_t> heap_bytes = 0;
+    std::optional<std::size_t> heap_peak_bytes = 0;
+    std::optional<std::uint64_t> heap_allocations = 0;
+    for (std::size_t index : objects) {
+      const BuiltModel& model = models[index];
+      m.build_ms += model.build_ms;
+      m.triangles += scene.objects[index].mesh->triangleCount();
+      m.memory_bytes += model.memory_bytes;
+      heap_bytes = sumIfBoth(heap_bytes, model.heap_bytes);
+      heap_peak_bytes = sumIfBoth(heap_peak_bytes, model.heap_peak_bytes);
+      heap_allocations = sumIfBoth(heap_allocations, model.heap_allocations);
+    }
+    m.heap_bytes = heap_bytes;
+    m.heap_peak_bytes = heap_peak_bytes;
+    m.heap_allocations = heap_allocations;
     m.heap_probe = heapProbeName();
     say(options, label + ": " + scene.name + " / " + query.name + " (" +
                      std::to_string(scene.frames) + " frames)");
 
+    std::optional<BroadPhase> broad_phase;
+    if (query.isGroup()) broad_phase.emplace(scene, query);
     QueryResult result;
     for (std::size_t frame = 0; frame < scene.frames && m.ok(); ++frame) {
-      const Pose& pose_a = a.poseAt(frame);
-      const Pose& pose_b = b.poseAt(frame);
+      const std::vector<std::pair<std::size_t, std::size_t>> candidates =
+          broad_phase ? broad_phase->pairsAt(frame)
+                      : std::vector<std::pair<std::size_t, std::size_t>>{{query.a, query.b}};
+      const auto ask = [&](std::size_t ia, std::size_t ib) {
+        return backend.query(models[ia].handle, scene.objects[ia].poseAt(frame), models[ib].handle,
+                             scene.objects[ib].poseAt(frame), query.request, result);
+      };
       FrameRecord record;
       record.frame = frame;
-      if (Status s =
-              backend.query(model_a.handle, pose_a, model_b.handle, pose_b, query.request, result);
-          !s.ok()) {
-        m.status = "failed: frame " + std::to_string(frame) + ": " + s.toString();
-        break;
+      record.object_pairs = candidates.size();
+      for (const auto& [ia, ib] : candidates) {
+        if (Status s = ask(ia, ib); !s.ok()) {
+          m.status = "failed: frame " + std::to_string(frame) + ": " + s.toString();
+          break;
+        }
+        const SceneObject& a = scene.objects[ia];
+        const SceneObject& b = scene.objects[ib];
+        FrameRecord one;
+        compareWithOracle(*a.mesh, a.poseAt(frame), *b.mesh, b.poseAt(frame), query.request.kind,
+                          result, oracle.get(ia, ib, frame), one);
+        addAnswer(one, record);
+        record.bv_tests += result.counters.bv_tests;
+        record.primitive_tests += result.counters.primitive_tests;
+        m.counts_bv_tests = result.counters.counts_bv_tests;
+        m.counts_primitive_tests = result.counters.counts_primitive_tests;
       }
-      compareWithOracle(*a.mesh, pose_a, *b.mesh, pose_b, query.request.kind, result,
-                        oracle.get(query, frame), record);
+      if (!m.ok()) break;
       if (finest_oracle != nullptr) {
-        record.finest_intersecting = finest_oracle->get(query, frame).intersecting;
+        record.finest_intersecting = finestIntersecting(*finest_oracle, query, frame);
       }
-      record.bv_tests = result.counters.bv_tests;
-      record.primitive_tests = result.counters.primitive_tests;
-      m.counts_bv_tests = result.counters.counts_bv_tests;
-      m.counts_primitive_tests = result.counters.counts_primitive_tests;
 
       std::vector<double> frame_times;
-      for (int rep = 0; rep < options.repetitions; ++rep) {
+      for (int rep = 0; rep < options.repetitions && m.ok(); ++rep) {
         const Clock::time_point start = Clock::now();
-        const Status s =
-            backend.query(model_a.handle, pose_a, model_b.handle, pose_b, query.request, result);
+        Status s;
+        for (const auto& [ia, ib] : candidates) {
+          s = ask(ia, ib);
+          if (!s.ok()) break;
+        }
         const Clock::time_point stop = Clock::now();
         if (!s.ok()) {
           m.status = "failed: frame " + std::to_string(frame) + ": " + s.toString();
@@ -317,7 +352,7 @@ RunReport runScenes(const std::vector<Scene>& scenes, const std::vector<BackendS
                     const RunOptions& options) {
   RunReport report;
   for (const Scene& scene : scenes) {
-    OracleAnswers oracle(scene);
+    OracleCache oracle(scene);
     for (const BackendSpec& spec : backends) {
       runSceneOnBackend(scene, spec, oracle, nullptr, options, report);
     }
@@ -326,10 +361,17 @@ RunReport runScenes(const std::vector<Scene>& scenes, const std::vector<BackendS
 }
 
 RunReport runScene(const Scene& scene, const BackendSpec& backend, const RunOptions& options,
+                   OracleCache& oracle) {
+  RunReport report;
+  runSceneOnBackend(scene, backend, oracle, nullptr, options, report);
+  return report;
+}
+
+RunReport runScene(const Scene& scene, const BackendSpec& backend, const RunOptions& options,
                    const Scene* finest) {
   RunReport report;
-  OracleAnswers oracle(scene);
-  std::optional<OracleAnswers> finest_oracle;
+  OracleCache oracle(scene);
+  std::optional<OracleCache> finest_oracle;
   if (finest != nullptr) finest_oracle.emplace(*finest, /*witness_only=*/true);
   runSceneOnBackend(scene, backend, oracle, finest_oracle ? &*finest_oracle : nullptr, options,
                     report);

@@ -382,6 +382,30 @@ QueryKind readQueryKind(const Reader& r, const Node& node) {
   r.fail(node, "unknown query kind '" + text + "' (known: boolean, all_pairs, contacts)");
 }
 
+// "among": "*" (every object) or an array of at least two different object names.
+template <typename IndexOf>
+std::vector<std::size_t> readGroup(const Reader& r, const Node& node, const IndexOf& index_of,
+                                   std::size_t object_count) {
+  std::vector<std::size_t> group;
+  if (node.value.is_string()) {
+    if (r.string(node) != "*") r.fail(node, "'among' is \"*\" or an array of object names");
+    for (std::size_t i = 0; i < object_count; ++i)
+      group.push_back(i);
+  } else {
+    r.expectArray(node);
+    for (std::size_t i = 0; i < node.value.size(); ++i) {
+      const std::size_t index = index_of(node.at(i));
+      if (std::find(group.begin(), group.end(), index) != group.end()) {
+        r.fail(node.at(i), "object named twice");
+      }
+      group.push_back(index);
+    }
+    std::sort(group.begin(), group.end());
+  }
+  if (group.size() < 2) r.fail(node, "a group query needs at least two objects");
+  return group;
+}
+
 // --- the document ----------------------------------------------------------------------------
 
 // nlohmann::json keeps the last of two equal keys in an object; a scene with "frames" twice must
@@ -561,26 +585,45 @@ Scene readScene(const Reader& r, const Json& document, const std::string& base_d
   std::set<std::string> query_names;
   for (std::size_t i = 0; i < queries.value.size(); ++i) {
     const Node node = queries.at(i);
-    r.expectObject(node, {"name", "a", "b", "kind", "max_pairs", "max_contacts"});
+    r.expectObject(node, {"name", "a", "b", "among", "kind", "max_pairs", "max_contacts"});
     SceneQuery query;
-    for (const char* side : {"a", "b"}) {
-      if (!node.has(side)) r.fail(node, std::string("missing '") + side + "'");
-      const std::string name = r.string(node.at(side));
+    const auto object_index = [&](const Node& name_node) {
+      const std::string name = r.string(name_node);
       const auto found = index_of.find(name);
-      if (found == index_of.end()) r.fail(node.at(side), "no object named '" + name + "'");
-      (side[0] == 'a' ? query.a : query.b) = found->second;
+      if (found == index_of.end()) r.fail(name_node, "no object named '" + name + "'");
+      return found->second;
+    };
+    if (node.has("among")) {
+      if (node.has("a") || node.has("b")) {
+        r.fail(node, "a query names either 'a' and 'b' or 'among', not both");
+      }
+      query.among = readGroup(r, node.at("among"), object_index, scene.objects.size());
+    } else {
+      for (const char* side : {"a", "b"}) {
+        if (!node.has(side)) r.fail(node, std::string("missing '") + side + "' (or 'among')");
+        (side[0] == 'a' ? query.a : query.b) = object_index(node.at(side));
+      }
+      if (query.a == query.b) r.fail(node, "a query needs two different objects");
     }
-    if (query.a == query.b) r.fail(node, "a query needs two different objects");
     if (!node.has("kind")) r.fail(node, "missing 'kind'");
     query.request.kind = readQueryKind(r, node.at("kind"));
+    if (query.isGroup() && query.request.kind != QueryKind::kAllPairs) {
+      r.fail(node.at("kind"), "a group query ('among') asks all_pairs only, not " +
+                                  std::string(queryKindName(query.request.kind)));
+    }
     query.request.max_pairs =
         static_cast<std::uint64_t>(r.integer(node, "max_pairs", 0, 0, INT64_MAX));
     query.request.max_contacts =
         static_cast<std::uint64_t>(r.integer(node, "max_contacts", 0, 0, INT64_MAX));
-    query.name = node.has("name")
-                     ? r.string(node.at("name"))
-                     : scene.objects[query.a].name + "-" + scene.objects[query.b].name + " " +
-                           queryKindName(query.request.kind);
+    if (node.has("name")) {
+      query.name = r.string(node.at("name"));
+    } else if (query.isGroup()) {
+      query.name =
+          std::to_string(query.among.size()) + " objects " + queryKindName(query.request.kind);
+    } else {
+      query.name = scene.objects[query.a].name + "-" + scene.objects[query.b].name + " " +
+                   queryKindName(query.request.kind);
+    }
     if (!query_names.insert(query.name).second) {
       r.fail(node, "duplicate query name '" + query.name + "'");
     }
@@ -591,10 +634,20 @@ Scene readScene(const Reader& r, const Json& document, const std::string& base_d
 
 }  // namespace
 
+bool SceneQuery::names(std::size_t object) const {
+  if (isGroup()) return std::binary_search(among.begin(), among.end(), object);
+  return object == a || object == b;
+}
+
+std::vector<std::size_t> SceneQuery::objects() const {
+  if (isGroup()) return among;
+  return {a, b};
+}
+
 BuildNeeds Scene::needsOf(std::size_t object) const {
   BuildNeeds needs;
   for (const SceneQuery& q : queries) {
-    if (q.a == object || q.b == object) needs.queries |= q.request.kind;
+    if (q.names(object)) needs.queries |= q.request.kind;
   }
   return needs;
 }

@@ -76,6 +76,7 @@ std::string recordsJsonLines(const std::vector<CombinationResult>& results) {
             {"matched_pairs", f.matched_pairs},
             {"invalid_pairs", f.invalid_pairs},
             {"truncated", f.truncated},
+            {"object_pairs", f.object_pairs},
             {"disagrees", f.disagrees(m.kind)},
             {"bv_tests", m.counts_bv_tests ? Json(f.bv_tests) : Json()},
             {"primitive_tests", m.counts_primitive_tests ? Json(f.primitive_tests) : Json()}};

@@ -7,6 +7,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include <collido/host/plugin_library.h>
@@ -62,6 +63,9 @@ struct FrameRecord {
   std::optional<bool> finest_intersecting;
   std::uint64_t bv_tests = 0;
   std::uint64_t primitive_tests = 0;
+  /// Object pairs asked: 1 for a two-object query; for a group query, the candidates the shared
+  /// broad phase passed (every count above is summed over them).
+  std::size_t object_pairs = 1;
 
   /// Whether the answer differs from the oracle's in any way this query asks about.
   bool disagrees(QueryKind kind) const;
@@ -98,12 +102,12 @@ struct QueryMeasurement {
   double precision = 1.0;  ///< kAllPairs: matched / reported pairs over all frames (1 if none)
   bool counts_bv_tests = false;
   bool counts_primitive_tests = false;
-  double build_ms = 0.0;                          ///< both objects
-  std::size_t triangles = 0;                      ///< both objects
-  std::size_t memory_bytes = 0;                   ///< both objects, as the backend reports
-  std::optional<std::size_t> heap_bytes;          ///< both objects, measured around build
-  std::optional<std::size_t> heap_peak_bytes;     ///< both objects, most live during build (hooks)
-  std::optional<std::uint64_t> heap_allocations;  ///< both objects, calls during build (hooks)
+  double build_ms = 0.0;                          ///< objects queried
+  std::size_t triangles = 0;                      ///< objects queried
+  std::size_t memory_bytes = 0;                   ///< objects queried, as the backend reports
+  std::optional<std::size_t> heap_bytes;          ///< objects queried, measured around build
+  std::optional<std::size_t> heap_peak_bytes;     ///< objects queried, most live in build (hooks)
+  std::optional<std::uint64_t> heap_allocations;  ///< objects queried, calls in build (hooks)
   std::string heap_probe;                         ///< which probe measured: heapProbeName()
 
   bool ok() const { return status == "ok"; }
@@ -113,6 +117,26 @@ struct QueryMeasurement {
 struct RunReport {
   std::vector<QueryMeasurement> measurements;
   std::vector<std::string> problems;  ///< backends that could not be created, etc.
+};
+
+/// Exact oracle answers of one scene, computed on first use and kept, keyed by (object a,
+/// object b, frame). One cache serves every backend run on the scene, so the oracle runs once.
+/// The scene must outlive it.
+class OracleCache {
+ public:
+  /// `witness_only`: every answer needs only whether the objects intersect.
+  explicit OracleCache(const Scene& scene, bool witness_only = false)
+      : scene_(scene), witness_only_(witness_only) {}
+
+  /// The answer for objects `a` and `b` in `frame`: all pairs when some all-pairs query of the
+  /// scene asks about both, else a witness.
+  const OracleAnswer& get(std::size_t a, std::size_t b, std::size_t frame);
+  const Scene& scene() const { return scene_; }
+
+ private:
+  const Scene& scene_;
+  bool witness_only_;
+  std::map<std::tuple<std::size_t, std::size_t, std::size_t>, OracleAnswer> answers_;
 };
 
 /// Runs every query of every scene on every backend, checks each answer against the exact
@@ -127,6 +151,11 @@ RunReport runScenes(const std::vector<Scene>& scenes, const std::vector<BackendS
 /// intersect, so the error of a coarse mesh is measured against the shape it stands for.
 RunReport runScene(const Scene& scene, const BackendSpec& backend, const RunOptions& options,
                    const Scene* finest = nullptr);
+
+/// As runScene, with the oracle's answers taken from (and added to) `oracle`, a cache of this
+/// scene's: runs of several backends on one scene then compute each answer once.
+RunReport runScene(const Scene& scene, const BackendSpec& backend, const RunOptions& options,
+                   OracleCache& oracle);
 
 /// Summary statistics of a measurement from its frames and timed calls.
 void summariseMeasurement(QueryMeasurement& measurement);

@@ -27,12 +27,22 @@ struct SceneObject {
   }
 };
 
-/// One question asked of two objects in every frame.
+/// One question asked in every frame: of two objects, or of a group of objects after a shared
+/// broad phase (a pile: every object pair whose bounds may touch gets the question).
 struct SceneQuery {
   std::string name;   ///< unique in the scene
-  std::size_t a = 0;  ///< index into Scene::objects
-  std::size_t b = 0;  ///< index into Scene::objects
+  std::size_t a = 0;  ///< index into Scene::objects (a two-object query)
+  std::size_t b = 0;  ///< index into Scene::objects (a two-object query)
+  /// Non-empty: a group query over these objects (at least two, ascending); `a` and `b` are
+  /// then unused. Only all-pairs questions are asked of groups.
+  std::vector<std::size_t> among;
   QueryRequest request;
+
+  bool isGroup() const { return !among.empty(); }
+  /// Whether the query asks anything of `object`.
+  bool names(std::size_t object) const;
+  /// The objects it asks about: `among`, or {a, b}.
+  std::vector<std::size_t> objects() const;
 };
 
 /// A loaded, fully validated scene: nothing in it can fail later for a reason the file holds.
