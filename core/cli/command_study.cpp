@@ -130,7 +130,8 @@ CombinationResult runInWorker(const Combination& c, const ResultStore& store,
   launch.arguments = pluginArguments(plugins);
   for (const std::string& a :
        {std::string("worker"), std::string("--request"), request_path, std::string("--out"),
-        answer_path, std::string("--repetitions"), std::to_string(repetitions)}) {
+        answer_path, std::string("--repetitions"), std::to_string(repetitions),
+        std::string("--oracle-cache"), store.directory() + "/oracle"}) {
     launch.arguments.push_back(a);
   }
   launch.environment = workerEnvironment();
@@ -338,7 +339,7 @@ int runStudy(const StudyArguments& args, const PluginOptions& plugins) {
 }
 
 int runWorkerMode(const std::string& request_path, const std::string& out_path, int repetitions,
-                  const PluginOptions& plugins) {
+                  const std::string& oracle_directory, const PluginOptions& plugins) {
   std::ifstream in(request_path, std::ios::binary);
   if (!in) {
     std::cerr << "error: " << request_path << ": cannot be read\n";
@@ -361,6 +362,7 @@ int runWorkerMode(const std::string& request_path, const std::string& out_path, 
   request.plugin_paths = plugins.paths;
   request.default_plugins = !plugins.no_defaults;
   request.repetitions = repetitions;
+  request.oracle_directory = oracle_directory;
   request.progress = [](std::size_t done, std::size_t total) {
     std::cout << "progress " << done << " " << total << std::endl;
   };
@@ -475,11 +477,13 @@ void addStudyCommands(CLI::App& app, const PluginOptions& plugins, int& exit_cod
   auto request = std::make_shared<std::string>();
   auto out = std::make_shared<std::string>();
   auto repetitions = std::make_shared<int>(5);
+  auto oracle_directory = std::make_shared<std::string>();
   worker->add_option("--request", *request)->required();
   worker->add_option("--out", *out)->required();
   worker->add_option("--repetitions", *repetitions);
-  worker->callback([request, out, repetitions, &plugins, &exit_code] {
-    exit_code = runWorkerMode(*request, *out, *repetitions, plugins);
+  worker->add_option("--oracle-cache", *oracle_directory);
+  worker->callback([request, out, repetitions, oracle_directory, &plugins, &exit_code] {
+    exit_code = runWorkerMode(*request, *out, *repetitions, *oracle_directory, plugins);
   });
 
   CLI::App* merge = app.add_subcommand(

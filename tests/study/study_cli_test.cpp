@@ -262,6 +262,13 @@ TEST(StudyCli, EnvRobOnObbtreeAgreesWithTheOracle) {
   const nlohmann::json summary = nlohmann::json::parse(readText(out + "/summary.json"));
   ASSERT_EQ(summary.at("benchmarks").size(), 2u);
   EXPECT_EQ(summary.at("benchmarks")[0].at("name"), "obbtree/env_rob/all_pairs");
+
+  // The oracle's answers were kept for the next combination on this scene: one file.
+  std::size_t stored = 0;
+  for (const auto& entry : fs::directory_iterator(out + "/oracle")) {
+    stored += entry.path().extension() == ".json" ? 1 : 0;
+  }
+  EXPECT_EQ(stored, 1u);
 }
 
 // Failures that are not signals: an exit code, an exception (caught by the adapter: the worker

@@ -77,29 +77,6 @@ std::optional<T> sumIfBoth(const std::optional<T>& a, const std::optional<T>& b)
 
 }  // namespace
 
-const OracleAnswer& OracleCache::get(std::size_t ia, std::size_t ib, std::size_t frame) {
-  // Boolean queries need only a witness; a pair that any all-pairs query also names shares the
-  // full answer, which contains the boolean one.
-  const bool needs_all =
-      !witness_only_ &&
-      std::any_of(scene_.queries.begin(), scene_.queries.end(), [&](const SceneQuery& q) {
-        return q.request.kind != QueryKind::kBoolean &&
-               (q.isGroup() ? q.names(ia) && q.names(ib) : q.a == ia && q.b == ib);
-      });
-  const auto key = std::make_tuple(ia, ib, frame);
-  auto found = answers_.find(key);
-  if (found == answers_.end()) {
-    const SceneObject& a = scene_.objects[ia];
-    const SceneObject& b = scene_.objects[ib];
-    found = answers_
-                .emplace(key, exactIntersectingPairs(
-                                  *a.mesh, a.poseAt(frame), *b.mesh, b.poseAt(frame),
-                                  needs_all ? OracleMode::kAllPairs : OracleMode::kFirstPair))
-                .first;
-  }
-  return found->second;
-}
-
 void summariseMeasurement(QueryMeasurement& m) {
   m.median_us = quantile(m.times_us, 0.5);
   m.p90_us = quantile(m.times_us, 0.9);
@@ -361,9 +338,9 @@ RunReport runScenes(const std::vector<Scene>& scenes, const std::vector<BackendS
 }
 
 RunReport runScene(const Scene& scene, const BackendSpec& backend, const RunOptions& options,
-                   OracleCache& oracle) {
+                   OracleCache& oracle, OracleCache* finest_oracle) {
   RunReport report;
-  runSceneOnBackend(scene, backend, oracle, nullptr, options, report);
+  runSceneOnBackend(scene, backend, oracle, finest_oracle, options, report);
   return report;
 }
 

@@ -1,7 +1,11 @@
 #include <collido/study/worker.h>
 
+#include <iostream>
+#include <optional>
+
 #include <collido/runner/runner.h>
 #include <collido/scene/scene.h>
+#include <collido/study/oracle_store.h>
 
 namespace collido::study {
 
@@ -36,7 +40,35 @@ Result<CombinationResult> runCombination(const WorkerRequest& request) {
   options.repetitions = request.repetitions;
   options.build_every_need = c.needs == NeedsMode::kEvery;
   options.frame_progress = request.progress;
-  RunReport report = runScene(scene, specs.value().front(), options, finest ? &*finest : nullptr);
+  // The exact answers of this scene may be stored already by an earlier combination.
+  OracleCache oracle(scene);
+  std::optional<OracleCache> finest_oracle;
+  if (finest) finest_oracle.emplace(*finest, /*witness_only=*/true);
+  const auto stored = [&](OracleCache& cache) {
+    if (request.oracle_directory.empty()) return std::string();
+    std::string path = oracleStorePath(request.oracle_directory, cache);
+    if (Status s = loadOracleAnswers(path, cache); !s.ok()) {
+      std::cerr << "note: " << s.message() << "; computing the answers afresh\n";
+    }
+    return path;
+  };
+  const std::string oracle_path = stored(oracle);
+  const std::size_t oracle_known = oracle.answers().size();
+  const std::string finest_path = finest_oracle ? stored(*finest_oracle) : std::string();
+  const std::size_t finest_known = finest_oracle ? finest_oracle->answers().size() : 0;
+
+  RunReport report = runScene(scene, specs.value().front(), options, oracle,
+                              finest_oracle ? &*finest_oracle : nullptr);
+
+  // Keep what this run added; a failure to store costs time later, never an answer.
+  const auto keep = [](const std::string& path, const OracleCache& cache, std::size_t known) {
+    if (path.empty() || cache.answers().size() == known) return;
+    if (Status s = saveOracleAnswers(path, cache); !s.ok()) {
+      std::cerr << "note: " << s.message() << "\n";
+    }
+  };
+  keep(oracle_path, oracle, oracle_known);
+  if (finest_oracle) keep(finest_path, *finest_oracle, finest_known);
 
   CombinationResult result;
   result.combination = c;

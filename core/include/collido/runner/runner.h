@@ -120,10 +120,13 @@ struct RunReport {
 };
 
 /// Exact oracle answers of one scene, computed on first use and kept, keyed by (object a,
-/// object b, frame). One cache serves every backend run on the scene, so the oracle runs once.
-/// The scene must outlive it.
+/// object b, frame). One cache serves every backend run on the scene, so the oracle runs once;
+/// a study also keeps it on disk between its worker processes (study/oracle_store.h). The scene
+/// must outlive it.
 class OracleCache {
  public:
+  using Key = std::tuple<std::size_t, std::size_t, std::size_t>;  ///< object a, object b, frame
+
   /// `witness_only`: every answer needs only whether the objects intersect.
   explicit OracleCache(const Scene& scene, bool witness_only = false)
       : scene_(scene), witness_only_(witness_only) {}
@@ -132,11 +135,21 @@ class OracleCache {
   /// scene asks about both, else a witness.
   const OracleAnswer& get(std::size_t a, std::size_t b, std::size_t frame);
   const Scene& scene() const { return scene_; }
+  bool witnessOnly() const { return witness_only_; }
+
+  /// Every answer computed or added so far.
+  const std::map<Key, OracleAnswer>& answers() const { return answers_; }
+  /// Adds an answer computed elsewhere for this same scene (see fingerprint()).
+  void add(const Key& key, OracleAnswer answer) { answers_.emplace(key, std::move(answer)); }
+  /// A digest (16 hex digits) of everything the answers depend on: each object's vertices,
+  /// triangles and poses, the frames, the queries' kinds and objects, and witness_only. Two
+  /// caches with equal fingerprints hold interchangeable answers.
+  std::string fingerprint() const;
 
  private:
   const Scene& scene_;
   bool witness_only_;
-  std::map<std::tuple<std::size_t, std::size_t, std::size_t>, OracleAnswer> answers_;
+  std::map<Key, OracleAnswer> answers_;
 };
 
 /// Runs every query of every scene on every backend, checks each answer against the exact
@@ -153,9 +166,10 @@ RunReport runScene(const Scene& scene, const BackendSpec& backend, const RunOpti
                    const Scene* finest = nullptr);
 
 /// As runScene, with the oracle's answers taken from (and added to) `oracle`, a cache of this
-/// scene's: runs of several backends on one scene then compute each answer once.
+/// scene's (and `finest_oracle`, a witness-only cache of the finest scene's, when measuring a
+/// coarse mesh's error): runs of several backends on one scene then compute each answer once.
 RunReport runScene(const Scene& scene, const BackendSpec& backend, const RunOptions& options,
-                   OracleCache& oracle);
+                   OracleCache& oracle, OracleCache* finest_oracle = nullptr);
 
 /// Summary statistics of a measurement from its frames and timed calls.
 void summariseMeasurement(QueryMeasurement& measurement);

@@ -16,6 +16,8 @@ struct WorkerRequest {
   std::vector<std::string> plugin_paths;  ///< --plugin, searched first
   bool default_plugins = true;
   int repetitions = 5;
+  /// Where the oracle's answers are kept between workers (study/oracle_store.h); "": not kept.
+  std::string oracle_directory;
   std::function<void(std::size_t, std::size_t)> progress;  ///< frames done, frames in all
 };
 

@@ -1,0 +1,89 @@
+// The oracle's answers of one scene, computed once and shared; its fingerprint says which
+// scene they belong to, so answers kept on disk are never reused for another.
+#include <algorithm>
+#include <cstdint>
+#include <cstdio>
+#include <type_traits>
+
+#include <collido/runner/runner.h>
+
+namespace collido {
+namespace {
+
+// FNV-1a, 64 bits: a stable digest (the same on every run and platform of one byte order).
+class Digest {
+ public:
+  void bytes(const void* data, std::size_t size) {
+    const auto* p = static_cast<const unsigned char*>(data);
+    for (std::size_t i = 0; i < size; ++i) {
+      hash_ = (hash_ ^ p[i]) * 0x100000001b3ULL;
+    }
+  }
+  template <typename T>
+  void value(const T& v) {
+    static_assert(std::is_trivially_copyable_v<T>);
+    bytes(&v, sizeof v);
+  }
+  std::string hex() const {
+    char text[17];
+    std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(hash_));
+    return text;
+  }
+
+ private:
+  std::uint64_t hash_ = 0xcbf29ce484222325ULL;
+};
+
+}  // namespace
+
+const OracleAnswer& OracleCache::get(std::size_t ia, std::size_t ib, std::size_t frame) {
+  // Boolean queries need only a witness; a pair that any all-pairs query also names shares the
+  // full answer, which contains the boolean one.
+  const bool needs_all =
+      !witness_only_ &&
+      std::any_of(scene_.queries.begin(), scene_.queries.end(), [&](const SceneQuery& q) {
+        return q.request.kind != QueryKind::kBoolean &&
+               (q.isGroup() ? q.names(ia) && q.names(ib) : q.a == ia && q.b == ib);
+      });
+  const auto key = std::make_tuple(ia, ib, frame);
+  auto found = answers_.find(key);
+  if (found == answers_.end()) {
+    const SceneObject& a = scene_.objects[ia];
+    const SceneObject& b = scene_.objects[ib];
+    found = answers_
+                .emplace(key, exactIntersectingPairs(
+                                  *a.mesh, a.poseAt(frame), *b.mesh, b.poseAt(frame),
+                                  needs_all ? OracleMode::kAllPairs : OracleMode::kFirstPair))
+                .first;
+  }
+  return found->second;
+}
+
+std::string OracleCache::fingerprint() const {
+  Digest d;
+  d.value(witness_only_);
+  d.value(scene_.frames);
+  d.value(scene_.objects.size());
+  for (const SceneObject& o : scene_.objects) {
+    const TriangleMesh& mesh = *o.mesh;
+    d.value(mesh.vertices.cols());
+    d.bytes(mesh.vertices.data(), sizeof(double) * static_cast<std::size_t>(mesh.vertices.size()));
+    d.value(mesh.triangles.cols());
+    d.bytes(mesh.triangles.data(), sizeof(int) * static_cast<std::size_t>(mesh.triangles.size()));
+    d.value(o.poses.size());
+    for (const Pose& pose : o.poses)
+      d.bytes(pose.matrix().data(), sizeof(double) * 16);
+  }
+  d.value(scene_.queries.size());
+  for (const SceneQuery& q : scene_.queries) {
+    d.value(q.request.kind);
+    d.value(q.a);
+    d.value(q.b);
+    d.value(q.among.size());
+    for (std::size_t index : q.among)
+      d.value(index);
+  }
+  return d.hex();
+}
+
+}  // namespace collido

@@ -1,0 +1,102 @@
+// The oracle's answers kept on disk between workers: they come back exactly, only for the
+// identical scene, and a broken file is reported and adds nothing.
+#include <collido/study/oracle_store.h>
+
+#include <gtest/gtest.h>
+
+#include <collido/scene/scene.h>
+
+#include "support/test_paths.h"
+
+namespace collido::study {
+namespace {
+
+// Two overlapping coplanar tori over three jittered frames: intersecting pairs in every frame.
+constexpr const char* kScene = R"({
+  "name": "stored", "frames": 3,
+  "objects": [
+    {"name": "a", "shape": {"generator": "torus", "major_segments": 16, "minor_segments": 8}},
+    {"name": "b", "shape": {"generator": "torus", "major_segments": 16, "minor_segments": 8},
+     "pose": {"translation": [0.3, 0.1, 0]},
+     "motion": {"jitter": {"seed": 3, "translation": 0.05, "rotation_deg": 5}}}
+  ],
+  "queries": [{"a": "a", "b": "b", "kind": "all_pairs"}]
+})";
+
+Scene scene(const std::string& text = kScene) {
+  Result<Scene> loaded = parseScene(text, "stored.json", ".");
+  EXPECT_TRUE(loaded.ok()) << loaded.status().toString();
+  return std::move(loaded).value();
+}
+
+TEST(OracleStore, AnswersComeBackExactly) {
+  const Scene s = scene();
+  OracleCache computed(s);
+  for (std::size_t f = 0; f < s.frames; ++f)
+    ASSERT_TRUE(computed.get(0, 1, f).intersecting);
+  const std::string path = oracleStorePath(test::makeTempDirectory("oracle_store"), computed);
+  ASSERT_TRUE(saveOracleAnswers(path, computed).ok());
+
+  OracleCache loaded(s);
+  ASSERT_TRUE(loadOracleAnswers(path, loaded).ok());
+  ASSERT_EQ(loaded.answers().size(), computed.answers().size());
+  for (const auto& [key, answer] : computed.answers()) {
+    const OracleAnswer& back = loaded.answers().at(key);
+    EXPECT_EQ(back.intersecting, answer.intersecting);
+    EXPECT_EQ(back.pairs, answer.pairs);
+    EXPECT_EQ(back.candidate_pairs, answer.candidate_pairs);
+  }
+}
+
+TEST(OracleStore, AMissingFileAddsNothingAndIsNoError) {
+  const Scene s = scene();
+  OracleCache cache(s);
+  EXPECT_TRUE(
+      loadOracleAnswers(test::makeTempDirectory("oracle_store") + "/none.json", cache).ok());
+  EXPECT_TRUE(cache.answers().empty());
+}
+
+TEST(OracleStore, AnotherScenesAnswersAreRefused) {
+  const Scene s = scene();
+  OracleCache computed(s);
+  (void)computed.get(0, 1, 0);
+  const std::string path = test::makeTempDirectory("oracle_store") + "/answers.json";
+  ASSERT_TRUE(saveOracleAnswers(path, computed).ok());
+
+  std::string moved = kScene;
+  moved.replace(moved.find("0.3, 0.1, 0"), 11, "0.2, 0.1, 0");
+  const Scene other = scene(moved);
+  OracleCache cache(other);
+  EXPECT_NE(cache.fingerprint(), computed.fingerprint());
+  const Status status = loadOracleAnswers(path, cache);
+  EXPECT_FALSE(status.ok());
+  EXPECT_NE(status.message().find("another scene"), std::string::npos) << status.message();
+  EXPECT_TRUE(cache.answers().empty());
+
+  OracleCache witnesses(s, /*witness_only=*/true);
+  EXPECT_NE(witnesses.fingerprint(), computed.fingerprint());
+  EXPECT_FALSE(loadOracleAnswers(path, witnesses).ok());
+}
+
+TEST(OracleStore, ABrokenFileIsNamedAndAddsNothing) {
+  const Scene s = scene();
+  OracleCache cache(s);
+  const std::string path = test::makeTempDirectory("oracle_store") + "/broken.json";
+  test::writeFile(path, R"({"fingerprint": ")" + cache.fingerprint() +
+                            R"(", "answers": [[0, 1, 0, true, 1, 1, [3, 4]], [0, 1, 1, true]]})");
+  const Status status = loadOracleAnswers(path, cache);
+  EXPECT_FALSE(status.ok());
+  EXPECT_NE(status.message().find(path), std::string::npos) << status.message();
+  EXPECT_TRUE(cache.answers().empty());
+
+  test::writeFile(path, R"({"fingerprint": ")" + cache.fingerprint() +
+                            R"(", "answers": [[0, 1, 0, true, 1, 1, []]]})");
+  EXPECT_FALSE(loadOracleAnswers(path, cache).ok()) << "a verdict without its pairs";
+}
+
+TEST(OracleStore, TheFingerprintIsStableAcrossLoads) {
+  EXPECT_EQ(OracleCache(scene()).fingerprint(), OracleCache(scene()).fingerprint());
+}
+
+}  // namespace
+}  // namespace collido::study
