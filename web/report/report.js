@@ -56,8 +56,10 @@
     return t;
   }
   function empty(parent, text) { parent.appendChild(el('p', { class: 'empty', text: text })); }
+  // "-0.00" reads as a finding; a value that rounds to zero is shown as zero.
   const fmt = (x, digits) => (x === null || x === undefined || Number.isNaN(x)) ? '-' :
-    Number(x).toFixed(digits === undefined ? 1 : digits);
+    (Number(Number(x).toFixed(digits === undefined ? 1 : digits)) || 0)
+      .toFixed(digits === undefined ? 1 : digits);
   const ok = data.rows.filter((r) => r.status === 'ok');
   const groupBy = (items, key) => {
     const map = new Map();
@@ -184,7 +186,8 @@
       s.appendChild(box);
       chart(box, 'memory', {
         data: { values: rows }, width: 360, height: { step: 12 },
-        facet: { column: { field: 'scene', type: 'nominal', title: null } },
+        // One panel per scene, each listing only the settings run on it, two to a row.
+        facet: { field: 'scene', type: 'nominal', title: null }, columns: 2,
         spec: { width: 300, height: { step: 10 }, mark: 'bar',
           encoding: { y: { field: 'label', type: 'nominal', title: null, axis: { labelLimit: 220 } },
             yOffset: { field: 'measure' },
@@ -193,7 +196,7 @@
             tooltip: [{ field: 'label' }, { field: 'measure' }, { field: 'bytes', format: '.0f' },
               { field: 'heap_peak', title: 'build peak B/tri', format: '.0f' },
               { field: 'peak_rss_mib', title: 'worker peak RSS (MiB)', format: '.0f' }] } },
-        resolve: { scale: { x: 'independent' } } });
+        resolve: { scale: { x: 'independent', y: 'independent' } } });
     }
   }
 
@@ -207,9 +210,13 @@
     const exponents = [];
     for (const [name, rows] of families) {
       if (new Set(rows.map((r) => r.triangles)).size < 2) continue;
-      for (const r of rows) curves.push(Object.assign({ family: name, backend_only: r.backend }, r));
-      for (const [backend, points] of groupBy(rows, (r) => r.backend + (r.needs !== 'declared' ? ' needs=' + r.needs : '') +
-          (r.limit ? ' limit=' + r.limit : ''))) {
+      // One curve per setting: the label without the resolution, which is the x axis here.
+      const series = (r) => r.backend + (r.needs !== 'declared' ? ' needs=' + r.needs : '') +
+          (r.limit ? ' limit=' + r.limit : '');
+      for (const r of rows) {
+        curves.push(Object.assign({ family: name, backend_only: r.backend, series: series(r) }, r));
+      }
+      for (const [backend, points] of groupBy(rows, series)) {
         exponents.push([name, backend, String(new Set(points.map((p) => p.triangles)).size),
           fmt(fittedExponent(points, 'triangles', 'median_us'), 2),
           fmt(fittedExponent(points, 'triangles', 'bytes_per_triangle'), 2)]);
@@ -229,7 +236,7 @@
           y: { field: 'median_us', type: 'quantitative', scale: { type: 'log' }, title: 'median µs' },
           color: { field: 'backend_only', type: 'nominal', title: 'backend' } },
           layer: [{ mark: { type: 'line', point: true },
-            encoding: { detail: { field: 'label' },
+            encoding: { detail: { field: 'series' },
               tooltip: [{ field: 'label' }, { field: 'triangles' }, { field: 'median_us', format: '.1f' }] } }] });
       }
       table(s, ['scene · query', 'backend', 'sizes', 'time exponent', 'B/tri exponent'], exponents,
