@@ -289,7 +289,9 @@
             yOffset: { field: 'needs' }, x: { field: field, type: 'quantitative', title: title,
               aggregate: 'median' },
             color: { field: 'needs', type: 'nominal' },
-            row: { field: 'scene', type: 'nominal', title: null } } });
+            row: { field: 'scene', type: 'nominal', title: null } },
+          // Scenes differ by orders of magnitude: each row gets its own scale.
+          resolve: { scale: { x: 'independent' }, axis: { x: 'independent' } } });
       }
     }
   }
