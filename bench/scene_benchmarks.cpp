@@ -6,6 +6,7 @@
 #include <map>
 #include <memory>
 #include <set>
+#include <string>
 #include <vector>
 
 #include <benchmark/benchmark.h>
@@ -204,11 +205,14 @@ int registerSceneBenchmarks(const std::string& scenes_directory) {
     Result<Scene> loaded = loadScene(file);
     if (!loaded.ok()) continue;
     const auto scene = std::make_shared<const Scene>(std::move(loaded).value());
-    // Objects sharing a mesh (a pile of copies) are built the same way: benchmark one of them.
+    // Objects of the same shape (a pile of copies) are built the same way: benchmark one of
+    // them. The mesh report names the shape's source (file or generator with its parameters).
     std::vector<std::size_t> distinct_meshes;
-    std::set<const TriangleMesh*> seen;
+    std::set<std::string> seen;
     for (std::size_t object : scene->queriedObjects()) {
-      if (seen.insert(scene->objects[object].mesh.get()).second) distinct_meshes.push_back(object);
+      if (seen.insert(scene->objects[object].report.summary()).second) {
+        distinct_meshes.push_back(object);
+      }
     }
     for (const Variant& variant : variants) {
       for (std::size_t object : distinct_meshes) {
