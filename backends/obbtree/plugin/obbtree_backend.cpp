@@ -79,8 +79,11 @@ class ObbTreeBackend final : public Backend {
 Result<std::unique_ptr<Backend>> create(const std::string& /*variant*/, BackendOptions& options) {
   Result<std::int64_t> leaf = options.getInt("max_leaf_triangles", 1, 1, 1 << 20);
   if (!leaf.ok()) return leaf.status();
+  Result<bool> float_boxes = options.getBool("float_boxes", false);
+  if (!float_boxes.ok()) return float_boxes.status();
   BuildOptions build_options;
   build_options.max_leaf_triangles = static_cast<std::int32_t>(leaf.value());
+  build_options.float_boxes = float_boxes.value();
   return std::unique_ptr<Backend>(std::make_unique<ObbTreeBackend>(build_options));
 }
 
@@ -92,7 +95,7 @@ const PluginInfo& describe() {
       kVersion,
       {{"obbtree",
         "OBB tree (covariance-fitted boxes, mean split, 15-axis SAT, exact triangle tests); "
-        "option max_leaf_triangles (default 1)"}},
+        "options max_leaf_triangles (default 1), float_boxes (default false: boxes in double)"}},
       &create};
   return info;
 }

@@ -21,28 +21,27 @@ struct PairTask {
   std::int32_t b;
 };
 
+// The box a query uses: a double box as stored, a float box decoded (expandBox).
+const OrientedBox& boxOf(const Node& node) {
+  return node.box;
+}
+OrientedBox boxOf(const CompactNode& node) {
+  return expandBox(node.box);
+}
+
 double boxSize(const Node& node) {
   return node.box.half_extents.sum();
 }
+double boxSize(const CompactNode& node) {
+  return static_cast<double>(node.box.half_extents[0]) + node.box.half_extents[1] +
+         node.box.half_extents[2];
+}
 
-}  // namespace
-
-void collide(const ObbTree& a, const Eigen::Isometry3d& pose_a, const ObbTree& b,
-             const Eigen::Isometry3d& pose_b, const CollideRequest& request,
+template <typename NodeA, typename NodeB>
+void descend(const ObbTree& a, const std::vector<NodeA>& nodes_a, const ObbTree& b,
+             const std::vector<NodeB>& nodes_b, const Eigen::Matrix3d& rotation,
+             const Eigen::Vector3d& translation, const CollideRequest& request,
              CollideResult& result) {
-  result.pairs.clear();
-  result.truncated = false;
-  result.box_tests = 0;
-  result.triangle_tests = 0;
-  if (a.nodes().empty() || b.nodes().empty()) return;
-
-  // B's model frame to A's model frame. Poses are rigid, so the inverse is the transpose.
-  const Eigen::Matrix3d rotation = pose_a.linear().transpose() * pose_b.linear();
-  const Eigen::Vector3d translation =
-      pose_a.linear().transpose() * (pose_b.translation() - pose_a.translation());
-
-  const std::vector<Node>& nodes_a = a.nodes();
-  const std::vector<Node>& nodes_b = b.nodes();
   const Eigen::Matrix3Xd& vertices_a = a.vertices();
   const Eigen::Matrix3Xd& vertices_b = b.vertices();
   const Eigen::Matrix3Xi& triangles_a = a.orderedTriangles();
@@ -54,16 +53,18 @@ void collide(const ObbTree& a, const Eigen::Isometry3d& pose_a, const ObbTree& b
   while (!stack.empty()) {
     const PairTask task = stack.back();
     stack.pop_back();
-    const Node& node_a = nodes_a[static_cast<std::size_t>(task.a)];
-    const Node& node_b = nodes_b[static_cast<std::size_t>(task.b)];
+    const NodeA& node_a = nodes_a[static_cast<std::size_t>(task.a)];
+    const NodeB& node_b = nodes_b[static_cast<std::size_t>(task.b)];
+    const auto& box_a = boxOf(node_a);
+    const auto& box_b = boxOf(node_b);
 
     // B's box in A's box frame.
-    const Eigen::Matrix3d axes_b = rotation * node_b.box.axes;
-    const Eigen::Vector3d center_b = rotation * node_b.box.center + translation;
-    const Eigen::Matrix3d relative = node_a.box.axes.transpose() * axes_b;
-    const Eigen::Vector3d offset = node_a.box.axes.transpose() * (center_b - node_a.box.center);
+    const Eigen::Matrix3d axes_b = rotation * box_b.axes;
+    const Eigen::Vector3d center_b = rotation * box_b.center + translation;
+    const Eigen::Matrix3d relative = box_a.axes.transpose() * axes_b;
+    const Eigen::Vector3d offset = box_a.axes.transpose() * (center_b - box_a.center);
     ++result.box_tests;
-    if (!boxesOverlap(relative, offset, node_a.box.half_extents, node_b.box.half_extents)) {
+    if (!boxesOverlap(relative, offset, box_a.half_extents, box_b.half_extents)) {
       continue;
     }
 
@@ -100,6 +101,32 @@ void collide(const ObbTree& a, const Eigen::Isometry3d& pose_a, const ObbTree& b
       stack.push_back(PairTask{task.a, node_b.second_child});
       stack.push_back(PairTask{task.a, task.b + 1});
     }
+  }
+}
+
+}  // namespace
+
+void collide(const ObbTree& a, const Eigen::Isometry3d& pose_a, const ObbTree& b,
+             const Eigen::Isometry3d& pose_b, const CollideRequest& request,
+             CollideResult& result) {
+  result.pairs.clear();
+  result.truncated = false;
+  result.box_tests = 0;
+  result.triangle_tests = 0;
+  if (a.nodeCount() == 0 || b.nodeCount() == 0) return;
+
+  // B's model frame to A's model frame. Poses are rigid, so the inverse is the transpose.
+  const Eigen::Matrix3d rotation = pose_a.linear().transpose() * pose_b.linear();
+  const Eigen::Vector3d translation =
+      pose_a.linear().transpose() * (pose_b.translation() - pose_a.translation());
+  if (a.floatBoxes() && b.floatBoxes()) {
+    descend(a, a.compactNodes(), b, b.compactNodes(), rotation, translation, request, result);
+  } else if (a.floatBoxes()) {
+    descend(a, a.compactNodes(), b, b.nodes(), rotation, translation, request, result);
+  } else if (b.floatBoxes()) {
+    descend(a, a.nodes(), b, b.compactNodes(), rotation, translation, request, result);
+  } else {
+    descend(a, a.nodes(), b, b.nodes(), rotation, translation, request, result);
   }
 }
 

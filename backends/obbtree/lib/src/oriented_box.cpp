@@ -5,6 +5,7 @@
 #include <limits>
 
 #include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
 
 namespace collido::obbtree {
 namespace {
@@ -114,6 +115,67 @@ void refitBoxExtents(OrientedBox& box, const Eigen::Ref<const Eigen::Matrix3Xd>&
   const Eigen::Vector3d reference = vertices.col(triangles(0, 0));
   setExtents(box, reference, vertices, static_cast<std::int32_t>(triangles.cols()),
              [&](std::int32_t i) { return triangles.col(i); });
+}
+
+namespace {
+
+float roundedUp(double value) {
+  float f = static_cast<float>(value);
+  if (static_cast<double>(f) < value) f = std::nextafter(f, std::numeric_limits<float>::infinity());
+  return f;
+}
+
+// Stores `center` (rounded to float) and the extents about it on the stored axes: the largest
+// projection of any vertex, widened as setExtents widens, rounded up to float.
+void measureCompact(CompactBox& box, const Eigen::Vector3d& center,
+                    const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
+                    const Eigen::Ref<const Eigen::Matrix3Xi>& triangles) {
+  for (int k = 0; k < 3; ++k)
+    box.center[k] = static_cast<float>(center[k]);
+  OrientedBox expanded = expandBox(box);
+  const Eigen::Matrix3d axes_t = expanded.axes.transpose();
+  Eigen::Vector3d reach = Eigen::Vector3d::Zero();
+  for (Eigen::Index t = 0; t < triangles.cols(); ++t) {
+    for (int k = 0; k < 3; ++k) {
+      reach =
+          reach.cwiseMax((axes_t * (vertices.col(triangles(k, t)) - expanded.center)).cwiseAbs());
+    }
+  }
+  const double scale = expanded.center.cwiseAbs().maxCoeff() + reach.maxCoeff();
+  for (int k = 0; k < 3; ++k)
+    box.half_extents[k] = roundedUp(reach[k] + 64.0 * kEpsilon * scale);
+}
+
+}  // namespace
+
+OrientedBox expandBox(const CompactBox& box) {
+  Eigen::Quaterniond q(box.rotation[0], box.rotation[1], box.rotation[2], box.rotation[3]);
+  q.normalize();
+  OrientedBox out;
+  out.axes = q.toRotationMatrix();
+  out.center = Eigen::Vector3f(box.center[0], box.center[1], box.center[2]).cast<double>();
+  out.half_extents =
+      Eigen::Vector3f(box.half_extents[0], box.half_extents[1], box.half_extents[2]).cast<double>();
+  return out;
+}
+
+CompactBox compactBox(const OrientedBox& box, const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
+                      const Eigen::Ref<const Eigen::Matrix3Xi>& triangles) {
+  const Eigen::Quaterniond q(box.axes);
+  CompactBox out;
+  out.rotation[0] = static_cast<float>(q.w());
+  out.rotation[1] = static_cast<float>(q.x());
+  out.rotation[2] = static_cast<float>(q.y());
+  out.rotation[3] = static_cast<float>(q.z());
+  measureCompact(out, box.center, vertices, triangles);
+  return out;
+}
+
+void refitCompactBox(CompactBox& box, const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
+                     const Eigen::Ref<const Eigen::Matrix3Xi>& triangles) {
+  OrientedBox refitted = expandBox(box);
+  refitBoxExtents(refitted, vertices, triangles);
+  measureCompact(box, refitted.center, vertices, triangles);
 }
 
 bool boxContains(const OrientedBox& box, const Eigen::Vector3d& point) {

@@ -88,11 +88,26 @@ ObbTree ObbTree::build(const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
   for (std::int32_t k = 0; k < n; ++k)
     tree.triangles_.col(k) = triangles.col(order[k]);
   tree.nodes_.shrink_to_fit();
+  if (options.float_boxes) {
+    // Built in double, then stored in float: each box measured anew around its own triangles.
+    tree.float_boxes_ = true;
+    tree.compact_nodes_.reserve(tree.nodes_.size());
+    for (const Node& node : tree.nodes_) {
+      CompactNode compact;
+      compact.box =
+          compactBox(node.box, tree.vertices_, tree.triangles_.middleCols(node.first, node.count));
+      compact.second_child = node.second_child;
+      compact.first = node.first;
+      compact.count = node.count;
+      tree.compact_nodes_.push_back(compact);
+    }
+    std::vector<Node>().swap(tree.nodes_);
+  }
   return tree;
 }
 
 std::size_t ObbTree::memoryBytes() const {
-  return nodes_.capacity() * sizeof(Node) +
+  return nodes_.capacity() * sizeof(Node) + compact_nodes_.capacity() * sizeof(CompactNode) +
          static_cast<std::size_t>(vertices_.size()) * sizeof(double) +
          static_cast<std::size_t>(triangles_.size()) * sizeof(int) +
          ids_.capacity() * sizeof(std::int32_t);

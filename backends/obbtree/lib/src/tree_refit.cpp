@@ -12,6 +12,9 @@ void ObbTree::refit(const Eigen::Ref<const Eigen::Matrix3Xd>& vertices) {
   for (auto node = nodes_.rbegin(); node != nodes_.rend(); ++node) {
     refitBoxExtents(node->box, vertices_, triangles_.middleCols(node->first, node->count));
   }
+  for (auto node = compact_nodes_.rbegin(); node != compact_nodes_.rend(); ++node) {
+    refitCompactBox(node->box, vertices_, triangles_.middleCols(node->first, node->count));
+  }
 }
 
 }  // namespace collido::obbtree

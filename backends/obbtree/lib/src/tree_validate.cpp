@@ -10,33 +10,36 @@ std::string nodeText(std::size_t index) {
   return "node " + std::to_string(index);
 }
 
-}  // namespace
-
-std::string ObbTree::validate() const {
-  const auto n = static_cast<std::int32_t>(ids_.size());
-  if (nodes_.empty()) return n == 0 ? "" : "no nodes for " + std::to_string(n) + " triangles";
-  if (nodes_[0].first != 0 || nodes_[0].count != n) return "the root does not hold every triangle";
+// The checks of ObbTree::validate on either kind of node; `box_of(node)` gives the box the
+// queries use.
+template <typename NodeT, typename BoxOf>
+std::string validateNodes(const std::vector<NodeT>& nodes, const std::vector<std::int32_t>& ids,
+                          const Eigen::Matrix3Xd& vertices, const Eigen::Matrix3Xi& triangles,
+                          BoxOf&& box_of) {
+  const auto n = static_cast<std::int32_t>(ids.size());
+  if (nodes.empty()) return n == 0 ? "" : "no nodes for " + std::to_string(n) + " triangles";
+  if (nodes[0].first != 0 || nodes[0].count != n) return "the root does not hold every triangle";
 
   // Structure: each internal node's children are contiguous halves of its range; each triangle
   // id appears exactly once.
   std::vector<char> seen(static_cast<std::size_t>(n), 0);
-  for (std::int32_t id : ids_) {
+  for (std::int32_t id : ids) {
     if (id < 0 || id >= n || seen[static_cast<std::size_t>(id)])
       return "triangle ids are not a permutation";
     seen[static_cast<std::size_t>(id)] = 1;
   }
-  std::vector<std::int32_t> parent(nodes_.size(), -1);
-  for (std::size_t i = 0; i < nodes_.size(); ++i) {
-    const Node& node = nodes_[i];
+  std::vector<std::int32_t> parent(nodes.size(), -1);
+  for (std::size_t i = 0; i < nodes.size(); ++i) {
+    const NodeT& node = nodes[i];
     if (node.count <= 0) return nodeText(i) + " is empty";
     if (node.isLeaf()) continue;
     const std::size_t first_child = i + 1;
     const auto second_child = static_cast<std::size_t>(node.second_child);
-    if (second_child <= first_child || second_child >= nodes_.size()) {
+    if (second_child <= first_child || second_child >= nodes.size()) {
       return nodeText(i) + " has a second child out of order";
     }
-    const Node& left = nodes_[first_child];
-    const Node& right = nodes_[second_child];
+    const NodeT& left = nodes[first_child];
+    const NodeT& right = nodes[second_child];
     if (left.first != node.first || right.first != left.first + left.count ||
         left.count + right.count != node.count) {
       return nodeText(i) + ": children do not partition its triangles";
@@ -44,20 +47,20 @@ std::string ObbTree::validate() const {
     parent[first_child] = static_cast<std::int32_t>(i);
     parent[second_child] = static_cast<std::int32_t>(i);
   }
-  for (std::size_t i = 1; i < nodes_.size(); ++i) {
+  for (std::size_t i = 1; i < nodes.size(); ++i) {
     if (parent[i] < 0) return nodeText(i) + " is not reachable from the root";
   }
 
   // Geometry: every corner of every triangle lies in its leaf's box and in every ancestor's.
-  for (std::size_t i = 0; i < nodes_.size(); ++i) {
-    if (!nodes_[i].isLeaf()) continue;
+  for (std::size_t i = 0; i < nodes.size(); ++i) {
+    if (!nodes[i].isLeaf()) continue;
     for (auto ancestor = static_cast<std::int32_t>(i); ancestor >= 0;
          ancestor = parent[static_cast<std::size_t>(ancestor)]) {
-      const OrientedBox& box = nodes_[static_cast<std::size_t>(ancestor)].box;
-      for (std::int32_t k = nodes_[i].first; k < nodes_[i].first + nodes_[i].count; ++k) {
+      const OrientedBox box = box_of(nodes[static_cast<std::size_t>(ancestor)]);
+      for (std::int32_t k = nodes[i].first; k < nodes[i].first + nodes[i].count; ++k) {
         for (int c = 0; c < 3; ++c) {
-          if (!boxContains(box, vertices_.col(triangles_(c, k)))) {
-            return "triangle " + std::to_string(ids_[static_cast<std::size_t>(k)]) +
+          if (!boxContains(box, vertices.col(triangles(c, k)))) {
+            return "triangle " + std::to_string(ids[static_cast<std::size_t>(k)]) +
                    " is outside the box of " + nodeText(static_cast<std::size_t>(ancestor));
           }
         }
@@ -65,6 +68,19 @@ std::string ObbTree::validate() const {
     }
   }
   return "";
+}
+
+}  // namespace
+
+std::string ObbTree::validate() const {
+  if (float_boxes_) {
+    if (!nodes_.empty()) return "a float-box tree holds double boxes too";
+    return validateNodes(compact_nodes_, ids_, vertices_, triangles_,
+                         [](const CompactNode& node) { return expandBox(node.box); });
+  }
+  if (!compact_nodes_.empty()) return "a double-box tree holds float boxes too";
+  return validateNodes(nodes_, ids_, vertices_, triangles_,
+                       [](const Node& node) { return node.box; });
 }
 
 }  // namespace collido::obbtree

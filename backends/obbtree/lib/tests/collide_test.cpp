@@ -347,6 +347,31 @@ TEST(Collide, BunnyAgainstBunny) {
   EXPECT_GT(most, 200u);  // dense contact in at least one pose
 }
 
+// Float boxes answer exactly as double boxes do: the same pairs as the oracle, alone or mixed
+// with a double-box tree, on dense bunny overlaps and on tori.
+TEST(Collide, FloatBoxesMatchTheOracle) {
+  const ObbTree bunny_floats = ObbTree::build(bunny().vertices, bunny().triangles, {1, true});
+  const ObbTree torus_floats = ObbTree::build(torus().vertices, torus().triangles, {4, true});
+  std::mt19937_64 rng(61);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  std::size_t most = 0;
+  for (int trial = 0; trial < 6; ++trial) {
+    const Pose pose_a = makePose(randomRotation(rng), Eigen::Vector3d(u(rng), u(rng), u(rng)));
+    const Pose pose_b = makePose(
+        randomRotation(rng), pose_a.translation() + 3.0 * Eigen::Vector3d(u(rng), u(rng), u(rng)));
+    const ObbTree& tree_b = trial % 2 == 0 ? bunny_floats : bunnyTree(4);
+    const Outcome o = checkQuery(bunny(), bunny_floats, pose_a, bunny(), tree_b, pose_b,
+                                 "bunny trial " + std::to_string(trial));
+    most = std::max(most, o.truth.size());
+    const Pose torus_b = makePose(randomRotation(rng),
+                                  pose_a.translation() + Eigen::Vector3d(u(rng), u(rng), u(rng)));
+    checkQuery(torus(), torusTree(1), pose_a, torus(), torus_floats, torus_b,
+               "torus trial " + std::to_string(trial));
+    if (HasFailure()) return;
+  }
+  EXPECT_GT(most, 200u);
+}
+
 // max_pairs: truncated iff more pairs exist than the limit; the pairs returned are exact pairs.
 TEST(Collide, MaxPairsTruncatesHonestly) {
   const ObbTree& tree = bunnyTree(4);

@@ -437,3 +437,52 @@ TEST(ObbTreeMemory, PositiveAndGrowsWithTheTriangleCount) {
 
 }  // namespace
 }  // namespace collido::obbtree
+
+namespace collido::obbtree {
+namespace {
+
+// Float boxes: the same tree shape as double boxes, every triangle still inside every box the
+// query decodes (validate), a third of the node memory, and refit keeps that true.
+TEST(ObbTreeFloatBoxes, SameShapeContainedAndSmaller) {
+  const Result<TriangleMesh> bunny = loadMesh("scenes/meshes/bunny.obj");
+  ASSERT_TRUE(bunny.ok());
+  TriangleMesh far = smallTorus();
+  far.vertices.colwise() += Eigen::Vector3d(1e6, -2e6, 3e5);
+  TriangleMesh tiny = smallTorus();
+  tiny.vertices *= 1e-6;
+  for (const auto& [label, mesh] :
+       {std::pair<const char*, const TriangleMesh*>{"bunny", &bunny.value()},
+        {"far torus", &far},
+        {"tiny torus", &tiny}}) {
+    for (std::int32_t leaf : {1, 4}) {
+      SCOPED_TRACE(std::string(label) + " leaf " + std::to_string(leaf));
+      const ObbTree doubles = ObbTree::build(mesh->vertices, mesh->triangles, {leaf, false});
+      const ObbTree floats = ObbTree::build(mesh->vertices, mesh->triangles, {leaf, true});
+      EXPECT_TRUE(floats.floatBoxes());
+      EXPECT_TRUE(floats.nodes().empty());
+      EXPECT_EQ(floats.validate(), "");
+      ASSERT_EQ(floats.nodeCount(), doubles.nodeCount());
+      for (std::size_t i = 0; i < floats.nodeCount(); ++i) {
+        EXPECT_EQ(floats.compactNodes()[i].second_child, doubles.nodes()[i].second_child);
+        EXPECT_EQ(floats.compactNodes()[i].count, doubles.nodes()[i].count);
+      }
+      EXPECT_LT(floats.memoryBytes(), doubles.memoryBytes());
+    }
+  }
+}
+
+TEST(ObbTreeFloatBoxes, RefitKeepsEveryTriangleInside) {
+  TriangleMesh mesh = smallTorus();
+  ObbTree tree = ObbTree::build(mesh.vertices, mesh.triangles, {1, true});
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> noise(-0.05, 0.05);
+  for (Eigen::Index v = 0; v < mesh.vertices.cols(); ++v) {
+    mesh.vertices.col(v) += Eigen::Vector3d(noise(rng), noise(rng), noise(rng));
+  }
+  tree.refit(mesh.vertices);
+  EXPECT_TRUE(tree.floatBoxes());
+  EXPECT_EQ(tree.validate(), "");
+}
+
+}  // namespace
+}  // namespace collido::obbtree

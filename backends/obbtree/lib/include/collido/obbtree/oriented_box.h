@@ -46,6 +46,30 @@ OrientedBox fitBox(const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
 void refitBoxExtents(OrientedBox& box, const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
                      const Eigen::Ref<const Eigen::Matrix3Xi>& triangles);
 
+/// An oriented box stored in single precision: 40 bytes instead of 120. The axes are a unit
+/// quaternion (w, x, y, z), decoded in double by expandBox; the half extents were measured on
+/// the decoded axes about the stored centre when the box was made (compactBox), widened as a
+/// fitted box's are and rounded up to float, so the box the query sees — expandBox's — contains
+/// every vertex it was made for, exactly as a double box does.
+struct CompactBox {
+  float rotation[4] = {1.0F, 0.0F, 0.0F, 0.0F};
+  float center[3] = {0.0F, 0.0F, 0.0F};
+  float half_extents[3] = {0.0F, 0.0F, 0.0F};
+};
+
+/// The box a compact box stands for: axes decoded from the quaternion (normalised in double;
+/// the one computation used at build, refit and query time), centre and extents as stored.
+OrientedBox expandBox(const CompactBox& box);
+
+/// `box` in single precision, containing every vertex of `triangles` (see CompactBox).
+CompactBox compactBox(const OrientedBox& box, const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
+                      const Eigen::Ref<const Eigen::Matrix3Xi>& triangles);
+
+/// Refit of a compact box after the vertices moved: keeps its axes (the stored quaternion),
+/// recomputes centre and extents over all columns of `triangles`.
+void refitCompactBox(CompactBox& box, const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
+                     const Eigen::Ref<const Eigen::Matrix3Xi>& triangles);
+
 /// Whether `point` lies in `box` as computed in double precision (no tolerance).
 bool boxContains(const OrientedBox& box, const Eigen::Vector3d& point);
 

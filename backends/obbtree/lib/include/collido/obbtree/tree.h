@@ -14,6 +14,9 @@ namespace collido::obbtree {
 /// How to build a tree.
 struct BuildOptions {
   std::int32_t max_leaf_triangles = 1;  ///< split while a node holds more than this (>= 1)
+  /// Store the boxes in single precision (CompactBox: 52 instead of 136 bytes a node), still
+  /// containing every triangle they bound; the tree's shape is the same as with double boxes.
+  bool float_boxes = false;
 };
 
 /// One node of the flat tree. Depth-first order: the first child of node i is i + 1.
@@ -23,6 +26,15 @@ struct Node {
   std::int32_t first = 0;          ///< first position in the tree's triangle order
   std::int32_t count = 0;          ///< triangles in this subtree: order[first .. first + count)
 
+  bool isLeaf() const { return second_child < 0; }
+};
+
+/// A node with its box in single precision (BuildOptions::float_boxes); same layout otherwise.
+struct CompactNode {
+  CompactBox box;
+  std::int32_t second_child = -1;
+  std::int32_t first = 0;
+  std::int32_t count = 0;
   bool isLeaf() const { return second_child < 0; }
 };
 
@@ -38,7 +50,12 @@ class ObbTree {
                        const Eigen::Ref<const Eigen::Matrix3Xi>& triangles,
                        const BuildOptions& options = {});
 
+  /// The nodes with double boxes; empty when the tree stores float boxes (compactNodes()).
   const std::vector<Node>& nodes() const { return nodes_; }
+  /// The nodes with float boxes; empty unless built with BuildOptions::float_boxes.
+  const std::vector<CompactNode>& compactNodes() const { return compact_nodes_; }
+  bool floatBoxes() const { return float_boxes_; }
+  std::size_t nodeCount() const { return float_boxes_ ? compact_nodes_.size() : nodes_.size(); }
   const Eigen::Matrix3Xd& vertices() const { return vertices_; }
   /// Triangles in leaf order: column k is the input triangle triangleId(k).
   const Eigen::Matrix3Xi& orderedTriangles() const { return triangles_; }
@@ -62,6 +79,8 @@ class ObbTree {
 
  private:
   std::vector<Node> nodes_;
+  std::vector<CompactNode> compact_nodes_;
+  bool float_boxes_ = false;
   Eigen::Matrix3Xd vertices_;
   Eigen::Matrix3Xi triangles_;
   std::vector<std::int32_t> ids_;
