@@ -37,17 +37,17 @@ class Digest {
 }  // namespace
 
 const OracleAnswer& OracleCache::get(std::size_t ia, std::size_t ib, std::size_t frame) {
-  // Boolean queries need only a witness; a pair that any all-pairs query also names shares the
-  // full answer, which contains the boolean one.
-  const bool needs_all =
-      !witness_only_ &&
-      std::any_of(scene_.queries.begin(), scene_.queries.end(), [&](const SceneQuery& q) {
-        return q.request.kind != QueryKind::kBoolean &&
-               (q.isGroup() ? q.names(ia) && q.names(ib) : q.a == ia && q.b == ib);
-      });
   const auto key = std::make_tuple(ia, ib, frame);
   auto found = answers_.find(key);
   if (found == answers_.end()) {
+    // Boolean queries need only a witness; a pair that any all-pairs query also names shares the
+    // full answer, which contains the boolean one.
+    const bool needs_all =
+        !witness_only_ &&
+        std::any_of(scene_.queries.begin(), scene_.queries.end(), [&](const SceneQuery& q) {
+          return q.request.kind != QueryKind::kBoolean &&
+                 (q.isGroup() ? q.names(ia) && q.names(ib) : q.a == ia && q.b == ib);
+        });
     const SceneObject& a = scene_.objects[ia];
     const SceneObject& b = scene_.objects[ib];
     found = answers_

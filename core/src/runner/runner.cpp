@@ -122,10 +122,10 @@ void addAnswer(const FrameRecord& one, FrameRecord& frame) {
 
 // Whether the finest meshes intersect in `frame`: for a group query, whether any pair does
 // (the finest scene's own broad phase picks the candidates).
-bool finestIntersecting(OracleCache& finest, const SceneQuery& query, std::size_t frame) {
-  if (!query.isGroup()) return finest.get(query.a, query.b, frame).intersecting;
-  const BroadPhase broad_phase(finest.scene(), query);
-  for (const auto& [ia, ib] : broad_phase.pairsAt(frame)) {
+bool finestIntersecting(OracleCache& finest, const SceneQuery& query,
+                        const BroadPhase* finest_broad_phase, std::size_t frame) {
+  if (finest_broad_phase == nullptr) return finest.get(query.a, query.b, frame).intersecting;
+  for (const auto& [ia, ib] : finest_broad_phase->pairsAt(frame)) {
     if (finest.get(ia, ib, frame).intersecting) return true;
   }
   return false;
@@ -213,7 +213,11 @@ void runSceneOnBackend(const Scene& scene, const BackendSpec& spec, OracleCache&
                      std::to_string(scene.frames) + " frames)");
 
     std::optional<BroadPhase> broad_phase;
-    if (query.isGroup()) broad_phase.emplace(scene, query);
+    std::optional<BroadPhase> finest_broad_phase;
+    if (query.isGroup()) {
+      broad_phase.emplace(scene, query);
+      if (finest_oracle != nullptr) finest_broad_phase.emplace(finest_oracle->scene(), query);
+    }
     QueryResult result;
     for (std::size_t frame = 0; frame < scene.frames && m.ok(); ++frame) {
       const std::vector<std::pair<std::size_t, std::size_t>> candidates =
@@ -244,7 +248,8 @@ void runSceneOnBackend(const Scene& scene, const BackendSpec& spec, OracleCache&
       }
       if (!m.ok()) break;
       if (finest_oracle != nullptr) {
-        record.finest_intersecting = finestIntersecting(*finest_oracle, query, frame);
+        record.finest_intersecting = finestIntersecting(
+            *finest_oracle, query, finest_broad_phase ? &*finest_broad_phase : nullptr, frame);
       }
 
       std::vector<double> frame_times;
