@@ -13,10 +13,13 @@ namespace {
 constexpr double kEpsilon = std::numeric_limits<double>::epsilon();
 
 // Sets centre and extents of `box` (axes given) from the extreme projections of the vertices,
-// measured from `reference` to keep the numbers small, and widens the extents by a bound on the
-// rounding of these sums and of the later containment checks (a few ulps of the magnitudes
-// involved, times a safety factor), so the stored box contains every vertex as computed.
-// `triangle(i)` gives the vertex indices of the i-th of `count` triangles.
+// measured from `reference` to keep the numbers small, and widens the extents so that the box
+// with exactly orthonormal axes nearest to the stored ones (the box the separating-axis bound
+// reasons about) contains every vertex exactly. The projections, the centre and the axes' own
+// deviation from orthonormality (axisDefect) each err by at most (axis defect + a few ulps)
+// times the magnitudes involved, |reference|_1 + |middle|_1 + |hi - lo|_1; the widening is 4
+// defects plus 64 ulps of that. `triangle(i)` gives the vertex indices of the i-th of `count`
+// triangles.
 template <typename TriangleAt>
 void setExtents(OrientedBox& box, const Eigen::Vector3d& reference,
                 const Eigen::Ref<const Eigen::Matrix3Xd>& vertices, std::int32_t count,
@@ -34,9 +37,9 @@ void setExtents(OrientedBox& box, const Eigen::Vector3d& reference,
   }
   const Eigen::Vector3d middle = 0.5 * (lo + hi);
   box.center = reference + box.axes * middle;
-  const double scale = reference.cwiseAbs().maxCoeff() + middle.cwiseAbs().maxCoeff() +
-                       (hi - lo).cwiseAbs().maxCoeff();
-  box.half_extents = (0.5 * (hi - lo)).array() + 64.0 * kEpsilon * scale;
+  const double scale = reference.lpNorm<1>() + middle.lpNorm<1>() + (hi - lo).lpNorm<1>();
+  box.half_extents =
+      (0.5 * (hi - lo)).array() + (4.0 * axisDefect(box.axes) + 64.0 * kEpsilon) * scale;
 }
 
 }  // namespace
@@ -97,13 +100,14 @@ OrientedBox BoxFitter::fit(const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
   }
   setExtents(box, mean, vertices, count, [&](std::int32_t i) { return triangles.col(order[i]); });
   // Order the axes by decreasing extent (the eigenvalue order is only a proxy for it), keeping
-  // the frame right-handed, so that the longest axis is axis 0 for splitting.
+  // the frame right-handed, so that the longest axis is axis 0 for splitting. Swapping two
+  // columns and negating the third are exact, so the box stays the very set it was measured as.
   for (int pass = 0; pass < 2; ++pass) {
     for (int k = 0; k < 2; ++k) {
       if (box.half_extents[k] < box.half_extents[k + 1]) {
         box.axes.col(k).swap(box.axes.col(k + 1));
         std::swap(box.half_extents[k], box.half_extents[k + 1]);
-        box.axes.col(2) = box.axes.col(0).cross(box.axes.col(1));
+        box.axes.col(2) = -box.axes.col(2);
       }
     }
   }
@@ -141,9 +145,10 @@ void measureCompact(CompactBox& box, const Eigen::Vector3d& center,
           reach.cwiseMax((axes_t * (vertices.col(triangles(k, t)) - expanded.center)).cwiseAbs());
     }
   }
-  const double scale = expanded.center.cwiseAbs().maxCoeff() + reach.maxCoeff();
+  const double scale = expanded.center.lpNorm<1>() + reach.lpNorm<1>();
+  const double widening = (4.0 * axisDefect(expanded.axes) + 64.0 * kEpsilon) * scale;
   for (int k = 0; k < 3; ++k)
-    box.half_extents[k] = roundedUp(reach[k] + 64.0 * kEpsilon * scale);
+    box.half_extents[k] = roundedUp(reach[k] + widening);
 }
 
 }  // namespace
@@ -176,6 +181,13 @@ void refitCompactBox(CompactBox& box, const Eigen::Ref<const Eigen::Matrix3Xd>& 
   OrientedBox refitted = expandBox(box);
   refitBoxExtents(refitted, vertices, triangles);
   measureCompact(box, refitted.center, vertices, triangles);
+}
+
+double axisDefect(const Eigen::Matrix3d& axes) {
+  const double deviation =
+      (axes.transpose() * axes - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff();
+  if (!std::isfinite(deviation)) return std::numeric_limits<double>::infinity();
+  return 3.0 * deviation + 8.0 * kEpsilon;
 }
 
 bool boxContains(const OrientedBox& box, const Eigen::Vector3d& point) {

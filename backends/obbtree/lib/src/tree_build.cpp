@@ -103,6 +103,11 @@ ObbTree ObbTree::build(const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
     }
     std::vector<Node>().swap(tree.nodes_);
   }
+  // Refit keeps the axes, so this bound holds for the tree's whole life.
+  for (const Node& node : tree.nodes_)
+    tree.axis_defect_ = std::max(tree.axis_defect_, obbtree::axisDefect(node.box.axes));
+  for (const CompactNode& node : tree.compact_nodes_)
+    tree.axis_defect_ = std::max(tree.axis_defect_, obbtree::axisDefect(expandBox(node.box).axes));
   return tree;
 }
 

@@ -29,16 +29,20 @@ struct CollideRequest {
 
 /// The answer and the work done.
 struct CollideResult {
-  std::vector<TrianglePair> pairs;   ///< in traversal order
-  bool truncated = false;            ///< max_pairs stopped the query
-  std::uint64_t box_tests = 0;       ///< separating-axis tests
-  std::uint64_t triangle_tests = 0;  ///< exact triangle-triangle tests
+  std::vector<TrianglePair> pairs;    ///< in traversal order
+  bool truncated = false;             ///< max_pairs stopped the query
+  std::uint64_t box_tests = 0;        ///< separating-axis tests
+  std::uint64_t triangle_tests = 0;   ///< triangle-triangle tests (filtered, then exact if unsure)
+  std::uint64_t exact_fallbacks = 0;  ///< tests the filter could not certify, decided exactly
 };
 
 /// Collides two posed trees by simultaneous descent from the roots, in A's model frame: B's
 /// boxes are brought into A's frame with the relative pose, a box pair that the 15-axis test
 /// separates ends its branch, otherwise the larger box is split; at two leaves every triangle
-/// pair is tested exactly (on B's vertices transformed into A's frame). `result` is overwritten.
+/// pair is tested by a certified filter on B's vertices transformed into A's frame, and exactly
+/// on the world coordinates where the filter is unsure. The answer is exact: the pairs whose
+/// triangles, placed by the poses in exact arithmetic (as the oracle places them), share a point.
+/// `result` is overwritten.
 void collide(const ObbTree& a, const Eigen::Isometry3d& pose_a, const ObbTree& b,
              const Eigen::Isometry3d& pose_b, const CollideRequest& request, CollideResult& result);
 

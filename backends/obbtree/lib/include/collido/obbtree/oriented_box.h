@@ -70,6 +70,12 @@ CompactBox compactBox(const OrientedBox& box, const Eigen::Ref<const Eigen::Matr
 void refitCompactBox(CompactBox& box, const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
                      const Eigen::Ref<const Eigen::Matrix3Xi>& triangles);
 
+/// A bound on how far `axes` is from the nearest orthonormal matrix Q (the spectral norm of
+/// axes - Q): 3 max|axes^T axes - I| plus the rounding of that product. The box a query reasons
+/// about has the axes Q; fitted and compact boxes are widened by this defect so that it still
+/// contains every vertex. Infinite for non-finite axes.
+double axisDefect(const Eigen::Matrix3d& axes);
+
 /// Whether `point` lies in `box` as computed in double precision (no tolerance).
 bool boxContains(const OrientedBox& box, const Eigen::Vector3d& point);
 

@@ -7,26 +7,46 @@
 
 namespace collido::obbtree {
 
+/// What the separating-axis test must allow for when its inputs are computed, not exact.
+struct SeparationTolerance {
+  /// Bound on the error of every entry of `rotation` and, relative to its size, of
+  /// `translation`, against the exact relative frame of two exactly orthonormal boxes (the
+  /// frames' own deviation from orthonormality included). The default covers a few roundings of
+  /// products of orthonormal matrices.
+  double axis_error = 16.0 * std::numeric_limits<double>::epsilon();
+  /// B's box is taken as enlarged by a ball of this radius (e.g. the error of mapping it).
+  double inflation = 0.0;
+};
+
 /// Separating-axis test of two boxes, B given in A's box frame (Gottschalk, Lin & Manocha 1996;
 /// Ericson, Real-Time Collision Detection, 4.4.1): `rotation` holds B's axes as columns in A's
 /// box frame, `translation` B's centre there, `half_a`/`half_b` the half extents. Tests the 15
 /// candidate axes (3 + 3 face normals, 9 edge cross products) and returns false only when one of
-/// them separates the boxes with a margin larger than the rounding of the computation, so a box
-/// pair that touches or nearly touches is reported as overlapping (conservative).
+/// them separates the boxes by more than the bound on the error of the computation:
+///
+///   slack = 5 axis_error (|t|_1 + |a|_1 + |b|_1) + inflation.
+///
+/// Why this bounds it: every projected distance and radius below is a sum of at most four
+/// products of one entry of the rotation (error <= axis_error) with one of t, a or b (error <=
+/// axis_error |t|); so each computed (distance - radius) is within 4 axis_error of the sum of
+/// the magnitudes involved, and the rounding of these few sums is far below the fifth.
+/// Inflation enlarges B along every axis by at most `inflation` (an edge cross-product axis has
+/// length sin(angle) <= 1, and the unnormalised formulas scale B's radius by that length, so
+/// adding the full inflation is conservative). For nearly parallel edges the cross-product axis
+/// degenerates: distance and radii both go to zero, and the slack keeps the pair overlapping.
+/// Touching boxes are therefore reported as overlapping.
 inline bool boxesOverlap(const Eigen::Matrix3d& rotation, const Eigen::Vector3d& translation,
-                         const Eigen::Vector3d& half_a, const Eigen::Vector3d& half_b) {
-  // |R| plus a small term so that the cross-product axes of nearly parallel edges, whose
-  // computed length is pure rounding, cannot produce a spurious separation.
-  constexpr double kParallelGuard = 1e-12;
-  // Relative margin on every comparison; well above the few ulps of rounding in these sums.
-  constexpr double kMargin = 1e-12;
+                         const Eigen::Vector3d& half_a, const Eigen::Vector3d& half_b,
+                         const SeparationTolerance& tolerance = {}) {
   const Eigen::Matrix3d& r = rotation;
   const Eigen::Vector3d& t = translation;
   const Eigen::Vector3d& a = half_a;
   const Eigen::Vector3d& b = half_b;
-  const Eigen::Matrix3d abs_r = r.cwiseAbs().array() + kParallelGuard;
-  const auto separated = [](double distance, double radius_sum) {
-    return distance > radius_sum * (1.0 + kMargin) + kMargin * distance;
+  const Eigen::Matrix3d abs_r = r.cwiseAbs();
+  const double slack =
+      5.0 * tolerance.axis_error * (t.cwiseAbs().sum() + a.sum() + b.sum()) + tolerance.inflation;
+  const auto separated = [slack](double distance, double radius_sum) {
+    return distance > radius_sum + slack;
   };
 
   // A's face normals.

@@ -64,6 +64,9 @@ class ObbTree {
   std::size_t triangleCount() const { return ids_.size(); }
   /// Deepest level (the root is at depth 0).
   int depth() const { return depth_; }
+  /// The largest axisDefect of any box as the query decodes it (the separating-axis bound's
+  /// allowance for the boxes' axes not being exactly orthonormal).
+  double axisDefect() const { return axis_defect_; }
 
   /// Replaces the vertex positions (same count and order as at build) and refits every box
   /// bottom-up, keeping its axes. The tree's shape is unchanged.
@@ -85,6 +88,7 @@ class ObbTree {
   Eigen::Matrix3Xi triangles_;
   std::vector<std::int32_t> ids_;
   int depth_ = 0;
+  double axis_defect_ = 0.0;
 };
 
 }  // namespace collido::obbtree

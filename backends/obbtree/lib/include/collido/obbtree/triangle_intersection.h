@@ -1,6 +1,8 @@
 #pragma once
 
-#include <Eigen/Core>
+#include <optional>
+
+#include <Eigen/Geometry>
 
 namespace collido::obbtree {
 
@@ -10,5 +12,27 @@ namespace collido::obbtree {
 bool trianglesIntersect(const Eigen::Vector3d& p1, const Eigen::Vector3d& q1,
                         const Eigen::Vector3d& r1, const Eigen::Vector3d& p2,
                         const Eigen::Vector3d& q2, const Eigen::Vector3d& r2);
+
+/// A point known only to within `error` (a bound on the Euclidean distance, >= 0) of the exact
+/// point it stands for, e.g. a vertex brought into another frame by a rounded transform.
+struct UncertainPoint {
+  Eigen::Vector3d p = Eigen::Vector3d::Zero();
+  double error = 0.0;
+};
+
+/// trianglesIntersect for the exact corners that the uncertain ones stand for, decided in double
+/// precision with certified error bounds: the answer when no exact corners within the radii, and
+/// no rounding, can change it; std::nullopt when one might (touching, coplanar, degenerate or
+/// nearly so), and the caller must decide exactly (posedTrianglesIntersect).
+std::optional<bool> trianglesIntersectCertified(const UncertainPoint& p1, const UncertainPoint& q1,
+                                                const UncertainPoint& r1, const UncertainPoint& p2,
+                                                const UncertainPoint& q2, const UncertainPoint& r2);
+
+/// Whether triangle (a[0], a[1], a[2]) placed by pose_a and triangle b placed by pose_b share a
+/// point, with the world corners pose * v evaluated in exact rational arithmetic on the doubles
+/// given (the rotation used as given, as the exact oracle does). Slow: the fallback of the
+/// certified test.
+bool posedTrianglesIntersect(const Eigen::Vector3d* a, const Eigen::Isometry3d& pose_a,
+                             const Eigen::Vector3d* b, const Eigen::Isometry3d& pose_b);
 
 }  // namespace collido::obbtree
