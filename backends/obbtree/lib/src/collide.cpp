@@ -32,6 +32,7 @@ struct PairTask {
 };
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
+constexpr double kUnderflowGuard = 1e-290;
 
 // The error of the computed relative map and what the box test must allow for.
 struct QueryBounds {
@@ -39,7 +40,10 @@ struct QueryBounds {
   double constant = 0.0;
   double axis_error = 0.0;  // SeparationTolerance::axis_error for every box pair
 
-  double pointError(const Eigen::Vector3d& v) const { return linear * v.lpNorm<1>() + constant; }
+  // kUnderflowGuard: relative bounds fail where a product or sum is subnormal.
+  double pointError(const Eigen::Vector3d& v) const {
+    return linear * v.lpNorm<1>() + constant + kUnderflowGuard;
+  }
 };
 
 // Derivation (2-norms are bounded by 1-norms throughout): with E = R_a^T R_a - I and
@@ -84,6 +88,38 @@ double boxSize(const CompactNode& node) {
          node.box.half_extents[2];
 }
 
+// Row k of r^-1, when it is exactly a signed unit vector: column k of r is +-e_i and row i of
+// r is +-e_k (r is block diagonal with a 1x1 block), so r^-1 has row k = row k of r^T = +-e_i,
+// exactly. E.g. every row of a signed permutation, or the z row of a rotation about z.
+struct UnitRow {
+  int index = -1;  // i; -1: not exactly a unit row
+  double sign = 1.0;
+};
+UnitRow unitRowOfInverse(const Eigen::Matrix3d& r, int k) {
+  const int in_column = (r(0, k) != 0.0) + (r(1, k) != 0.0) + (r(2, k) != 0.0);
+  if (in_column != 1) return {};
+  const int i = r(0, k) != 0.0 ? 0 : (r(1, k) != 0.0 ? 1 : 2);
+  const int in_row = (r(i, 0) != 0.0) + (r(i, 1) != 0.0) + (r(i, 2) != 0.0);
+  if (in_row != 1 || std::abs(r(i, k)) != 1.0) return {};
+  return UnitRow{i, r(i, k)};
+}
+
+// Whether x + y is exactly representable (Knuth's TwoSum error term is zero).
+bool sumIsExact(double x, double y) {
+  const double sum = x + y;
+  const double y_part = sum - x;
+  return (x - (sum - y_part)) + (y - y_part) == 0.0;
+}
+
+// A row k of the computed map that is exactly the exact map's wherever the one rounding left
+// in it is exact: mapped[k] = sign * v[column] + offset, with the offset exact. Arises when both
+// rotations keep a coordinate axis exactly (identity, quarter turns, rotations about that axis:
+// the gears' faces, a module sliding along its docking axis), or when both poses are the same.
+struct ExactRow {
+  int column = -1;  // -1: not an exact row
+  double sign = 1.0;
+};
+
 // The poses and the computed map from B's model frame into A's.
 struct Placement {
   const Eigen::Isometry3d& pose_a;
@@ -91,7 +127,57 @@ struct Placement {
   Eigen::Matrix3d rotation;
   Eigen::Vector3d translation;
   QueryBounds bounds;
+  ExactRow exact_rows[3];
+
+  // B's vertex v mapped into A's frame, with its error radius per coordinate.
+  UncertainPoint map(const Eigen::Vector3d& v) const {
+    UncertainPoint q;
+    q.p = rotation * v + translation;
+    q.error.setConstant(bounds.pointError(v));
+    for (int k = 0; k < 3; ++k) {
+      const ExactRow& row = exact_rows[k];
+      if (row.column >= 0 && sumIsExact(row.sign * v[row.column], translation[k])) {
+        q.error[k] = 0.0;
+      }
+    }
+    return q;
+  }
 };
+
+Placement placementOf(const ObbTree& a, const Eigen::Isometry3d& pose_a, const ObbTree& b,
+                      const Eigen::Isometry3d& pose_b) {
+  Placement placement{pose_a,        pose_b, Eigen::Matrix3d::Identity(), Eigen::Vector3d::Zero(),
+                      QueryBounds{}, {}};
+  if (pose_a.matrix() == pose_b.matrix()) {
+    // One pose for both: the relative map is exactly the identity.
+    placement.bounds.axis_error = a.axisDefect() + b.axisDefect() + 32.0 * kEps;
+    for (int k = 0; k < 3; ++k)
+      placement.exact_rows[k] = ExactRow{k, 1.0};
+    return placement;
+  }
+  // The transpose stands for the inverse; the bounds account for the rotations not being
+  // exactly orthonormal.
+  const Eigen::Vector3d shift = pose_b.translation() - pose_a.translation();
+  placement.rotation = pose_a.linear().transpose() * pose_b.linear();
+  placement.translation = pose_a.linear().transpose() * shift;
+  placement.bounds = queryBounds(a, pose_a, b, pose_b);
+  // Where row k of R_a^-1 is exactly +-e_i (so R_a^T's is the same), the computed rotation's row
+  // k is exactly +-(row i of R_b) and the translation's is +-(t_b - t_a)[i], exact unless that
+  // difference rounded; if that row of the rotation is a signed unit vector too, coordinate k
+  // of a mapped vertex is one signed sum, exact whenever that sum is.
+  for (int k = 0; k < 3; ++k) {
+    const UnitRow inverse_row = unitRowOfInverse(pose_a.linear(), k);
+    if (inverse_row.index < 0) continue;
+    const int i = inverse_row.index;
+    if (!sumIsExact(pose_b.translation()[i], -pose_a.translation()[i])) continue;
+    const auto row = placement.rotation.row(k);
+    const int non_zero = (row[0] != 0.0) + (row[1] != 0.0) + (row[2] != 0.0);
+    for (int j = 0; j < 3; ++j) {
+      if (non_zero == 1 && std::abs(row[j]) == 1.0) placement.exact_rows[k] = ExactRow{j, row[j]};
+    }
+  }
+  return placement;
+}
 
 template <typename NodeA, typename NodeB>
 void descend(const ObbTree& a, const std::vector<NodeA>& nodes_a, const ObbTree& b,
@@ -100,6 +186,7 @@ void descend(const ObbTree& a, const std::vector<NodeA>& nodes_a, const ObbTree&
   const Eigen::Matrix3d& rotation = placement.rotation;
   const Eigen::Vector3d& translation = placement.translation;
   const QueryBounds& bounds = placement.bounds;
+  const Eigen::Vector3d exact = Eigen::Vector3d::Zero();  // A's corners are exact
   const Eigen::Matrix3Xd& vertices_a = a.vertices();
   const Eigen::Matrix3Xd& vertices_b = b.vertices();
   const Eigen::Matrix3Xi& triangles_a = a.orderedTriangles();
@@ -131,17 +218,14 @@ void descend(const ObbTree& a, const std::vector<NodeA>& nodes_a, const ObbTree&
 
     if (node_a.isLeaf() && node_b.isLeaf()) {
       for (std::int32_t j = node_b.first; j < node_b.first + node_b.count; ++j) {
-        UncertainPoint q[3];
-        for (int k = 0; k < 3; ++k) {
-          const auto v = vertices_b.col(triangles_b(k, j));
-          q[k].p = rotation * v + translation;
-          q[k].error = bounds.pointError(v);
-        }
+        const UncertainPoint q[3] = {placement.map(vertices_b.col(triangles_b(0, j))),
+                                     placement.map(vertices_b.col(triangles_b(1, j))),
+                                     placement.map(vertices_b.col(triangles_b(2, j)))};
         for (std::int32_t i = node_a.first; i < node_a.first + node_a.count; ++i) {
           ++result.triangle_tests;
-          const UncertainPoint p[3] = {{vertices_a.col(triangles_a(0, i)), 0.0},
-                                       {vertices_a.col(triangles_a(1, i)), 0.0},
-                                       {vertices_a.col(triangles_a(2, i)), 0.0}};
+          const UncertainPoint p[3] = {{vertices_a.col(triangles_a(0, i)), exact},
+                                       {vertices_a.col(triangles_a(1, i)), exact},
+                                       {vertices_a.col(triangles_a(2, i)), exact}};
           std::optional<bool> hit = trianglesIntersectCertified(p[0], p[1], p[2], q[0], q[1], q[2]);
           if (!hit) {
             ++result.exact_fallbacks;
@@ -188,12 +272,7 @@ void collide(const ObbTree& a, const Eigen::Isometry3d& pose_a, const ObbTree& b
   result.exact_fallbacks = 0;
   if (a.nodeCount() == 0 || b.nodeCount() == 0) return;
 
-  // B's model frame to A's model frame, with the transpose standing for the inverse; the
-  // bounds account for the rotations not being exactly orthonormal.
-  const Placement placement{
-      pose_a, pose_b, pose_a.linear().transpose() * pose_b.linear(),
-      pose_a.linear().transpose() * (pose_b.translation() - pose_a.translation()),
-      queryBounds(a, pose_a, b, pose_b)};
+  const Placement placement = placementOf(a, pose_a, b, pose_b);
   if (a.floatBoxes() && b.floatBoxes()) {
     descend(a, a.compactNodes(), b, b.compactNodes(), placement, request, result);
   } else if (a.floatBoxes()) {

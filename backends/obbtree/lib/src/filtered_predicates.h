@@ -1,7 +1,9 @@
-// Orientation and comparison signs of points known only to within an error radius, decided in
-// double precision with a certified bound: a sign is returned only when no choice of the exact
-// points within their radii, and no rounding of the evaluation, can change it. Otherwise the
-// kernel records that it was unsure and the caller decides exactly.
+// Orientation and comparison signs of points known only to within per-coordinate error radii,
+// decided in double precision with a certified bound: a sign is returned only when no choice of
+// the exact points within their radii, and no rounding of the evaluation, can change it. When
+// the bound cannot decide and every input is exact (all radii zero), the exact predicate on the
+// doubles decides; otherwise the kernel records that it was unsure and the caller decides the
+// whole pair exactly.
 //
 // The bound for a determinant det(U) of computed difference vectors U (columns b - a, ...):
 // the exact differences lie within D = e_a + e_b + eps|U| of the computed ones per coordinate
@@ -9,7 +11,9 @@
 // entrywise, |det(U + E) - det(U)| <= perm(|U| + D) - perm(|U|), perm being the permanent (the
 // determinant's expansion with every sign positive). The rounding of det(U) itself is below
 // 5 u perm(|U|), and that of the two permanents and their difference below 8 eps perm(|U| + D);
-// the certificate adds 16 eps perm(|U| + D) for all of these together.
+// the certificate adds 16 eps perm(|U| + D) for all of these together. When perm(|U| + D) is
+// exactly zero, every term of every admissible determinant has a zero factor: the sign is
+// certainly zero (e.g. four points whose z coordinates are exact and equal).
 #pragma once
 
 #include <cmath>
@@ -18,6 +22,8 @@
 #include <Eigen/Core>
 
 #include <collido/obbtree/triangle_intersection.h>
+
+#include "exact_predicates.h"
 
 namespace collido::obbtree::detail {
 
@@ -37,58 +43,61 @@ class FilteredKernel {
     const Eigen::Vector3d au = u.cwiseAbs();
     const Eigen::Vector3d av = v.cwiseAbs();
     const Eigen::Vector3d aw = w.cwiseAbs();
-    const Eigen::Vector3d bu = au * (1.0 + kEps) + Eigen::Vector3d::Constant(a.error + b.error);
-    const Eigen::Vector3d bv = av * (1.0 + kEps) + Eigen::Vector3d::Constant(a.error + c.error);
-    const Eigen::Vector3d bw = aw * (1.0 + kEps) + Eigen::Vector3d::Constant(a.error + d.error);
+    const Eigen::Vector3d bu = au * (1.0 + kEps) + a.error + b.error;
+    const Eigen::Vector3d bv = av * (1.0 + kEps) + a.error + c.error;
+    const Eigen::Vector3d bw = aw * (1.0 + kEps) + a.error + d.error;
     const double inflated = permanent3(bu, bv, bw);
-    const double bound = (inflated - permanent3(au, av, aw)) + kSlack * inflated + kTiny;
-    return certain(det, bound);
+    const double bound = (inflated - permanent3(au, av, aw)) + kSlack * inflated;
+    const bool zero_is_exact =
+        inflated == 0.0 && !underflows(bu) && !underflows(bv) && !underflows(bw);
+    const int sign = certain(det, bound, zero_is_exact);
+    if (sign != kUnsure) return sign;
+    if (exact(a) && exact(b) && exact(c) && exact(d)) return detail::orient3d(a.p, b.p, c.p, d.p);
+    return unsureSign();
   }
 
   int orient2d(const Point& a, const Point& b, const Point& c, int drop) {
-    const int i = drop == 0 ? 1 : 0;
-    const int j = drop == 2 ? 1 : 2;
+    // The cyclic order of the kept coordinates, (y, z), (z, x), (x, y), as the exact predicate
+    // (exact_predicates.cpp) projects: the two must agree in sign within one decision.
+    const int i = (drop + 1) % 3;
+    const int j = (drop + 2) % 3;
     const double ui = b.p[i] - a.p[i];
     const double uj = b.p[j] - a.p[j];
     const double vi = c.p[i] - a.p[i];
     const double vj = c.p[j] - a.p[j];
     const double det = ui * vj - uj * vi;
-    const double eu = a.error + b.error;
-    const double ev = a.error + c.error;
-    const double bui = std::abs(ui) * (1.0 + kEps) + eu;
-    const double buj = std::abs(uj) * (1.0 + kEps) + eu;
-    const double bvi = std::abs(vi) * (1.0 + kEps) + ev;
-    const double bvj = std::abs(vj) * (1.0 + kEps) + ev;
+    const double bui = std::abs(ui) * (1.0 + kEps) + a.error[i] + b.error[i];
+    const double buj = std::abs(uj) * (1.0 + kEps) + a.error[j] + b.error[j];
+    const double bvi = std::abs(vi) * (1.0 + kEps) + a.error[i] + c.error[i];
+    const double bvj = std::abs(vj) * (1.0 + kEps) + a.error[j] + c.error[j];
     const double inflated = bui * bvj + buj * bvi;
     const double plain = std::abs(ui) * std::abs(vj) + std::abs(uj) * std::abs(vi);
-    const double bound = (inflated - plain) + kSlack * inflated + kTiny;
-    return certain(det, bound);
+    const double bound = (inflated - plain) + kSlack * inflated;
+    const bool zero_is_exact = inflated == 0.0 && !underflows(Eigen::Vector3d(bui, buj, 0.0)) &&
+                               !underflows(Eigen::Vector3d(bvi, bvj, 0.0));
+    const int sign = certain(det, bound, zero_is_exact);
+    if (sign != kUnsure) return sign;
+    if (exact(a) && exact(b) && exact(c)) return detail::orient2d(a.p, b.p, c.p, drop);
+    return unsureSign();
   }
 
   bool collinear(const Point& a, const Point& b, const Point& c) {
-    // Not collinear as soon as one projection certainly is not; collinearity itself (all three
-    // zero) can never be certified by a filter.
+    // Collinear exactly when all three projections are; the first one certainly non-zero
+    // settles it. Decided per projection, so an unsure projection leaves the kernel unsure.
     for (int drop = 0; drop < 3; ++drop) {
-      const bool was_unsure = unsure_;
-      unsure_ = false;
-      const int s = orient2d(a, b, c, drop);
-      const bool this_unsure = unsure_;
-      unsure_ = was_unsure;
-      if (!this_unsure && s != 0) return false;
+      if (orient2d(a, b, c, drop) != 0) return false;
     }
-    unsure_ = true;
     return true;
   }
 
   int compare(const Point& a, const Point& b, int k) {
     const double x = a.p[k];
     const double y = b.p[k];
-    const double radius = a.error + b.error;
+    const double radius = a.error[k] + b.error[k];
     if (radius == 0.0) return (x > y) - (x < y);  // exact doubles compare exactly
     const double difference = x - y;              // rounded: within eps |x - y| of the truth
     if (std::abs(difference) > radius * (1.0 + 4.0 * kEps) + kTiny) return difference > 0 ? 1 : -1;
-    unsure_ = true;
-    return 0;
+    return unsureSign();
   }
 
  private:
@@ -96,6 +105,9 @@ class FilteredKernel {
   static constexpr double kSlack = 16.0 * kEps;
   // Covers products that underflow into the subnormal range, where relative bounds fail.
   static constexpr double kTiny = 1e-290;
+  static constexpr int kUnsure = 2;
+
+  static bool exact(const Point& p) { return (p.error.array() == 0.0).all(); }
 
   static double permanent3(const Eigen::Vector3d& u, const Eigen::Vector3d& v,
                            const Eigen::Vector3d& w) {
@@ -103,9 +115,22 @@ class FilteredKernel {
            u.z() * (v.x() * w.y() + v.y() * w.x());
   }
 
-  int certain(double value, double bound) {
-    if (value > bound) return 1;
-    if (value < -bound) return -1;
+  // Whether a factor is so small that a product of three could underflow to zero: then a zero
+  // permanent proves nothing.
+  static bool underflows(const Eigen::Vector3d& factors) {
+    return ((factors.array() > 0.0) && (factors.array() < 1e-100)).any();
+  }
+
+  // The sign when the bound settles it, else kUnsure. `zero_is_exact`: the inflated permanent is
+  // exactly zero, so is every admissible determinant.
+  static int certain(double value, double bound, bool zero_is_exact) {
+    if (zero_is_exact) return 0;
+    if (value > bound + kTiny) return 1;
+    if (value < -(bound + kTiny)) return -1;
+    return kUnsure;
+  }
+
+  int unsureSign() {
     unsure_ = true;
     return 0;
   }

@@ -11,6 +11,10 @@ namespace collido::obbtree {
 namespace {
 
 constexpr double kEpsilon = std::numeric_limits<double>::epsilon();
+// Relative bounds fail where results are subnormal (absolute rounding error up to 2^-1074 per
+// operation); an absolute widening far above that, and far below any meaningful length, covers
+// meshes with subnormal coordinates.
+constexpr double kUnderflowGuard = 1e-290;
 
 // Sets centre and extents of `box` (axes given) from the extreme projections of the vertices,
 // measured from `reference` to keep the numbers small, and widens the extents so that the box
@@ -18,8 +22,8 @@ constexpr double kEpsilon = std::numeric_limits<double>::epsilon();
 // reasons about) contains every vertex exactly. The projections, the centre and the axes' own
 // deviation from orthonormality (axisDefect) each err by at most (axis defect + a few ulps)
 // times the magnitudes involved, |reference|_1 + |middle|_1 + |hi - lo|_1; the widening is 4
-// defects plus 64 ulps of that. `triangle(i)` gives the vertex indices of the i-th of `count`
-// triangles.
+// defects plus 64 ulps of that, plus kUnderflowGuard. `triangle(i)` gives the vertex indices of the
+// i-th of `count` triangles.
 template <typename TriangleAt>
 void setExtents(OrientedBox& box, const Eigen::Vector3d& reference,
                 const Eigen::Ref<const Eigen::Matrix3Xd>& vertices, std::int32_t count,
@@ -38,8 +42,8 @@ void setExtents(OrientedBox& box, const Eigen::Vector3d& reference,
   const Eigen::Vector3d middle = 0.5 * (lo + hi);
   box.center = reference + box.axes * middle;
   const double scale = reference.lpNorm<1>() + middle.lpNorm<1>() + (hi - lo).lpNorm<1>();
-  box.half_extents =
-      (0.5 * (hi - lo)).array() + (4.0 * axisDefect(box.axes) + 64.0 * kEpsilon) * scale;
+  box.half_extents = (0.5 * (hi - lo)).array() +
+                     (4.0 * axisDefect(box.axes) + 64.0 * kEpsilon) * scale + kUnderflowGuard;
 }
 
 }  // namespace
@@ -146,7 +150,8 @@ void measureCompact(CompactBox& box, const Eigen::Vector3d& center,
     }
   }
   const double scale = expanded.center.lpNorm<1>() + reach.lpNorm<1>();
-  const double widening = (4.0 * axisDefect(expanded.axes) + 64.0 * kEpsilon) * scale;
+  const double widening =
+      (4.0 * axisDefect(expanded.axes) + 64.0 * kEpsilon) * scale + kUnderflowGuard;
   for (int k = 0; k < 3; ++k)
     box.half_extents[k] = roundedUp(reach[k] + widening);
 }

@@ -7,6 +7,7 @@
 #include <array>
 #include <cmath>
 #include <random>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -37,8 +38,10 @@ Tri randomTriangle(std::mt19937_64& rng, double scale) {
 }
 
 std::optional<bool> certified(const Tri& a, const Tri& b, double radius_b) {
-  return trianglesIntersectCertified({a[0], 0.0}, {a[1], 0.0}, {a[2], 0.0}, {b[0], radius_b},
-                                     {b[1], radius_b}, {b[2], radius_b});
+  const Vector3d exact = Vector3d::Zero();
+  const Vector3d radius = Vector3d::Constant(radius_b);
+  return trianglesIntersectCertified({a[0], exact}, {a[1], exact}, {a[2], exact}, {b[0], radius},
+                                     {b[1], radius}, {b[2], radius});
 }
 
 bool exact(const Tri& a, const Tri& b) {
@@ -98,13 +101,42 @@ TEST(CertifiedTriangleTest, ExactlyTouchingPairsAreLeftToTheExactTest) {
   }
 }
 
-TEST(CertifiedTriangleTest, DegenerateTrianglesAreLeftToTheExactTest) {
+TEST(CertifiedTriangleTest, DegenerateInexactTrianglesAreLeftToTheExactTest) {
   const Tri segment = {Vector3d(0, 0, 0), Vector3d(1, 1, 1), Vector3d(2, 2, 2)};
   const Tri point = {Vector3d(1, 2, 3), Vector3d(1, 2, 3), Vector3d(1, 2, 3)};
   const Tri plain = {Vector3d(-1, 0, 0), Vector3d(3, 0, 0), Vector3d(0, 3, 0)};
-  EXPECT_FALSE(certified(plain, segment, 0.0).has_value());
-  EXPECT_FALSE(certified(segment, plain, 0.0).has_value());
-  EXPECT_FALSE(certified(plain, point, 0.0).has_value());
+  EXPECT_FALSE(certified(plain, segment, 1e-16).has_value());
+  EXPECT_FALSE(certified(segment, plain, 1e-16).has_value());
+  EXPECT_FALSE(certified(plain, point, 1e-16).has_value());
+}
+
+// Exact inputs (all radii zero) are decided here, degenerate and touching ones included: the
+// unsure signs go to the exact predicates on the doubles.
+TEST(CertifiedTriangleTest, ExactInputsAreAlwaysAnswered) {
+  std::mt19937_64 rng(11);
+  const Tri segment = {Vector3d(0, 0, 0), Vector3d(1, 1, 0), Vector3d(2, 2, 0)};
+  const Tri plain = {Vector3d(-1, 0, 0), Vector3d(3, 0, 0), Vector3d(0, 3, 0)};
+  EXPECT_EQ(certified(plain, segment, 0.0), std::optional<bool>(true));
+  for (int trial = 0; trial < 200; ++trial) {
+    const Tri a = randomTriangle(rng, 1.0);
+    const Tri b = touching(a, rng, trial % 2 == 0);
+    EXPECT_EQ(certified(a, b, 0.0), std::optional<bool>(true)) << trial;
+  }
+}
+
+// Exact, equal z coordinates make coplanarity certain even when x and y are uncertain.
+TEST(CertifiedTriangleTest, ExactCoordinatesCertifyCoplanarity) {
+  const Vector3d exact = Vector3d::Zero();
+  const Vector3d xy_only(1e-15, 1e-15, 0.0);
+  const Tri a = {Vector3d(0, 0, 1), Vector3d(4, 0, 1), Vector3d(0, 4, 1)};
+  const Tri overlapping = {Vector3d(1, 1, 1), Vector3d(5, 1, 1), Vector3d(1, 5, 1)};
+  const Tri apart = {Vector3d(3, 3, 1), Vector3d(5, 3, 1), Vector3d(3, 5, 1)};
+  const auto run = [&](const Tri& b) {
+    return trianglesIntersectCertified({a[0], exact}, {a[1], exact}, {a[2], exact}, {b[0], xy_only},
+                                       {b[1], xy_only}, {b[2], xy_only});
+  };
+  EXPECT_EQ(run(overlapping), std::optional<bool>(true));
+  EXPECT_EQ(run(apart), std::optional<bool>(false));
 }
 
 Pose randomPose(std::mt19937_64& rng, double reach) {
@@ -198,13 +230,15 @@ TEST(ExactCollide, CubesTouchingUnderQuarterTurns) {
     // axis, which the oracle decides for what they are.
     const Eigen::AngleAxisd rounded(Eigen::AngleAxisd(rotations[r]).angle(),
                                     Eigen::AngleAxisd(rotations[r]).axis());
-    for (const Eigen::Matrix3d& rotation : {rotations[r], rounded.toRotationMatrix()}) {
+    for (const bool exact_turn : {true, false}) {
+      const Eigen::Matrix3d rotation = exact_turn ? rotations[r] : rounded.toRotationMatrix();
       for (const double gap : {0.0, std::ldexp(1.0, -50), -std::ldexp(1.0, -50), 1e-9}) {
         // Face to face along x, offset in y and z so that edges and corners meet as well.
         const Pose pose_a = makePose(rotations[(r * 7) % 24], Vector3d(0, 0, 0));
         const Pose pose_b = makePose(rotation, Vector3d(2.0 + gap, r % 3 == 0 ? 2.0 : 0.5, 0));
-        const std::string label = "rotation " + std::to_string(r) + ", gap " + std::to_string(gap);
-        checkAllBoxKinds(mesh, trees, pose_a, mesh, trees, pose_b, label);
+        std::ostringstream label;
+        label << (exact_turn ? "exact" : "rounded") << " rotation " << r << ", gap " << gap;
+        checkAllBoxKinds(mesh, trees, pose_a, mesh, trees, pose_b, label.str());
         touching += exactIntersectingPairs(mesh, pose_a, mesh, pose_b).intersecting ? 1 : 0;
         if (HasFailure()) return;
       }

@@ -43,8 +43,9 @@ inline bool boxesOverlap(const Eigen::Matrix3d& rotation, const Eigen::Vector3d&
   const Eigen::Vector3d& a = half_a;
   const Eigen::Vector3d& b = half_b;
   const Eigen::Matrix3d abs_r = r.cwiseAbs();
-  const double slack =
-      5.0 * tolerance.axis_error * (t.cwiseAbs().sum() + a.sum() + b.sum()) + tolerance.inflation;
+  // 1e-290: relative bounds fail where products are subnormal.
+  const double slack = 5.0 * tolerance.axis_error * (t.cwiseAbs().sum() + a.sum() + b.sum()) +
+                       tolerance.inflation + 1e-290;
   const auto separated = [slack](double distance, double radius_sum) {
     return distance > radius_sum + slack;
   };

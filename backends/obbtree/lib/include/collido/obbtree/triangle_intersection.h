@@ -13,17 +13,21 @@ bool trianglesIntersect(const Eigen::Vector3d& p1, const Eigen::Vector3d& q1,
                         const Eigen::Vector3d& r1, const Eigen::Vector3d& p2,
                         const Eigen::Vector3d& q2, const Eigen::Vector3d& r2);
 
-/// A point known only to within `error` (a bound on the Euclidean distance, >= 0) of the exact
-/// point it stands for, e.g. a vertex brought into another frame by a rounded transform.
+/// A point known only to within `error` of the exact point it stands for, per coordinate
+/// (|p[k] - exact[k]| <= error[k], all >= 0), e.g. a vertex brought into another frame by a
+/// rounded transform; a zero error marks a coordinate that is exact.
 struct UncertainPoint {
   Eigen::Vector3d p = Eigen::Vector3d::Zero();
-  double error = 0.0;
+  Eigen::Vector3d error = Eigen::Vector3d::Zero();
 };
 
 /// trianglesIntersect for the exact corners that the uncertain ones stand for, decided in double
 /// precision with certified error bounds: the answer when no exact corners within the radii, and
 /// no rounding, can change it; std::nullopt when one might (touching, coplanar, degenerate or
-/// nearly so), and the caller must decide exactly (posedTrianglesIntersect).
+/// nearly so, with inexact corners), and the caller must decide exactly
+/// (posedTrianglesIntersect). A sign whose inputs are all exact is decided by exact predicates
+/// when the filter cannot, and a sign that is zero for every point within the radii (e.g. exact
+/// equal coordinates) is certified as zero, so exactly placed contacts are answered here too.
 std::optional<bool> trianglesIntersectCertified(const UncertainPoint& p1, const UncertainPoint& q1,
                                                 const UncertainPoint& r1, const UncertainPoint& p2,
                                                 const UncertainPoint& q2, const UncertainPoint& r2);
