@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
 # The default study: installs what is missing, builds Release, and runs every backend variant
-# on the bundled scenes with the default sweep (scenes/sweeps/default.json), each combination in
-# its own worker process, every answer checked against the exact oracle. Prints the table and
-# writes the dashboard. Results: build/release/study/ (table.txt, records.jsonl, summary.json,
-# report.html). An interrupted run resumes where it stopped; a finished one is kept as
-# build/release/study.previous and the new report compares against it.
+# on the bundled scenes and the stress scenes with the default sweep (scenes/sweeps/default.json),
+# each combination in its own worker process, every answer checked against the exact oracle.
+# Prints the table and writes the dashboard. Results: build/release/study/ (table.txt,
+# records.jsonl, summary.json, robustness.txt, report.html). An interrupted run resumes where it
+# stopped; a finished one is kept as build/release/study.previous and the new report compares
+# against it.
 # Extra arguments go to `collido study` (e.g. --repetitions 5).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -13,7 +14,9 @@ tools/web_deps.sh
 tools/configure.sh release --target collido collido_plugins
 out=build/release/study
 previous=build/release/study.previous
-study=(build/release/collido study scenes/*.json --sweep scenes/sweeps/default.json --out "$out")
+# The bundled scenes and the stress scenes (one per robustness category: the robustness matrix).
+study=(build/release/collido study scenes/*.json scenes/stress/*.json
+       --sweep scenes/sweeps/default.json --out "$out")
 
 if [[ -f "$out/plan.json" && ! -f "$out/.complete" ]]; then
   # Interrupted earlier: finish it. A different plan (scenes or sweep changed) starts afresh.

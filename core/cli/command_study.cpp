@@ -205,7 +205,8 @@ int runStudy(const StudyArguments& args, const PluginOptions& plugins) {
       return 2;
     }
     scenes.push_back({std::filesystem::absolute(path).lexically_normal().string(),
-                      scene.value().name, scene.value().hasGeneratedShapes()});
+                      scene.value().name, scene.value().hasGeneratedShapes(),
+                      scene.value().category});
   }
   const PluginDiscovery found = discoverPlugins(plugins.paths, !plugins.no_defaults);
   for (const std::string& problem : found.problems)
@@ -334,7 +335,10 @@ int runStudy(const StudyArguments& args, const PluginOptions& plugins) {
     return 130;
   }
   std::cout << study::studyTable(all.value());
-  std::cerr << "results: " << store.directory() << "/{table.txt,records.jsonl,summary.json}\n";
+  const bool robustness =
+      std::filesystem::exists(std::filesystem::path(store.directory()) / "robustness.txt");
+  std::cerr << "results: " << store.directory() << "/{table.txt,records.jsonl,summary.json"
+            << (robustness ? ",robustness.txt" : "") << "}\n";
   return 0;
 }
 

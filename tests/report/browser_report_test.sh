@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The dashboard in a real browser: runs a small study (two backends, needs declared and every,
-# two resolutions so the scaling view has curves), writes its report with itself as the
+# two resolutions so the scaling view has curves, and a small stress scene so the robustness
+# matrix has cells, ODE's all-pairs ones unsupported), writes its report with itself as the
 # baseline, and opens it in headless Chromium (web/tests/report.test.mjs): every chart drawn,
 # no console error, no network request.
 # Usage: browser_report_test.sh COLLIDO_EXECUTABLE SOURCE_DIR WORK_DIR
@@ -18,10 +19,17 @@ cat > "$work/sweep.json" <<'JSON'
   "repetitions": 1
 }
 JSON
-"$collido" study "$source_dir/scenes/interlocked_tori.json" --sweep "$work/sweep.json" \
-  --out "$work/study" --quiet > "$work/table.txt"
+cat > "$work/stress_touching.json" <<'JSON'
+{
+  "name": "stress_touching_small",
+  "stress": {"category": "touching", "severities": [0, 2], "cases_per_severity": 3, "seed": 1}
+}
+JSON
+"$collido" study "$source_dir/scenes/interlocked_tori.json" "$work/stress_touching.json" \
+  --sweep "$work/sweep.json" --out "$work/study" --quiet > "$work/table.txt"
 "$collido" report "$work/study" --baseline "$work/study" -o "$work/report.html"
 COLLIDO_REPORT_HTML="$work/report.html" \
-COLLIDO_EXPECT_VIEWS="time-vs-error,time-distribution,memory,scaling,needs,comparison" \
+COLLIDO_EXPECT_VIEWS="time-vs-error,robustness,time-distribution,memory,scaling,needs,comparison" \
+COLLIDO_EXPECT_SECTION_TEXT="robustness=unsupported,robustness=touching" \
 COLLIDO_REPORT_SCREENSHOT="$work/report.png" \
   node --test "$source_dir/web/tests/"

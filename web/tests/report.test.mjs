@@ -10,6 +10,10 @@ import { chromium } from 'playwright-core';
 const reportPath = process.env.COLLIDO_REPORT_HTML;
 const browserPath = process.env.CHROMIUM || '/usr/bin/chromium';
 const expectedViews = (process.env.COLLIDO_EXPECT_VIEWS || '').split(',').filter(Boolean);
+// "section=text,...": text each named section must show (e.g. robustness=unsupported: a question
+// a backend does not answer is labelled so in the matrix, never drawn as zero errors).
+const expectedTexts = (process.env.COLLIDO_EXPECT_SECTION_TEXT || '').split(',').filter(Boolean)
+  .map((pair) => pair.split('='));
 
 test('every chart of the report renders without console errors', async () => {
   assert.ok(reportPath, 'set COLLIDO_REPORT_HTML to the report to open');
@@ -59,9 +63,13 @@ test('every chart of the report renders without console errors', async () => {
       assert.ok(charts.some((c) => c.view.startsWith(view)), `no chart for view ${view}`);
     }
     const sections = await page.$$eval('section.view', (nodes) => nodes.map((n) => n.id));
-    for (const id of ['time-vs-error', 'time-distributions', 'memory', 'scaling', 'failures',
-      'needs', 'comparison', 'table']) {
+    for (const id of ['time-vs-error', 'robustness', 'time-distributions', 'memory', 'scaling',
+      'failures', 'needs', 'comparison', 'table']) {
       assert.ok(sections.includes(id), `missing section ${id}`);
+    }
+    for (const [id, text] of expectedTexts) {
+      const shown = await page.$eval('#' + id, (n) => n.textContent);
+      assert.ok(shown.includes(text), `section ${id} does not show "${text}"`);
     }
     assert.deepEqual(problems, [], problems.join('\n'));
   } finally {

@@ -1,14 +1,34 @@
 #include <collido/mesh/triangle_mesh.h>
 
 #include <cmath>
+#include <iomanip>
+#include <sstream>
+#include <string>
 
 namespace collido {
+
+namespace {
+
+static_assert(kMaxCoordinate == 1e18, "the messages below say 1e18");
+
+// A coordinate as written in a message: the shortest text that reads back as the same double
+// ("-1e+19", "1000000000000000001"), not std::to_string's fixed six decimals.
+std::string coordinateText(double value) {
+  for (int digits = 1;; ++digits) {
+    std::ostringstream text;
+    text << std::setprecision(digits) << value;
+    if (digits == 17 || std::stod(text.str()) == value) return text.str();
+  }
+}
+
+}  // namespace
 
 Status validateMesh(const TriangleMesh& mesh, const std::string& source) {
   if (mesh.triangleCount() == 0) {
     return {StatusCode::kInvalidArgument, source + ": the mesh has no triangles"};
   }
   static const char* const kAxis[] = {"x", "y", "z"};
+  // Per vertex, a non-finite coordinate is named before one out of range: it is the worse news.
   for (Eigen::Index v = 0; v < mesh.vertices.cols(); ++v) {
     for (int k = 0; k < 3; ++k) {
       const double value = mesh.vertices(k, v);
@@ -16,6 +36,15 @@ Status validateMesh(const TriangleMesh& mesh, const std::string& source) {
         return {StatusCode::kInvalidArgument, source + ": vertex " + std::to_string(v) +
                                                   " has a non-finite " + kAxis[k] +
                                                   " coordinate (" + std::to_string(value) + ")"};
+      }
+    }
+    for (int k = 0; k < 3; ++k) {
+      const double value = mesh.vertices(k, v);
+      if (std::abs(value) > kMaxCoordinate) {
+        return {StatusCode::kInvalidArgument,
+                source + ": vertex " + std::to_string(v) + " has " + kAxis[k] + " coordinate " +
+                    coordinateText(value) + ", beyond the coordinate limit |" + kAxis[k] +
+                    "| <= 1e18 (scenes/README.md)"};
       }
     }
   }

@@ -8,6 +8,8 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
+#include <limits>
 #include <map>
 #include <memory>
 #include <set>
@@ -20,6 +22,7 @@
 #include <collido/mesh/mesh_io.h>
 #include <collido/mesh/procedural.h>
 #include <collido/scene/scene.h>
+#include <collido/stress/stress_cases.h>
 
 #include "scene_motion.h"
 
@@ -55,10 +58,12 @@ class Reader {
   Reader(std::string label, double resolution)
       : label_(std::move(label)), resolution_(resolution) {}
 
-  /// A generator's sample count at the load's resolution, never below the generator's minimum.
+  /// A generator's sample count at the load's resolution, never below the generator's minimum
+  /// and never past the int range (a huge resolution then meets the generator's own limit).
   int resolved(int count, int minimum) const {
     const double scaled = std::round(static_cast<double>(count) * resolution_);
-    return static_cast<int>(std::max(static_cast<double>(minimum), scaled));
+    const double largest = static_cast<double>(std::numeric_limits<int>::max());
+    return static_cast<int>(std::min(largest, std::max(static_cast<double>(minimum), scaled)));
   }
 
   [[noreturn]] void fail(const Node& node, const std::string& problem) const {
@@ -142,6 +147,30 @@ class Reader {
   double resolution_;
 };
 
+// The scene's triangle limit (SceneLoadOptions::max_triangles), charged shape by shape: a
+// generated shape before it is generated (from its parameters), a mesh file once read.
+class TriangleBudget {
+ public:
+  TriangleBudget(const Reader& reader, std::size_t limit) : reader_(reader), limit_(limit) {}
+
+  /// Adds `triangles` (computed in double, so huge counts cannot overflow) for the shape at
+  /// `node`, described by `what`; fails naming the shape when the scene goes past the limit.
+  void charge(const Node& node, const std::string& what, double triangles) {
+    used_ += triangles;
+    if (limit_ == 0 || used_ <= static_cast<double>(limit_)) return;
+    std::ostringstream text;
+    text << std::fixed << std::setprecision(0) << what << " needs " << triangles
+         << " triangles, which takes the scene to " << used_ << ", more than this load allows ("
+         << limit_ << ", SceneLoadOptions::max_triangles)";
+    reader_.fail(node, text.str());
+  }
+
+ private:
+  const Reader& reader_;
+  std::size_t limit_;
+  double used_ = 0.0;
+};
+
 // --- poses -----------------------------------------------------------------------------------
 
 constexpr double kRotationTolerance = 1e-9;
@@ -194,7 +223,18 @@ Eigen::Matrix3d readRotation(const Reader& r, const Node& node) {
 Pose readPose(const Reader& r, const Node& node) {
   r.expectObject(node, {"translation", "rotation"});
   Pose pose = Pose::Identity();
-  if (node.has("translation")) pose.translation() = r.vector3(node.at("translation"));
+  if (node.has("translation")) {
+    pose.translation() = r.vector3(node.at("translation"));
+    // The coordinate limit of mesh vertices holds for where a pose puts them, too.
+    for (int k = 0; k < 3; ++k) {
+      if (std::abs(pose.translation()[k]) > kMaxCoordinate) {
+        std::ostringstream text;
+        text << pose.translation()[k] << " is beyond the coordinate limit |t| <= " << kMaxCoordinate
+             << " (scenes/README.md)";
+        r.fail(node.at("translation").at(static_cast<std::size_t>(k)), text.str());
+      }
+    }
+  }
   if (node.has("rotation")) pose.linear() = readRotation(r, node.at("rotation"));
   return pose;
 }
@@ -213,7 +253,10 @@ std::string shortNumber(double value) {
   return out.str();
 }
 
-using Generator = Result<TriangleMesh> (*)(const Reader&, const Node&, std::string&);
+// Reads a generator's parameters, describes the shape in `text`, charges its triangle count
+// (the formulas of collido/mesh/procedural.h) to the budget, then generates it.
+using Generator = Result<TriangleMesh> (*)(const Reader&, const Node&, std::string&,
+                                           TriangleBudget&);
 
 TorusParams readTorusParams(const Reader& r, const Node& n) {
   TorusParams p;
@@ -226,16 +269,19 @@ TorusParams readTorusParams(const Reader& r, const Node& n) {
   return p;
 }
 
-Result<TriangleMesh> generateTorus(const Reader& r, const Node& n, std::string& text) {
+Result<TriangleMesh> generateTorus(const Reader& r, const Node& n, std::string& text,
+                                   TriangleBudget& budget) {
   r.expectObject(n,
                  {"generator", "major_radius", "minor_radius", "major_segments", "minor_segments"});
   const TorusParams p = readTorusParams(r, n);
   text = "torus R=" + shortNumber(p.major_radius) + " r=" + shortNumber(p.minor_radius) + " " +
          std::to_string(p.major_segments) + "x" + std::to_string(p.minor_segments);
+  budget.charge(n, text, 2.0 * p.major_segments * p.minor_segments);
   return makeTorus(p);
 }
 
-Result<TriangleMesh> generateChain(const Reader& r, const Node& n, std::string& text) {
+Result<TriangleMesh> generateChain(const Reader& r, const Node& n, std::string& text,
+                                   TriangleBudget& budget) {
   r.expectObject(n, {"generator", "links", "clearance", "major_radius", "minor_radius",
                      "major_segments", "minor_segments"});
   ChainParams p;
@@ -244,10 +290,12 @@ Result<TriangleMesh> generateChain(const Reader& r, const Node& n, std::string& 
   p.link = readTorusParams(r, n);
   text = "chain of " + std::to_string(p.links) + " tori R=" + shortNumber(p.link.major_radius) +
          " r=" + shortNumber(p.link.minor_radius) + " clearance=" + shortNumber(p.clearance);
+  budget.charge(n, text, 2.0 * p.links * p.link.major_segments * p.link.minor_segments);
   return makeChain(p);
 }
 
-Result<TriangleMesh> generateSphere(const Reader& r, const Node& n, std::string& text) {
+Result<TriangleMesh> generateSphere(const Reader& r, const Node& n, std::string& text,
+                                    TriangleBudget& budget) {
   r.expectObject(n, {"generator", "radius", "slices", "stacks"});
   SphereParams p;
   p.radius = r.positive(n, "radius", p.radius);
@@ -255,10 +303,12 @@ Result<TriangleMesh> generateSphere(const Reader& r, const Node& n, std::string&
   p.stacks = r.resolved(static_cast<int>(r.integer(n, "stacks", p.stacks, 2, 1 << 20)), 2);
   text = "sphere r=" + shortNumber(p.radius) + " " + std::to_string(p.slices) + "x" +
          std::to_string(p.stacks);
+  budget.charge(n, text, 2.0 * p.slices * (p.stacks - 1.0));
   return makeSphere(p);
 }
 
-Result<TriangleMesh> generateGridSheet(const Reader& r, const Node& n, std::string& text) {
+Result<TriangleMesh> generateGridSheet(const Reader& r, const Node& n, std::string& text,
+                                       TriangleBudget& budget) {
   r.expectObject(n, {"generator", "width", "depth", "cells_x", "cells_y", "amplitude", "waves"});
   GridSheetParams p;
   p.width = r.positive(n, "width", p.width);
@@ -268,10 +318,12 @@ Result<TriangleMesh> generateGridSheet(const Reader& r, const Node& n, std::stri
   p.amplitude = r.number(n, "amplitude", p.amplitude);
   p.waves = r.number(n, "waves", p.waves);
   text = "grid sheet " + std::to_string(p.cells_x) + "x" + std::to_string(p.cells_y);
+  budget.charge(n, text, 2.0 * p.cells_x * p.cells_y);
   return makeGridSheet(p);
 }
 
-Result<TriangleMesh> generateGear(const Reader& r, const Node& n, std::string& text) {
+Result<TriangleMesh> generateGear(const Reader& r, const Node& n, std::string& text,
+                                  TriangleBudget& budget) {
   r.expectObject(n, {"generator", "teeth", "module", "face_width", "pressure_angle_deg",
                      "flank_samples", "root_samples"});
   GearParams p;
@@ -284,10 +336,13 @@ Result<TriangleMesh> generateGear(const Reader& r, const Node& n, std::string& t
   p.root_samples =
       r.resolved(static_cast<int>(r.integer(n, "root_samples", p.root_samples, 1, 1 << 16)), 1);
   text = "gear z=" + std::to_string(p.teeth) + " m=" + shortNumber(p.module);
+  // Counted with both root feet, as makeGear's own limit does: at most 2 more points a tooth.
+  budget.charge(n, text, 4.0 * p.teeth * (2.0 * p.flank_samples + 1.0 + p.root_samples + 2.0));
   return makeGear(p);
 }
 
-Result<TriangleMesh> generateStationModule(const Reader& r, const Node& n, std::string& text) {
+Result<TriangleMesh> generateStationModule(const Reader& r, const Node& n, std::string& text,
+                                           TriangleBudget& budget) {
   r.expectObject(n, {"generator", "radius", "length", "segments", "rings", "port_radius",
                      "port_length", "truss_bays", "panel_span", "panel_width"});
   StationModuleParams p;
@@ -304,6 +359,7 @@ Result<TriangleMesh> generateStationModule(const Reader& r, const Node& n, std::
   text = "station module R=" + shortNumber(p.radius) + " L=" + shortNumber(p.length) + " " +
          std::to_string(p.segments) + "x" + std::to_string(p.rings) + ", " +
          std::to_string(p.truss_bays) + " truss bays";
+  budget.charge(n, text, 4.0 * p.segments * (p.rings + 1.0) + 12.0 * (8.0 * p.truss_bays + 11.0));
   return makeStationModule(p);
 }
 
@@ -317,8 +373,8 @@ const std::map<std::string, Generator>& generators() {
 
 class ShapeLoader {
  public:
-  ShapeLoader(const Reader& reader, std::string base_directory)
-      : reader_(reader), base_(std::move(base_directory)) {}
+  ShapeLoader(const Reader& reader, std::string base_directory, std::size_t max_triangles)
+      : reader_(reader), base_(std::move(base_directory)), budget_(reader, max_triangles) {}
 
   LoadedShape load(const Node& node) {
     const Reader& r = reader_;
@@ -326,7 +382,10 @@ class ShapeLoader {
     if (node.has("mesh") == node.has("generator")) {
       r.fail(node, "give exactly one of 'mesh' (a file) or 'generator'");
     }
-    return node.has("mesh") ? loadFile(node) : generate(node);
+    if (node.has("generator")) return generate(node);
+    LoadedShape shape = loadFile(node);
+    budget_.charge(node, shape.report.source, static_cast<double>(shape.mesh->triangleCount()));
+    return shape;
   }
 
  private:
@@ -342,7 +401,13 @@ class ShapeLoader {
     MeshReport report;
     Result<TriangleMesh> mesh = loadMesh(file.lexically_normal().string(), &report);
     if (!mesh.ok()) r.fail(node.at("mesh"), mesh.status().message());
-    if (scale != 1.0) mesh.value().vertices *= scale;
+    if (scale != 1.0) {
+      mesh.value().vertices *= scale;
+      // A large scale can take finite coordinates past the double range.
+      if (Status s = validateMesh(mesh.value(), file.lexically_normal().string()); !s.ok()) {
+        r.fail(node.at("scale"), "scaled by " + shortNumber(scale) + ": " + s.message());
+      }
+    }
     LoadedShape shape{std::make_shared<const TriangleMesh>(std::move(mesh).value()), report};
     cache_.emplace(key, shape);
     return shape;
@@ -359,8 +424,10 @@ class ShapeLoader {
       r.fail(node.at("generator"), "unknown generator '" + name + "' (known: " + list + ")");
     }
     std::string text;
-    Result<TriangleMesh> mesh = found->second(r, node, text);
+    Result<TriangleMesh> mesh = found->second(r, node, text, budget_);
     if (!mesh.ok()) r.fail(node, mesh.status().message());
+    // Finite parameters can still overflow in the shape (a radius near the double maximum).
+    if (Status s = validateMesh(mesh.value(), text); !s.ok()) r.fail(node, s.message());
     LoadedShape shape;
     shape.report.source = text;
     shape.report.importer = "generator";
@@ -371,6 +438,7 @@ class ShapeLoader {
 
   const Reader& reader_;
   std::string base_;
+  TriangleBudget budget_;
   std::map<std::string, LoadedShape> cache_;
 };
 
@@ -457,17 +525,139 @@ Json::parser_callback_t duplicateKeyCheck(const std::string& label) {
   };
 }
 
+// --- stress scenes ---------------------------------------------------------------------------
+
+// A top-level "stress" block stands for every object and query: the cases of one robustness
+// category (collido/stress/stress_cases.h) at the listed severities, each case two objects at
+// fixed poses, asked all_pairs and boolean, in one frame. The scene holds exactly what
+// generateStressCases gives, so a study and the stress tests see the same cases.
+void readStress(const Reader& r, const Node& root, const std::string& base_directory,
+                const SceneLoadOptions& options, Scene& scene) {
+  for (const char* key : {"objects", "queries", "frames"}) {
+    if (root.has(key)) {
+      r.fail(root.at(key), std::string("'") + key +
+                               "' is not allowed beside 'stress', which makes a stress scene's "
+                               "objects, queries and its one frame");
+    }
+  }
+  const Node node = root.at("stress");
+  r.expectObject(node, {"category", "severities", "cases_per_severity", "seed", "meshes"});
+  if (!node.has("category")) r.fail(node, "missing 'category'");
+  const std::string name = r.string(node.at("category"));
+  const std::optional<stress::Category> category = stress::parseCategory(name);
+  if (!category) {
+    std::string known;
+    for (const stress::Category c : stress::allCategories())
+      known += (known.empty() ? "" : ", ") + std::string(stress::categoryName(c));
+    r.fail(node.at("category"), "unknown stress category '" + name + "' (known: " + known + ")");
+  }
+  const stress::SeverityRange range = stress::severityRange(*category);
+  std::vector<int> severities;
+  if (node.has("severities")) {
+    const Node list = node.at("severities");
+    r.expectArray(list);
+    if (list.value.empty()) r.fail(list, "give at least one severity");
+    for (std::size_t i = 0; i < list.value.size(); ++i) {
+      const auto severity = static_cast<int>(
+          r.integer(list.at(i), std::numeric_limits<int>::min(), std::numeric_limits<int>::max()));
+      if (severity < range.min || severity > range.max) {
+        r.fail(list.at(i), "severity " + std::to_string(severity) + " is outside [" +
+                               std::to_string(range.min) + ", " + std::to_string(range.max) +
+                               "] for " + name + " (" + range.meaning + ")");
+      }
+      if (std::find(severities.begin(), severities.end(), severity) != severities.end()) {
+        r.fail(list.at(i), "severity " + std::to_string(severity) + " is listed twice");
+      }
+      severities.push_back(severity);
+    }
+  } else {
+    severities = stress::defaultSeverities(*category);
+  }
+  const auto per_severity =
+      static_cast<std::size_t>(r.integer(node, "cases_per_severity", 4, 1, 1000));
+  const auto seed = static_cast<std::uint64_t>(r.integer(node, "seed", 1, 0, INT64_MAX));
+
+  stress::StressInputs inputs;
+  if (*category == stress::Category::kMeshDefects) {
+    if (!node.has("meshes")) {
+      r.fail(node, "mesh_defects needs 'meshes': the mesh files to pose (relative to the scene)");
+    }
+    const Node meshes = node.at("meshes");
+    r.expectArray(meshes);
+    if (meshes.value.empty()) r.fail(meshes, "give at least one mesh file");
+    for (std::size_t i = 0; i < meshes.value.size(); ++i) {
+      const std::filesystem::path file =
+          (std::filesystem::path(base_directory) / r.string(meshes.at(i))).lexically_normal();
+      Result<TriangleMesh> mesh = loadMesh(file.string());
+      if (!mesh.ok()) r.fail(meshes.at(i), mesh.status().message());
+      inputs.defect_meshes.push_back(
+          {file.stem().string(), std::make_shared<const TriangleMesh>(std::move(mesh).value())});
+    }
+  } else if (node.has("meshes")) {
+    r.fail(node.at("meshes"), "only the mesh_defects category takes 'meshes'");
+  }
+
+  scene.category = name;
+  TriangleBudget budget(r, options.max_triangles);
+  // The defect meshes are shared by many cases: inspect each mesh once.
+  std::map<const TriangleMesh*, MeshReport> inspected;
+  const auto add_object = [&](const std::string& object_name, const char* side,
+                              const std::shared_ptr<const TriangleMesh>& mesh, const Pose& pose) {
+    SceneObject object;
+    object.name = object_name + "/" + side;
+    object.mesh = mesh;
+    auto found = inspected.find(mesh.get());
+    if (found == inspected.end()) {
+      MeshReport report;
+      report.importer = "stress";
+      inspectMesh(*mesh, report);
+      found = inspected.emplace(mesh.get(), report).first;
+    }
+    object.report = found->second;
+    object.report.source = name + " stress case, object " + side;
+    object.poses = {pose};
+    scene.objects.push_back(std::move(object));
+    return scene.objects.size() - 1;
+  };
+  for (const int severity : severities) {
+    Result<std::vector<stress::StressCase>> cases =
+        stress::generateStressCases(*category, severity, per_severity, seed, inputs);
+    if (!cases.ok()) r.fail(node, cases.status().message());
+    for (const stress::StressCase& c : cases.value()) {
+      budget.charge(node, "stress case " + c.name,
+                    static_cast<double>(c.a->triangleCount() + c.b->triangleCount()));
+      const std::size_t a = add_object(c.name, "a", c.a, c.pose_a);
+      const std::size_t b = add_object(c.name, "b", c.b, c.pose_b);
+      for (const QueryKind kind : {QueryKind::kAllPairs, QueryKind::kBoolean}) {
+        SceneQuery query;
+        query.name = c.name + " " + queryKindName(kind);
+        query.a = a;
+        query.b = b;
+        query.request.kind = kind;
+        scene.queries.push_back(query);
+      }
+    }
+  }
+}
+
 // --- the scene -------------------------------------------------------------------------------
 
-Scene readScene(const Reader& r, const Json& document, const std::string& base_directory) {
+Scene readScene(const Reader& r, const Json& document, const std::string& base_directory,
+                const SceneLoadOptions& options) {
   const Node root{document, ""};
-  r.expectObject(root, {"name", "description", "frames", "objects", "queries"});
+  r.expectObject(root, {"name", "description", "frames", "objects", "queries", "stress"});
   Scene scene;
   scene.name = root.has("name") ? r.string(root.at("name")) : "";
   scene.description = root.has("description") ? r.string(root.at("description")) : "";
+  if (root.has("stress")) {
+    readStress(r, root, base_directory, options, scene);
+    return scene;
+  }
   const bool frames_given = root.has("frames");
+  const auto max_frames = static_cast<std::int64_t>(
+      std::min<std::size_t>(options.max_frames, std::numeric_limits<std::int64_t>::max()));
   if (frames_given)
-    scene.frames = static_cast<std::size_t>(r.integer(root.at("frames"), 1, 1000000));
+    scene.frames = static_cast<std::size_t>(r.integer(root.at("frames"), 1, max_frames));
 
   if (!root.has("objects")) r.fail(root, "missing 'objects'");
   const Node objects = root.at("objects");
@@ -480,12 +670,18 @@ Scene readScene(const Reader& r, const Json& document, const std::string& base_d
       const Json& o = objects.value[i];
       if (o.is_object() && o.contains("motion") && o["motion"].is_object() &&
           o["motion"].contains("poses") && o["motion"]["poses"].is_array()) {
-        scene.frames = std::max<std::size_t>(scene.frames, o["motion"]["poses"].size());
+        const std::size_t count = o["motion"]["poses"].size();
+        if (count > options.max_frames) {
+          r.fail(objects.at(i).at("motion").at("poses"),
+                 "has " + std::to_string(count) + " poses, more frames than this load allows (" +
+                     std::to_string(options.max_frames) + ", SceneLoadOptions::max_frames)");
+        }
+        scene.frames = std::max<std::size_t>(scene.frames, count);
       }
     }
   }
 
-  ShapeLoader shapes(r, base_directory);
+  ShapeLoader shapes(r, base_directory, options.max_triangles);
   std::map<std::string, std::size_t> index_of;
   for (std::size_t i = 0; i < objects.value.size(); ++i) {
     const Node node = objects.at(i);
@@ -572,6 +768,24 @@ Scene readScene(const Reader& r, const Json& document, const std::string& base_d
           r.fail(jitter, "translation must be >= 0 and rotation_deg in [0, 180]");
         }
         object.poses = jitterPoses(spec, base, scene.frames);
+      }
+      // Finite inputs can still overflow in a motion (ends near the double maximum, a jitter
+      // added to a huge translation): a scene that loads must hold finite poses only, and like
+      // its fixed poses, translations within the coordinate limit.
+      for (std::size_t f = 0; f < object.poses.size(); ++f) {
+        if (!object.poses[f].matrix().allFinite()) {
+          r.fail(motion, "frame " + std::to_string(f) +
+                             ": the pose is not finite (the motion overflows the double range)");
+        }
+        if (object.poses[f].translation().cwiseAbs().maxCoeff() > kMaxCoordinate) {
+          std::ostringstream text;
+          text << "frame " << f << ": the translation (" << object.poses[f].translation().x()
+               << ", " << object.poses[f].translation().y() << ", "
+               << object.poses[f].translation().z()
+               << ") is beyond the coordinate limit |t| <= " << kMaxCoordinate
+               << " (scenes/README.md)";
+          r.fail(motion, text.str());
+        }
       }
     }
     index_of.emplace(object.name, scene.objects.size());
@@ -674,10 +888,13 @@ Result<Scene> parseScene(const std::string& text, const std::string& label,
                   label + ": not valid JSON (byte " + std::to_string(e.byte) + "): " + e.what());
   } catch (const SceneError& e) {
     return Status(StatusCode::kInvalidArgument, e.what());
+  } catch (const Json::exception& e) {
+    // E.g. out_of_range.406: a number literal beyond the double range ("1e400").
+    return Status(StatusCode::kInvalidArgument, label + ": not valid JSON: " + e.what());
   }
   try {
     const Reader reader(label, options.resolution);
-    Scene scene = readScene(reader, document, base_directory);
+    Scene scene = readScene(reader, document, base_directory, options);
     scene.resolution = options.resolution;
     if (scene.name.empty()) scene.name = std::filesystem::path(label).stem().string();
     return scene;

@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include <collido/runner/text_table.h>
+#include <collido/study/robustness.h>
 
 namespace collido::study {
 namespace {
@@ -61,6 +62,7 @@ std::string recordsJsonLines(const std::vector<CombinationResult>& results) {
             {"combination", c.id},
             {"backend", c.backend},
             {"scene", c.scene_name},
+            {"category", c.category},
             {"resolution", c.resolution},
             {"needs", needsModeName(c.needs)},
             {"limit", c.limit},
@@ -90,7 +92,7 @@ std::string recordsJsonLines(const std::vector<CombinationResult>& results) {
 std::string benchmarkJson(const std::vector<CombinationResult>& results) {
   Json benchmarks = Json::array();
   for (const CombinationResult& r : results) {
-    for (const QueryMeasurement& m : r.measurements) {
+    for (const QueryMeasurement& m : tableMeasurements(r)) {
       if (!m.ok()) continue;
       const std::string name = benchmarkName(r.combination, m);
       const double triangles = m.triangles == 0 ? 1.0 : static_cast<double>(m.triangles);
@@ -151,7 +153,12 @@ std::string benchmarkJson(const std::vector<CombinationResult>& results) {
                         {"library_build_type", "debug"}
 #endif
   };
-  return Json{{"context", context}, {"benchmarks", benchmarks}}.dump(2) + "\n";
+  Json document = {{"context", context}, {"benchmarks", benchmarks}};
+  // Beside Google Benchmark's keys (its readers ignore others): the robustness matrix of the
+  // stress scenes, when the study ran any.
+  const std::vector<RobustnessCell> robustness = robustnessMatrix(results);
+  if (!robustness.empty()) document["robustness_matrix"] = robustnessJson(robustness);
+  return document.dump(2) + "\n";
 }
 
 std::string studyTable(const std::vector<CombinationResult>& results) {
@@ -172,7 +179,7 @@ std::string studyTable(const std::vector<CombinationResult>& results) {
       failures.push_back(c.label() + ": worker " + why);
       continue;
     }
-    for (const QueryMeasurement& m : r.measurements) {
+    for (const QueryMeasurement& m : tableMeasurements(r)) {
       if (!m.ok()) {
         rows.push_back({c.backend, c.settingText(), c.scene_name, m.query,
                         m.status.substr(0, m.status.find(':'))});
@@ -213,8 +220,9 @@ std::string studyTable(const std::vector<CombinationResult>& results) {
     const auto found = declared.find(c.scene_name + "|" + c.backend + "|" +
                                      std::to_string(c.resolution) + "|" + std::to_string(c.limit));
     if (found == declared.end()) continue;
-    for (const QueryMeasurement& e : every.measurements) {
-      for (const QueryMeasurement& d : found->second->measurements) {
+    const std::vector<QueryMeasurement> declared_measurements = tableMeasurements(*found->second);
+    for (const QueryMeasurement& e : tableMeasurements(every)) {
+      for (const QueryMeasurement& d : declared_measurements) {
         if (d.query != e.query || !d.ok() || !e.ok()) continue;
         savings.push_back({c.backend, c.scene_name, d.query, formatNumber("%.2f", d.build_ms),
                            formatNumber("%.2f", e.build_ms), formatNumber("%.1f", d.median_us),
@@ -230,6 +238,12 @@ std::string studyTable(const std::vector<CombinationResult>& results) {
         {"backend", "scene", "query", "build ms declared", "build ms every", "median us declared",
          "median us every", "B/tri declared", "B/tri every"},
         savings, 3);
+  }
+  if (const std::string robustness = robustnessText(robustnessMatrix(results));
+      !robustness.empty()) {
+    out << "\nRobustness matrix (stress scenes by category; every count in robustness.txt):\n";
+    // The two rate matrices: the text up to the table of every count.
+    out << robustness.substr(0, robustness.find("\nEvery count"));
   }
   if (!failures.empty()) {
     out << "\nFailures:\n";
@@ -251,7 +265,20 @@ Status writeStudyOutputs(const std::string& directory,
       !s.ok()) {
     return s;
   }
+  if (const std::string robustness = robustnessReport(results); !robustness.empty()) {
+    if (Status s = writeFileAtomically((folder / "robustness.txt").string(), robustness); !s.ok()) {
+      return s;
+    }
+  }
   return writeFileAtomically((folder / "table.txt").string(), studyTable(results));
+}
+
+std::string robustnessReport(const std::vector<CombinationResult>& results) {
+  const std::string matrix = robustnessText(robustnessMatrix(results));
+  if (matrix.empty()) return "";
+  return "Robustness matrix: every backend setting on the stress scenes, by category; every "
+         "answer checked against the exact oracle.\n\n" +
+         matrix;
 }
 
 }  // namespace collido::study

@@ -82,6 +82,7 @@ std::vector<Combination> planStudy(const std::vector<PlannedScene>& scenes,
             c.backend = backend;
             c.needs = needs;
             c.limit = limit;
+            c.category = scene.category;
             c.id = makeId(c);
             plan.push_back(std::move(c));
           }
@@ -120,13 +121,15 @@ Result<std::pair<std::size_t, std::size_t>> parseShard(const std::string& text) 
 }
 
 nlohmann::json combinationToJson(const Combination& c) {
-  return {{"id", c.id},
-          {"scene_path", c.scene_path},
-          {"scene", c.scene_name},
-          {"resolution", c.resolution},
-          {"backend", c.backend},
-          {"needs", needsModeName(c.needs)},
-          {"limit", c.limit}};
+  nlohmann::json json = {{"id", c.id},
+                         {"scene_path", c.scene_path},
+                         {"scene", c.scene_name},
+                         {"resolution", c.resolution},
+                         {"backend", c.backend},
+                         {"needs", needsModeName(c.needs)},
+                         {"limit", c.limit}};
+  if (!c.category.empty()) json["category"] = c.category;
+  return json;
 }
 
 Result<Combination> combinationFromJson(const nlohmann::json& json) {
@@ -141,6 +144,8 @@ Result<Combination> combinationFromJson(const nlohmann::json& json) {
     if (!needs) return Status(StatusCode::kInvalidArgument, "combination: unknown needs mode");
     c.needs = *needs;
     c.limit = json.at("limit").get<std::uint64_t>();
+    // Written only for stress scenes (and absent from studies made before the stress suite).
+    c.category = json.value("category", std::string());
     return c;
   } catch (const nlohmann::json::exception& e) {
     return Status(StatusCode::kInvalidArgument, std::string("combination: ") + e.what());

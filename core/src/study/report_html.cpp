@@ -9,6 +9,8 @@
 #include <set>
 #include <sstream>
 
+#include <collido/study/robustness.h>
+
 namespace collido::study {
 namespace {
 
@@ -44,6 +46,7 @@ Json row(const CombinationResult& r, const QueryMeasurement& m) {
           {"variant", c.backend.substr(0, variant_end)},
           {"setting", c.settingText()},
           {"scene", c.scene_name},
+          {"category", c.category},
           {"resolution", c.resolution},
           {"needs", needsModeName(c.needs)},
           {"limit", c.limit},
@@ -79,7 +82,7 @@ Json row(const CombinationResult& r, const QueryMeasurement& m) {
 Json rowsOf(const std::vector<CombinationResult>& results) {
   Json rows = Json::array();
   for (const CombinationResult& r : results) {
-    for (const QueryMeasurement& m : r.measurements)
+    for (const QueryMeasurement& m : tableMeasurements(r))
       rows.push_back(row(r, m));
   }
   return rows;
@@ -103,7 +106,7 @@ Json failuresOf(const std::vector<CombinationResult>& results) {
                           {"log", r.outcome.log_tail}});
       continue;
     }
-    for (const QueryMeasurement& m : r.measurements) {
+    for (const QueryMeasurement& m : tableMeasurements(r)) {
       std::string what;
       std::string detail = m.status;
       if (m.status.rfind("skipped", 0) == 0) {
@@ -137,7 +140,7 @@ Json failuresOf(const std::vector<CombinationResult>& results) {
 Json timesOf(const std::vector<CombinationResult>& results) {
   Json times = Json::array();
   for (const CombinationResult& r : results) {
-    for (const QueryMeasurement& m : r.measurements) {
+    for (const QueryMeasurement& m : tableMeasurements(r)) {
       if (!m.ok()) continue;
       // Every timed call up to a cap, evenly thinned beyond it: the page stays small while the
       // shape of each distribution survives.
@@ -246,7 +249,8 @@ Json reportData(const std::vector<CombinationResult>& results,
           {"rows", rowsOf(results)},
           {"baseline_rows", rowsOf(baseline)},
           {"times", timesOf(results)},
-          {"failures", failuresOf(results)}};
+          {"failures", failuresOf(results)},
+          {"robustness", robustnessJson(robustnessMatrix(results))}};
 }
 
 std::string webDirectory(const std::string& explicit_directory) {

@@ -54,6 +54,10 @@ struct Scene {
   std::vector<SceneObject> objects;
   std::vector<SceneQuery> queries;
   double resolution = 1.0;  ///< the SceneLoadOptions::resolution it was loaded with
+  /// The robustness category of a stress scene (a name from collido/stress/stress_cases.h, e.g.
+  /// "near_touching"), by which the study's robustness matrix groups answers; empty for ordinary
+  /// scenes.
+  std::string category;
 
   /// Whether some object comes from a generator (whose resolution a load option can change).
   bool hasGeneratedShapes() const;
@@ -70,6 +74,15 @@ struct SceneLoadOptions {
   /// factor, down to each generator's minimum: 0.5 meshes each curve with half the samples.
   /// Mesh files are read as they are.
   double resolution = 1.0;
+  /// The most triangles the scene's objects may hold together (each object counted, also when
+  /// objects share a mesh file); a shape that would take the scene past it is refused with an
+  /// error naming its JSON path. Generated shapes are counted from their parameters before they
+  /// are generated, so nothing large is allocated. 0: no scene-wide limit (each generator still
+  /// refuses more than 50 million triangles a shape).
+  std::size_t max_triangles = 0;
+  /// The most frames the scene may have ("frames", or without it the longest "poses" list):
+  /// every moving object stores one pose per frame.
+  std::size_t max_frames = 1000000;
 };
 
 /// Reads and validates a scene file (format: scenes/README.md). Every error names the file, the

@@ -14,14 +14,22 @@ std::string recordsJsonLines(const std::vector<CombinationResult>& results);
 
 /// A summary in Google Benchmark's JSON output format, one benchmark per (combination, query)
 /// named "backend/scene/query[/setting]", real_time = median per query in microseconds, the
-/// other figures as user counters; readable by compare.py and benchmark dashboards.
+/// other figures as user counters; readable by compare.py and benchmark dashboards. With stress
+/// scenes, a further top-level key "robustness_matrix" (robustnessJson), which those tools
+/// ignore.
 std::string benchmarkJson(const std::vector<CombinationResult>& results);
 
 /// The table people read: per (combination, query) time quantiles, error, build and memory; then
-/// what building every need costs over the declared ones; then every failure.
+/// what building every need costs over the declared ones; then, with stress scenes, the
+/// robustness matrix's rates; then every failure.
 std::string studyTable(const std::vector<CombinationResult>& results);
 
-/// Writes records.jsonl, summary.json and table.txt into `directory`, each atomically.
+/// robustness.txt: the robustness matrix of the stress scenes (study/robustness.h); empty when
+/// the study ran none.
+std::string robustnessReport(const std::vector<CombinationResult>& results);
+
+/// Writes records.jsonl, summary.json and table.txt into `directory`, and robustness.txt when the
+/// study ran stress scenes, each atomically.
 Status writeStudyOutputs(const std::string& directory,
                          const std::vector<CombinationResult>& results);
 

@@ -22,6 +22,10 @@ struct Combination {
   std::string backend;  ///< backend text: "variant" or "variant[key=value;...]"
   NeedsMode needs = NeedsMode::kDeclared;
   std::uint64_t limit = 0;  ///< max_pairs / max_contacts cap; 0 = the scene's own
+  /// The scene's robustness category (Scene::category; empty for ordinary scenes), kept with the
+  /// combination so the robustness matrix can place even a worker that crashed. Not part of the
+  /// id: it follows from the scene file.
+  std::string category = {};
 
   /// "bunny_vs_bunny · obbtree[max_leaf_triangles=4] · every needs · r=0.5 · limit 16", only the
   /// parts that differ from the defaults.
@@ -35,6 +39,7 @@ struct PlannedScene {
   std::string path;
   std::string name;
   bool has_generated_shapes = false;  ///< resolutions other than 1 apply only to these
+  std::string category = {};          ///< Scene::category: a stress category, or empty
 };
 
 /// Every combination of scenes × resolutions × backend settings × needs × limits, in that

@@ -11,8 +11,9 @@
 namespace collido::study {
 
 /// The data the dashboard draws: one row per (combination, query) with its figures, every
-/// timed call, the failures (crashes, timeouts, wrong answers, unsupported queries), and the
-/// baseline's rows when comparing two result sets.
+/// timed call, the failures (crashes, timeouts, wrong answers, unsupported queries), the
+/// robustness matrix of the stress scenes (study/robustness.h), and the baseline's rows when
+/// comparing two result sets.
 nlohmann::json reportData(const std::vector<CombinationResult>& results,
                           const std::vector<CombinationResult>& baseline, const std::string& title);
 

@@ -1,0 +1,142 @@
+// The OBB tree held to the exact oracle on every case of every category's bundled stress scene
+// (scenes/stress/<category>.json, the cases the study runs): the same intersecting triangle pairs,
+// and the same boolean answer with a witness pair that really intersects, at leaf sizes 1 and 4
+// with double and float boxes. The bar is zero wrong answers in every category; a failure
+// names the cases and how they differ.
+#include <algorithm>
+#include <sstream>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include <collido/obbtree/collide.h>
+#include <collido/obbtree/tree.h>
+#include <collido/oracle/exact_oracle.h>
+#include <collido/scene/scene.h>
+#include <collido/stress/stress_cases.h>
+
+#include "stress_test_support.h"
+#include "support/test_paths.h"
+
+namespace collido::stress {
+namespace {
+
+struct TreeSetting {
+  int max_leaf_triangles;
+  bool float_boxes;
+};
+
+using Param = std::tuple<Category, TreeSetting>;
+
+// Readable parameters in gtest's messages ("near_touching", "leaf 4, float boxes").
+void PrintTo(const TreeSetting& s, std::ostream* out) {
+  *out << "leaf " << s.max_leaf_triangles << (s.float_boxes ? ", float boxes" : ", double boxes");
+}
+
+std::string paramName(const ::testing::TestParamInfo<Param>& info) {
+  const TreeSetting& s = std::get<1>(info.param);
+  return std::string(categoryName(std::get<0>(info.param))) + "_leaf" +
+         std::to_string(s.max_leaf_triangles) + (s.float_boxes ? "_float" : "_double");
+}
+
+std::vector<TrianglePair> sortedPairs(const obbtree::CollideResult& result) {
+  std::vector<TrianglePair> pairs;
+  for (const obbtree::TrianglePair& p : result.pairs)
+    pairs.push_back({p.a, p.b});
+  std::sort(pairs.begin(), pairs.end());
+  return pairs;
+}
+
+class StressObbTree : public ::testing::TestWithParam<Param> {};
+
+TEST_P(StressObbTree, AnswersLikeTheOracle) {
+  const Category category = std::get<0>(GetParam());
+  const TreeSetting setting = std::get<1>(GetParam());
+  const std::string path =
+      collido::test::sourcePath(std::string("scenes/stress/") + categoryName(category) + ".json");
+  Result<Scene> loaded = loadScene(path);
+  ASSERT_TRUE(loaded.ok()) << loaded.status().message();
+  const Scene& scene = loaded.value();
+  ASSERT_EQ(scene.category, categoryName(category));
+
+  obbtree::BuildOptions options;
+  options.max_leaf_triangles = setting.max_leaf_triangles;
+  options.float_boxes = setting.float_boxes;
+  std::size_t cases = 0;
+  std::size_t wrong = 0;
+  std::ostringstream report;
+  for (const SceneQuery& query : scene.queries) {
+    if (query.request.kind != QueryKind::kBoolean) continue;
+    ++cases;
+    const SceneObject& a = scene.objects[query.a];
+    const SceneObject& b = scene.objects[query.b];
+    const Pose& pose_a = a.poseAt(0);
+    const Pose& pose_b = b.poseAt(0);
+    const OracleAnswer truth = exactIntersectingPairs(*a.mesh, pose_a, *b.mesh, pose_b);
+    const obbtree::ObbTree tree_a =
+        obbtree::ObbTree::build(a.mesh->vertices, a.mesh->triangles, options);
+    const obbtree::ObbTree tree_b =
+        obbtree::ObbTree::build(b.mesh->vertices, b.mesh->triangles, options);
+
+    obbtree::CollideResult all;
+    obbtree::collide(tree_a, pose_a, tree_b, pose_b, {obbtree::CollideMode::kAllPairs, 0}, all);
+    const std::vector<TrianglePair> pairs = sortedPairs(all);
+    std::vector<TrianglePair> missed;
+    std::vector<TrianglePair> extra;
+    std::set_difference(truth.pairs.begin(), truth.pairs.end(), pairs.begin(), pairs.end(),
+                        std::back_inserter(missed));
+    std::set_difference(pairs.begin(), pairs.end(), truth.pairs.begin(), truth.pairs.end(),
+                        std::back_inserter(extra));
+    const bool repeated = std::adjacent_find(pairs.begin(), pairs.end()) != pairs.end();
+
+    obbtree::CollideResult first;
+    obbtree::collide(tree_a, pose_a, tree_b, pose_b, {obbtree::CollideMode::kFirstHit, 0}, first);
+    const bool says_intersecting = !first.pairs.empty();
+    const bool false_witness =
+        says_intersecting && !exactPairIntersects(*a.mesh, pose_a, *b.mesh, pose_b,
+                                                  TrianglePair{first.pairs[0].a, first.pairs[0].b});
+
+    if (missed.empty() && extra.empty() && !repeated && says_intersecting == truth.intersecting &&
+        !false_witness) {
+      continue;
+    }
+    if (++wrong <= 12) {
+      report << "  " << a.name.substr(0, a.name.size() - 2) << ": oracle "
+             << (truth.intersecting ? "intersecting" : "apart") << " with " << truth.pairs.size()
+             << " pairs; all pairs missed " << missed.size() << ", extra " << extra.size()
+             << (repeated ? ", repeated pairs" : "") << "; boolean "
+             << (says_intersecting ? "intersecting" : "apart")
+             << (false_witness ? " (witness does not intersect)" : "") << "\n";
+    }
+  }
+  EXPECT_GT(cases, 0u);
+  EXPECT_EQ(wrong, 0u) << wrong << " of " << cases << " " << categoryName(category)
+                       << " cases answered differently from the oracle (first 12):\n"
+                       << report.str();
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    EveryCategory, StressObbTree,
+    ::testing::Combine(::testing::ValuesIn(allCategories()),
+                       ::testing::Values(TreeSetting{1, false}, TreeSetting{1, true},
+                                         TreeSetting{4, false}, TreeSetting{4, true})),
+    paramName);
+
+// Every category has its bundled scene, which the study and the test above run.
+TEST(StressScenes, OneSceneFileForEveryCategory) {
+  for (const Category category : allCategories()) {
+    const std::string path =
+        collido::test::sourcePath(std::string("scenes/stress/") + categoryName(category) + ".json");
+    Result<Scene> scene = loadScene(path);
+    ASSERT_TRUE(scene.ok()) << scene.status().message();
+    EXPECT_EQ(scene.value().category, categoryName(category));
+    EXPECT_EQ(scene.value().frames, 1u);
+    EXPECT_EQ(scene.value().objects.size(), scene.value().queries.size());
+    EXPECT_GE(scene.value().queries.size(), 2u * 24u) << path << ": a few dozen cases";
+  }
+}
+
+}  // namespace
+}  // namespace collido::stress
