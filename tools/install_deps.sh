@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Installs the Debian packages Collidoscope builds and tests with, when any is missing.
 # Run as root on Debian 12 (bookworm). Usage: tools/install_deps.sh [--ci]  (--ci adds the
-# linters CI runs: clang-format, clang-tidy). Chromium is for the dashboard's browser test;
+# linters CI runs: clang-format, clang-tidy; and clang with its runtime libraries for the fuzz
+# targets: libclang-rt-14-dev holds libFuzzer and clang's sanitizer runtimes, which clang only
+# recommends). Chromium is for the dashboard's browser test;
 # Node.js and npm (when the machine has none) fetch the dashboard's front-end from the npm
 # registry (tools/web_deps.sh).
 set -euo pipefail
@@ -18,7 +20,7 @@ if ! command -v node >/dev/null 2>&1 || ! command -v npm >/dev/null 2>&1; then
   packages+=(nodejs npm)
 fi
 if [[ "${1:-}" == "--ci" ]]; then
-  packages+=(clang clang-format clang-tidy)
+  packages+=(clang libclang-rt-14-dev clang-format clang-tidy)
 fi
 
 missing=()

@@ -1,8 +1,7 @@
-#include <filesystem>
-#include <fstream>
 #include <iostream>
 
 #include <collido/runner/runner.h>
+#include <collido/study/result_store.h>
 
 #include "commands.h"
 
@@ -17,19 +16,6 @@ struct RunArguments {
   bool quiet = false;
   bool fail_on_disagreement = false;
 };
-
-// Writes to a temporary file beside the target and renames it, so a reader never sees half a
-// file.
-bool writeAtomically(const std::string& path, const std::string& text) {
-  const std::string temporary = path + ".partial";
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    if (!out || !(out << text) || !out.flush()) return false;
-  }
-  std::error_code ec;
-  std::filesystem::rename(temporary, path, ec);
-  return !ec;
-}
 
 int run(const RunArguments& args, const PluginOptions& plugin_options) {
   std::vector<Scene> scenes;
@@ -65,9 +51,13 @@ int run(const RunArguments& args, const PluginOptions& plugin_options) {
   if (!args.quiet) options.progress = [](const std::string& line) { std::cerr << line << "\n"; };
   const RunReport report = runScenes(scenes, specs.value(), options);
   std::cout << formatRunTable(report);
-  if (!args.json_path.empty() && !writeAtomically(args.json_path, runReportJson(report) + "\n")) {
-    std::cerr << "error: cannot write " << args.json_path << "\n";
-    return 2;
+  if (!args.json_path.empty()) {
+    // The study's atomic write: a reader never sees half a report.
+    if (Status s = study::writeFileAtomically(args.json_path, runReportJson(report) + "\n");
+        !s.ok()) {
+      std::cerr << "error: " << s.message() << "\n";
+      return 2;
+    }
   }
   bool failed = !report.problems.empty();
   bool disagreed = false;

@@ -256,6 +256,20 @@ TEST(SceneBadInput, FractionalNumberForAnInteger) {
                        {"/objects/1/shape/major_segments:", "expected an integer", "fractional"}));
 }
 
+// "bad.json: /objects: expected an array, got object"
+TEST(SceneBadInput, ObjectForAnArray) {
+  Json scene = validScene();
+  scene["objects"] = Json::object();
+  EXPECT_TRUE(rejected(parse(scene), {kLabel, "/objects:", "expected an array", "got object"}));
+}
+
+// "bad.json: /frames: expected an integer, got boolean"
+TEST(SceneBadInput, BooleanForAnInteger) {
+  Json scene = validScene();
+  scene["frames"] = true;
+  EXPECT_TRUE(rejected(parse(scene), {"/frames:", "expected an integer", "got boolean"}));
+}
+
 // "bad.json: /objects/1/pose/translation: expected 3 numbers, got 2"
 TEST(SceneBadInput, VectorOfTwoNumbers) {
   Json scene = validScene();
@@ -298,6 +312,20 @@ TEST(SceneBadInput, MissingQueryKind) {
   Json scene = validScene();
   scene["queries"][0].erase("kind");
   EXPECT_TRUE(rejected(parse(scene), {"/queries/0:", "missing 'kind'"}));
+}
+
+// "bad.json: /queries/0: missing 'b' (or 'among')"
+TEST(SceneBadInput, MissingQueryObject) {
+  Json scene = validScene();
+  scene["queries"][0].erase("b");
+  EXPECT_TRUE(rejected(parse(scene), {"/queries/0:", "missing 'b'"}));
+}
+
+// "bad.json: /objects/1/motion/random: missing 'overlap'"
+TEST(SceneBadInput, RandomMotionWithoutOverlap) {
+  Json scene = validScene();
+  scene["objects"][1]["motion"] = {{"random", {{"relative_to", "a"}}}};
+  EXPECT_TRUE(rejected(parse(scene), {"/objects/1/motion/random:", "missing 'overlap'"}));
 }
 
 // "bad.json: /objects: a scene needs at least one object"
@@ -359,6 +387,44 @@ TEST(SceneBadInput, NegativeMaxPairs) {
   Json scene = validScene();
   scene["queries"][0]["max_pairs"] = -1;
   EXPECT_TRUE(rejected(parse(scene), {"/queries/0/max_pairs:", "got -1"}));
+}
+
+// "bad.json: /queries/0/max_contacts: expected an integer in [0, 9223372036854775807], got -5"
+TEST(SceneBadInput, NegativeMaxContacts) {
+  Json scene = validScene();
+  scene["queries"][0]["max_contacts"] = -5;
+  EXPECT_TRUE(rejected(parse(scene), {"/queries/0/max_contacts:", "got -5"}));
+}
+
+// "bad.json: /objects/1/shape/major_segments: expected an integer in [3, 1048576], got -8"
+TEST(SceneBadInput, NegativeSegments) {
+  Json scene = validScene();
+  scene["objects"][1]["shape"]["major_segments"] = -8;
+  EXPECT_TRUE(rejected(parse(scene), {"/objects/1/shape/major_segments:", "[3,", "got -8"}));
+}
+
+// "bad.json: /objects/0/shape/links: expected an integer in [1, 100000], got -2"
+TEST(SceneBadInput, NegativeChainLinks) {
+  Json scene = validScene();
+  scene["objects"][0]["shape"] = {{"generator", "chain"}, {"links", -2}};
+  EXPECT_TRUE(rejected(parse(scene), {"/objects/0/shape/links:", "[1, 100000]", "got -2"}));
+}
+
+// "bad.json: /objects/1/motion/jitter/seed: expected an integer in [0, 9223372036854775807],
+//  got -1"
+TEST(SceneBadInput, NegativeJitterSeed) {
+  Json scene = validScene();
+  scene["objects"][1]["motion"] = {{"jitter", {{"seed", -1}, {"translation", 0.1}}}};
+  EXPECT_TRUE(rejected(parse(scene), {"/objects/1/motion/jitter/seed:", "got -1"}));
+}
+
+// "bad.json: /objects/1/motion/random/seed: expected an integer in [0, 9223372036854775807],
+//  got -7"
+TEST(SceneBadInput, NegativeRandomSeed) {
+  Json scene = validScene();
+  scene["objects"][1]["motion"] = {
+      {"random", {{"seed", -7}, {"relative_to", "a"}, {"overlap", 0.5}}}};
+  EXPECT_TRUE(rejected(parse(scene), {"/objects/1/motion/random/seed:", "got -7"}));
 }
 
 // ---- shapes ----------------------------------------------------------------------------------
@@ -428,6 +494,55 @@ TEST(SceneBadInput, MeshFileWithNan) {
                        {"/objects/0/shape/mesh:", "nan.obj", "non-finite"}));
 }
 
+// A mesh file past the coordinate limit (kMaxCoordinate, scenes/README.md), with line and vertex:
+// "bad.json: /objects/0/shape/mesh: <dir>/huge.obj: line 2: vertex 1 has y coordinate '2e18',
+//  beyond the coordinate limit |y| <= 1e18 (scenes/README.md)"
+TEST(SceneBadInput, MeshFileBeyondTheCoordinateLimit) {
+  const std::string dir = test::makeTempDirectory("bad_scene");
+  test::writeFile(dir + "/huge.obj", "v 0 0 0\nv 1 2e18 0\nv 0 1 0\nf 1 2 3\n");
+  Json scene = validScene();
+  scene["objects"][0]["shape"] = {{"mesh", "huge.obj"}};
+  EXPECT_TRUE(
+      rejected(parseScene(scene.dump(), kLabel, dir),
+               {"/objects/0/shape/mesh:", "huge.obj", "line 2", "vertex 1", "coordinate limit"}));
+}
+
+// A scale can take a valid mesh past the limit; the scale is the culprit:
+// "bad.json: /objects/0/shape/scale: scaled by 1e+20: <scenes>/meshes/rob.obj: vertex 0 has x
+//  coordinate ..., beyond the coordinate limit |x| <= 1e18 (scenes/README.md)"
+TEST(SceneBadInput, MeshScaledBeyondTheCoordinateLimit) {
+  Json scene = validScene();
+  scene["objects"][0]["shape"] = {{"mesh", "meshes/rob.obj"}, {"scale", 1e20}};
+  EXPECT_TRUE(rejected(
+      parse(scene), {"/objects/0/shape/scale:", "scaled by 1e+20", "rob.obj", "coordinate limit"}));
+}
+
+// A mesh file that does not import comes through with the JSON path (here assimp's second opinion
+// used to abort the process):
+// "bad.json: /objects/0/shape/mesh: <dir>/cut.ply: the file ends early: the data stops in
+//  'vertex' 2 (0-based) of the 3 that the header declares"
+TEST(SceneBadInput, MeshFileThatDoesNotImport) {
+  const std::string dir = test::makeTempDirectory("bad_scene");
+  test::writeFile(dir + "/cut.ply",
+                  "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                  "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+                  "end_header\n0 0 0\n1 0 0\n0 1\n");
+  Json scene = validScene();
+  scene["objects"][0]["shape"] = {{"mesh", "cut.ply"}};
+  EXPECT_TRUE(rejected(parseScene(scene.dump(), kLabel, dir),
+                       {"/objects/0/shape/mesh:", "cut.ply", "ends early"}));
+}
+
+// "bad.json: /objects/0/shape/mesh: <dir>/empty.stl: the file is empty"
+TEST(SceneBadInput, EmptyMeshFile) {
+  const std::string dir = test::makeTempDirectory("bad_scene");
+  test::writeFile(dir + "/empty.stl", "");
+  Json scene = validScene();
+  scene["objects"][0]["shape"] = {{"mesh", "empty.stl"}};
+  EXPECT_TRUE(rejected(parseScene(scene.dump(), kLabel, dir),
+                       {"/objects/0/shape/mesh:", "empty.stl", "the file is empty"}));
+}
+
 // "bad.json: /objects/0/shape/scale: scale must be > 0"
 TEST(SceneBadInput, NegativeMeshScale) {
   Json scene = validScene();
@@ -484,6 +599,23 @@ TEST(SceneBadInput, NonUnitQuaternion) {
                        {"/objects/1/pose/rotation/quaternion:", "not a unit quaternion", "1.41"}));
 }
 
+// "bad.json: /objects/1/pose/rotation/quaternion: not a unit quaternion (norm 0.000000)"
+TEST(SceneBadInput, ZeroQuaternion) {
+  Json scene = validScene();
+  scene["objects"][1]["pose"]["rotation"] = {{"quaternion", {0, 0, 0, 0}}};
+  EXPECT_TRUE(rejected(
+      parse(scene), {"/objects/1/pose/rotation/quaternion:", "not a unit quaternion", "norm 0"}));
+}
+
+// "bad.json: /objects/1/pose/translation/1: 2e+18 is beyond the coordinate limit |t| <= 1e+18
+//  (scenes/README.md)"
+TEST(SceneBadInput, TranslationBeyondTheCoordinateLimit) {
+  Json scene = validScene();
+  scene["objects"][1]["pose"]["translation"] = {3, 2e18, 0};
+  EXPECT_TRUE(rejected(parse(scene),
+                       {"/objects/1/pose/translation/1:", "2e+18", "beyond the coordinate limit"}));
+}
+
 // "bad.json: /objects/1/pose/rotation/axis: the axis must not be zero"
 TEST(SceneBadInput, ZeroRotationAxis) {
   Json scene = validScene();
@@ -515,6 +647,30 @@ TEST(SceneBadInput, PoseTogetherWithPoses) {
   Json scene = validScene();
   scene["objects"][1]["motion"] = {{"poses", Json::array({Json::object(), Json::object()})}};
   EXPECT_TRUE(rejected(parse(scene), {"/objects/1/pose:", "exclude each other"}));
+}
+
+// Every pose of a motion's list is checked like a fixed one:
+// "bad.json: /objects/1/motion/poses/1/rotation/matrix: not a rotation: max |R^T R - I| = 0.21,
+//  det = 1.1 (...)"
+TEST(SceneBadInput, NonRigidPoseInAPoseList) {
+  Json scene = validScene();
+  scene["objects"][1].erase("pose");
+  scene["objects"][1]["motion"] = {
+      {"poses", Json::array({Json::object(),
+                             {{"rotation", rotation({{1.1, 0, 0}, {0, 1, 0}, {0, 0, 1}})}}})}};
+  EXPECT_TRUE(
+      rejected(parse(scene), {"/objects/1/motion/poses/1/rotation/matrix:", "not a rotation"}));
+}
+
+// "bad.json: /objects/1/motion/poses/0/translation/0: -1e+300 is beyond the coordinate limit
+//  |t| <= 1e+18 (scenes/README.md)"
+TEST(SceneBadInput, HugeTranslationInAPoseList) {
+  Json scene = validScene();
+  scene["objects"][1].erase("pose");
+  scene["objects"][1]["motion"] = {
+      {"poses", Json::array({{{"translation", {-1e300, 0, 0}}}, Json::object()})}};
+  EXPECT_TRUE(rejected(
+      parse(scene), {"/objects/1/motion/poses/0/translation/0:", "-1e+300", "coordinate limit"}));
 }
 
 // "bad.json: /objects/1/motion: give exactly one of poses, random, jitter, linear"
@@ -570,6 +726,16 @@ TEST(SceneBadInput, NegativeJitter) {
   Json scene = validScene();
   scene["objects"][1]["motion"] = {{"jitter", {{"translation", -0.1}}}};
   EXPECT_TRUE(rejected(parse(scene), {"/objects/1/motion/jitter", "translation must be >= 0"}));
+}
+
+// A jitter takes every frame far past the coordinate limit that the base pose is within:
+// "bad.json: /objects/1/motion: frame 0: the translation (..., ..., ...) is beyond the coordinate
+//  limit |t| <= 1e+18 (scenes/README.md)"
+TEST(SceneBadInput, JitterBeyondTheCoordinateLimit) {
+  Json scene = validScene();
+  scene["objects"][1]["motion"] = {{"jitter", {{"translation", 1e300}}}};
+  EXPECT_TRUE(rejected(parse(scene), {"/objects/1/motion:", "frame 0", "the translation",
+                                      "beyond the coordinate limit"}));
 }
 
 // ---- linear motion ---------------------------------------------------------------------------
@@ -670,6 +836,15 @@ TEST(SceneBadInput, LinearMotionWithANonUnitQuaternion) {
   Json scene = linearScene(2, {{"rotation", {{"quaternion", {2, 0, 0, 0}}}}}, Json::object());
   EXPECT_TRUE(rejected(parse(scene), {"/objects/1/motion/linear/from/rotation/quaternion:",
                                       "not a unit quaternion"}));
+}
+
+// "bad.json: /objects/1/motion/linear/to/rotation/matrix: not a rotation: max |R^T R - I| = 0,
+//  det = -1 (...)"
+TEST(SceneBadInput, LinearMotionToAReflection) {
+  Json scene =
+      linearScene(2, Json::object(), {{"rotation", rotation({{-1, 0, 0}, {0, 1, 0}, {0, 0, 1}})}});
+  EXPECT_TRUE(rejected(parse(scene), {"/objects/1/motion/linear/to/rotation/matrix:",
+                                      "not a rotation", "det = -1"}));
 }
 
 // "bad.json: /objects/1/pose: 'pose' and motion 'linear' exclude each other"

@@ -238,6 +238,47 @@ TEST(StudyCli, CrashAbortAndHangCostOneCombinationEach) {
   EXPECT_TRUE(summary.contains("context"));
 }
 
+// The same failures in build(), before any query runs: each still costs its combination only,
+// is recorded with its signal or the timeout, and the study goes on to the end.
+TEST(StudyCli, CrashAbortAndHangInBuildCostOneCombinationEach) {
+  const std::string dir = test::makeTempDirectory("study_build_failures");
+  const std::string out = dir + "/study";
+  std::vector<std::string> args = studyArgs(writeSmallScene(dir),
+                                            "misbehaving:crash_in_build,misbehaving:abort_in_build,"
+                                            "misbehaving:hang_in_build,obbtree",
+                                            out);
+  args.insert(args.end(), {"--timeout", "2"});
+  const CommandRun run = collido(args, dir);
+  ASSERT_EQ(run.exit_code, 0) << describe(run);
+  const std::vector<CombinationResult> results = readResults(out);
+  ASSERT_EQ(results.size(), 4u);
+  EXPECT_EQ(results[0].combination.backend, "misbehaving:crash_in_build");
+  EXPECT_EQ(results[0].outcome.status, "crashed");
+  EXPECT_EQ(results[0].outcome.signal_name, "SIGSEGV");
+  EXPECT_EQ(results[1].combination.backend, "misbehaving:abort_in_build");
+  EXPECT_EQ(results[1].outcome.status, "crashed");
+  EXPECT_EQ(results[1].outcome.signal_name, "SIGABRT");
+  EXPECT_EQ(results[2].combination.backend, "misbehaving:hang_in_build");
+  EXPECT_EQ(results[2].outcome.status, "timeout");
+  for (std::size_t i = 0; i < 3; ++i)
+    EXPECT_TRUE(results[i].measurements.empty()) << results[i].combination.backend;
+  // The combination after them ran whole.
+  EXPECT_EQ(results[3].combination.backend, "obbtree");
+  EXPECT_EQ(results[3].outcome.status, "ok");
+  ASSERT_EQ(results[3].measurements.size(), 2u);
+  for (const QueryMeasurement& m : results[3].measurements)
+    EXPECT_EQ(m.disagreements, 0u) << m.query;
+  const std::string table = readText(out + "/table.txt");
+  EXPECT_NE(table.find("linked · misbehaving:crash_in_build: worker crashed (SIGSEGV)"),
+            std::string::npos)
+      << table;
+  EXPECT_NE(table.find("linked · misbehaving:abort_in_build: worker crashed (SIGABRT)"),
+            std::string::npos)
+      << table;
+  EXPECT_NE(table.find("linked · misbehaving:hang_in_build: worker timeout"), std::string::npos)
+      << table;
+}
+
 // A bundled scene from mesh files, through a worker and the stored result, agrees with the
 // oracle (no time limit: under the sanitizers this takes a while).
 TEST(StudyCli, EnvRobOnObbtreeAgreesWithTheOracle) {

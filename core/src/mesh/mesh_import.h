@@ -43,4 +43,26 @@ Result<ObjText> checkObjText(const std::string& path);
 /// Why CGAL's OFF reader refused a plain ASCII OFF file, or "" when no reason is found.
 std::string diagnoseOff(const std::string& path);
 
+/// What must hold before CGAL's OFF reader may see a file, or "" when nothing is found: counts
+/// the file holds, colours within the range CGAL converts them to, face sizes and indices that
+/// are non-negative integers in range (CGAL's scanner meets undefined behaviour otherwise), no
+/// binary colour data and no texture coordinates without colours (which it misreads).
+std::string checkOffBeforeReading(const std::string& path);
+
+/// Why CGAL's PLY reader refused a file (not PLY, a broken or unterminated header, data that ends
+/// early, a non-finite or out-of-range coordinate or index in ASCII data), or "" when no reason is
+/// found. It stands in for assimp's second opinion, whose PLY reader aborts or hangs on such
+/// files. With `header_only`, the header's checks alone: what must hold before CGAL's reader may
+/// see the file (a broken header crashes it).
+std::string diagnosePly(const std::string& path, bool header_only);
+
+/// What is wrong with the layout of an STL file before any reader sees it: a binary file shorter
+/// than its header or than the triangles its header declares, an ASCII file without 'endsolid';
+/// "" when nothing is found (CGAL's reader then has the last word).
+std::string diagnoseStl(const std::string& path);
+
+/// The problem with coordinate `axis` (0, 1, 2) of vertex `vertex`, read as `value` from the text
+/// `token`: non-finite, or beyond kMaxCoordinate; "" when it is fine.
+std::string coordinateProblem(long long vertex, int axis, double value, const std::string& token);
+
 }  // namespace collido::detail

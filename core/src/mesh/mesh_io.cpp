@@ -5,11 +5,17 @@
 //    loses digits of text formats, so it is used only where the format holds floats anyway
 //    (glTF, FBX, ...) or has no other reader, and the report says so.
 // CGAL's readers return only true/false; on failure we read again verbosely to capture their
-// reason, and ask assimp whether it can name the problem more precisely (e.g. a NaN coordinate
-// that the stream-based reader simply refuses to parse).
-// OBJ text is checked by us first (checkObjText), because CGAL's OBJ reader reads index 0 as a
-// relative reference, rejects legal 'l' elements, stops a face silently at a malformed index, and
-// names no line or face when an index is out of range.
+// reason and look for it ourselves in OFF and PLY files (diagnoseOff, diagnosePly). assimp is
+// never asked for a second opinion on these formats: its PLY reader hangs on a header without
+// 'end_header' and aborts the process on truncated ASCII data, and its STL reader leaks.
+// Each format is checked by us before CGAL reads it, where CGAL's reader misreads or crashes:
+// OBJ text (checkObjText), because CGAL's OBJ reader reads index 0 as a relative reference,
+// rejects legal 'l' elements, stops a face silently at a malformed index, and names no line or
+// face when an index is out of range; an STL file's layout (diagnoseStl), because CGAL's reader
+// reads a short binary file as no triangles and quotes a truncated one's binary header back; a
+// PLY file's header, because a broken "element" line crashes CGAL's reader (SIGSEGV); and an
+// OFF file's counts, colours and face indices (checkOffBeforeReading), which CGAL's scanner
+// converts with unchecked casts (undefined behaviour) or trusts to size its arrays.
 #include <collido/mesh/mesh_io.h>
 
 #include "mesh_import.h"
@@ -122,6 +128,12 @@ Result<Imported> readWithCgal(const std::string& path, const std::string& format
     if (!checked.ok()) return checked.status();
     obj_text = std::move(checked).value();
   }
+  if (format != "OBJ") {
+    std::string diagnosis = format == "STL"   ? detail::diagnoseStl(path)
+                            : format == "OFF" ? detail::checkOffBeforeReading(path)
+                                              : detail::diagnosePly(path, /*header_only=*/true);
+    if (!diagnosis.empty()) return readError(path, diagnosis);
+  }
   std::vector<Kernel::Point_3> points;
   std::vector<Polygon> polygons;
   const auto read = [&](bool verbose) {
@@ -150,21 +162,12 @@ Result<Imported> readWithCgal(const std::string& path, const std::string& format
     reason = captured.text();
     if (read_again) reason = "it reads only on a second attempt";
   }
-  if (format == "OFF") {
-    if (std::string diagnosis = detail::diagnoseOff(path); !diagnosis.empty()) {
-      return readError(path, diagnosis);
-    }
+  if (format == "OFF" || format == "PLY") {
+    std::string diagnosis = format == "OFF" ? detail::diagnoseOff(path)
+                                            : detail::diagnosePly(path, /*header_only=*/false);
+    if (!diagnosis.empty()) return readError(path, diagnosis);
   }
   if (reason.empty()) reason = "no reason given";
-  // A more precise diagnosis, when assimp can read the file and sees what is wrong with it; when
-  // CGAL gave no reason, assimp's complaint is the best there is.
-  Result<Imported> second_opinion = detail::readWithAssimp(path);
-  if (second_opinion.ok()) {
-    if (Status s = validateMesh(second_opinion.value().mesh, path); !s.ok()) return s;
-  } else if (reason == "no reason given") {
-    // readError's messages start with "<path>: ".
-    reason += "; " + second_opinion.status().message().substr(path.size() + 2);
-  }
   return readError(path, "cannot read it as " + format + " (CGAL's reader: " + reason + ")");
 }
 
@@ -191,6 +194,7 @@ Result<TriangleMesh> loadMesh(const std::string& path, MeshReport* report) {
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) return readError(path, "file not found");
   if (!std::filesystem::is_regular_file(path, ec)) return readError(path, "not a regular file");
+  if (std::filesystem::file_size(path, ec) == 0 && !ec) return readError(path, "the file is empty");
 
   const std::string ext = lowerExtension(path);
   const auto reader =

@@ -250,7 +250,7 @@ StressCase scaledCase(const CaseRequest& request, Rng& rng) {
   const ContactKind kind = kAllContacts[request.index % kAllContacts.size()];
   const std::array<double, 5> gaps = {0.0, 0x1.0p-20, -0x1.0p-20, 0.25, -0.25};
   // The gap shifts with every round of kinds and with the severity (which may be negative).
-  const std::size_t shift = static_cast<std::size_t>(request.severity + 100);
+  const std::size_t shift = static_cast<std::size_t>(request.severity) + 100;
   const double gap =
       gaps[(request.index + request.index / kAllContacts.size() + shift) % gaps.size()];
   const double b_height = 1.0 + gap;

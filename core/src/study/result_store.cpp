@@ -1,6 +1,12 @@
 #include <collido/study/result_store.h>
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <atomic>
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -78,18 +84,44 @@ Result<CombinationResult> resultFromJson(const Json& json, const std::string& la
   }
 }
 
+// Write-to-temporary, flush to disk, rename over the target: a reader, a study killed mid-write
+// or a machine that loses power sees the previous file or the new one whole, never a mix. The
+// temporary's name is unique to the process and the call, so two writers of one path never share
+// it (one's rename would publish the other's half-written text); a failed write removes it.
 Status writeFileAtomically(const std::string& path, const std::string& text) {
-  const std::string temporary = path + ".partial";
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    if (!out || !(out << text) || !out.flush()) {
-      return Status(StatusCode::kInvalidArgument, temporary + ": cannot be written");
-    }
+  static std::atomic<unsigned long> serial{0};
+  const std::string temporary =
+      path + ".partial." + std::to_string(::getpid()) + "." + std::to_string(serial.fetch_add(1));
+  const auto failed = [&](const std::string& what, int error) {
+    ::unlink(temporary.c_str());
+    return Status(StatusCode::kInvalidArgument, what + ": " + std::strerror(error));
+  };
+  const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd < 0) {
+    return Status(StatusCode::kInvalidArgument,
+                  temporary + ": cannot be written: " + std::strerror(errno));
   }
-  std::error_code ec;
-  fs::rename(temporary, path, ec);
-  if (ec)
-    return Status(StatusCode::kInvalidArgument, path + ": cannot be replaced: " + ec.message());
+  for (std::size_t done = 0; done < text.size();) {
+    const ::ssize_t n = ::write(fd, text.data() + done, text.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) {
+      const int error = errno;
+      ::close(fd);
+      return failed(temporary + ": cannot be written", error);
+    }
+    done += static_cast<std::size_t>(n);
+  }
+  // Without this, a crash of the machine soon after the rename could leave the new name on a
+  // file whose data never reached the disk (an empty result that would stop --resume).
+  if (::fdatasync(fd) != 0) {
+    const int error = errno;
+    ::close(fd);
+    return failed(temporary + ": cannot be flushed to disk", error);
+  }
+  if (::close(fd) != 0) return failed(temporary + ": cannot be written", errno);
+  if (::rename(temporary.c_str(), path.c_str()) != 0) {
+    return failed(path + ": cannot be replaced", errno);
+  }
   return Status();
 }
 

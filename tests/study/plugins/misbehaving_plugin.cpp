@@ -8,6 +8,8 @@
 //   misbehaving:exit   ends the process with exit code 7 in query()
 //   misbehaving:throw  throws in query() (the adapter turns it into a failed query)
 //   misbehaving:wrong  always answers "disjoint"
+//   misbehaving:crash_in_build, misbehaving:abort_in_build, misbehaving:hang_in_build
+//                      the same failures in build(), before any query
 // Built as libcollido_plugin_misbehaving.so into the tests' own plugin folder, so only tests
 // that pass that folder with --plugin see it.
 #include <array>
@@ -28,7 +30,18 @@ using collido::QueryKind;
 using Vec = Eigen::Vector3d;
 using Triangle = std::array<Vec, 3>;
 
-enum class Mode { kExact, kCrash, kAbort, kHang, kExit, kThrow, kWrong };
+enum class Mode {
+  kExact,
+  kCrash,
+  kAbort,
+  kHang,
+  kExit,
+  kThrow,
+  kWrong,
+  kCrashInBuild,
+  kAbortInBuild,
+  kHangInBuild
+};
 
 class MeshModel final : public collido::BackendModel {
  public:
@@ -112,6 +125,9 @@ class MisbehavingBackend final : public collido::Backend {
 
   collido::Result<std::unique_ptr<collido::BackendModel>> build(
       const collido::MeshView& mesh, const collido::BuildNeeds& /*needs*/) override {
+    if (mode_ == Mode::kCrashInBuild) crash();
+    if (mode_ == Mode::kAbortInBuild) std::abort();
+    if (mode_ == Mode::kHangInBuild) hang();
     return std::unique_ptr<collido::BackendModel>(
         std::make_unique<MeshModel>(mesh, ballast_bytes_));
   }
@@ -140,6 +156,9 @@ class MisbehavingBackend final : public collido::Backend {
       case Mode::kWrong:
         return {};
       case Mode::kExact:
+      case Mode::kCrashInBuild:
+      case Mode::kAbortInBuild:
+      case Mode::kHangInBuild:
         break;
     }
     const std::vector<Triangle> ta = posed(static_cast<MeshModel&>(a), pose_a);
@@ -177,6 +196,9 @@ collido::Result<std::unique_ptr<collido::Backend>> create(const std::string& var
   if (variant == "misbehaving:exit") mode = Mode::kExit;
   if (variant == "misbehaving:throw") mode = Mode::kThrow;
   if (variant == "misbehaving:wrong") mode = Mode::kWrong;
+  if (variant == "misbehaving:crash_in_build") mode = Mode::kCrashInBuild;
+  if (variant == "misbehaving:abort_in_build") mode = Mode::kAbortInBuild;
+  if (variant == "misbehaving:hang_in_build") mode = Mode::kHangInBuild;
   const collido::Result<std::int64_t> mib = options.getInt("build_mib", 0, 0, 1024);
   if (!mib.ok()) return mib.status();
   return std::unique_ptr<collido::Backend>(std::make_unique<MisbehavingBackend>(
@@ -195,7 +217,10 @@ const collido::PluginInfo& describe() {
        {"misbehaving:hang", "never returns from query"},
        {"misbehaving:exit", "exits with code 7 in query"},
        {"misbehaving:throw", "throws in query"},
-       {"misbehaving:wrong", "always answers disjoint"}},
+       {"misbehaving:wrong", "always answers disjoint"},
+       {"misbehaving:crash_in_build", "SIGSEGV in build"},
+       {"misbehaving:abort_in_build", "std::abort in build"},
+       {"misbehaving:hang_in_build", "never returns from build"}},
       &create};
   return info;
 }

@@ -1,9 +1,15 @@
 // The study folder: atomic writes, stored results and plans, and the measurement JSON they hold.
 #include <collido/study/result_store.h>
 
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <csignal>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -223,6 +229,84 @@ TEST(WriteFileAtomically, ReplacesTheFileAndLeavesNoPartialFile) {
   EXPECT_EQ(readText(path), "");
   EXPECT_EQ(filesIn(dir), (std::vector<std::string>{"out.json"}));
   EXPECT_FALSE(fs::exists(path + ".partial"));
+}
+
+/// Runs `body` in a child process whose files cannot grow past `limit_bytes` (RLIMIT_FSIZE), and
+/// returns its wait status. Past the limit a write fails with EFBIG (a full disk), or, with
+/// `killed_at_limit`, the child dies of SIGXFSZ in the middle of the write, as a study killed
+/// mid-write would.
+int runWithFileSizeLimit(rlim_t limit_bytes, bool killed_at_limit,
+                         const std::function<int()>& body) {
+  const pid_t pid = fork();
+  if (pid == 0) {
+    std::signal(SIGXFSZ, killed_at_limit ? SIG_DFL : SIG_IGN);
+    const rlimit limit{limit_bytes, limit_bytes};
+    if (setrlimit(RLIMIT_FSIZE, &limit) != 0) _exit(125);
+    _exit(body());
+  }
+  int status = 0;
+  waitpid(pid, &status, 0);
+  return status;
+}
+
+// A write that fails half-way (the disk full after 4 KiB of 64) leaves the previous file as it
+// was, and removes its temporary:
+// "<dir>/out.json.partial.<pid>.<n>: cannot be written: File too large"
+TEST(WriteFileAtomically, AFailedWriteLeavesThePreviousFileAndNoTemporary) {
+  const std::string dir = test::makeTempDirectory("atomic_full");
+  const std::string path = dir + "/out.json";
+  ASSERT_TRUE(writeFileAtomically(path, "previous").ok());
+  const int status = runWithFileSizeLimit(4096, false, [&] {
+    const Status s = writeFileAtomically(path, std::string(64 * 1024, 'x'));
+    std::ofstream(dir + "/message.txt") << s.message();
+    return s.ok() ? 0 : 1;
+  });
+  ASSERT_TRUE(WIFEXITED(status)) << status;
+  EXPECT_EQ(WEXITSTATUS(status), 1);
+  EXPECT_EQ(readText(path), "previous");
+  EXPECT_EQ(filesIn(dir), (std::vector<std::string>{"message.txt", "out.json"}));
+  const std::string message = readText(dir + "/message.txt");
+  EXPECT_NE(message.find(path + ".partial."), std::string::npos) << message;
+  EXPECT_NE(message.find("cannot be written: File too large"), std::string::npos) << message;
+}
+
+// A writer killed in the middle of the write leaves the previous file whole; what it had
+// written is only in its temporary, which no reader takes for the file.
+TEST(WriteFileAtomically, AWriterKilledMidWriteLeavesThePreviousFile) {
+  const std::string dir = test::makeTempDirectory("atomic_killed");
+  const std::string path = dir + "/out.json";
+  ASSERT_TRUE(writeFileAtomically(path, "previous").ok());
+  const int status = runWithFileSizeLimit(4096, true, [&] {
+    return writeFileAtomically(path, std::string(64 * 1024, 'x')).ok() ? 0 : 1;
+  });
+  ASSERT_TRUE(WIFSIGNALED(status)) << status;
+  EXPECT_EQ(WTERMSIG(status), SIGXFSZ);
+  EXPECT_EQ(readText(path), "previous");
+  for (const std::string& name : filesIn(dir)) {
+    EXPECT_TRUE(name == "out.json" || name.rfind("out.json.partial.", 0) == 0) << name;
+  }
+}
+
+// A study killed while storing a combination's result has no result for it (so --resume runs it
+// again), and the results it stored before stay readable.
+TEST(ResultStore, AStudyKilledWhileWritingAResultStoresNothingHalfWritten) {
+  const std::string dir = test::makeTempDirectory("store_killed");
+  const ResultStore store(dir);
+  ASSERT_TRUE(store.prepare().ok());
+  const Combination kept = testdata::combination("aa");
+  const Combination cut = testdata::combination("zz");
+  ASSERT_TRUE(store.write(testdata::okResult(kept)).ok());
+  const std::string kept_text = readText(store.resultPath(kept.id));
+  const int status = runWithFileSizeLimit(
+      64, true, [&] { return store.write(testdata::okResult(cut)).ok() ? 0 : 1; });
+  ASSERT_TRUE(WIFSIGNALED(status)) << status;
+  EXPECT_EQ(WTERMSIG(status), SIGXFSZ);
+  EXPECT_FALSE(store.has(cut.id));
+  EXPECT_EQ(readText(store.resultPath(kept.id)), kept_text);
+  const Result<std::vector<CombinationResult>> all = store.readAll();
+  ASSERT_TRUE(all.ok()) << all.status().message();
+  ASSERT_EQ(all.value().size(), 1u);
+  EXPECT_EQ(all.value()[0].combination.id, kept.id);
 }
 
 TEST(WriteFileAtomically, FailsWithTheFileNamedWhenTheFolderIsMissing) {

@@ -15,8 +15,9 @@ namespace collido {
 /// every other format assimp reads (glTF/GLB, DAE, 3DS, FBX, ...) goes through assimp, whose
 /// Debian build stores coordinates as 32-bit floats (report->single_precision says so). Faces
 /// with more than three corners are fan-triangulated and counted; points and lines are skipped
-/// and counted. Errors (missing file, parse failure, NaN/Inf, out-of-range index, no triangles)
-/// name the file and the problem.
+/// and counted. Errors (missing or empty file, parse failure, a file cut short, NaN/Inf or a
+/// coordinate beyond kMaxCoordinate, out-of-range index, no triangles) name the file and the
+/// problem, and the line, vertex or face where the format has them.
 Result<TriangleMesh> loadMesh(const std::string& path, MeshReport* report = nullptr);
 
 }  // namespace collido

@@ -38,8 +38,10 @@ struct CombinationResult {
 nlohmann::json resultToJson(const CombinationResult& result);
 Result<CombinationResult> resultFromJson(const nlohmann::json& json, const std::string& label);
 
-/// Writes `text` to a temporary file beside `path`, then renames it over `path`: a reader (or a
-/// study killed mid-write) never sees half a file.
+/// Writes `text` to a temporary file beside `path` ("<path>.partial.<pid>.<n>"), flushes it to
+/// disk, then renames it over `path`: a reader, a study killed mid-write or a machine that loses
+/// power sees the previous file or the new one, never half a file. On failure the temporary is
+/// removed and the message names the file and the system's reason.
 Status writeFileAtomically(const std::string& path, const std::string& text);
 
 /// A study's folder: plan.json, results/<id>.json (one per finished combination, written

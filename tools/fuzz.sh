@@ -1,0 +1,67 @@
+#!/usr/bin/env bash
+# Bounded fuzzing: builds the libFuzzer targets of tests/fuzz/ (the 'fuzz' preset: clang, ASan +
+# UBSan) and runs each for SECONDS over a scratch copy of its seed corpus, so tests/fuzz/corpus/
+# is never written. Fails when any target crashes, leaks, hits undefined behaviour, breaks its
+# own check, takes more than 30 s on one input or more than 2 GB of memory.
+# Usage: tools/fuzz.sh [SECONDS per target, default 60] [TARGET...]  (default: every target)
+# Environment: COLLIDO_FUZZ_JOBS: build jobs (default: every core).
+# Each run leaves build/fuzz/runs/<target>/: log.txt, corpus/ (seeds plus what the run added)
+# and artifacts/ (crash-*, leak-*, timeout-*, oom-*: reproducers; replay one with
+# build/fuzz/fuzzers/<target> FILE). docs/FUZZING.md says what each target checks.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+seconds="${1:-60}"
+[[ $# -gt 0 ]] && shift
+targets=("$@")
+if [[ ${#targets[@]} -eq 0 ]]; then
+  targets=(scene_json_fuzz mesh_import_fuzz tree_query_fuzz)
+fi
+if ! [[ "$seconds" =~ ^[0-9]+$ ]] || [[ "$seconds" -eq 0 ]]; then
+  echo "usage: tools/fuzz.sh [SECONDS per target] [TARGET...]" >&2
+  exit 2
+fi
+
+tools/configure.sh fuzz -j "${COLLIDO_FUZZ_JOBS:-$(nproc)}"
+
+export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1}"
+summary=()
+failed=0
+for target in "${targets[@]}"; do
+  fuzzer="build/fuzz/fuzzers/$target"
+  seeds="tests/fuzz/corpus/$target"
+  run="build/fuzz/runs/$target"
+  if [[ ! -x "$fuzzer" || ! -d "$seeds" ]]; then
+    echo "error: no fuzz target '$target' (or no $seeds)" >&2
+    exit 2
+  fi
+  rm -rf "$run"
+  mkdir -p "$run/corpus" "$run/artifacts"
+  cp -R "$seeds/." "$run/corpus/"
+  echo
+  echo "--- $target: ${seconds}s over $(find "$seeds" -type f | wc -l) seeds (log: $run/log.txt)"
+  status=0
+  "$fuzzer" "$run/corpus" -max_total_time="$seconds" -timeout=30 -rss_limit_mb=2048 \
+    -print_final_stats=1 -artifact_prefix="$run/artifacts/" >"$run/log.txt" 2>&1 || status=$?
+  runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$run/log.txt" | tail -n 1)
+  coverage=$(grep -oE 'cov: [0-9]+' "$run/log.txt" | tail -n 1 | cut -d' ' -f2)
+  added=$(( $(find "$run/corpus" -type f | wc -l) - $(find "$seeds" -type f | wc -l) ))
+  line="$target: ${runs:-?} inputs, coverage ${coverage:-?}, $added new corpus entries"
+  if [[ $status -eq 0 ]]; then
+    summary+=("PASS $line")
+  else
+    failed=1
+    artifact=$(sed -n 's/.*Test unit written to \(.*\)$/\1/p' "$run/log.txt" | tail -n 1)
+    first=$(grep -m 1 -E 'ERROR:|runtime error:|disagrees|broke its promise|terminate called' \
+      "$run/log.txt" || true)
+    summary+=("FAIL $line (exit $status)")
+    summary+=("       ${first:-see the log}")
+    summary+=("       reproducer: ${artifact:-none written}; log: $run/log.txt")
+    grep -E -A 40 'ERROR:|runtime error:|disagrees|broke its promise|terminate called' \
+      "$run/log.txt" | head -n 60 || true
+  fi
+done
+
+echo
+echo "=== fuzzing summary (${seconds}s per target)"
+printf '%s\n' "${summary[@]}"
+exit $failed
