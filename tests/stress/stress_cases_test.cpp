@@ -18,12 +18,20 @@ namespace {
 using test::defaultCases;
 using test::defectInputs;
 
+// Eigen's == asserts equal sizes, so sizes are compared first.
+template <typename Matrix>
+bool sameMatrix(const Matrix& x, const Matrix& y) {
+  return x.rows() == y.rows() && x.cols() == y.cols() && x == y;
+}
+
+bool sameMesh(const TriangleMesh& x, const TriangleMesh& y) {
+  return sameMatrix(x.vertices, y.vertices) && sameMatrix(x.triangles, y.triangles);
+}
+
 bool sameCase(const StressCase& x, const StressCase& y) {
   return x.name == y.name && x.kind == y.kind && x.aim.contact == y.aim.contact &&
-         x.aim.exact == y.aim.exact && x.a->vertices == y.a->vertices &&
-         x.a->triangles == y.a->triangles && x.b->vertices == y.b->vertices &&
-         x.b->triangles == y.b->triangles && x.pose_a.matrix() == y.pose_a.matrix() &&
-         x.pose_b.matrix() == y.pose_b.matrix();
+         x.aim.exact == y.aim.exact && sameMesh(*x.a, *y.a) && sameMesh(*x.b, *y.b) &&
+         x.pose_a.matrix() == y.pose_a.matrix() && x.pose_b.matrix() == y.pose_b.matrix();
 }
 
 std::string describe(const Pose& pose) {
