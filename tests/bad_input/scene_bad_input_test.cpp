@@ -445,6 +445,15 @@ TEST(SceneBadInput, TorusWithTwoMinorSegments) {
   EXPECT_TRUE(rejected(parse(scene), {"/objects/1/shape/minor_segments:", "[3,", "got 2"}));
 }
 
+// A generated shape whose coordinates go past the limit, close to the double maximum (found by
+// scene_json_fuzz: the message's shortest round-trip text of 1.5e308 once threw out of stod).
+TEST(SceneBadInput, GeneratedShapeNearTheDoubleMaximum) {
+  Json scene = validScene();
+  scene["objects"][1]["shape"]["major_radius"] = 1.5e308;
+  scene["objects"][1]["shape"]["minor_segments"] = 3;
+  EXPECT_TRUE(rejected(parse(scene), {"/objects/1/shape"}));
+}
+
 // The generator's own message, at the shape:
 // "bad.json: /objects/1/shape: torus: minor_radius = 1, must be < major_radius = 1"
 TEST(SceneBadInput, TorusMinorRadiusNotBelowMajorRadius) {

@@ -1,6 +1,7 @@
 #include <collido/mesh/triangle_mesh.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <iomanip>
 #include <sstream>
 #include <string>
@@ -17,7 +18,9 @@ std::string coordinateText(double value) {
   for (int digits = 1;; ++digits) {
     std::ostringstream text;
     text << std::setprecision(digits) << value;
-    if (digits == 17 || std::stod(text.str()) == value) return text.str();
+    // strtod, not stod: a short rounding of a value near the double maximum ("2e+308") is out
+    // of range, which stod reports by throwing; strtod returns infinity, which is not `value`.
+    if (digits == 17 || std::strtod(text.str().c_str(), nullptr) == value) return text.str();
   }
 }
 
