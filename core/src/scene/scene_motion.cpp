@@ -1,42 +1,14 @@
 #include "scene_motion.h"
 
 #include <cmath>
-#include <random>
+
+#include <collido/random/portable_random.h>
 
 namespace collido {
 namespace {
 
-// Uniform numbers from mt19937_64 with our own conversions: the standard distributions are
-// implementation-defined, and scenes must give the same poses with any standard library.
-class Sampler {
- public:
-  explicit Sampler(std::uint64_t seed) : engine_(seed) {}
-
-  double uniform() { return static_cast<double>(engine_() >> 11) * 0x1.0p-53; }  // [0, 1)
-  double uniform(double low, double high) { return low + (high - low) * uniform(); }
-
-  Eigen::Vector3d direction() {
-    const double z = uniform(-1.0, 1.0);
-    const double phi = uniform(0.0, 2.0 * M_PI);
-    const double s = std::sqrt(std::max(0.0, 1.0 - z * z));
-    return {s * std::cos(phi), s * std::sin(phi), z};
-  }
-
-  // Shoemake, "Uniform random rotations", Graphics Gems III (1992).
-  Eigen::Matrix3d rotation() {
-    const double u1 = uniform();
-    const double u2 = uniform(0.0, 2.0 * M_PI);
-    const double u3 = uniform(0.0, 2.0 * M_PI);
-    const double a = std::sqrt(1.0 - u1);
-    const double b = std::sqrt(u1);
-    const Eigen::Quaterniond q(b * std::cos(u3), a * std::sin(u2), a * std::cos(u2),
-                               b * std::sin(u3));
-    return q.normalized().toRotationMatrix();
-  }
-
- private:
-  std::mt19937_64 engine_;
-};
+// Scenes' poses must be the same with any standard library (PortableRandom says why).
+using Sampler = PortableRandom;
 
 struct Sphere {
   Eigen::Vector3d center;

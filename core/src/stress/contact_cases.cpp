@@ -309,13 +309,6 @@ constexpr std::array<CoplanarKind, 7> kCoplanarKinds = {
     CoplanarKind::kVertexVertex, CoplanarKind::kGridOverlap, CoplanarKind::kApartInPlane,
     CoplanarKind::kParallelApart};
 
-struct CoplanarPair {
-  const char* kind = "";
-  TriangleMesh a;
-  TriangleMesh b;
-  bool contact = true;
-};
-
 // A above the line y = 0 with its edge [x0, x1] on it; the corner of A off the line.
 struct EdgeTriangle {
   double x0;
@@ -338,7 +331,7 @@ TriangleMesh meshOf(const EdgeTriangle& t) {
 }
 
 // B below the line y = b_shift with an edge on it that overlaps A's edge in x.
-CoplanarPair edgePair(Rng& rng, double b_shift, const char* kind, bool contact) {
+GeneratedPair edgePair(Rng& rng, double b_shift, const char* kind, bool contact) {
   const EdgeTriangle a = edgeTriangle(rng);
   const double x2 = rng.dyadic(a.x0 + 0.125, a.x1 - 0.125, 8);
   const double x3 = x2 + rng.dyadic(0.25, 1.0, 8);
@@ -348,7 +341,7 @@ CoplanarPair edgePair(Rng& rng, double b_shift, const char* kind, bool contact) 
           contact};
 }
 
-CoplanarPair coplanarPair(CoplanarKind kind, Rng& rng) {
+GeneratedPair coplanarPair(CoplanarKind kind, Rng& rng) {
   switch (kind) {
     case CoplanarKind::kOverlap: {
       const std::array<Eigen::Vector3d, 3> a = planarTriangle(rng);
@@ -411,7 +404,7 @@ CoplanarPair coplanarPair(CoplanarKind kind, Rng& rng) {
 // Severity is how the common plane is posed (see stress_cases.cpp); at 3 B gets its own pose,
 // the product of A's and an exact in-plane motion, so the two are coplanar only up to rounding.
 StressCase coplanarCase(const CaseRequest& request, Rng& rng) {
-  CoplanarPair pair = coplanarPair(kCoplanarKinds[request.index % kCoplanarKinds.size()], rng);
+  GeneratedPair pair = coplanarPair(kCoplanarKinds[request.index % kCoplanarKinds.size()], rng);
   Placement placement = Placement::kIdentity;
   switch (request.severity) {
     case 0:

@@ -39,13 +39,6 @@ constexpr std::array<DegenerateKind, 10> kDegenerateKinds = {
     DegenerateKind::kSegmentInFace, DegenerateKind::kNeedlesCross, DegenerateKind::kPointApart,
     DegenerateKind::kNeedlesApart};
 
-struct ShapePair {
-  const char* kind = "";
-  TriangleMesh a;
-  TriangleMesh b;
-  bool contact = true;
-};
-
 // A box with its top face [-1, 1]² at z = 1.
 TriangleMesh unitSlab() {
   return boxMesh({-1.0, -1.0, 0.0}, {1.0, 1.0, 1.0});
@@ -71,7 +64,7 @@ TriangleMesh thinTriangle(const Eigen::Vector3d& p, const Eigen::Vector3d& q,
   return singleTriangle(p, q, r);
 }
 
-ShapePair degeneratePair(DegenerateKind kind, double thin, Rng& rng) {
+GeneratedPair degeneratePair(DegenerateKind kind, double thin, Rng& rng) {
   const double px = rng.dyadic(-0.75, 0.75, 8);
   const double py = rng.dyadic(-0.75, 0.75, 8);
   const double lift = 0x1.0p-20;
@@ -135,7 +128,7 @@ ShapePair degeneratePair(DegenerateKind kind, double thin, Rng& rng) {
 // corners); severity s >= 1: the same shapes 10^-s thin (slivers and needles).
 StressCase degenerateCase(const CaseRequest& request, Rng& rng) {
   const double thin = request.severity == 0 ? 0.0 : std::pow(10.0, -request.severity);
-  ShapePair pair =
+  GeneratedPair pair =
       degeneratePair(kDegenerateKinds[request.index % kDegenerateKinds.size()], thin, rng);
   Placed placed = place(exactPlacement(request.index / kDegenerateKinds.size() + request.index),
                         std::move(pair.a), std::move(pair.b), rng);

@@ -20,24 +20,6 @@ Eigen::Vector3d Rng::uniformVector(double low, double high) {
   return v;
 }
 
-Eigen::Vector3d Rng::direction() {
-  const double z = uniform(-1.0, 1.0);
-  const double phi = uniform(0.0, 2.0 * M_PI);
-  const double s = std::sqrt(std::max(0.0, 1.0 - z * z));
-  return {s * std::cos(phi), s * std::sin(phi), z};
-}
-
-Eigen::Matrix3d Rng::rotation() {
-  const double u1 = uniform();
-  const double u2 = uniform(0.0, 2.0 * M_PI);
-  const double u3 = uniform(0.0, 2.0 * M_PI);
-  const double a = std::sqrt(1.0 - u1);
-  const double b = std::sqrt(u1);
-  const Eigen::Quaterniond q(b * std::cos(u3), a * std::sin(u2), a * std::cos(u2),
-                             b * std::sin(u3));
-  return q.normalized().toRotationMatrix();
-}
-
 int MeshBuilder::vertex(const Eigen::Vector3d& p) {
   vertices_.push_back(p);
   return static_cast<int>(vertices_.size()) - 1;

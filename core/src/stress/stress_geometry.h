@@ -8,31 +8,26 @@
 // gives each object its model coordinates and pose.
 #include <cmath>
 #include <cstdint>
-#include <random>
 #include <vector>
 
 #include <Eigen/Geometry>
 
 #include <collido/geometry.h>
 #include <collido/mesh/triangle_mesh.h>
+#include <collido/random/portable_random.h>
 
 namespace collido::stress::detail {
 
-/// Uniform numbers from mt19937_64 with our own conversions: the standard distributions are
-/// implementation-defined, and a seed must give the same cases with any standard library (and
-/// any compiler: callers draw in separate statements, as the order in which a call's arguments
-/// are evaluated is unspecified).
-class Rng {
+/// PortableRandom with the draws the generators need besides it.
+class Rng : public PortableRandom {
  public:
-  explicit Rng(std::uint64_t seed) : engine_(seed) {}
+  explicit Rng(std::uint64_t seed) : PortableRandom(seed) {}
 
-  double uniform() { return static_cast<double>(engine_() >> 11) * 0x1.0p-53; }  // [0, 1)
-  double uniform(double low, double high) { return low + (high - low) * uniform(); }
   /// An integer in [low, high].
   int integer(int low, int high) {
-    return low + static_cast<int>(engine_() % static_cast<std::uint64_t>(high - low + 1));
+    return low + static_cast<int>(bits() % static_cast<std::uint64_t>(high - low + 1));
   }
-  bool coin() { return (engine_() >> 63) != 0; }
+  bool coin() { return (bits() >> 63) != 0; }
   /// A multiple of 1 / denominator in [low, high]: exact in double, and sums of a few of them
   /// stay exact.
   double dyadic(double low, double high, int denominator) {
@@ -44,12 +39,14 @@ class Rng {
   Eigen::Vector3d dyadicVector(double bound, int denominator);
   /// Three draws of uniform(low, high), x first.
   Eigen::Vector3d uniformVector(double low, double high);
-  Eigen::Vector3d direction();
-  /// A uniform random rotation (Shoemake, "Uniform random rotations", Graphics Gems III).
-  Eigen::Matrix3d rotation();
+};
 
- private:
-  std::mt19937_64 engine_;
+/// Two meshes a generator built for one case, and whether it aimed at contact.
+struct GeneratedPair {
+  const char* kind = "";
+  TriangleMesh a;
+  TriangleMesh b;
+  bool contact = true;
 };
 
 /// Collects vertices and triangles.

@@ -2,6 +2,7 @@
 // filter with a certified error bound, falling back to exact arithmetic when the sign is in
 // doubt). Kept behind plain functions so that CGAL's headers stay in this one file.
 #include "exact_predicates.h"
+#include "projection.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
@@ -14,17 +15,6 @@ Kernel::Point_3 point3(const Eigen::Vector3d& p) {
   return {p.x(), p.y(), p.z()};
 }
 
-Kernel::Point_2 point2(const Eigen::Vector3d& p, int drop) {
-  switch (drop) {
-    case 0:
-      return {p.y(), p.z()};
-    case 1:
-      return {p.z(), p.x()};
-    default:
-      return {p.x(), p.y()};
-  }
-}
-
 }  // namespace
 
 int orient3d(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
@@ -34,7 +24,9 @@ int orient3d(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Ve
 
 int orient2d(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
              int drop) {
-  return static_cast<int>(CGAL::orientation(point2(a, drop), point2(b, drop), point2(c, drop)));
+  return static_cast<int>(CGAL::orientation(dropCoordinate<Kernel::Point_2>(a, drop),
+                                            dropCoordinate<Kernel::Point_2>(b, drop),
+                                            dropCoordinate<Kernel::Point_2>(c, drop)));
 }
 
 bool collinear(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c) {

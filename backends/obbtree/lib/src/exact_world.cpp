@@ -5,12 +5,14 @@
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 
+#include "projection.h"
 #include "triangle_test.h"
 
 namespace collido::obbtree {
 namespace {
 
 using EK = CGAL::Exact_predicates_exact_constructions_kernel;
+using detail::dropCoordinate;
 
 struct ExactWorldKernel {
   using Point = EK::Point_3;
@@ -18,27 +20,15 @@ struct ExactWorldKernel {
     return static_cast<int>(CGAL::orientation(a, b, c, d));
   }
   static int orient2d(const Point& a, const Point& b, const Point& c, int drop) {
-    return static_cast<int>(
-        CGAL::orientation(project(a, drop), project(b, drop), project(c, drop)));
+    return static_cast<int>(CGAL::orientation(dropCoordinate<EK::Point_2>(a, drop),
+                                              dropCoordinate<EK::Point_2>(b, drop),
+                                              dropCoordinate<EK::Point_2>(c, drop)));
   }
   static bool collinear(const Point& a, const Point& b, const Point& c) {
     return CGAL::collinear(a, b, c);
   }
   static int compare(const Point& a, const Point& b, int k) {
     return static_cast<int>(CGAL::compare(a.cartesian(k), b.cartesian(k)));
-  }
-
- private:
-  // Same coordinate order as the double kernel's projection (exact_predicates.cpp).
-  static EK::Point_2 project(const Point& p, int drop) {
-    switch (drop) {
-      case 0:
-        return {p.y(), p.z()};
-      case 1:
-        return {p.z(), p.x()};
-      default:
-        return {p.x(), p.y()};
-    }
   }
 };
 

@@ -24,6 +24,7 @@
 #include <collido/obbtree/triangle_intersection.h>
 
 #include "exact_predicates.h"
+#include "projection.h"
 
 namespace collido::obbtree::detail {
 
@@ -57,10 +58,8 @@ class FilteredKernel {
   }
 
   int orient2d(const Point& a, const Point& b, const Point& c, int drop) {
-    // The cyclic order of the kept coordinates, (y, z), (z, x), (x, y), as the exact predicate
-    // (exact_predicates.cpp) projects: the two must agree in sign within one decision.
-    const int i = (drop + 1) % 3;
-    const int j = (drop + 2) % 3;
+    const int i = keptFirst(drop);  // the exact kernels' projection order (projection.h)
+    const int j = keptSecond(drop);
     const double ui = b.p[i] - a.p[i];
     const double uj = b.p[j] - a.p[j];
     const double vi = c.p[i] - a.p[i];
