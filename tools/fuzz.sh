@@ -4,7 +4,12 @@
 # is never written. Fails when any target crashes, leaks, hits undefined behaviour, breaks its
 # own check, takes more than 30 s on one input or more than 2 GB of memory.
 # Usage: tools/fuzz.sh [SECONDS per target, default 60] [TARGET...]  (default: every target)
-# Environment: COLLIDO_FUZZ_JOBS: build jobs (default: every core).
+# Environment: COLLIDO_FUZZ_JOBS: build jobs (default: every core). COLLIDO_FUZZ_SEED: libFuzzer's
+# random seed (default: a new one each run). With a fixed seed the inputs tried are one fixed
+# sequence, of which a run covers as much as its time allows: CI fixes the seed, so its verdict
+# depends on the code alone, and a longer run with the same seed here covers what CI will try.
+# Exploring with new seeds (the default) is how new findings are made; each becomes a
+# regression seed in tests/fuzz/corpus/.
 # Each run leaves build/fuzz/runs/<target>/: log.txt, corpus/ (seeds plus what the run added)
 # and artifacts/ (crash-*, leak-*, timeout-*, oom-*: reproducers; replay one with
 # build/fuzz/fuzzers/<target> FILE). docs/FUZZING.md says what each target checks.
@@ -40,8 +45,11 @@ for target in "${targets[@]}"; do
   echo
   echo "--- $target: ${seconds}s over $(find "$seeds" -type f | wc -l) seeds (log: $run/log.txt)"
   status=0
+  seed=()
+  [[ -n "${COLLIDO_FUZZ_SEED:-}" ]] && seed=(-seed="$COLLIDO_FUZZ_SEED")
   "$fuzzer" "$run/corpus" -max_total_time="$seconds" -timeout=30 -rss_limit_mb=2048 \
-    -print_final_stats=1 -artifact_prefix="$run/artifacts/" >"$run/log.txt" 2>&1 || status=$?
+    "${seed[@]}" -print_final_stats=1 -artifact_prefix="$run/artifacts/" \
+    >"$run/log.txt" 2>&1 || status=$?
   runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$run/log.txt" | tail -n 1)
   coverage=$(grep -oE 'cov: [0-9]+' "$run/log.txt" | tail -n 1 | cut -d' ' -f2)
   added=$(( $(find "$run/corpus" -type f | wc -l) - $(find "$seeds" -type f | wc -l) ))

@@ -251,6 +251,25 @@ TEST(MeshBadInput, TruncatedAsciiPly) {
   EXPECT_TRUE(rejected(loadMesh(path), {path, "ends early", "'vertex' 2", "of the 3"}));
 }
 
+// Regression (found by mesh_import_fuzz): a list whose signed count reads -1 made CGAL's reader
+// resize a vector to 2^64-1 elements and throw length_error out of loadMesh:
+// "<dir>/negative_list.ply: 'face' 0: the list 'vertex_indices' has a negative length"
+TEST(MeshBadInput, BinaryPlyNegativeListLength) {
+  std::string ply =
+      "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\n"
+      "property float y\nproperty float z\nelement face 1\n"
+      "property list short int vertex_indices\nend_header\n";
+  for (const Corner& v : {Corner{0, 0, 0}, Corner{1, 0, 0}, Corner{0, 1, 0}}) {
+    for (float c : v)
+      appendFloat(ply, c);
+  }
+  ply += std::string(2, '\xff');  // the short count: -1
+  for (std::uint32_t index : {0u, 1u, 2u})
+    appendUint32(ply, index);
+  const std::string path = writeTemp("negative_list.ply", ply);
+  EXPECT_TRUE(rejected(loadMesh(path), {path, "'face' 0", "'vertex_indices'", "negative length"}));
+}
+
 // Regression: assimp's second opinion on this file never returned (a header cut before its
 // 'end_header' line):
 // "<dir>/cut_header.ply: the header has no 'end_header' line (the file is truncated, or not PLY)"
@@ -265,6 +284,20 @@ TEST(MeshBadInput, TruncatedOff) {
   const std::string path =
       writeTemp("cut.off", "OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 1 2\n");
   EXPECT_TRUE(rejected(loadMesh(path), {path, "ends early", "2 faces", "ends after 1"}));
+}
+
+// Regression (found by mesh_import_fuzz): a few bytes declaring 225 million faces made CGAL's
+// reader allocate 5 GB for them:
+// "<dir>/huge_count.off: the file ends early: the header declares 0 vertices and 225525203 faces,
+//  more than the 3 characters after it can hold"
+TEST(MeshBadInput, OffCountsBeyondTheFile) {
+  const std::string path = writeTemp("huge_count.off", "COFF\n#c\n 0 225525203 5 \x01");
+  EXPECT_TRUE(rejected(loadMesh(path), {path, "ends early", "225525203 faces", "characters"}));
+  // The header's last count ends the file (CGAL's colour scanner then read through a null
+  // pointer).
+  const std::string header_only = writeTemp("header_only.off", "COFF\n# 4 \n50  11  21");
+  EXPECT_TRUE(rejected(loadMesh(header_only),
+                       {header_only, "ends early", "50 vertices", "11 faces", "the 0 characters"}));
 }
 
 // "<dir>/cut_face.off: line 8: face 1 lists 2 of its 3 vertex indices"

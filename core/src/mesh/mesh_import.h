@@ -49,12 +49,12 @@ std::string diagnoseOff(const std::string& path);
 /// binary colour data and no texture coordinates without colours (which it misreads).
 std::string checkOffBeforeReading(const std::string& path);
 
-/// Why CGAL's PLY reader refused a file (not PLY, a broken or unterminated header, data that ends
-/// early, a non-finite or out-of-range coordinate or index in ASCII data), or "" when no reason is
-/// found. It stands in for assimp's second opinion, whose PLY reader aborts or hangs on such
-/// files. With `header_only`, the header's checks alone: what must hold before CGAL's reader may
-/// see the file (a broken header crashes it).
-std::string diagnosePly(const std::string& path, bool header_only);
+/// What must hold before CGAL's PLY reader may see a file (a PLY header that is whole and known,
+/// data that holds every declared element, non-negative list lengths, finite in-range coordinates
+/// and indices in ASCII data), or "" when nothing is found. CGAL's reader crashes or throws on
+/// such files, and gives no reason when it refuses one; assimp's PLY reader aborts or hangs on
+/// them, so it is never asked for a second opinion.
+std::string checkPlyBeforeReading(const std::string& path);
 
 /// What is wrong with the layout of an STL file before any reader sees it: a binary file shorter
 /// than its header or than the triangles its header declares, an ASCII file without 'endsolid';

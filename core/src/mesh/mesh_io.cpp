@@ -5,7 +5,7 @@
 //    loses digits of text formats, so it is used only where the format holds floats anyway
 //    (glTF, FBX, ...) or has no other reader, and the report says so.
 // CGAL's readers return only true/false; on failure we read again verbosely to capture their
-// reason and look for it ourselves in OFF and PLY files (diagnoseOff, diagnosePly). assimp is
+// reason and look for it ourselves in OFF files (diagnoseOff). assimp is
 // never asked for a second opinion on these formats: its PLY reader hangs on a header without
 // 'end_header' and aborts the process on truncated ASCII data, and its STL reader leaks.
 // Each format is checked by us before CGAL reads it, where CGAL's reader misreads or crashes:
@@ -13,7 +13,8 @@
 // rejects legal 'l' elements, stops a face silently at a malformed index, and names no line or
 // face when an index is out of range; an STL file's layout (diagnoseStl), because CGAL's reader
 // reads a short binary file as no triangles and quotes a truncated one's binary header back; a
-// PLY file's header, because a broken "element" line crashes CGAL's reader (SIGSEGV); and an
+// PLY file's header and list lengths, because a broken "element" line crashes CGAL's reader
+// (SIGSEGV) and a negative list length makes it throw length_error; and an
 // OFF file's counts, colours and face indices (checkOffBeforeReading), which CGAL's scanner
 // converts with unchecked casts (undefined behaviour) or trusts to size its arrays.
 #include <collido/mesh/mesh_io.h>
@@ -131,20 +132,28 @@ Result<Imported> readWithCgal(const std::string& path, const std::string& format
   if (format != "OBJ") {
     std::string diagnosis = format == "STL"   ? detail::diagnoseStl(path)
                             : format == "OFF" ? detail::checkOffBeforeReading(path)
-                                              : detail::diagnosePly(path, /*header_only=*/true);
+                                              : detail::checkPlyBeforeReading(path);
     if (!diagnosis.empty()) return readError(path, diagnosis);
   }
   std::vector<Kernel::Point_3> points;
   std::vector<Polygon> polygons;
+  std::string thrown;
   const auto read = [&](bool verbose) {
     points.clear();
     polygons.clear();
-    if (!obj) {
-      return CGAL::IO::read_polygon_soup(path, points, polygons,
-                                         CGAL::parameters::verbose(verbose));
+    // A reader sizes its arrays from counts in the file; what it throws (bad_alloc, length_error)
+    // becomes an error naming the file, never the end of the study.
+    try {
+      if (!obj) {
+        return CGAL::IO::read_polygon_soup(path, points, polygons,
+                                           CGAL::parameters::verbose(verbose));
+      }
+      std::istringstream text(obj_text.text);
+      return CGAL::IO::read_OBJ(text, points, polygons, CGAL::parameters::verbose(verbose));
+    } catch (const std::exception& e) {
+      thrown = e.what();
+      return false;
     }
-    std::istringstream text(obj_text.text);
-    return CGAL::IO::read_OBJ(text, points, polygons, CGAL::parameters::verbose(verbose));
   };
   if (read(false)) {
     Result<Imported> out = soupToMesh(path, points, polygons);
@@ -162,11 +171,11 @@ Result<Imported> readWithCgal(const std::string& path, const std::string& format
     reason = captured.text();
     if (read_again) reason = "it reads only on a second attempt";
   }
-  if (format == "OFF" || format == "PLY") {
-    std::string diagnosis = format == "OFF" ? detail::diagnoseOff(path)
-                                            : detail::diagnosePly(path, /*header_only=*/false);
+  if (format == "OFF") {
+    std::string diagnosis = detail::diagnoseOff(path);
     if (!diagnosis.empty()) return readError(path, diagnosis);
   }
+  if (!thrown.empty()) reason = "it threw '" + thrown + "'";
   if (reason.empty()) reason = "no reason given";
   return readError(path, "cannot read it as " + format + " (CGAL's reader: " + reason + ")");
 }

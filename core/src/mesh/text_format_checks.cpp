@@ -470,7 +470,20 @@ std::string checkOffBeforeReading(const std::string& path) {
     return "";
   }
 
-  // Text. Numbers per vertex line before the colour: the point, its normal, then (after the
+  // Text. Every vertex and face takes at least one character, so counts beyond the characters
+  // left are refused before CGAL's reader sizes its arrays by them (a few bytes declaring 2^28
+  // faces would ask for gigabytes).
+  // (The header's last count may end the file: then nothing is left, and tellg would fail.)
+  const long long text_start =
+      in.eof() ? static_cast<long long>(content.size()) : static_cast<long long>(in.tellg());
+  if (text_start < 0) return "";
+  const long long text_left = static_cast<long long>(content.size()) - text_start;
+  if (vertex_count > text_left || face_count > text_left - vertex_count) {
+    return "the file ends early: the header declares " + std::to_string(vertex_count) +
+           " vertices and " + std::to_string(face_count) + " faces, more than the " +
+           std::to_string(text_left) + " characters after it can hold";
+  }
+  // Numbers per vertex line before the colour: the point, its normal, then (after the
   // colour) its texture coordinates.
   const std::size_t fixed = (3 + h) + (normals ? 3 + h : 0) + (textures ? 2 + h : 0);
   const std::size_t first_colour = (3 + h) + (normals ? 3 + h : 0);
@@ -589,8 +602,9 @@ long long plyCount(const unsigned char* data, const PlyProperty& p, bool big_end
 
 }  // namespace
 
-// Why CGAL's PLY reader refused a file, which it does without a reason: walks the header, then
-// the data, element by element, as the header declares it. The checks, in order:
+// What must hold before CGAL's PLY reader sees a file, which it would otherwise crash on, throw on
+// or refuse without a reason: walks the header, then the data, element by element, as the header
+// declares it. The checks, in order:
 //   - the file starts with "ply" and has an "end_header" line (assimp's reader loops forever
 //     without one);
 //   - every header line is known: format ascii/binary_little_endian/binary_big_endian, element
@@ -599,11 +613,12 @@ long long plyCount(const unsigned char* data, const PlyProperty& p, bool big_end
 //   - the data holds every declared element: ASCII by tokens, binary by byte sizes (the data of
 //     a truncated file ends inside some element; assimp's reader aborts on an ASCII one);
 //   - ASCII data: the x, y, z of each vertex are finite and within kMaxCoordinate, list counts
-//     are non-negative integers, and a face's vertex indices are in range.
-// With `header_only`, before CGAL reads the file, only the first two: CGAL's reader dereferences
-// a null element on a property line before any element line (a broken "element" line) and dies
-// of SIGSEGV.
-std::string diagnosePly(const std::string& path, bool header_only) {
+//     are non-negative integers, and a face's vertex indices are in range; binary data: list
+//     counts are non-negative.
+// CGAL's reader dereferences a null element on a property line before any element line (a broken
+// "element" line) and dies of SIGSEGV; it resizes a list to a negative count and throws
+// length_error.
+std::string checkPlyBeforeReading(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   const std::string content((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   if (content.compare(0, 3, "ply") != 0 ||
@@ -690,7 +705,6 @@ std::string diagnosePly(const std::string& path, bool header_only) {
     return "the header has no 'end_header' line (the file is truncated, or not PLY)";
   }
   if (format.empty()) return "the header has no 'format' line";
-  if (header_only) return "";
   const auto truncated = [&](const PlyElement& element, unsigned long long index) {
     return "the file ends early: the data stops in '" + printable(element.name) + "' " +
            std::to_string(index) + " (0-based) of the " + std::to_string(element.count) +
