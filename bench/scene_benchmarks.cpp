@@ -13,6 +13,7 @@
 
 #include <collido/host/backend_instance.h>
 #include <collido/host/static_backends.h>
+#include <collido/runner/runner.h>
 #include <collido/scene/broad_phase.h>
 #include <collido/scene/scene.h>
 
@@ -22,23 +23,41 @@ namespace {
 struct Variant {
   std::shared_ptr<PluginLibrary> library;
   std::string name;
+  std::map<std::string, std::string> options;
+  std::string label;  // as in the study's tables: "variant" or "variant[key=value;...]"
 };
 
-std::vector<Variant> staticVariants() {
-  std::vector<Variant> out;
+std::vector<std::shared_ptr<PluginLibrary>> staticLibraries() {
+  std::vector<std::shared_ptr<PluginLibrary>> out;
   for (const StaticBackendTable& entry : staticBackendTables()) {
     Result<std::shared_ptr<PluginLibrary>> library =
         PluginLibrary::fromTable(entry.entry(), entry.name + " (static)");
-    if (!library.ok()) continue;
-    for (const VariantInfo& v : library.value()->variants())
-      out.push_back({library.value(), v.name});
+    if (library.ok()) out.push_back(library.value());
   }
+  return out;
+}
+
+// Every variant with its default options, or the backends named (study syntax).
+Result<std::vector<Variant>> variantsToRun(const std::vector<std::string>& backends) {
+  const std::vector<std::shared_ptr<PluginLibrary>> libraries = staticLibraries();
+  std::vector<Variant> out;
+  if (backends.empty()) {
+    for (const auto& library : libraries) {
+      for (const VariantInfo& v : library->variants())
+        out.push_back({library, v.name, {}, v.name});
+    }
+    return out;
+  }
+  Result<std::vector<BackendSpec>> specs = resolveBackends(backends, libraries);
+  if (!specs.ok()) return specs.status();
+  for (const BackendSpec& spec : specs.value())
+    out.push_back({spec.library, spec.variant, spec.options, spec.label()});
   return out;
 }
 
 std::unique_ptr<BackendInstance> createOrSkip(const Variant& variant, benchmark::State& state) {
   Result<std::unique_ptr<BackendInstance>> instance =
-      BackendInstance::create(variant.library, variant.name);
+      BackendInstance::create(variant.library, variant.name, variant.options);
   if (!instance.ok()) {
     state.SkipWithError(instance.status().message().c_str());
     return nullptr;
@@ -192,7 +211,11 @@ void scalingBenchmark(benchmark::State& state, const Variant& variant, const std
 
 }  // namespace
 
-int registerSceneBenchmarks(const std::string& scenes_directory) {
+Result<int> registerSceneBenchmarks(const std::string& scenes_directory,
+                                    const std::vector<std::string>& backends) {
+  Result<std::vector<Variant>> resolved = variantsToRun(backends);
+  if (!resolved.ok()) return resolved.status();
+  const std::vector<Variant>& variants = resolved.value();
   std::vector<std::string> files;
   std::error_code ec;
   for (const auto& entry : std::filesystem::directory_iterator(scenes_directory, ec)) {
@@ -200,7 +223,6 @@ int registerSceneBenchmarks(const std::string& scenes_directory) {
   }
   std::sort(files.begin(), files.end());
   int registered = 0;
-  const std::vector<Variant> variants = staticVariants();
   for (const std::string& file : files) {
     Result<Scene> loaded = loadScene(file);
     if (!loaded.ok()) continue;
@@ -217,18 +239,18 @@ int registerSceneBenchmarks(const std::string& scenes_directory) {
     for (const Variant& variant : variants) {
       for (std::size_t object : distinct_meshes) {
         const std::string name =
-            "build/" + variant.name + "/" + scene->name + "/" + scene->objects[object].name;
+            "build/" + variant.label + "/" + scene->name + "/" + scene->objects[object].name;
         benchmark::RegisterBenchmark(name.c_str(), buildBenchmark, variant, scene, object)
             ->Unit(benchmark::kMicrosecond);
         const std::string refit =
-            "refit/" + variant.name + "/" + scene->name + "/" + scene->objects[object].name;
+            "refit/" + variant.label + "/" + scene->name + "/" + scene->objects[object].name;
         benchmark::RegisterBenchmark(refit.c_str(), refitBenchmark, variant, scene, object)
             ->Unit(benchmark::kMicrosecond);
         registered += 2;
       }
       for (std::size_t q = 0; q < scene->queries.size(); ++q) {
         const std::string name =
-            "query/" + variant.name + "/" + scene->name + "/" + scene->queries[q].name;
+            "query/" + variant.label + "/" + scene->name + "/" + scene->queries[q].name;
         benchmark::RegisterBenchmark(name.c_str(), queryBenchmark, variant, scene, q)
             ->Unit(benchmark::kMicrosecond);
         ++registered;
@@ -241,7 +263,7 @@ int registerSceneBenchmarks(const std::string& scenes_directory) {
     for (const Variant& variant : variants) {
       for (const auto& [query_index, query_name] :
            {std::pair<std::size_t, const char*>{0, "all_pairs"}, {1, "boolean"}}) {
-        const std::string name = "scaling/" + variant.name + "/" + query_name;
+        const std::string name = "scaling/" + variant.label + "/" + query_name;
         benchmark::RegisterBenchmark(name.c_str(), scalingBenchmark, variant, scaling_file,
                                      query_index)
             ->DenseRange(0, 3)

@@ -9,19 +9,29 @@
 // Per node pair (a, b) on the stack:
 //   1. test the boxes with the 15-axis separating-axis test, B's box enlarged by its mapping
 //      error and the comparisons by the bound on their rounding: separated -> drop the pair;
-//   2. both leaves -> test every triangle pair with the certified filter on the mapped corners
-//      (each with its error radius); when the filter cannot be sure, decide exactly on the
-//      world coordinates; record hits;
+//   2. both leaves -> for every triangle pair whose axis-aligned bounds in A's frame overlap
+//      (B's widened by its corners' error radii), run the certified filter on the mapped
+//      corners (each with its error radius); when the filter cannot be sure, decide exactly on
+//      the world coordinates; record hits;
 //   3. otherwise split the node that is not a leaf, or of two inner nodes the larger one (by the
 //      sum of its half extents), and push both child pairs.
+// A B node meets many A nodes, so its box (and a B triangle its corners) is mapped into A's
+// frame once per query and kept in a per-thread scratch (QueryScratch), as are decoded float
+// boxes of A.
 #include <collido/obbtree/collide.h>
 
 #include <collido/obbtree/separating_axis.h>
 #include <collido/obbtree/triangle_intersection.h>
 
+#include "prepared_triangle.h"
+
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <optional>
+#include <type_traits>
+#include <vector>
 
 namespace collido::obbtree {
 namespace {
@@ -179,53 +189,178 @@ Placement placementOf(const ObbTree& a, const Eigen::Isometry3d& pose_a, const O
   return placement;
 }
 
+// B's box brought into A's model frame once per query (a B node meets many A nodes), with the
+// inflation its separating-axis tests must allow for its mapping error.
+struct MappedBox {
+  std::uint32_t stamp = 0;  // QueryScratch::epoch of the query that mapped it
+  Eigen::Matrix3d axes;
+  Eigen::Vector3d center;
+  Eigen::Vector3d half_extents;
+  double inflation = 0.0;
+};
+
+// Per-thread scratch reused across queries: what the descent computes once per node or
+// triangle, marked valid for the current query by an epoch stamp (no clearing between queries).
+// An item of the scratch with the epoch of the query that computed it, side by side so that
+// one cache line holds both.
+template <typename T>
+struct Stamped {
+  std::uint32_t stamp = 0;
+  T item;
+};
+
+struct QueryScratch {
+  std::uint32_t epoch = 0;
+  std::vector<MappedBox> boxes_b;
+  std::vector<Stamped<OrientedBox>> boxes_a;  // decoded float boxes of A
+  // Triangles by position in their tree's leaf order: A's as stored, B's mapped into A's frame.
+  std::vector<Stamped<detail::PreparedTriangle>> triangles_a;
+  std::vector<Stamped<detail::PreparedTriangle>> triangles_b;
+  std::vector<PairTask> stack;
+
+  void begin(std::size_t nodes_a, std::size_t nodes_b, std::size_t triangle_count_a,
+             std::size_t triangle_count_b, bool decode_a) {
+    if (++epoch == 0) {  // wrapped: old stamps could collide with new epochs
+      clearStamps(boxes_b);
+      clearStamps(boxes_a);
+      clearStamps(triangles_a);
+      clearStamps(triangles_b);
+      epoch = 1;
+    }
+    if (boxes_b.size() < nodes_b) boxes_b.resize(nodes_b);
+    if (decode_a && boxes_a.size() < nodes_a) boxes_a.resize(nodes_a);
+    if (triangles_a.size() < triangle_count_a) triangles_a.resize(triangle_count_a);
+    if (triangles_b.size() < triangle_count_b) triangles_b.resize(triangle_count_b);
+    stack.clear();
+  }
+
+  std::size_t bytes() const {
+    return boxes_b.capacity() * sizeof(MappedBox) +
+           boxes_a.capacity() * sizeof(Stamped<OrientedBox>) +
+           (triangles_a.capacity() + triangles_b.capacity()) *
+               sizeof(Stamped<detail::PreparedTriangle>) +
+           stack.capacity() * sizeof(PairTask);
+  }
+
+ private:
+  template <typename T>
+  static void clearStamps(std::vector<T>& items) {
+    for (T& item : items)
+      item.stamp = 0;
+  }
+};
+
+QueryScratch& queryScratch() {
+  thread_local QueryScratch scratch;
+  return scratch;
+}
+
+// The box a query uses for A's node i: a double box as stored, a float box decoded once.
+const OrientedBox& boxOfA(const std::vector<Node>& nodes, std::int32_t i, QueryScratch&) {
+  return nodes[static_cast<std::size_t>(i)].box;
+}
+const OrientedBox& boxOfA(const std::vector<CompactNode>& nodes, std::int32_t i,
+                          QueryScratch& scratch) {
+  const auto k = static_cast<std::size_t>(i);
+  Stamped<OrientedBox>& decoded = scratch.boxes_a[k];
+  if (decoded.stamp != scratch.epoch) {
+    decoded.stamp = scratch.epoch;
+    decoded.item = expandBox(nodes[k].box);
+  }
+  return decoded.item;
+}
+
+template <typename NodeB>
+const MappedBox& mappedBoxOfB(const std::vector<NodeB>& nodes, std::int32_t i,
+                              const Placement& placement, QueryScratch& scratch) {
+  const auto k = static_cast<std::size_t>(i);
+  MappedBox& mapped = scratch.boxes_b[k];
+  if (mapped.stamp == scratch.epoch) return mapped;
+  mapped.stamp = scratch.epoch;
+  const auto& box = boxOf(nodes[k]);
+  mapped.axes = placement.rotation * box.axes;
+  mapped.center = placement.rotation * box.center + placement.translation;
+  mapped.half_extents = box.half_extents;
+  mapped.inflation = placement.bounds.pointError(box.center) +
+                     placement.bounds.axis_error * box.half_extents.sum();
+  return mapped;
+}
+
+// A's triangle at position i of its leaf order, prepared once per query (its corners are exact).
+const detail::PreparedTriangle& preparedTriangleOfA(const ObbTree& a, std::int32_t i,
+                                                    QueryScratch& scratch) {
+  const auto k = static_cast<std::size_t>(i);
+  Stamped<detail::PreparedTriangle>& cached = scratch.triangles_a[k];
+  detail::PreparedTriangle& t = cached.item;
+  if (cached.stamp == scratch.epoch) return t;
+  cached.stamp = scratch.epoch;
+  for (int c = 0; c < 3; ++c) {
+    t.corners[c].p = a.vertices().col(a.orderedTriangles()(c, i));
+    t.corners[c].error.setZero();
+  }
+  detail::prepareTriangle(t);
+  return t;
+}
+
+// B's triangle at position j of its leaf order, mapped into A's frame once per query.
+const detail::PreparedTriangle& preparedTriangleOfB(const ObbTree& b, std::int32_t j,
+                                                    const Placement& placement,
+                                                    QueryScratch& scratch) {
+  const auto k = static_cast<std::size_t>(j);
+  Stamped<detail::PreparedTriangle>& cached = scratch.triangles_b[k];
+  detail::PreparedTriangle& t = cached.item;
+  if (cached.stamp == scratch.epoch) return t;
+  cached.stamp = scratch.epoch;
+  for (int c = 0; c < 3; ++c)
+    t.corners[c] = placement.map(b.vertices().col(b.orderedTriangles()(c, j)));
+  detail::prepareTriangle(t);
+  return t;
+}
+
 template <typename NodeA, typename NodeB>
 void descend(const ObbTree& a, const std::vector<NodeA>& nodes_a, const ObbTree& b,
              const std::vector<NodeB>& nodes_b, const Placement& placement,
              const CollideRequest& request, CollideResult& result) {
-  const Eigen::Matrix3d& rotation = placement.rotation;
-  const Eigen::Vector3d& translation = placement.translation;
   const QueryBounds& bounds = placement.bounds;
-  const Eigen::Vector3d exact = Eigen::Vector3d::Zero();  // A's corners are exact
-  const Eigen::Matrix3Xd& vertices_a = a.vertices();
   const Eigen::Matrix3Xd& vertices_b = b.vertices();
-  const Eigen::Matrix3Xi& triangles_a = a.orderedTriangles();
   const Eigen::Matrix3Xi& triangles_b = b.orderedTriangles();
 
-  std::vector<PairTask> stack;
-  stack.reserve(64);
+  QueryScratch& scratch = queryScratch();
+  scratch.begin(nodes_a.size(), nodes_b.size(), a.triangleCount(), b.triangleCount(),
+                std::is_same_v<NodeA, CompactNode>);
+  std::vector<PairTask>& stack = scratch.stack;
   stack.push_back(PairTask{0, 0});
   while (!stack.empty()) {
     const PairTask task = stack.back();
     stack.pop_back();
     const NodeA& node_a = nodes_a[static_cast<std::size_t>(task.a)];
     const NodeB& node_b = nodes_b[static_cast<std::size_t>(task.b)];
-    const auto& box_a = boxOf(node_a);
-    const auto& box_b = boxOf(node_b);
+    const OrientedBox& box_a = boxOfA(nodes_a, task.a, scratch);
+    const MappedBox& box_b = mappedBoxOfB(nodes_b, task.b, placement, scratch);
 
     // B's box in A's box frame.
-    const Eigen::Matrix3d axes_b = rotation * box_b.axes;
-    const Eigen::Vector3d center_b = rotation * box_b.center + translation;
-    const Eigen::Matrix3d relative = box_a.axes.transpose() * axes_b;
-    const Eigen::Vector3d offset = box_a.axes.transpose() * (center_b - box_a.center);
+    const Eigen::Matrix3d relative = box_a.axes.transpose() * box_b.axes;
+    const Eigen::Vector3d offset = box_a.axes.transpose() * (box_b.center - box_a.center);
     ++result.box_tests;
-    const SeparationTolerance tolerance{
-        bounds.axis_error,
-        bounds.pointError(box_b.center) + bounds.axis_error * box_b.half_extents.sum()};
+    const SeparationTolerance tolerance{bounds.axis_error, box_b.inflation};
     if (!boxesOverlap(relative, offset, box_a.half_extents, box_b.half_extents, tolerance)) {
       continue;
     }
 
     if (node_a.isLeaf() && node_b.isLeaf()) {
       for (std::int32_t j = node_b.first; j < node_b.first + node_b.count; ++j) {
-        const UncertainPoint q[3] = {placement.map(vertices_b.col(triangles_b(0, j))),
-                                     placement.map(vertices_b.col(triangles_b(1, j))),
-                                     placement.map(vertices_b.col(triangles_b(2, j)))};
+        const detail::PreparedTriangle& tb = preparedTriangleOfB(b, j, placement, scratch);
         for (std::int32_t i = node_a.first; i < node_a.first + node_a.count; ++i) {
+          const detail::PreparedTriangle& ta = preparedTriangleOfA(a, i, scratch);
+          // Certainly apart (bounds, or one triangle strictly on one side of the other's
+          // plane): the exact triangles are apart too.
+          if (detail::boundsApart(ta, tb) || detail::planeSeparates(ta, tb) ||
+              detail::planeSeparates(tb, ta)) {
+            continue;
+          }
           ++result.triangle_tests;
-          const UncertainPoint p[3] = {{vertices_a.col(triangles_a(0, i)), exact},
-                                       {vertices_a.col(triangles_a(1, i)), exact},
-                                       {vertices_a.col(triangles_a(2, i)), exact}};
+          const UncertainPoint* p = ta.corners;
+          const UncertainPoint* q = tb.corners;
           std::optional<bool> hit = trianglesIntersectCertified(p[0], p[1], p[2], q[0], q[1], q[2]);
           if (!hit) {
             ++result.exact_fallbacks;
@@ -270,6 +405,7 @@ void collide(const ObbTree& a, const Eigen::Isometry3d& pose_a, const ObbTree& b
   result.box_tests = 0;
   result.triangle_tests = 0;
   result.exact_fallbacks = 0;
+  result.scratch_bytes = 0;
   if (a.nodeCount() == 0 || b.nodeCount() == 0) return;
 
   const Placement placement = placementOf(a, pose_a, b, pose_b);
@@ -282,6 +418,7 @@ void collide(const ObbTree& a, const Eigen::Isometry3d& pose_a, const ObbTree& b
   } else {
     descend(a, a.nodes(), b, b.nodes(), placement, request, result);
   }
+  result.scratch_bytes = queryScratch().bytes();
 }
 
 }  // namespace collido::obbtree

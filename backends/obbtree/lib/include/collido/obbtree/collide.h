@@ -34,12 +34,16 @@ struct CollideResult {
   std::uint64_t box_tests = 0;        ///< separating-axis tests
   std::uint64_t triangle_tests = 0;   ///< triangle-triangle tests (filtered, then exact if unsure)
   std::uint64_t exact_fallbacks = 0;  ///< tests the filter could not certify, decided exactly
+  /// Bytes of the per-thread scratch the query used (B's boxes and triangles mapped into A's
+  /// frame, decoded float boxes, the stack): transient, kept for the thread's next query.
+  std::uint64_t scratch_bytes = 0;
 };
 
 /// Collides two posed trees by simultaneous descent from the roots, in A's model frame: B's
 /// boxes are brought into A's frame with the relative pose, a box pair that the 15-axis test
 /// separates ends its branch, otherwise the larger box is split; at two leaves every triangle
-/// pair is tested by a certified filter on B's vertices transformed into A's frame, and exactly
+/// pair whose bounds in A's frame overlap is tested by a certified filter on B's vertices
+/// transformed into A's frame (each B box and triangle is transformed once per query), and exactly
 /// on the world coordinates where the filter is unsure. The answer is exact: the pairs whose
 /// triangles, placed by the poses in exact arithmetic (as the oracle places them), share a point.
 /// `result` is overwritten.

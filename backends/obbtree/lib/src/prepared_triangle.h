@@ -1,0 +1,89 @@
+// A triangle made ready for many cheap, certified rejections before the full test: its corners
+// in the query frame (each with its error radius), axis-aligned bounds that certainly hold the
+// exact corners, and its supporting plane with the parts of the orientation filter's bound that
+// depend on the triangle alone. The descent prepares each triangle once per query and meets it
+// with several triangles of the other tree.
+//
+// The plane test is FilteredKernel::orient3d(p, q, r, x) rearranged: with u = q - p, v = r - p,
+// w = x - p, det(u, v, w) = (u x v) . w, and the filter's permanent perm(bu, bv, bw) =
+// sum_k bw_k P_k(bu, bv) with P(u, v) = (u_y v_z + u_z v_y, u_x v_z + u_z v_x, u_x v_y + u_y v_x),
+// so n = u x v and P(bu, bv), P(|u|, |v|) are computed once. The bound is the filter's (see
+// filtered_predicates.h) with twice its slack, for the roundings of the precomputed parts.
+#pragma once
+
+#include <cmath>
+#include <limits>
+
+#include <Eigen/Core>
+
+#include <collido/obbtree/triangle_intersection.h>
+
+namespace collido::obbtree::detail {
+
+struct PreparedTriangle {
+  UncertainPoint corners[3];
+  Eigen::Vector3d low;               // every exact corner's coordinates are >= low
+  Eigen::Vector3d high;              // and <= high
+  Eigen::Vector3d normal;            // fl(u x v)
+  Eigen::Vector3d inflated_weights;  // P(bu, bv): u, v widened by their error radii
+  Eigen::Vector3d plain_weights;     // P(|u|, |v|)
+};
+
+inline Eigen::Vector3d permanentWeights(const Eigen::Vector3d& u, const Eigen::Vector3d& v) {
+  return Eigen::Vector3d(u.y() * v.z() + u.z() * v.y(), u.x() * v.z() + u.z() * v.x(),
+                         u.x() * v.y() + u.y() * v.x());
+}
+
+inline void prepareTriangle(PreparedTriangle& t) {
+  constexpr double kEps = std::numeric_limits<double>::epsilon();
+  constexpr double kTiny = 1e-290;  // products that underflow defeat relative bounds
+  const UncertainPoint* c = t.corners;
+  // c.p -/+ error rounds by at most eps |c.p -/+ error|: 2 eps (|p| + error) more keeps the
+  // bounds certain.
+  t.low.setConstant(std::numeric_limits<double>::infinity());
+  t.high.setConstant(-std::numeric_limits<double>::infinity());
+  for (int k = 0; k < 3; ++k) {
+    const Eigen::Vector3d reach = c[k].error + 2.0 * kEps * (c[k].p.cwiseAbs() + c[k].error) +
+                                  Eigen::Vector3d::Constant(kTiny);
+    t.low = t.low.cwiseMin(c[k].p - reach);
+    t.high = t.high.cwiseMax(c[k].p + reach);
+  }
+  const Eigen::Vector3d u = c[1].p - c[0].p;
+  const Eigen::Vector3d v = c[2].p - c[0].p;
+  t.normal = u.cross(v);
+  const Eigen::Vector3d au = u.cwiseAbs();
+  const Eigen::Vector3d av = v.cwiseAbs();
+  t.plain_weights = permanentWeights(au, av);
+  t.inflated_weights = permanentWeights(au * (1.0 + kEps) + c[0].error + c[1].error,
+                                        av * (1.0 + kEps) + c[0].error + c[2].error);
+}
+
+inline bool boundsApart(const PreparedTriangle& a, const PreparedTriangle& b) {
+  return (a.high.array() < b.low.array()).any() || (b.high.array() < a.low.array()).any();
+}
+
+// +1 / -1 when the exact x is certainly strictly on that side of t's exact plane, 0 when unsure.
+inline int certainSide(const PreparedTriangle& t, const UncertainPoint& x) {
+  constexpr double kEps = std::numeric_limits<double>::epsilon();
+  constexpr double kSlack = 32.0 * kEps;
+  constexpr double kTiny = 1e-290;
+  const UncertainPoint& origin = t.corners[0];
+  const Eigen::Vector3d w = x.p - origin.p;
+  const Eigen::Vector3d aw = w.cwiseAbs();
+  const double det = t.normal.dot(w);
+  const double inflated = t.inflated_weights.dot(aw * (1.0 + kEps) + origin.error + x.error);
+  const double bound = (inflated - t.plain_weights.dot(aw)) + kSlack * inflated + kTiny;
+  if (det > bound) return 1;
+  if (det < -bound) return -1;
+  return 0;
+}
+
+// Whether every corner of `other` lies certainly strictly on one side of t's plane, so the two
+// exact triangles share no point.
+inline bool planeSeparates(const PreparedTriangle& t, const PreparedTriangle& other) {
+  const int s0 = certainSide(t, other.corners[0]);
+  if (s0 == 0) return false;
+  return certainSide(t, other.corners[1]) == s0 && certainSide(t, other.corners[2]) == s0;
+}
+
+}  // namespace collido::obbtree::detail
