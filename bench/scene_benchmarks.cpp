@@ -2,6 +2,7 @@
 #include "scene_benchmarks.h"
 
 #include <algorithm>
+#include <array>
 #include <filesystem>
 #include <map>
 #include <memory>
@@ -13,6 +14,8 @@
 
 #include <collido/host/backend_instance.h>
 #include <collido/host/static_backends.h>
+#include <collido/obbtree/triangle_intersection.h>
+#include <collido/oracle/exact_oracle.h>
 #include <collido/runner/runner.h>
 #include <collido/scene/broad_phase.h>
 #include <collido/scene/scene.h>
@@ -139,11 +142,64 @@ void queryBenchmark(benchmark::State& state, const Variant& variant,
     }
     frame = (frame + 1) % scene->frames;
   }
+  if (pairs > 0.0) {
+    // Work per reported pair (for an exact backend, per truly intersecting pair).
+    state.counters["box_tests_per_pair"] = bv_tests / pairs;
+    state.counters["triangle_tests_per_pair"] = primitive_tests / pairs;
+  }
   state.counters["box_tests"] = benchmark::Counter(bv_tests, benchmark::Counter::kAvgIterations);
   state.counters["triangle_tests"] =
       benchmark::Counter(primitive_tests, benchmark::Counter::kAvgIterations);
   state.counters["pairs"] = benchmark::Counter(pairs, benchmark::Counter::kAvgIterations);
   state.counters["frames"] = static_cast<double>(scene->frames);
+}
+
+// The floor an all-pairs query cannot go below: one exact triangle-triangle test for each pair
+// the exact oracle finds (on the world coordinates as doubles), frame by frame as the query
+// benchmarks cycle them. A backend's floor ratio is its query time over this time, both from one
+// run. Two exact tests: floor/ uses the fastest we have (the OBB tree's trianglesIntersect over
+// CGAL's statically filtered predicates); floor_oracle/ the oracle's exactTrianglesIntersect.
+using ExactTriangleTest = bool (*)(const std::array<Eigen::Vector3d, 3>&,
+                                   const std::array<Eigen::Vector3d, 3>&);
+
+bool obbtreeExactTest(const std::array<Eigen::Vector3d, 3>& a,
+                      const std::array<Eigen::Vector3d, 3>& b) {
+  return obbtree::trianglesIntersect(a[0], a[1], a[2], b[0], b[1], b[2]);
+}
+
+void floorBenchmark(benchmark::State& state, const std::shared_ptr<const Scene>& scene,
+                    std::size_t query_index, ExactTriangleTest exact_test) {
+  const SceneQuery& query = scene->queries[query_index];
+  using Triangle = std::array<Eigen::Vector3d, 3>;
+  std::vector<std::vector<std::pair<Triangle, Triangle>>> frames(scene->frames);
+  const auto world = [](const SceneObject& object, std::size_t frame, std::int32_t t) {
+    const Pose& pose = object.poseAt(frame);
+    Triangle out;
+    for (int k = 0; k < 3; ++k)
+      out[static_cast<std::size_t>(k)] =
+          pose * object.mesh->vertices.col(object.mesh->triangles(k, t));
+    return out;
+  };
+  for (std::size_t f = 0; f < scene->frames; ++f) {
+    const SceneObject& a = scene->objects[query.a];
+    const SceneObject& b = scene->objects[query.b];
+    const OracleAnswer answer = exactIntersectingPairs(*a.mesh, a.poseAt(f), *b.mesh, b.poseAt(f));
+    for (const TrianglePair& pair : answer.pairs)
+      frames[f].emplace_back(world(a, f, pair.a), world(b, f, pair.b));
+  }
+  std::size_t frame = 0;
+  double pairs = 0.0;
+  for (auto _ : state) {
+    for (const auto& [ta, tb] : frames[frame]) {
+      const bool hit = exact_test(ta, tb);
+      benchmark::DoNotOptimize(hit);
+    }
+    pairs += static_cast<double>(frames[frame].size());
+    frame = (frame + 1) % scene->frames;
+  }
+  state.counters["pairs"] = benchmark::Counter(pairs, benchmark::Counter::kAvgIterations);
+  state.counters["ns_per_test"] =
+      benchmark::Counter(pairs, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 
 // Refit after a deformation: every vertex moved a little (a breathing scale about the centroid,
@@ -234,6 +290,18 @@ Result<int> registerSceneBenchmarks(const std::string& scenes_directory,
     for (std::size_t object : scene->queriedObjects()) {
       if (seen.insert(scene->objects[object].report.summary()).second) {
         distinct_meshes.push_back(object);
+      }
+    }
+    for (std::size_t q = 0; q < scene->queries.size(); ++q) {
+      const SceneQuery& query = scene->queries[q];
+      if (query.isGroup() || query.request.kind != QueryKind::kAllPairs) continue;
+      for (const auto& [prefix, test] :
+           {std::pair<const char*, ExactTriangleTest>{"floor/", &obbtreeExactTest},
+            {"floor_oracle/", &exactTrianglesIntersect}}) {
+        const std::string name = prefix + scene->name + "/" + query.name;
+        benchmark::RegisterBenchmark(name.c_str(), floorBenchmark, scene, q, test)
+            ->Unit(benchmark::kMicrosecond);
+        ++registered;
       }
     }
     for (const Variant& variant : variants) {

@@ -6,10 +6,12 @@
 // a point (equal corners):
 //  1. triangle/triangle: if all corners of one lie strictly on one side of the other's plane,
 //     they are disjoint. If coplanar, decide in a 2D projection (edges cross, or a corner of one
-//     lies in the other). Otherwise the two meet on the line where their planes meet, and the
-//     meeting set is the overlap of two intervals on it; two overlapping intervals always contain
-//     an endpoint of one another, and every endpoint lies on a triangle edge, so the triangles
-//     intersect iff some edge of one meets the other triangle.
+//     lies in the other). Otherwise each meets the other's plane in a segment on the line where
+//     the planes meet, and they intersect iff the two segments overlap: with each triangle's
+//     apex (the corner alone on its side of the other's plane) turned to the positive side, two
+//     orientation signs of apex-to-corner edges compare the segments' ends (Guigue and Devillers,
+//     "Fast and robust triangle-triangle overlap test using orientation predicates", 2003),
+//     vertices on the other's plane included.
 //  2. segment/triangle: the segment crosses the plane (or lies in it: 2D test); the crossing is
 //     inside the closed triangle iff the line is on the same side of the three edge lines
 //     (orientations of (a, b, edge) all >= 0 or all <= 0).
@@ -172,12 +174,48 @@ class TriangleTest {
       side1[i] = k_.orient3d(t2[0], t2[1], t2[2], t1[i]);
     if (allStrictlyOneSide(side1)) return false;
     if (side2[0] == 0 && side2[1] == 0 && side2[2] == 0) return coplanarTriangles(t1, t2);
-    for (int i = 0; i < 3; ++i) {
-      const int j = (i + 1) % 3;
-      if (segmentMeetsTriangle(t1[i], t1[j], side1[i], side1[j], t2)) return true;
-      if (segmentMeetsTriangle(t2[i], t2[j], side2[i], side2[j], t1)) return true;
+    return crossingSegmentsOverlap(t1, side1, t2, side2);
+  }
+
+  // The apex of a triangle that meets a plane without lying in it: the corner `apex` and a sign
+  // such that sign * side[apex] >= 0 and sign * side[k] <= 0 for the other two, so the triangle
+  // meets the plane in the segment between a point of edge apex-next and one of edge apex-prev.
+  struct Apex {
+    int corner = 0;
+    int sign = 1;
+  };
+  static Apex apexOf(const int side[3]) {
+    for (int sign : {1, -1}) {
+      for (int k = 0; k < 3; ++k) {
+        const int here = sign * side[k];
+        const int next = sign * side[(k + 1) % 3];
+        const int prev = sign * side[(k + 2) % 3];
+        if (next > 0 || prev > 0 || here < 0) continue;
+        if (here > 0 || (next < 0 && prev < 0)) return Apex{k, sign};
+      }
     }
-    return false;
+    return Apex{};  // unreachable for a triangle meeting the plane without lying in it
+  }
+
+  // Two proper triangles, neither strictly on one side of the other's plane and not coplanar:
+  // each meets the other's plane in a segment on the line where the planes meet, and they
+  // intersect iff the segments overlap. With each triangle turned so that its apex (apexOf) is
+  // on the positive side of the other's plane (reversing a triangle's corner order flips its
+  // plane's orientation), the overlap is two orientation signs (Guigue and Devillers, 2003).
+  bool crossingSegmentsOverlap(const Point* t1, const int side1[3], const Point* t2,
+                               const int side2[3]) {
+    const Apex apex1 = apexOf(side1);  // t1 against t2's plane
+    const Apex apex2 = apexOf(side2);  // t2 against t1's plane
+    // Corner order from each apex; apex1.sign < 0 reverses t2 (which negates t1's sides), and
+    // apex2.sign < 0 reverses t1.
+    const Point& a1 = t1[apex1.corner];
+    const Point& b1 = t1[(apex1.corner + (apex2.sign > 0 ? 1 : 2)) % 3];
+    const Point& c1 = t1[(apex1.corner + (apex2.sign > 0 ? 2 : 1)) % 3];
+    const Point& a2 = t2[apex2.corner];
+    const Point& b2 = t2[(apex2.corner + (apex1.sign > 0 ? 1 : 2)) % 3];
+    const Point& c2 = t2[(apex2.corner + (apex1.sign > 0 ? 2 : 1)) % 3];
+    if (k_.orient3d(a1, b1, a2, b2) > 0) return false;
+    return k_.orient3d(a1, c1, c2, a2) <= 0;
   }
 
   bool triangleSegment(const Point* t, const Point& a, const Point& b) {

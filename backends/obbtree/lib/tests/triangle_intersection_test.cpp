@@ -142,6 +142,31 @@ TEST(TriangleIntersection, SmallIntegerCoordinatesMatchTheOracle) {
   EXPECT_GT(misses, 500);
 }
 
+// The crossing case (each triangle meets the other's plane, not coplanar) is decided by the
+// apexes' two orientation signs; a larger lattice puts corners on the other's plane, edges and
+// corners in every arrangement those signs must get right.
+TEST(TriangleIntersection, LatticeCrossingPairsMatchTheOracle) {
+  std::mt19937_64 rng(11);
+  for (int range : {3, 5}) {
+    std::uniform_int_distribution<int> c(0, range);
+    int hits = 0;
+    for (int trial = 0; trial < 40000; ++trial) {
+      Tri t1;
+      Tri t2;
+      for (auto& p : t1)
+        p = Vector3d(c(rng), c(rng), c(rng));
+      for (auto& p : t2)
+        p = Vector3d(c(rng), c(rng), c(rng));
+      hits += checkAgainstOracle(
+                  t1, t2, "range " + std::to_string(range) + " trial " + std::to_string(trial))
+                  ? 1
+                  : 0;
+      if (HasFatalFailure()) return;
+    }
+    EXPECT_GT(hits, 4000) << "range " << range;
+  }
+}
+
 // All corners on one tilted plane (integer combinations of integer vectors: exactly coplanar),
 // so every pair is decided by the coplanar branch; scaled by a power of two and moved.
 TEST(TriangleIntersection, CoplanarLatticeTrianglesMatchTheOracle) {
