@@ -22,7 +22,7 @@ class ObbTreeModel final : public BackendModel {
 
 class ObbTreeBackend final : public Backend {
  public:
-  explicit ObbTreeBackend(BuildOptions options) : options_(options) {}
+  ObbTreeBackend(BuildOptions options, int threads) : options_(options), threads_(threads) {}
 
   Capabilities capabilities() const override {
     Capabilities caps;
@@ -56,6 +56,7 @@ class ObbTreeBackend final : public Backend {
     collide_request.mode =
         request.kind == QueryKind::kBoolean ? CollideMode::kFirstHit : CollideMode::kAllPairs;
     collide_request.max_pairs = request.max_pairs;
+    collide_request.threads = threads_;
     collide(static_cast<ObbTreeModel&>(a).tree(), pose_a, static_cast<ObbTreeModel&>(b).tree(),
             pose_b, collide_request, scratch_);
     result.intersecting = !scratch_.pairs.empty();
@@ -73,6 +74,7 @@ class ObbTreeBackend final : public Backend {
 
  private:
   BuildOptions options_;
+  int threads_ = 1;
   CollideResult scratch_;
 };
 
@@ -81,10 +83,13 @@ Result<std::unique_ptr<Backend>> create(const std::string& /*variant*/, BackendO
   if (!leaf.ok()) return leaf.status();
   Result<bool> float_boxes = options.getBool("float_boxes", false);
   if (!float_boxes.ok()) return float_boxes.status();
+  Result<std::int64_t> threads = options.getInt("threads", 1, 1, 256);
+  if (!threads.ok()) return threads.status();
   BuildOptions build_options;
   build_options.max_leaf_triangles = static_cast<std::int32_t>(leaf.value());
   build_options.float_boxes = float_boxes.value();
-  return std::unique_ptr<Backend>(std::make_unique<ObbTreeBackend>(build_options));
+  return std::unique_ptr<Backend>(
+      std::make_unique<ObbTreeBackend>(build_options, static_cast<int>(threads.value())));
 }
 
 const PluginInfo& describe() {
@@ -95,7 +100,8 @@ const PluginInfo& describe() {
       kVersion,
       {{"obbtree",
         "OBB tree (covariance-fitted boxes, mean split, 15-axis SAT, exact triangle tests); "
-        "options max_leaf_triangles (default 1), float_boxes (default false: boxes in double)"}},
+        "options max_leaf_triangles (default 1), float_boxes (default false: boxes in double), "
+        "threads (default 1: all-pairs queries on this many threads)"}},
       &create};
   return info;
 }

@@ -23,6 +23,7 @@
 #include <collido/obbtree/separating_axis.h>
 #include <collido/obbtree/triangle_intersection.h>
 
+#include "parallel_for.h"
 #include "prepared_triangle.h"
 
 #include <algorithm>
@@ -317,81 +318,163 @@ const detail::PreparedTriangle& preparedTriangleOfB(const ObbTree& b, std::int32
   return t;
 }
 
+// The simultaneous descent over one pair of node arrays, from any node pair.
 template <typename NodeA, typename NodeB>
-void descend(const ObbTree& a, const std::vector<NodeA>& nodes_a, const ObbTree& b,
-             const std::vector<NodeB>& nodes_b, const Placement& placement,
-             const CollideRequest& request, CollideResult& result) {
-  const QueryBounds& bounds = placement.bounds;
-  const Eigen::Matrix3Xd& vertices_b = b.vertices();
-  const Eigen::Matrix3Xi& triangles_b = b.orderedTriangles();
+class Descent {
+ public:
+  Descent(const ObbTree& a, const std::vector<NodeA>& nodes_a, const ObbTree& b,
+          const std::vector<NodeB>& nodes_b, const Placement& placement,
+          const CollideRequest& request)
+      : a_(a),
+        nodes_a_(nodes_a),
+        b_(b),
+        nodes_b_(nodes_b),
+        placement_(placement),
+        request_(request),
+        scratch_(queryScratch()) {
+    scratch_.begin(nodes_a.size(), nodes_b.size(), a.triangleCount(), b.triangleCount(),
+                   std::is_same_v<NodeA, CompactNode>);
+  }
 
-  QueryScratch& scratch = queryScratch();
-  scratch.begin(nodes_a.size(), nodes_b.size(), a.triangleCount(), b.triangleCount(),
-                std::is_same_v<NodeA, CompactNode>);
-  std::vector<PairTask>& stack = scratch.stack;
-  stack.push_back(PairTask{0, 0});
-  while (!stack.empty()) {
-    const PairTask task = stack.back();
-    stack.pop_back();
-    const NodeA& node_a = nodes_a[static_cast<std::size_t>(task.a)];
-    const NodeB& node_b = nodes_b[static_cast<std::size_t>(task.b)];
-    const OrientedBox& box_a = boxOfA(nodes_a, task.a, scratch);
-    const MappedBox& box_b = mappedBoxOfB(nodes_b, task.b, placement, scratch);
+  /// Descends from `start` depth-first, adding to `result`.
+  void run(PairTask start, CollideResult& result) {
+    std::vector<PairTask>& stack = scratch_.stack;
+    stack.clear();
+    stack.push_back(start);
+    while (!stack.empty()) {
+      const PairTask task = stack.back();
+      stack.pop_back();
+      if (!visit(task, result, stack)) return;
+    }
+  }
+
+  /// Tests one node pair: the boxes, then at two leaves the triangle pairs (hits go to
+  /// `result`); pushes the child pairs of overlapping inner nodes onto `pending`. Returns false
+  /// when the query must stop (its first hit, or a pair beyond max_pairs).
+  bool visit(PairTask task, CollideResult& result, std::vector<PairTask>& pending) {
+    const NodeA& node_a = nodes_a_[static_cast<std::size_t>(task.a)];
+    const NodeB& node_b = nodes_b_[static_cast<std::size_t>(task.b)];
+    const OrientedBox& box_a = boxOfA(nodes_a_, task.a, scratch_);
+    const MappedBox& box_b = mappedBoxOfB(nodes_b_, task.b, placement_, scratch_);
 
     // B's box in A's box frame.
     const Eigen::Matrix3d relative = box_a.axes.transpose() * box_b.axes;
     const Eigen::Vector3d offset = box_a.axes.transpose() * (box_b.center - box_a.center);
     ++result.box_tests;
-    const SeparationTolerance tolerance{bounds.axis_error, box_b.inflation};
+    const SeparationTolerance tolerance{placement_.bounds.axis_error, box_b.inflation};
     if (!boxesOverlap(relative, offset, box_a.half_extents, box_b.half_extents, tolerance)) {
-      continue;
+      return true;
     }
-
-    if (node_a.isLeaf() && node_b.isLeaf()) {
-      for (std::int32_t j = node_b.first; j < node_b.first + node_b.count; ++j) {
-        const detail::PreparedTriangle& tb = preparedTriangleOfB(b, j, placement, scratch);
-        for (std::int32_t i = node_a.first; i < node_a.first + node_a.count; ++i) {
-          const detail::PreparedTriangle& ta = preparedTriangleOfA(a, i, scratch);
-          // Certainly apart (bounds, or one triangle strictly on one side of the other's
-          // plane): the exact triangles are apart too.
-          if (detail::boundsApart(ta, tb) || detail::planeSeparates(ta, tb) ||
-              detail::planeSeparates(tb, ta)) {
-            continue;
-          }
-          ++result.triangle_tests;
-          const UncertainPoint* p = ta.corners;
-          const UncertainPoint* q = tb.corners;
-          std::optional<bool> hit = trianglesIntersectCertified(p[0], p[1], p[2], q[0], q[1], q[2]);
-          if (!hit) {
-            ++result.exact_fallbacks;
-            const Eigen::Vector3d corners_a[3] = {p[0].p, p[1].p, p[2].p};
-            const Eigen::Vector3d corners_b[3] = {vertices_b.col(triangles_b(0, j)),
-                                                  vertices_b.col(triangles_b(1, j)),
-                                                  vertices_b.col(triangles_b(2, j))};
-            hit = posedTrianglesIntersect(corners_a, placement.pose_a, corners_b, placement.pose_b);
-          }
-          if (!*hit) continue;
-          // Truncated means a pair beyond the limit exists, not merely that the limit was met.
-          if (request.max_pairs != 0 && result.pairs.size() >= request.max_pairs) {
-            result.truncated = true;
-            return;
-          }
-          result.pairs.push_back(TrianglePair{a.triangleId(i), b.triangleId(j)});
-          if (request.mode == CollideMode::kFirstHit) return;
-        }
-      }
-      continue;
-    }
+    if (node_a.isLeaf() && node_b.isLeaf()) return leafPair(node_a, node_b, result);
 
     const bool split_a =
         node_b.isLeaf() || (!node_a.isLeaf() && boxSize(node_a) >= boxSize(node_b));
     if (split_a) {
-      stack.push_back(PairTask{node_a.second_child, task.b});
-      stack.push_back(PairTask{task.a + 1, task.b});
+      pending.push_back(PairTask{node_a.second_child, task.b});
+      pending.push_back(PairTask{task.a + 1, task.b});
     } else {
-      stack.push_back(PairTask{task.a, node_b.second_child});
-      stack.push_back(PairTask{task.a, task.b + 1});
+      pending.push_back(PairTask{task.a, node_b.second_child});
+      pending.push_back(PairTask{task.a, task.b + 1});
     }
+    return true;
+  }
+
+ private:
+  bool leafPair(const NodeA& node_a, const NodeB& node_b, CollideResult& result) {
+    for (std::int32_t j = node_b.first; j < node_b.first + node_b.count; ++j) {
+      const detail::PreparedTriangle& tb = preparedTriangleOfB(b_, j, placement_, scratch_);
+      for (std::int32_t i = node_a.first; i < node_a.first + node_a.count; ++i) {
+        const detail::PreparedTriangle& ta = preparedTriangleOfA(a_, i, scratch_);
+        // Certainly apart (bounds, or one triangle strictly on one side of the other's
+        // plane): the exact triangles are apart too.
+        if (detail::boundsApart(ta, tb) || detail::planeSeparates(ta, tb) ||
+            detail::planeSeparates(tb, ta)) {
+          continue;
+        }
+        ++result.triangle_tests;
+        if (!trianglesMeet(ta, tb, j, result)) continue;
+        // Truncated means a pair beyond the limit exists, not merely that the limit was met.
+        if (request_.max_pairs != 0 && result.pairs.size() >= request_.max_pairs) {
+          result.truncated = true;
+          return false;
+        }
+        result.pairs.push_back(TrianglePair{a_.triangleId(i), b_.triangleId(j)});
+        if (request_.mode == CollideMode::kFirstHit) return false;
+      }
+    }
+    return true;
+  }
+
+  // The certified filter, and where it is unsure the exact test on the world coordinates.
+  bool trianglesMeet(const detail::PreparedTriangle& ta, const detail::PreparedTriangle& tb,
+                     std::int32_t j, CollideResult& result) {
+    const UncertainPoint* p = ta.corners;
+    const UncertainPoint* q = tb.corners;
+    if (std::optional<bool> hit = trianglesIntersectCertified(p[0], p[1], p[2], q[0], q[1], q[2]))
+      return *hit;
+    ++result.exact_fallbacks;
+    const Eigen::Matrix3Xd& vertices_b = b_.vertices();
+    const Eigen::Matrix3Xi& triangles_b = b_.orderedTriangles();
+    const Eigen::Vector3d corners_a[3] = {p[0].p, p[1].p, p[2].p};
+    const Eigen::Vector3d corners_b[3] = {vertices_b.col(triangles_b(0, j)),
+                                          vertices_b.col(triangles_b(1, j)),
+                                          vertices_b.col(triangles_b(2, j))};
+    return posedTrianglesIntersect(corners_a, placement_.pose_a, corners_b, placement_.pose_b);
+  }
+
+  const ObbTree& a_;
+  const std::vector<NodeA>& nodes_a_;
+  const ObbTree& b_;
+  const std::vector<NodeB>& nodes_b_;
+  const Placement& placement_;
+  const CollideRequest& request_;
+  QueryScratch& scratch_;
+};
+
+// Node pairs to hand out to threads: at least `wanted`, taken breadth-first from the roots in
+// the calling thread (the pairs tested on the way add their work and hits to `result`). Fewer
+// when the descent ends first.
+template <typename NodeA, typename NodeB>
+std::vector<PairTask> frontier(Descent<NodeA, NodeB>& descent, std::size_t wanted,
+                               CollideResult& result) {
+  std::vector<PairTask> current{PairTask{0, 0}};
+  std::vector<PairTask> next;
+  while (!current.empty() && current.size() < wanted) {
+    next.clear();
+    for (const PairTask& task : current)
+      descent.visit(task, result, next);
+    current.swap(next);
+  }
+  return current;
+}
+
+template <typename NodeA, typename NodeB>
+void descend(const ObbTree& a, const std::vector<NodeA>& nodes_a, const ObbTree& b,
+             const std::vector<NodeB>& nodes_b, const Placement& placement,
+             const CollideRequest& request, CollideResult& result) {
+  // Threads only for complete answers: a first hit or a pair limit ends the query early, which
+  // one sequential descent does best.
+  const bool parallel =
+      request.threads > 1 && request.mode == CollideMode::kAllPairs && request.max_pairs == 0;
+  Descent<NodeA, NodeB> descent(a, nodes_a, b, nodes_b, placement, request);
+  if (!parallel) {
+    descent.run(PairTask{0, 0}, result);
+    return;
+  }
+  // Several pairs per thread balance uneven subtrees; each task's hits are kept apart and
+  // appended in task order, so the answer's order does not depend on the scheduling.
+  const std::vector<PairTask> tasks =
+      frontier(descent, 8 * static_cast<std::size_t>(request.threads), result);
+  std::vector<CollideResult> parts(tasks.size());
+  detail::parallelFor(request.threads, tasks.size(), [&](std::size_t k) {
+    Descent<NodeA, NodeB> worker(a, nodes_a, b, nodes_b, placement, request);
+    worker.run(tasks[k], parts[k]);
+  });
+  for (const CollideResult& part : parts) {
+    result.pairs.insert(result.pairs.end(), part.pairs.begin(), part.pairs.end());
+    result.box_tests += part.box_tests;
+    result.triangle_tests += part.triangle_tests;
+    result.exact_fallbacks += part.exact_fallbacks;
   }
 }
 

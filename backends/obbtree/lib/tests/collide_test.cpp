@@ -252,6 +252,41 @@ TEST(Collide, BunnyAgainstBunny) {
   EXPECT_GT(most, 200u);  // dense contact in at least one pose
 }
 
+// All pairs on several threads: the oracle's pairs, each once, the same work as one thread does
+// (the same node pairs are tested, only shared out), and the same answer for every repetition
+// (the order of the pairs does not depend on the scheduling).
+TEST(Collide, ThreadsGiveTheSameAnswer) {
+  std::mt19937_64 rng(52);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (int trial = 0; trial < 4; ++trial) {
+    const Pose pose_a = makePose(randomRotation(rng), Eigen::Vector3d(u(rng), u(rng), u(rng)));
+    const Pose pose_b = makePose(
+        randomRotation(rng), pose_a.translation() + 2.0 * Eigen::Vector3d(u(rng), u(rng), u(rng)));
+    const ObbTree& tree = bunnyTree(trial % 2 == 0 ? 1 : 4);
+    const Pairs truth = exactIntersectingPairs(bunny(), pose_a, bunny(), pose_b).pairs;
+    CollideResult one;
+    collide(tree, pose_a, tree, pose_b, CollideRequest{}, one);
+    for (int threads : {2, 3, 8}) {
+      CollideRequest request;
+      request.threads = threads;
+      CollideResult first;
+      collide(tree, pose_a, tree, pose_b, request, first);
+      const std::string label =
+          "trial " + std::to_string(trial) + ", " + std::to_string(threads) + " threads";
+      EXPECT_EQ(differences(sorted(first.pairs), truth), "") << label;
+      EXPECT_EQ(first.box_tests, one.box_tests) << label;
+      EXPECT_EQ(first.triangle_tests, one.triangle_tests) << label;
+      CollideResult again;
+      collide(tree, pose_a, tree, pose_b, request, again);
+      ASSERT_EQ(again.pairs.size(), first.pairs.size()) << label;
+      for (std::size_t k = 0; k < first.pairs.size(); ++k) {
+        EXPECT_TRUE(again.pairs[k].a == first.pairs[k].a && again.pairs[k].b == first.pairs[k].b)
+            << label << ": pair " << k << " differs between runs";
+      }
+    }
+  }
+}
+
 // Float boxes answer exactly as double boxes do: the same pairs as the oracle, alone or mixed
 // with a double-box tree, on dense bunny overlaps and on tori.
 TEST(Collide, FloatBoxesMatchTheOracle) {

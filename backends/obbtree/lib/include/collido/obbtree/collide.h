@@ -25,6 +25,10 @@ enum class CollideMode {
 struct CollideRequest {
   CollideMode mode = CollideMode::kAllPairs;
   std::uint64_t max_pairs = 0;  ///< kAllPairs: stop after this many; 0 = no limit
+  /// Threads for a complete all-pairs answer (kAllPairs without max_pairs): the first levels
+  /// of the descent are expanded here, the node pairs found are shared out, and each thread's
+  /// hits are appended in a fixed order. Other queries, and 1, run in the calling thread.
+  int threads = 1;
 };
 
 /// The answer and the work done.
@@ -34,8 +38,9 @@ struct CollideResult {
   std::uint64_t box_tests = 0;        ///< separating-axis tests
   std::uint64_t triangle_tests = 0;   ///< triangle-triangle tests (filtered, then exact if unsure)
   std::uint64_t exact_fallbacks = 0;  ///< tests the filter could not certify, decided exactly
-  /// Bytes of the per-thread scratch the query used (B's boxes and triangles mapped into A's
-  /// frame, decoded float boxes, the stack): transient, kept for the thread's next query.
+  /// Bytes of the calling thread's scratch (B's boxes and triangles mapped into A's frame,
+  /// decoded float boxes, the stack): transient, kept for the thread's next query; with
+  /// `threads` > 1 each worker thread holds one of up to this size.
   std::uint64_t scratch_bytes = 0;
 };
 
