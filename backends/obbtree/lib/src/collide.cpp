@@ -362,7 +362,8 @@ class Descent {
     const Eigen::Vector3d offset = box_a.axes.transpose() * (box_b.center - box_a.center);
     ++result.box_tests;
     const SeparationTolerance tolerance{placement_.bounds.axis_error, box_b.inflation};
-    if (!boxesOverlap(relative, offset, box_a.half_extents, box_b.half_extents, tolerance)) {
+    if (!boxesOverlap(relative, offset, box_a.half_extents, box_b.half_extents, tolerance,
+                      !(node_a.isLeaf() && node_b.isLeaf()))) {
       return true;
     }
     if (node_a.isLeaf() && node_b.isLeaf()) return leafPair(node_a, node_b, result);
