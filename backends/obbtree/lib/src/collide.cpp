@@ -370,17 +370,34 @@ class Descent {
 
     const bool split_a =
         node_b.isLeaf() || (!node_a.isLeaf() && boxSize(node_a) >= boxSize(node_b));
-    if (split_a) {
-      pending.push_back(PairTask{node_a.second_child, task.b});
-      pending.push_back(PairTask{task.a + 1, task.b});
-    } else {
-      pending.push_back(PairTask{task.a, node_b.second_child});
-      pending.push_back(PairTask{task.a, task.b + 1});
+    PairTask first = split_a ? PairTask{task.a + 1, task.b} : PairTask{task.a, task.b + 1};
+    PairTask second =
+        split_a ? PairTask{node_a.second_child, task.b} : PairTask{task.a, node_b.second_child};
+    // A first hit is found sooner in the child whose centre is nearer the other box's: visit
+    // that one first (the stack pops the last pushed).
+    if (request_.mode == CollideMode::kFirstHit &&
+        nearerFirst(split_a, first, second, box_a, box_b)) {
+      std::swap(first, second);
     }
+    pending.push_back(second);
+    pending.push_back(first);
     return true;
   }
 
  private:
+  // Whether `second`'s split child is nearer the other node's box than `first`'s.
+  bool nearerFirst(bool split_a, const PairTask& first, const PairTask& second,
+                   const OrientedBox& box_a, const MappedBox& box_b) {
+    if (split_a) {
+      const Eigen::Vector3d& c1 = boxOfA(nodes_a_, first.a, scratch_).center;
+      const Eigen::Vector3d& c2 = boxOfA(nodes_a_, second.a, scratch_).center;
+      return (c2 - box_b.center).squaredNorm() < (c1 - box_b.center).squaredNorm();
+    }
+    const Eigen::Vector3d& c1 = mappedBoxOfB(nodes_b_, first.b, placement_, scratch_).center;
+    const Eigen::Vector3d& c2 = mappedBoxOfB(nodes_b_, second.b, placement_, scratch_).center;
+    return (c2 - box_a.center).squaredNorm() < (c1 - box_a.center).squaredNorm();
+  }
+
   bool leafPair(const NodeA& node_a, const NodeB& node_b, CollideResult& result) {
     for (std::int32_t j = node_b.first; j < node_b.first + node_b.count; ++j) {
       const detail::PreparedTriangle& tb = preparedTriangleOfB(b_, j, placement_, scratch_);
