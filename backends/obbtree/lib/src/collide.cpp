@@ -193,7 +193,6 @@ Placement placementOf(const ObbTree& a, const Eigen::Isometry3d& pose_a, const O
 // B's box brought into A's model frame once per query (a B node meets many A nodes), with the
 // inflation its separating-axis tests must allow for its mapping error.
 struct MappedBox {
-  std::uint32_t stamp = 0;  // QueryScratch::epoch of the query that mapped it
   Eigen::Matrix3d axes;
   Eigen::Vector3d center;
   Eigen::Vector3d half_extents;
@@ -212,7 +211,7 @@ struct Stamped {
 
 struct QueryScratch {
   std::uint32_t epoch = 0;
-  std::vector<MappedBox> boxes_b;
+  std::vector<Stamped<MappedBox>> boxes_b;
   std::vector<Stamped<OrientedBox>> boxes_a;  // decoded float boxes of A
   // Triangles by position in their tree's leaf order: A's as stored, B's mapped into A's frame.
   std::vector<Stamped<detail::PreparedTriangle>> triangles_a;
@@ -236,7 +235,7 @@ struct QueryScratch {
   }
 
   std::size_t bytes() const {
-    return boxes_b.capacity() * sizeof(MappedBox) +
+    return boxes_b.capacity() * sizeof(Stamped<MappedBox>) +
            boxes_a.capacity() * sizeof(Stamped<OrientedBox>) +
            (triangles_a.capacity() + triangles_b.capacity()) *
                sizeof(Stamped<detail::PreparedTriangle>) +
@@ -256,6 +255,17 @@ QueryScratch& queryScratch() {
   return scratch;
 }
 
+// Item k of a scratch array, made by `make` unless this query made it already.
+template <typename T, typename Make>
+T& cachedFor(std::vector<Stamped<T>>& items, std::size_t k, std::uint32_t epoch, Make&& make) {
+  Stamped<T>& cached = items[k];
+  if (cached.stamp != epoch) {
+    cached.stamp = epoch;
+    make(cached.item);
+  }
+  return cached.item;
+}
+
 // The box a query uses for A's node i: a double box as stored, a float box decoded once.
 const OrientedBox& boxOfA(const std::vector<Node>& nodes, std::int32_t i, QueryScratch&) {
   return nodes[static_cast<std::size_t>(i)].box;
@@ -263,59 +273,47 @@ const OrientedBox& boxOfA(const std::vector<Node>& nodes, std::int32_t i, QueryS
 const OrientedBox& boxOfA(const std::vector<CompactNode>& nodes, std::int32_t i,
                           QueryScratch& scratch) {
   const auto k = static_cast<std::size_t>(i);
-  Stamped<OrientedBox>& decoded = scratch.boxes_a[k];
-  if (decoded.stamp != scratch.epoch) {
-    decoded.stamp = scratch.epoch;
-    decoded.item = expandBox(nodes[k].box);
-  }
-  return decoded.item;
+  return cachedFor(scratch.boxes_a, k, scratch.epoch,
+                   [&](OrientedBox& box) { box = expandBox(nodes[k].box); });
 }
 
 template <typename NodeB>
 const MappedBox& mappedBoxOfB(const std::vector<NodeB>& nodes, std::int32_t i,
                               const Placement& placement, QueryScratch& scratch) {
   const auto k = static_cast<std::size_t>(i);
-  MappedBox& mapped = scratch.boxes_b[k];
-  if (mapped.stamp == scratch.epoch) return mapped;
-  mapped.stamp = scratch.epoch;
-  const auto& box = boxOf(nodes[k]);
-  mapped.axes = placement.rotation * box.axes;
-  mapped.center = placement.rotation * box.center + placement.translation;
-  mapped.half_extents = box.half_extents;
-  mapped.inflation = placement.bounds.pointError(box.center) +
-                     placement.bounds.axis_error * box.half_extents.sum();
-  return mapped;
+  return cachedFor(scratch.boxes_b, k, scratch.epoch, [&](MappedBox& mapped) {
+    const auto& box = boxOf(nodes[k]);
+    mapped.axes = placement.rotation * box.axes;
+    mapped.center = placement.rotation * box.center + placement.translation;
+    mapped.half_extents = box.half_extents;
+    mapped.inflation = placement.bounds.pointError(box.center) +
+                       placement.bounds.axis_error * box.half_extents.sum();
+  });
 }
 
 // A's triangle at position i of its leaf order, prepared once per query (its corners are exact).
 const detail::PreparedTriangle& preparedTriangleOfA(const ObbTree& a, std::int32_t i,
                                                     QueryScratch& scratch) {
-  const auto k = static_cast<std::size_t>(i);
-  Stamped<detail::PreparedTriangle>& cached = scratch.triangles_a[k];
-  detail::PreparedTriangle& t = cached.item;
-  if (cached.stamp == scratch.epoch) return t;
-  cached.stamp = scratch.epoch;
-  for (int c = 0; c < 3; ++c) {
-    t.corners[c].p = a.vertices().col(a.orderedTriangles()(c, i));
-    t.corners[c].error.setZero();
-  }
-  detail::prepareTriangle(t);
-  return t;
+  return cachedFor(scratch.triangles_a, static_cast<std::size_t>(i), scratch.epoch,
+                   [&](detail::PreparedTriangle& t) {
+                     for (int c = 0; c < 3; ++c) {
+                       t.corners[c].p = a.vertices().col(a.orderedTriangles()(c, i));
+                       t.corners[c].error.setZero();
+                     }
+                     detail::prepareTriangle(t);
+                   });
 }
 
 // B's triangle at position j of its leaf order, mapped into A's frame once per query.
 const detail::PreparedTriangle& preparedTriangleOfB(const ObbTree& b, std::int32_t j,
                                                     const Placement& placement,
                                                     QueryScratch& scratch) {
-  const auto k = static_cast<std::size_t>(j);
-  Stamped<detail::PreparedTriangle>& cached = scratch.triangles_b[k];
-  detail::PreparedTriangle& t = cached.item;
-  if (cached.stamp == scratch.epoch) return t;
-  cached.stamp = scratch.epoch;
-  for (int c = 0; c < 3; ++c)
-    t.corners[c] = placement.map(b.vertices().col(b.orderedTriangles()(c, j)));
-  detail::prepareTriangle(t);
-  return t;
+  return cachedFor(scratch.triangles_b, static_cast<std::size_t>(j), scratch.epoch,
+                   [&](detail::PreparedTriangle& t) {
+                     for (int c = 0; c < 3; ++c)
+                       t.corners[c] = placement.map(b.vertices().col(b.orderedTriangles()(c, j)));
+                     detail::prepareTriangle(t);
+                   });
 }
 
 // The simultaneous descent over one pair of node arrays, from any node pair.

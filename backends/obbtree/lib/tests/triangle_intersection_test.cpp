@@ -121,20 +121,24 @@ TEST(TriangleIntersection, RandomPairsAtVariedScalesMatchTheOracle) {
   EXPECT_GT(misses, 500);
 }
 
+// A triangle with integer coordinates in [0, range].
+Tri latticeTriangle(std::mt19937_64& rng, int range) {
+  std::uniform_int_distribution<int> c(0, range);
+  Tri t;
+  for (auto& p : t)
+    p = Vector3d(c(rng), c(rng), c(rng));
+  return t;
+}
+
 // Small integer coordinates make exact degeneracies common: shared corners, corners on edges and
 // faces, coplanar pairs, collinear and repeated corners (degenerate triangles).
 TEST(TriangleIntersection, SmallIntegerCoordinatesMatchTheOracle) {
   std::mt19937_64 rng(7);
-  std::uniform_int_distribution<int> c3(0, 2);
   int hits = 0;
   int misses = 0;
   for (int trial = 0; trial < 6000; ++trial) {
-    Tri t1;
-    Tri t2;
-    for (auto& p : t1)
-      p = Vector3d(c3(rng), c3(rng), c3(rng));
-    for (auto& p : t2)
-      p = Vector3d(c3(rng), c3(rng), c3(rng));
+    const Tri t1 = latticeTriangle(rng, 2);
+    const Tri t2 = latticeTriangle(rng, 2);
     (checkAgainstOracle(t1, t2, "trial " + std::to_string(trial)) ? hits : misses) += 1;
     if (HasFatalFailure()) return;
   }
@@ -148,15 +152,10 @@ TEST(TriangleIntersection, SmallIntegerCoordinatesMatchTheOracle) {
 TEST(TriangleIntersection, LatticeCrossingPairsMatchTheOracle) {
   std::mt19937_64 rng(11);
   for (int range : {3, 5}) {
-    std::uniform_int_distribution<int> c(0, range);
     int hits = 0;
     for (int trial = 0; trial < 40000; ++trial) {
-      Tri t1;
-      Tri t2;
-      for (auto& p : t1)
-        p = Vector3d(c(rng), c(rng), c(rng));
-      for (auto& p : t2)
-        p = Vector3d(c(rng), c(rng), c(rng));
+      const Tri t1 = latticeTriangle(rng, range);
+      const Tri t2 = latticeTriangle(rng, range);
       hits += checkAgainstOracle(
                   t1, t2, "range " + std::to_string(range) + " trial " + std::to_string(trial))
                   ? 1
