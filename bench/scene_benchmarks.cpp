@@ -177,6 +177,10 @@ bool obbtreeExactTest(const std::array<Eigen::Vector3d, 3>& a,
 
 void floorBenchmark(benchmark::State& state, const std::shared_ptr<const Scene>& scene,
                     std::size_t query_index, ExactTriangleTest exact_test) {
+  if (scene->frames == 0) {
+    state.SkipWithError("the scene has no frames");
+    return;
+  }
   const SceneQuery& query = scene->queries[query_index];
   using Triangle = std::array<Eigen::Vector3d, 3>;
   std::vector<std::vector<std::pair<Triangle, Triangle>>> frames(scene->frames);
