@@ -199,8 +199,6 @@ struct MappedBox {
   double inflation = 0.0;
 };
 
-// Per-thread scratch reused across queries: what the descent computes once per node or
-// triangle, marked valid for the current query by an epoch stamp (no clearing between queries).
 // An item of the scratch with the epoch of the query that computed it, side by side so that
 // one cache line holds both.
 template <typename T>
@@ -209,6 +207,8 @@ struct Stamped {
   T item;
 };
 
+// Per-thread scratch reused across queries: what the descent computes once per node or
+// triangle, marked valid for the current query by an epoch stamp (no clearing between queries).
 struct QueryScratch {
   std::uint32_t epoch = 0;
   std::vector<Stamped<MappedBox>> boxes_b;
