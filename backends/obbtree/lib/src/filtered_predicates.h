@@ -28,6 +28,14 @@
 
 namespace collido::obbtree::detail {
 
+/// The permanent of the 3x3 matrix with columns u, v, w (the determinant's expansion with every
+/// sign positive) is w . permanentWeights(u, v): the weights depend on u and v alone, so a
+/// triangle's can be computed once (prepared_triangle.h).
+inline Eigen::Vector3d permanentWeights(const Eigen::Vector3d& u, const Eigen::Vector3d& v) {
+  return Eigen::Vector3d(u.y() * v.z() + u.z() * v.y(), u.x() * v.z() + u.z() * v.x(),
+                         u.x() * v.y() + u.y() * v.x());
+}
+
 class FilteredKernel {
  public:
   using Point = UncertainPoint;
@@ -110,8 +118,7 @@ class FilteredKernel {
 
   static double permanent3(const Eigen::Vector3d& u, const Eigen::Vector3d& v,
                            const Eigen::Vector3d& w) {
-    return u.x() * (v.y() * w.z() + v.z() * w.y()) + u.y() * (v.x() * w.z() + v.z() * w.x()) +
-           u.z() * (v.x() * w.y() + v.y() * w.x());
+    return permanentWeights(u, v).dot(w);
   }
 
   // Whether a factor is so small that a product of three could underflow to zero: then a zero

@@ -18,6 +18,8 @@
 
 #include <collido/obbtree/triangle_intersection.h>
 
+#include "filtered_predicates.h"
+
 namespace collido::obbtree::detail {
 
 struct PreparedTriangle {
@@ -28,11 +30,6 @@ struct PreparedTriangle {
   Eigen::Vector3d inflated_weights;  // P(bu, bv): u, v widened by their error radii
   Eigen::Vector3d plain_weights;     // P(|u|, |v|)
 };
-
-inline Eigen::Vector3d permanentWeights(const Eigen::Vector3d& u, const Eigen::Vector3d& v) {
-  return Eigen::Vector3d(u.y() * v.z() + u.z() * v.y(), u.x() * v.z() + u.z() * v.x(),
-                         u.x() * v.y() + u.y() * v.x());
-}
 
 inline void prepareTriangle(PreparedTriangle& t) {
   constexpr double kEps = std::numeric_limits<double>::epsilon();
