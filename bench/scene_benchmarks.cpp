@@ -15,8 +15,9 @@
 
 #include <collido/host/backend_instance.h>
 #include <collido/host/static_backends.h>
-#include <collido/obbtree/triangle_intersection.h>
+#include <collido/oracle/double_triangle_test.h>
 #include <collido/oracle/exact_oracle.h>
+#include <collido/runner/floor.h>
 #include <collido/runner/runner.h>
 #include <collido/scene/broad_phase.h>
 #include <collido/scene/scene.h>
@@ -172,7 +173,7 @@ using ExactTriangleTest = bool (*)(const std::array<Eigen::Vector3d, 3>&,
 
 bool obbtreeExactTest(const std::array<Eigen::Vector3d, 3>& a,
                       const std::array<Eigen::Vector3d, 3>& b) {
-  return obbtree::trianglesIntersect(a[0], a[1], a[2], b[0], b[1], b[2]);
+  return exact::trianglesIntersect(a[0], a[1], a[2], b[0], b[1], b[2]);
 }
 
 void floorBenchmark(benchmark::State& state, const std::shared_ptr<const Scene>& scene,
@@ -182,22 +183,12 @@ void floorBenchmark(benchmark::State& state, const std::shared_ptr<const Scene>&
     return;
   }
   const SceneQuery& query = scene->queries[query_index];
-  using Triangle = std::array<Eigen::Vector3d, 3>;
-  std::vector<std::vector<std::pair<Triangle, Triangle>>> frames(scene->frames);
-  const auto world = [](const SceneObject& object, std::size_t frame, std::int32_t t) {
-    const Pose& pose = object.poseAt(frame);
-    Triangle out;
-    for (int k = 0; k < 3; ++k)
-      out[static_cast<std::size_t>(k)] =
-          pose * object.mesh->vertices.col(object.mesh->triangles(k, t));
-    return out;
-  };
+  std::vector<std::vector<WorldTrianglePair>> frames(scene->frames);
   for (std::size_t f = 0; f < scene->frames; ++f) {
     const SceneObject& a = scene->objects[query.a];
     const SceneObject& b = scene->objects[query.b];
     const OracleAnswer answer = exactIntersectingPairs(*a.mesh, a.poseAt(f), *b.mesh, b.poseAt(f));
-    for (const TrianglePair& pair : answer.pairs)
-      frames[f].emplace_back(world(a, f, pair.a), world(b, f, pair.b));
+    appendWorldPairs(*a.mesh, a.poseAt(f), *b.mesh, b.poseAt(f), answer.pairs, frames[f]);
   }
   std::size_t frame = 0;
   double pairs = 0.0;

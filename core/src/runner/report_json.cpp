@@ -30,6 +30,7 @@ Json frameJson(const FrameRecord& f, const QueryMeasurement& m) {
           {"object_pairs", f.object_pairs},
           {"disagrees", f.disagrees(m.kind)},
           {"median_us", f.median_us},
+          {"floor_us", optionalJson(f.floor_us)},
           {"bv_tests", m.counts_bv_tests ? Json(f.bv_tests) : Json()},
           {"primitive_tests", m.counts_primitive_tests ? Json(f.primitive_tests) : Json()}};
 }
@@ -47,6 +48,7 @@ FrameRecord frameFrom(const Json& j) {
   f.truncated = j.at("truncated").get<bool>();
   f.object_pairs = optionalFrom<std::size_t>(j, "object_pairs").value_or(1);
   f.median_us = j.at("median_us").get<double>();
+  f.floor_us = optionalFrom<double>(j, "floor_us");
   f.bv_tests = optionalFrom<std::uint64_t>(j, "bv_tests").value_or(0);
   f.primitive_tests = optionalFrom<std::uint64_t>(j, "primitive_tests").value_or(0);
   return f;
@@ -76,6 +78,7 @@ Json measurementToJson(const QueryMeasurement& m) {
           {"precision", m.precision},
           {"counts_bv_tests", m.counts_bv_tests},
           {"counts_primitive_tests", m.counts_primitive_tests},
+          {"floor_ratio", optionalJson(m.floor_ratio)},
           {"build_ms", m.build_ms},
           {"triangles", m.triangles},
           {"memory_bytes", m.memory_bytes},

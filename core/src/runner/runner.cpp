@@ -14,6 +14,7 @@
 
 #include <collido/host/backend_instance.h>
 #include <collido/oracle/exact_oracle.h>
+#include <collido/runner/floor.h>
 #include <collido/runner/heap_probe.h>
 #include <collido/runner/runner.h>
 #include <collido/runner/statistics.h>
@@ -89,7 +90,13 @@ void summariseMeasurement(QueryMeasurement& m) {
   std::size_t oracle_pairs = 0;
   std::size_t reported_pairs = 0;
   std::size_t matched_pairs = 0;
+  double timed_with_floor_us = 0.0;
+  double floor_us = 0.0;
   for (const FrameRecord& f : m.frames) {
+    if (f.floor_us) {
+      timed_with_floor_us += f.median_us;
+      floor_us += *f.floor_us;
+    }
     if (f.oracle_intersecting && !f.reported_intersecting) ++m.false_negatives;
     if (!f.oracle_intersecting && f.reported_intersecting) ++m.false_positives;
     if (f.disagrees(m.kind)) ++m.disagreements;
@@ -105,6 +112,8 @@ void summariseMeasurement(QueryMeasurement& m) {
     m.recall = oracle_pairs == 0 ? 1.0 : static_cast<double>(matched_pairs) / oracle_pairs;
     m.precision = reported_pairs == 0 ? 1.0 : static_cast<double>(matched_pairs) / reported_pairs;
   }
+  m.floor_ratio.reset();
+  if (floor_us > 0.0) m.floor_ratio = timed_with_floor_us / floor_us;
 }
 
 namespace {
@@ -230,6 +239,7 @@ void runSceneOnBackend(const Scene& scene, const BackendSpec& spec, OracleCache&
       FrameRecord record;
       record.frame = frame;
       record.object_pairs = candidates.size();
+      std::vector<WorldTrianglePair> true_pairs;
       for (const auto& [ia, ib] : candidates) {
         if (Status s = ask(ia, ib); !s.ok()) {
           m.status = "failed: frame " + std::to_string(frame) + ": " + s.toString();
@@ -238,8 +248,12 @@ void runSceneOnBackend(const Scene& scene, const BackendSpec& spec, OracleCache&
         const SceneObject& a = scene.objects[ia];
         const SceneObject& b = scene.objects[ib];
         FrameRecord one;
+        const OracleAnswer& truth = oracle.get(ia, ib, frame);
         compareWithOracle(*a.mesh, a.poseAt(frame), *b.mesh, b.poseAt(frame), query.request.kind,
-                          result, oracle.get(ia, ib, frame), one);
+                          result, truth, one);
+        if (query.request.kind == QueryKind::kAllPairs)
+          appendWorldPairs(*a.mesh, a.poseAt(frame), *b.mesh, b.poseAt(frame), truth.pairs,
+                           true_pairs);
         addAnswer(one, record);
         record.bv_tests += result.counters.bv_tests;
         record.primitive_tests += result.counters.primitive_tests;
@@ -268,6 +282,8 @@ void runSceneOnBackend(const Scene& scene, const BackendSpec& spec, OracleCache&
         frame_times.push_back(microseconds(stop - start));
       }
       record.median_us = quantile(frame_times, 0.5);
+      if (query.request.kind == QueryKind::kAllPairs && m.ok())
+        record.floor_us = floorMicroseconds(true_pairs, options.repetitions);
       m.times_us.insert(m.times_us.end(), frame_times.begin(), frame_times.end());
       m.frames.push_back(record);
       if (options.frame_progress) options.frame_progress(++frames_done, frames_total);

@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include <collido/runner/text_table.h>
+#include <collido/study/field_table.h>
 #include <collido/study/robustness.h>
 
 namespace collido::study {
@@ -70,6 +71,7 @@ std::string recordsJsonLines(const std::vector<CombinationResult>& results) {
             {"kind", queryKindName(m.kind)},
             {"frame", f.frame},
             {"median_us", f.median_us},
+            {"floor_us", optionalJson(f.floor_us)},
             {"oracle_intersecting", f.oracle_intersecting},
             {"reported_intersecting", f.reported_intersecting},
             {"finest_intersecting", optionalJson(f.finest_intersecting)},
@@ -135,6 +137,7 @@ std::string benchmarkJson(const std::vector<CombinationResult>& results) {
       if (m.counts_primitive_tests) {
         entry["primitive_tests"] = perQuery(primitive, m.frames.size());
       }
+      if (m.floor_ratio) entry["floor_ratio"] = *m.floor_ratio;
       benchmarks.push_back(entry);
     }
   }
@@ -238,6 +241,11 @@ std::string studyTable(const std::vector<CombinationResult>& results) {
         {"backend", "scene", "query", "build ms declared", "build ms every", "median us declared",
          "median us every", "B/tri declared", "B/tri every"},
         savings, 3);
+  }
+  if (const std::string field = fieldTable(results); !field.empty()) {
+    out << "\nThe OBB tree against the field (single thread, exact answers; per scene and "
+           "query):\n";
+    out << field;
   }
   if (const std::string robustness = robustnessText(robustnessMatrix(results));
       !robustness.empty()) {

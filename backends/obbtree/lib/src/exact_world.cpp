@@ -1,18 +1,18 @@
 // The exact fallback of the certified triangle test: both triangles placed in world coordinates
 // with exact (lazy rational) arithmetic, as the exact oracle places them, then decided with the
-// same algorithm (triangle_test.h) on CGAL's exact-constructions kernel.
+// same algorithm (collido/oracle/triangle_test.h) on CGAL's exact-constructions kernel.
 #include <collido/obbtree/triangle_intersection.h>
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 
-#include "projection.h"
-#include "triangle_test.h"
+#include <collido/oracle/orientation.h>
+#include <collido/oracle/triangle_test.h>
 
 namespace collido::obbtree {
 namespace {
 
 using EK = CGAL::Exact_predicates_exact_constructions_kernel;
-using detail::dropCoordinate;
+using exact::dropCoordinate;
 
 struct ExactWorldKernel {
   using Point = EK::Point_3;
@@ -49,7 +49,7 @@ EK::Point_3 place(const Eigen::Vector3d& v, const Eigen::Isometry3d& pose) {
 bool posedTrianglesIntersect(const Eigen::Vector3d* a, const Eigen::Isometry3d& pose_a,
                              const Eigen::Vector3d* b, const Eigen::Isometry3d& pose_b) {
   ExactWorldKernel kernel;
-  return detail::TriangleTest<ExactWorldKernel>(kernel).intersect(
+  return exact::TriangleTest<ExactWorldKernel>(kernel).intersect(
       place(a[0], pose_a), place(a[1], pose_a), place(a[2], pose_a), place(b[0], pose_b),
       place(b[1], pose_b), place(b[2], pose_b));
 }

@@ -22,9 +22,7 @@
 #include <Eigen/Core>
 
 #include <collido/obbtree/triangle_intersection.h>
-
-#include "exact_predicates.h"
-#include "projection.h"
+#include <collido/oracle/orientation.h>
 
 namespace collido::obbtree::detail {
 
@@ -61,13 +59,13 @@ class FilteredKernel {
         inflated == 0.0 && !underflows(bu) && !underflows(bv) && !underflows(bw);
     const int sign = certain(det, bound, zero_is_exact);
     if (sign != kUnsure) return sign;
-    if (exact(a) && exact(b) && exact(c) && exact(d)) return detail::orient3d(a.p, b.p, c.p, d.p);
+    if (exact(a) && exact(b) && exact(c) && exact(d)) return exact::orient3d(a.p, b.p, c.p, d.p);
     return unsureSign();
   }
 
   int orient2d(const Point& a, const Point& b, const Point& c, int drop) {
-    const int i = keptFirst(drop);  // the exact kernels' projection order (projection.h)
-    const int j = keptSecond(drop);
+    const int i = exact::keptFirst(drop);  // the exact kernels' projection order (orientation.h)
+    const int j = exact::keptSecond(drop);
     const double ui = b.p[i] - a.p[i];
     const double uj = b.p[j] - a.p[j];
     const double vi = c.p[i] - a.p[i];
@@ -84,7 +82,7 @@ class FilteredKernel {
                                !underflows(Eigen::Vector3d(bvi, bvj, 0.0));
     const int sign = certain(det, bound, zero_is_exact);
     if (sign != kUnsure) return sign;
-    if (exact(a) && exact(b) && exact(c)) return detail::orient2d(a.p, b.p, c.p, drop);
+    if (exact(a) && exact(b) && exact(c)) return exact::orient2d(a.p, b.p, c.p, drop);
     return unsureSign();
   }
 

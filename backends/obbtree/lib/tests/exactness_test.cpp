@@ -17,6 +17,7 @@
 #include <collido/mesh/procedural.h>
 #include <collido/obbtree/collide.h>
 #include <collido/obbtree/triangle_intersection.h>
+#include <collido/oracle/double_triangle_test.h>
 #include <collido/oracle/exact_oracle.h>
 
 #include "collide_check.h"
@@ -45,7 +46,7 @@ std::optional<bool> certified(const Tri& a, const Tri& b, double radius_b) {
 }
 
 bool exact(const Tri& a, const Tri& b) {
-  return trianglesIntersect(a[0], a[1], a[2], b[0], b[1], b[2]);
+  return exact::trianglesIntersect(a[0], a[1], a[2], b[0], b[1], b[2]);
 }
 
 // A triangle touching `t` exactly: sharing its corner 0, or with a corner at the midpoint of its

@@ -15,6 +15,7 @@
 #include <nlohmann/json.hpp>
 
 #include <collido/obbtree/triangle_intersection.h>
+#include <collido/oracle/double_triangle_test.h>
 #include <collido/oracle/exact_oracle.h>
 
 namespace collido::obbtree {
@@ -39,7 +40,7 @@ std::string describe(const Tri& t1, const Tri& t2) {
 }
 
 bool lib(const Tri& t1, const Tri& t2) {
-  return trianglesIntersect(t1[0], t1[1], t1[2], t2[0], t2[1], t2[2]);
+  return exact::trianglesIntersect(t1[0], t1[1], t1[2], t2[0], t2[1], t2[2]);
 }
 
 // Corner orders: the three cyclic rotations, then the same with the orientation reversed.

@@ -59,6 +59,9 @@ struct FrameRecord {
   std::size_t invalid_pairs = 0;   ///< out-of-range or duplicate pairs, and false witnesses
   bool truncated = false;
   double median_us = 0.0;  ///< median of this frame's timed calls
+  /// kAllPairs: the floor, the median time of one exact triangle test per pair the oracle finds
+  /// (runner/floor.h), measured beside the timed calls.
+  std::optional<double> floor_us;
   /// With a finest scene: whether the objects, meshed at the finest resolution, intersect.
   std::optional<bool> finest_intersecting;
   std::uint64_t bv_tests = 0;
@@ -102,6 +105,9 @@ struct QueryMeasurement {
   double precision = 1.0;  ///< kAllPairs: matched / reported pairs over all frames (1 if none)
   bool counts_bv_tests = false;
   bool counts_primitive_tests = false;
+  /// kAllPairs: the frames' median times summed over their floors summed (frames with a floor);
+  /// 1 would be an answer that costs one exact triangle test per true pair and nothing else.
+  std::optional<double> floor_ratio;
   double build_ms = 0.0;                          ///< objects queried
   std::size_t triangles = 0;                      ///< objects queried
   std::size_t memory_bytes = 0;                   ///< objects queried, as the backend reports

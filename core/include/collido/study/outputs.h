@@ -20,7 +20,8 @@ std::string recordsJsonLines(const std::vector<CombinationResult>& results);
 std::string benchmarkJson(const std::vector<CombinationResult>& results);
 
 /// The table people read: per (combination, query) time quantiles, error, build and memory; then
-/// what building every need costs over the declared ones; then, with stress scenes, the
+/// what building every need costs over the declared ones; then the OBB tree against the field
+/// (field_table.h); then, with stress scenes, the
 /// robustness matrix's rates; then every failure.
 std::string studyTable(const std::vector<CombinationResult>& results);
 

@@ -6,13 +6,6 @@
 
 namespace collido::obbtree {
 
-/// Whether two closed triangles share at least one point, decided exactly for their double
-/// coordinates (touching counts). Every decision is the sign of an orientation determinant,
-/// evaluated by exact predicates; a degenerate triangle is treated as the segment or point it is.
-bool trianglesIntersect(const Eigen::Vector3d& p1, const Eigen::Vector3d& q1,
-                        const Eigen::Vector3d& r1, const Eigen::Vector3d& p2,
-                        const Eigen::Vector3d& q2, const Eigen::Vector3d& r2);
-
 /// A point known only to within `error` of the exact point it stands for, per coordinate
 /// (|p[k] - exact[k]| <= error[k], all >= 0), e.g. a vertex brought into another frame by a
 /// rounded transform; a zero error marks a coordinate that is exact.
@@ -21,7 +14,7 @@ struct UncertainPoint {
   Eigen::Vector3d error = Eigen::Vector3d::Zero();
 };
 
-/// trianglesIntersect for the exact corners that the uncertain ones stand for, decided in double
+/// exact::trianglesIntersect (collido/oracle/double_triangle_test.h) for the exact corners that the uncertain ones stand for, decided in double
 /// precision with certified error bounds: the answer when no exact corners within the radii, and
 /// no rounding, can change it; std::nullopt when one might (touching, coplanar, degenerate or
 /// nearly so, with inexact corners), and the caller must decide exactly

@@ -1,12 +1,11 @@
 // Exact orientation signs on double inputs, from CGAL's filtered predicates (a floating-point
 // filter with a certified error bound, falling back to exact arithmetic when the sign is in
 // doubt). Kept behind plain functions so that CGAL's headers stay in this one file.
-#include "exact_predicates.h"
-#include "projection.h"
+#include <collido/oracle/orientation.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
-namespace collido::obbtree::detail {
+namespace collido::exact {
 namespace {
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
@@ -33,4 +32,4 @@ bool collinear(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::
   return CGAL::collinear(point3(a), point3(b), point3(c));
 }
 
-}  // namespace collido::obbtree::detail
+}  // namespace collido::exact

@@ -30,7 +30,7 @@
 #include <algorithm>
 #include <utility>
 
-namespace collido::obbtree::detail {
+namespace collido::exact {
 
 template <typename K>
 class TriangleTest {
@@ -281,4 +281,4 @@ class TriangleTest {
   K& k_;
 };
 
-}  // namespace collido::obbtree::detail
+}  // namespace collido::exact

@@ -1,0 +1,168 @@
+#include <collido/study/field_table.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <sstream>
+#include <tuple>
+
+#include <collido/runner/text_table.h>
+#include <collido/study/robustness.h>
+
+namespace collido::study {
+namespace {
+
+constexpr const char* kOurs = "obbtree";
+constexpr const char* kPeer = "fcl:obb";
+
+/// A measurement with the backend text it came from.
+struct Answer {
+  std::string backend;
+  QueryMeasurement measurement;
+};
+
+/// "fcl" for "fcl:obb", "bullet" for "bullet[margin=0]": the plugin a setting belongs to.
+std::string familyOf(const std::string& backend) {
+  return backend.substr(0, backend.find_first_of(":["));
+}
+
+bool runsOnOneThread(const std::string& backend) {
+  const auto parsed = parseBackendText(backend);
+  if (!parsed.ok()) return true;
+  const auto& options = parsed.value().second;
+  const auto threads = options.find("threads");
+  return threads == options.end() || threads->second == "1" || threads->second == "0";
+}
+
+/// The mean over frames of each frame's median time: the time per query over a whole run of the
+/// scene, dominated by its dense frames (the quantiles in the main table are over every call).
+double meanUs(const QueryMeasurement& m) {
+  if (m.frames.empty()) return 0.0;
+  double total = 0.0;
+  for (const FrameRecord& f : m.frames)
+    total += f.median_us;
+  return total / static_cast<double>(m.frames.size());
+}
+
+/// The fastest of `answers` that `admit` lets in, or none.
+template <typename Admit>
+const Answer* fastest(const std::vector<Answer>& answers, Admit admit) {
+  const Answer* best = nullptr;
+  for (const Answer& a : answers) {
+    if (!admit(a)) continue;
+    if (best == nullptr || meanUs(a.measurement) < meanUs(best->measurement)) best = &a;
+  }
+  return best;
+}
+
+/// Work per truly intersecting pair over every frame, or "-" when not counted or no pair.
+std::string perTruePair(const QueryMeasurement& m, bool counted, std::uint64_t FrameRecord::*work) {
+  std::uint64_t total = 0;
+  std::size_t pairs = 0;
+  for (const FrameRecord& f : m.frames) {
+    total += f.*work;
+    pairs += f.oracle_pairs;
+  }
+  if (!counted || pairs == 0) return "-";
+  return formatNumber("%.1f", static_cast<double>(total) / static_cast<double>(pairs));
+}
+
+std::string timeCell(const QueryMeasurement& m) {
+  std::string text = formatNumber("%.1f", meanUs(m));
+  if (m.disagreements > 0) text += "!";
+  return text;
+}
+
+std::string ratioCell(const QueryMeasurement& theirs, const QueryMeasurement& ours) {
+  if (meanUs(ours) <= 0.0) return "-";
+  return formatNumber("%.2f", meanUs(theirs) / meanUs(ours)) + "x";
+}
+
+}  // namespace
+
+std::string fieldTable(const std::vector<CombinationResult>& results) {
+  // (scene, resolution, query) -> every setting's answer, in result order.
+  using Key = std::tuple<std::string, double, std::string>;
+  std::map<Key, std::vector<Answer>> groups;
+  std::vector<Key> order;
+  std::vector<std::string> families;
+  for (const CombinationResult& r : results) {
+    const Combination& c = r.combination;
+    if (!r.outcome.ok() || !c.category.empty() || c.needs != NeedsMode::kDeclared || c.limit != 0)
+      continue;
+    const std::string family = familyOf(c.backend);
+    if (family != kOurs && std::find(families.begin(), families.end(), family) == families.end())
+      families.push_back(family);
+    for (const QueryMeasurement& m : tableMeasurements(r)) {
+      if (!m.ok()) continue;
+      const Key key{c.scene_name, c.resolution, m.query};
+      if (groups.find(key) == groups.end()) order.push_back(key);
+      groups[key].push_back({c.backend, m});
+    }
+  }
+  const bool has_peer = std::any_of(groups.begin(), groups.end(), [](const auto& group) {
+    return std::any_of(group.second.begin(), group.second.end(),
+                       [](const Answer& a) { return a.backend == kPeer; });
+  });
+
+  std::vector<std::string> header = {"scene",    "query",   "obbtree (fastest exact)",
+                                     "mean us",  "B/tri",   "floor x",
+                                     "box/pair", "tri/pair"};
+  if (has_peer) {
+    header.push_back(std::string(kPeer) + " us");
+    header.push_back(std::string("vs ") + kPeer);
+  }
+  for (const std::string& family : families) {
+    header.push_back(family + " us");
+    header.push_back("vs " + family);
+  }
+  std::vector<std::vector<std::string>> rows;
+  for (const Key& key : order) {
+    const std::vector<Answer>& answers = groups[key];
+    const Answer* ours = fastest(answers, [](const Answer& a) {
+      return familyOf(a.backend) == kOurs && a.measurement.disagreements == 0 &&
+             runsOnOneThread(a.backend);
+    });
+    const bool has_comparator = std::any_of(answers.begin(), answers.end(), [](const Answer& a) {
+      return familyOf(a.backend) != kOurs;
+    });
+    if (!has_comparator) continue;
+    const auto& [scene, resolution, query] = key;
+    std::vector<std::string> row = {
+        resolution == 1.0 ? scene : scene + " r=" + formatNumber("%g", resolution), query};
+    if (ours == nullptr) {
+      row.push_back("no exact setting");
+      row.resize(header.size(), "-");
+      rows.push_back(row);
+      continue;
+    }
+    const QueryMeasurement& m = ours->measurement;
+    row.push_back(ours->backend);
+    row.push_back(formatNumber("%.1f", meanUs(m)));
+    row.push_back(bytesPerTriangleText(m.memory_bytes, m.triangles));
+    row.push_back(m.floor_ratio ? formatNumber("%.1f", *m.floor_ratio) : "-");
+    row.push_back(perTruePair(m, m.counts_bv_tests, &FrameRecord::bv_tests));
+    row.push_back(perTruePair(m, m.counts_primitive_tests, &FrameRecord::primitive_tests));
+    const auto compare = [&](const Answer* theirs) {
+      row.push_back(theirs ? timeCell(theirs->measurement) : "-");
+      row.push_back(theirs ? ratioCell(theirs->measurement, m) : "-");
+    };
+    if (has_peer) compare(fastest(answers, [](const Answer& a) { return a.backend == kPeer; }));
+    for (const std::string& family : families) {
+      compare(fastest(answers, [&](const Answer& a) { return familyOf(a.backend) == family; }));
+    }
+    rows.push_back(row);
+  }
+  if (rows.empty()) return "";
+  std::ostringstream out;
+  out << formatTextTable(header, rows, 3);
+  out << "Times are the mean over frames of each frame's median, in microseconds per query; a "
+         "comparator's is its fastest setting's, and '!' marks one whose answer differed from the "
+         "oracle's on some frame. 'vs X' = X's time over the OBB tree's. floor x = "
+         "query time over one exact triangle test per truly intersecting pair (1 is the floor); "
+         "box/pair and tri/pair = box and triangle tests per truly intersecting pair.\n";
+  return out.str();
+}
+
+}  // namespace collido::study

@@ -1,0 +1,123 @@
+// "The OBB tree against the field": which settings are compared, and the figures, by hand.
+#include <collido/study/field_table.h>
+
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include <collido/runner/text_table.h>
+
+#include "study_test_data.h"
+
+namespace collido::study {
+namespace {
+
+/// An all-pairs measurement of two frames with these median times (the frames' mean is their
+/// average), 10 and 30 true pairs, 200 and 400 box tests, 20 and 60 triangle tests, floors 1
+/// and 2 us; `wrong`: the second frame misses every pair.
+QueryMeasurement pairs(const std::string& backend, double first_us, double second_us,
+                       bool wrong = false) {
+  QueryMeasurement m;
+  m.backend = backend;
+  m.scene = "tori";
+  m.query = "all_pairs";
+  m.kind = QueryKind::kAllPairs;
+  m.times_us = {first_us, second_us};
+  const std::size_t exact[2] = {10, 30};
+  for (std::size_t i = 0; i < 2; ++i) {
+    FrameRecord f;
+    f.frame = i;
+    f.oracle_intersecting = true;
+    f.reported_intersecting = !(wrong && i == 1);
+    f.oracle_pairs = exact[i];
+    f.reported_pairs = wrong && i == 1 ? 0 : exact[i];
+    f.matched_pairs = f.reported_pairs;
+    f.median_us = m.times_us[i];
+    f.floor_us = 1.0 + static_cast<double>(i);
+    f.bv_tests = 200 * (i + 1);
+    f.primitive_tests = 20 + 40 * i;
+    m.frames.push_back(f);
+  }
+  m.counts_bv_tests = true;
+  m.counts_primitive_tests = true;
+  m.triangles = 1000;
+  m.memory_bytes = 116000;
+  summariseMeasurement(m);
+  return m;
+}
+
+CombinationResult result(const std::string& backend, QueryMeasurement m,
+                         const std::string& category = "") {
+  CombinationResult r;
+  r.combination = testdata::combination(backend);
+  r.combination.category = category;
+  r.measurements = {std::move(m)};
+  return r;
+}
+
+/// The table's single data row, split into cells on runs of two or more spaces.
+std::vector<std::string> onlyRow(const std::string& table) {
+  std::vector<std::string> lines;
+  std::size_t start = 0;
+  for (std::size_t end; (end = table.find('\n', start)) != std::string::npos; start = end + 1)
+    lines.push_back(table.substr(start, end - start));
+  EXPECT_GE(lines.size(), 3u);  // header, rule, the row (then the legend)
+  std::vector<std::string> cells;
+  const std::string& row = lines.at(2);
+  std::size_t i = 0;
+  while (i < row.size()) {
+    while (i < row.size() && row[i] == ' ')
+      ++i;
+    std::size_t j = i;
+    while (j < row.size() && !(row[j] == ' ' && j + 1 < row.size() && row[j + 1] == ' '))
+      ++j;
+    if (j > i) cells.push_back(row.substr(i, j - i));
+    i = j;
+  }
+  return cells;
+}
+
+TEST(FieldTable, FastestExactSingleThreadSettingAgainstEachFamilysFastest) {
+  const std::vector<CombinationResult> results = {
+      result("obbtree[max_leaf_triangles=4]", pairs("obbtree[max_leaf_triangles=4]", 10, 30)),
+      // Faster but wrong, and faster on two threads: neither is the one compared.
+      result("obbtree[max_leaf_triangles=1]", pairs("obbtree[max_leaf_triangles=1]", 1, 1, true)),
+      result("obbtree[threads=2]", pairs("obbtree[threads=2]", 5, 15)),
+      result("fcl:obb", pairs("fcl:obb", 50, 110)),
+      result("fcl:obbrss", pairs("fcl:obbrss", 40, 80)),
+      result("bullet", pairs("bullet", 30, 50, true)),
+  };
+  const std::string table = fieldTable(results);
+  SCOPED_TRACE(table);
+  const std::vector<std::string> cells = onlyRow(table);
+  // scene, query, ours, mean us, B/tri, floor x, box/pair, tri/pair, then per comparator
+  // (fcl:obb, fcl, bullet) its time and the ratio.
+  const std::vector<std::string> expected = {
+      "tori", "all_pairs", "obbtree[max_leaf_triangles=4]", "20.0", "116",
+      // (10 + 30) / (1 + 2); (200 + 400) / 40; (20 + 60) / 40.
+      "13.3", "15.0", "2.0",
+      // fcl:obb mean 80; FCL's fastest is OBBRSS (60); Bullet 40, wrong on a frame.
+      "80.0", "4.00x", "60.0", "3.00x", "40.0!", "2.00x"};
+  EXPECT_EQ(cells, expected);
+}
+
+TEST(FieldTable, NoExactSettingIsSaidNotHidden) {
+  const std::vector<CombinationResult> results = {
+      result("obbtree", pairs("obbtree", 1, 1, true)),
+      result("fcl:obb", pairs("fcl:obb", 50, 110)),
+  };
+  const std::vector<std::string> cells = onlyRow(fieldTable(results));
+  ASSERT_GE(cells.size(), 3u);
+  EXPECT_EQ(cells[2], "no exact setting");
+}
+
+TEST(FieldTable, EmptyWithoutAComparatorOrForStressScenes) {
+  EXPECT_EQ(fieldTable({result("obbtree", pairs("obbtree", 10, 30))}), "");
+  EXPECT_EQ(fieldTable({result("obbtree", pairs("obbtree", 10, 30), "near_touching"),
+                        result("fcl:obb", pairs("fcl:obb", 50, 110), "near_touching")}),
+            "");
+}
+
+}  // namespace
+}  // namespace collido::study
