@@ -125,12 +125,14 @@ TEST(SceneBadInput, UnknownTopLevelKey) {
                                       "allowed: description, frames, name, objects, queries"}));
 }
 
-// "bad.json: /objects/0: unknown key 'shpe' (allowed: motion, name, pose, shape)"
+// "bad.json: /objects/0: unknown key 'shpe' (allowed: deform, motion, name, pose, schedule,
+//  shape, states)"
 TEST(SceneBadInput, UnknownKeyInObject) {
   Json scene = validScene();
   scene["objects"][0]["shpe"] = 1;
-  EXPECT_TRUE(rejected(
-      parse(scene), {"/objects/0:", "unknown key 'shpe'", "allowed: motion, name, pose, shape"}));
+  EXPECT_TRUE(
+      rejected(parse(scene), {"/objects/0:", "unknown key 'shpe'",
+                              "allowed: deform, motion, name, pose, schedule, shape, states"}));
 }
 
 // "bad.json: /objects/1/shape: unknown key 'minor_raduis' (allowed: generator, major_radius,

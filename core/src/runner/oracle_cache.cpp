@@ -52,7 +52,8 @@ const OracleAnswer& OracleCache::get(std::size_t ia, std::size_t ib, std::size_t
     const SceneObject& b = scene_.objects[ib];
     found = answers_
                 .emplace(key, exactIntersectingPairs(
-                                  *a.mesh, a.poseAt(frame), *b.mesh, b.poseAt(frame),
+                                  *a.shapeAt(frame), a.poseAt(frame), *b.shapeAt(frame),
+                                  b.poseAt(frame),
                                   needs_all ? OracleMode::kAllPairs : OracleMode::kFirstPair))
                 .first;
   }
@@ -64,12 +65,20 @@ std::string OracleCache::fingerprint() const {
   d.value(witness_only_);
   d.value(scene_.frames);
   d.value(scene_.objects.size());
-  for (const SceneObject& o : scene_.objects) {
-    const TriangleMesh& mesh = *o.mesh;
+  const auto shape = [&d](const TriangleMesh& mesh) {
     d.value(mesh.vertices.cols());
     d.bytes(mesh.vertices.data(), sizeof(double) * static_cast<std::size_t>(mesh.vertices.size()));
     d.value(mesh.triangles.cols());
     d.bytes(mesh.triangles.data(), sizeof(int) * static_cast<std::size_t>(mesh.triangles.size()));
+  };
+  for (const SceneObject& o : scene_.objects) {
+    shape(*o.mesh);
+    // A changing shape: every frame's (states and movable nodes).
+    d.value(o.changesShape());
+    if (o.changesShape()) {
+      for (std::size_t f = 0; f < scene_.frames; ++f)
+        shape(*o.shapeAt(f));
+    }
     d.value(o.poses.size());
     for (const Pose& pose : o.poses)
       d.bytes(pose.matrix().data(), sizeof(double) * 16);

@@ -31,6 +31,7 @@ Json frameJson(const FrameRecord& f, const QueryMeasurement& m) {
           {"disagrees", f.disagrees(m.kind)},
           {"median_us", f.median_us},
           {"floor_us", optionalJson(f.floor_us)},
+          {"update_us", optionalJson(f.update_us)},
           {"bv_tests", m.counts_bv_tests ? Json(f.bv_tests) : Json()},
           {"primitive_tests", m.counts_primitive_tests ? Json(f.primitive_tests) : Json()}};
 }
@@ -49,6 +50,7 @@ FrameRecord frameFrom(const Json& j) {
   f.object_pairs = optionalFrom<std::size_t>(j, "object_pairs").value_or(1);
   f.median_us = j.at("median_us").get<double>();
   f.floor_us = optionalFrom<double>(j, "floor_us");
+  f.update_us = optionalFrom<double>(j, "update_us");
   f.bv_tests = optionalFrom<std::uint64_t>(j, "bv_tests").value_or(0);
   f.primitive_tests = optionalFrom<std::uint64_t>(j, "primitive_tests").value_or(0);
   return f;
@@ -79,6 +81,7 @@ Json measurementToJson(const QueryMeasurement& m) {
           {"counts_bv_tests", m.counts_bv_tests},
           {"counts_primitive_tests", m.counts_primitive_tests},
           {"floor_ratio", optionalJson(m.floor_ratio)},
+          {"update_median_us", optionalJson(m.update_median_us)},
           {"build_ms", m.build_ms},
           {"triangles", m.triangles},
           {"memory_bytes", m.memory_bytes},

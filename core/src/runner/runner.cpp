@@ -39,14 +39,14 @@ struct BuiltModel {
   std::string error;  // non-empty when the build failed
 };
 
-BuiltModel buildModel(BackendInstance& backend, const SceneObject& object,
+BuiltModel buildModel(BackendInstance& backend, const TriangleMesh& mesh,
                       const BuildNeeds& needs) {
   BuiltModel built;
   resetHeapPeak();
   const std::optional<HeapHookSample> hooks_before = heapHookSample();
   const std::optional<std::size_t> heap_before = heapBytesInUse();
   const Clock::time_point start = Clock::now();
-  Result<ModelHandle> handle = backend.build(object.mesh->view(), needs);
+  Result<ModelHandle> handle = backend.build(mesh.view(), needs);
   const Clock::time_point stop = Clock::now();
   const std::optional<std::size_t> heap_after = heapBytesInUse();
   const std::optional<HeapHookSample> hooks_after = heapHookSample();
@@ -92,7 +92,9 @@ void summariseMeasurement(QueryMeasurement& m) {
   std::size_t matched_pairs = 0;
   double timed_with_floor_us = 0.0;
   double floor_us = 0.0;
+  std::vector<double> updates_us;
   for (const FrameRecord& f : m.frames) {
+    if (f.update_us) updates_us.push_back(*f.update_us);
     if (f.floor_us) {
       timed_with_floor_us += f.median_us;
       floor_us += *f.floor_us;
@@ -114,6 +116,8 @@ void summariseMeasurement(QueryMeasurement& m) {
   }
   m.floor_ratio.reset();
   if (floor_us > 0.0) m.floor_ratio = timed_with_floor_us / floor_us;
+  m.update_median_us.reset();
+  if (!updates_us.empty()) m.update_median_us = quantile(updates_us, 0.5);
 }
 
 namespace {
@@ -170,14 +174,18 @@ void runSceneOnBackend(const Scene& scene, const BackendSpec& spec, OracleCache&
 
   // Build what the scene needs, restricted to what the backend answers; queries it cannot answer
   // are skipped below with the reason.
-  std::map<std::size_t, BuiltModel> models;
+  // One model per active state of each object (an object without states has one), built ahead:
+  // switching states selects a model.
+  std::map<std::size_t, std::vector<BuiltModel>> models;
   for (std::size_t index : scene.queriedObjects()) {
     BuildNeeds needs = scene.needsOf(index);
     if (options.build_every_need) needs.queries = caps.queries;
     needs.queries = QueryKindSet(needs.queries.bits() & caps.queries.bits());
     if (needs.queries.empty()) continue;
-    say(options, label + ": building " + scene.objects[index].name);
-    models[index] = buildModel(backend, scene.objects[index], needs);
+    const SceneObject& object = scene.objects[index];
+    say(options, label + ": building " + object.name);
+    for (std::size_t state = 0; state < object.stateCount(); ++state)
+      models[index].push_back(buildModel(backend, *object.stateMesh(state), needs));
   }
 
   std::size_t frames_done = 0;
@@ -195,10 +203,20 @@ void runSceneOnBackend(const Scene& scene, const BackendSpec& spec, OracleCache&
       continue;
     }
     const std::vector<std::size_t> objects = query.objects();
-    const auto failed_build = std::find_if(objects.begin(), objects.end(),
-                                           [&](std::size_t i) { return !models[i].error.empty(); });
-    if (failed_build != objects.end()) {
-      m.status = "failed: build: " + models[*failed_build].error;
+    const auto deforms = [&](std::size_t i) { return scene.objects[i].deformation != nullptr; };
+    if (!caps.update && std::any_of(objects.begin(), objects.end(), deforms)) {
+      m.status = "skipped: " + label + " does not update models (the scene deforms an object)";
+      report.measurements.push_back(m);
+      continue;
+    }
+    std::string build_error;
+    for (std::size_t i : objects) {
+      for (const BuiltModel& model : models[i]) {
+        if (build_error.empty() && !model.error.empty()) build_error = model.error;
+      }
+    }
+    if (!build_error.empty()) {
+      m.status = "failed: build: " + build_error;
       report.measurements.push_back(m);
       continue;
     }
@@ -206,13 +224,14 @@ void runSceneOnBackend(const Scene& scene, const BackendSpec& spec, OracleCache&
     std::optional<std::size_t> heap_peak_bytes = 0;
     std::optional<std::uint64_t> heap_allocations = 0;
     for (std::size_t index : objects) {
-      const BuiltModel& model = models[index];
-      m.build_ms += model.build_ms;
       m.triangles += scene.objects[index].mesh->triangleCount();
-      m.memory_bytes += model.memory_bytes;
-      heap_bytes = sumIfBoth(heap_bytes, model.heap_bytes);
-      heap_peak_bytes = sumIfBoth(heap_peak_bytes, model.heap_peak_bytes);
-      heap_allocations = sumIfBoth(heap_allocations, model.heap_allocations);
+      for (const BuiltModel& model : models[index]) {
+        m.build_ms += model.build_ms;
+        m.memory_bytes += model.memory_bytes;
+        heap_bytes = sumIfBoth(heap_bytes, model.heap_bytes);
+        heap_peak_bytes = sumIfBoth(heap_peak_bytes, model.heap_peak_bytes);
+        heap_allocations = sumIfBoth(heap_allocations, model.heap_allocations);
+      }
     }
     m.heap_bytes = heap_bytes;
     m.heap_peak_bytes = heap_peak_bytes;
@@ -232,13 +251,32 @@ void runSceneOnBackend(const Scene& scene, const BackendSpec& spec, OracleCache&
       const std::vector<std::pair<std::size_t, std::size_t>> candidates =
           broad_phase ? broad_phase->pairsAt(frame)
                       : std::vector<std::pair<std::size_t, std::size_t>>{{query.a, query.b}};
-      const auto ask = [&](std::size_t ia, std::size_t ib) {
-        return backend.query(models[ia].handle, scene.objects[ia].poseAt(frame), models[ib].handle,
-                             scene.objects[ib].poseAt(frame), query.request, result);
-      };
       FrameRecord record;
       record.frame = frame;
       record.object_pairs = candidates.size();
+      // This frame's shapes: the active state's model, its movable nodes updated (timed).
+      std::map<std::size_t, std::shared_ptr<const TriangleMesh>> shapes;
+      const auto modelAt = [&](std::size_t i) {
+        return models[i][scene.objects[i].stateAt(frame)].handle;
+      };
+      for (std::size_t i : objects) {
+        shapes[i] = scene.objects[i].shapeAt(frame);
+        if (!deforms(i)) continue;
+        const Clock::time_point start = Clock::now();
+        const Status s = backend.update(modelAt(i), shapes[i]->vertices);
+        const Clock::time_point stop = Clock::now();
+        if (!s.ok()) {
+          m.status = "failed: frame " + std::to_string(frame) + ": update " +
+                     scene.objects[i].name + ": " + s.toString();
+          break;
+        }
+        record.update_us = record.update_us.value_or(0.0) + microseconds(stop - start);
+      }
+      if (!m.ok()) break;
+      const auto ask = [&](std::size_t ia, std::size_t ib) {
+        return backend.query(modelAt(ia), scene.objects[ia].poseAt(frame), modelAt(ib),
+                             scene.objects[ib].poseAt(frame), query.request, result);
+      };
       std::vector<WorldTrianglePair> true_pairs;
       for (const auto& [ia, ib] : candidates) {
         if (Status s = ask(ia, ib); !s.ok()) {
@@ -249,10 +287,12 @@ void runSceneOnBackend(const Scene& scene, const BackendSpec& spec, OracleCache&
         const SceneObject& b = scene.objects[ib];
         FrameRecord one;
         const OracleAnswer& truth = oracle.get(ia, ib, frame);
-        compareWithOracle(*a.mesh, a.poseAt(frame), *b.mesh, b.poseAt(frame), query.request.kind,
+        const TriangleMesh& shape_a = *shapes[ia];
+        const TriangleMesh& shape_b = *shapes[ib];
+        compareWithOracle(shape_a, a.poseAt(frame), shape_b, b.poseAt(frame), query.request.kind,
                           result, truth, one);
         if (query.request.kind == QueryKind::kAllPairs)
-          appendWorldPairs(*a.mesh, a.poseAt(frame), *b.mesh, b.poseAt(frame), truth.pairs,
+          appendWorldPairs(shape_a, a.poseAt(frame), shape_b, b.poseAt(frame), truth.pairs,
                            true_pairs);
         addAnswer(one, record);
         record.bv_tests += result.counters.bv_tests;
@@ -291,8 +331,10 @@ void runSceneOnBackend(const Scene& scene, const BackendSpec& spec, OracleCache&
     summariseMeasurement(m);
     report.measurements.push_back(std::move(m));
   }
-  for (const auto& [index, model] : models) {
-    if (model.error.empty()) (void)backend.release(model.handle);
+  for (const auto& [index, states] : models) {
+    for (const BuiltModel& model : states) {
+      if (model.error.empty()) (void)backend.release(model.handle);
+    }
   }
 }
 

@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <limits>
 
 #include <collido/scene/broad_phase.h>
 
@@ -19,12 +20,23 @@ struct WorldBox {
 
 BroadPhase::BroadPhase(const Scene& scene, const SceneQuery& query) : scene_(scene) {
   for (std::size_t index : query.among) {
-    const Eigen::Matrix3Xd& v = scene.objects[index].mesh->vertices;
+    const SceneObject& object = scene.objects[index];
     LocalBox box;
     box.object = index;
-    if (v.cols() > 0) {
-      const Eigen::Vector3d low = v.rowwise().minCoeff();
-      const Eigen::Vector3d high = v.rowwise().maxCoeff();
+    // A changing shape is bounded over every frame: one box for the whole scene.
+    Eigen::Vector3d low = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
+    Eigen::Vector3d high = -low;
+    const auto extend = [&](const Eigen::Matrix3Xd& v) {
+      if (v.cols() == 0) return;
+      low = low.cwiseMin(v.rowwise().minCoeff());
+      high = high.cwiseMax(v.rowwise().maxCoeff());
+    };
+    extend(object.mesh->vertices);
+    if (object.changesShape()) {
+      for (std::size_t f = 0; f < scene.frames; ++f)
+        extend(object.shapeAt(f)->vertices);
+    }
+    if ((low.array() <= high.array()).all()) {
       box.centre = 0.5 * (low + high);
       box.half = 0.5 * (high - low) + kRelativeMargin * (low.cwiseAbs().cwiseMax(high.cwiseAbs()));
     }

@@ -24,128 +24,17 @@
 #include <collido/scene/scene.h>
 #include <collido/stress/stress_cases.h>
 
+#include "deformation_reader.h"
 #include "scene_motion.h"
+#include "scene_reader.h"
 
 namespace collido {
 namespace {
 
-using Json = nlohmann::json;
-
-class SceneError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
-
-// A JSON value and where it is, for messages.
-struct Node {
-  const Json& value;
-  std::string pointer;  // JSON pointer, "" for the root
-
-  Node at(const std::string& key) const { return Node{value.at(key), pointer + "/" + key}; }
-  Node at(std::size_t index) const {
-    return Node{value.at(index), pointer + "/" + std::to_string(index)};
-  }
-  bool has(const std::string& key) const { return value.contains(key); }
-  std::string where() const { return pointer.empty() ? "/" : pointer; }
-};
-
-const char* typeName(const Json& v) {
-  return v.type_name();
-}
-
-class Reader {
- public:
-  Reader(std::string label, double resolution)
-      : label_(std::move(label)), resolution_(resolution) {}
-
-  /// A generator's sample count at the load's resolution, never below the generator's minimum
-  /// and never past the int range (a huge resolution then meets the generator's own limit).
-  int resolved(int count, int minimum) const {
-    const double scaled = std::round(static_cast<double>(count) * resolution_);
-    const double largest = static_cast<double>(std::numeric_limits<int>::max());
-    return static_cast<int>(std::min(largest, std::max(static_cast<double>(minimum), scaled)));
-  }
-
-  [[noreturn]] void fail(const Node& node, const std::string& problem) const {
-    throw SceneError(label_ + ": " + node.where() + ": " + problem);
-  }
-
-  void expectObject(const Node& node, const std::set<std::string>& allowed) const {
-    if (!node.value.is_object())
-      fail(node, std::string("expected an object, got ") + typeName(node.value));
-    for (const auto& item : node.value.items()) {
-      if (item.key() == "comment" || allowed.count(item.key()) != 0) continue;
-      std::string list;
-      for (const std::string& key : allowed)
-        list += (list.empty() ? "" : ", ") + key;
-      fail(node, "unknown key '" + item.key() + "' (allowed: " + list + ")");
-    }
-  }
-
-  void expectArray(const Node& node) const {
-    if (!node.value.is_array())
-      fail(node, std::string("expected an array, got ") + typeName(node.value));
-  }
-
-  std::string string(const Node& node) const {
-    if (!node.value.is_string())
-      fail(node, std::string("expected a string, got ") + typeName(node.value));
-    return node.value.get<std::string>();
-  }
-
-  double number(const Node& node) const {
-    if (!node.value.is_number())
-      fail(node, std::string("expected a number, got ") + typeName(node.value));
-    const double v = node.value.get<double>();
-    if (!std::isfinite(v)) fail(node, "expected a finite number");
-    return v;
-  }
-
-  double number(const Node& parent, const std::string& key, double fallback) const {
-    return parent.has(key) ? number(parent.at(key)) : fallback;
-  }
-
-  double positive(const Node& parent, const std::string& key, double fallback) const {
-    const double v = number(parent, key, fallback);
-    if (!(v > 0.0)) fail(parent.has(key) ? parent.at(key) : parent, key + " must be > 0");
-    return v;
-  }
-
-  std::int64_t integer(const Node& node, std::int64_t min_value, std::int64_t max_value) const {
-    if (!node.value.is_number_integer()) {
-      fail(node, std::string("expected an integer, got ") +
-                     (node.value.is_number() ? "a fractional number" : typeName(node.value)));
-    }
-    const auto v = node.value.get<std::int64_t>();
-    if (node.value.is_number_unsigned() &&
-        node.value.get<std::uint64_t>() > 9000000000000000000ull) {
-      fail(node, "integer out of range");
-    }
-    if (v < min_value || v > max_value) {
-      fail(node, "expected an integer in [" + std::to_string(min_value) + ", " +
-                     std::to_string(max_value) + "], got " + std::to_string(v));
-    }
-    return v;
-  }
-
-  std::int64_t integer(const Node& parent, const std::string& key, std::int64_t fallback,
-                       std::int64_t min_value, std::int64_t max_value) const {
-    return parent.has(key) ? integer(parent.at(key), min_value, max_value) : fallback;
-  }
-
-  Eigen::Vector3d vector3(const Node& node) const {
-    expectArray(node);
-    if (node.value.size() != 3)
-      fail(node, "expected 3 numbers, got " + std::to_string(node.value.size()));
-    return {number(node.at(0)), number(node.at(1)), number(node.at(2))};
-  }
-
-  const std::string& label() const { return label_; }
-
- private:
-  std::string label_;
-  double resolution_;
-};
+using scene_reading::Json;
+using scene_reading::Node;
+using scene_reading::Reader;
+using scene_reading::SceneError;
 
 // The scene's triangle limit (SceneLoadOptions::max_triangles), charged shape by shape: a
 // generated shape before it is generated (from its parameters), a mesh file once read.
@@ -642,6 +531,58 @@ void readStress(const Reader& r, const Node& root, const std::string& base_direc
 
 // --- the scene -------------------------------------------------------------------------------
 
+// The object's shape: one ("shape"), or active states ("states", with a "schedule"), and the
+// movable nodes ("deform"). Every deformed frame is computed once here, so a scene that loads
+// holds finite shapes within the coordinate limit in every frame.
+void readShapes(const Reader& r, const Node& node, const std::string& base_directory,
+                std::size_t frames, ShapeLoader& shapes, SceneObject& object) {
+  if (!node.has("shape") && !node.has("states"))
+    r.fail(node, "missing 'shape' (or 'states', a list of shapes)");
+  if (node.has("shape") && node.has("states"))
+    r.fail(node, "give only one of 'shape' or 'states' (a list of shapes)");
+  if (node.has("shape")) {
+    if (node.has("schedule")) r.fail(node.at("schedule"), "a schedule needs 'states'");
+    LoadedShape shape = shapes.load(node.at("shape"));
+    object.mesh = shape.mesh;
+    object.report = shape.report;
+  } else {
+    const Node list = node.at("states");
+    r.expectArray(list);
+    if (list.value.empty()) r.fail(list, "an object with states needs at least one");
+    for (std::size_t k = 0; k < list.value.size(); ++k) {
+      LoadedShape shape = shapes.load(list.at(k));
+      object.states.push_back(ObjectState{shape.mesh, shape.report});
+    }
+    object.mesh = object.states.front().mesh;
+    object.report = object.states.front().report;
+    const Node schedule = node.has("schedule") ? node.at("schedule") : list;
+    object.schedule = scene_reading::readSchedule(r, node.has("schedule") ? &schedule : nullptr,
+                                                  object.states.size(), frames);
+  }
+  if (!node.has("deform")) return;
+  const Node deform = node.at("deform");
+  object.deformation = scene_reading::readDeformation(r, deform, base_directory, frames);
+  for (std::size_t state = 0; state < object.stateCount(); ++state) {
+    const std::size_t vertices = object.stateMesh(state)->vertexCount();
+    if (object.deformation->recorded && object.deformation->recorded->vertices != vertices) {
+      r.fail(deform.at("recorded"), "records " +
+                                        std::to_string(object.deformation->recorded->vertices) +
+                                        " vertices but state " + std::to_string(state) + " has " +
+                                        std::to_string(vertices));
+    }
+  }
+  for (std::size_t f = 0; f < frames; ++f) {
+    const std::shared_ptr<const TriangleMesh> shape = object.shapeAt(f);
+    const double largest = shape->vertices.cwiseAbs().maxCoeff();
+    if (!std::isfinite(largest) || largest > kMaxCoordinate) {
+      std::ostringstream text;
+      text << "frame " << f << ": the deformation takes a vertex to " << largest
+           << ", beyond the coordinate limit " << kMaxCoordinate << " (scenes/README.md)";
+      r.fail(deform, text.str());
+    }
+  }
+}
+
 Scene readScene(const Reader& r, const Json& document, const std::string& base_directory,
                 const SceneLoadOptions& options) {
   const Node root{document, ""};
@@ -685,7 +626,7 @@ Scene readScene(const Reader& r, const Json& document, const std::string& base_d
   std::map<std::string, std::size_t> index_of;
   for (std::size_t i = 0; i < objects.value.size(); ++i) {
     const Node node = objects.at(i);
-    r.expectObject(node, {"name", "shape", "pose", "motion"});
+    r.expectObject(node, {"name", "shape", "states", "schedule", "deform", "pose", "motion"});
     SceneObject object;
     if (!node.has("name")) r.fail(node, "missing 'name'");
     object.name = r.string(node.at("name"));
@@ -693,10 +634,7 @@ Scene readScene(const Reader& r, const Json& document, const std::string& base_d
     if (index_of.count(object.name) != 0) {
       r.fail(node.at("name"), "duplicate object name '" + object.name + "'");
     }
-    if (!node.has("shape")) r.fail(node, "missing 'shape'");
-    LoadedShape shape = shapes.load(node.at("shape"));
-    object.mesh = shape.mesh;
-    object.report = shape.report;
+    readShapes(r, node, base_directory, scene.frames, shapes, object);
     const Pose base = node.has("pose") ? readPose(r, node.at("pose")) : Pose::Identity();
     object.poses = {base};
     if (node.has("motion")) {
@@ -863,6 +801,7 @@ BuildNeeds Scene::needsOf(std::size_t object) const {
   for (const SceneQuery& q : queries) {
     if (q.names(object)) needs.queries |= q.request.kind;
   }
+  needs.deforms = objects[object].deformation != nullptr;
   return needs;
 }
 
@@ -906,8 +845,12 @@ Result<Scene> parseScene(const std::string& text, const std::string& label,
 }
 
 bool Scene::hasGeneratedShapes() const {
-  return std::any_of(objects.begin(), objects.end(),
-                     [](const SceneObject& o) { return o.report.importer == "generator"; });
+  return std::any_of(objects.begin(), objects.end(), [](const SceneObject& o) {
+    return o.report.importer == "generator" ||
+           std::any_of(o.states.begin(), o.states.end(), [](const ObjectState& state) {
+             return state.report.importer == "generator";
+           });
+  });
 }
 
 Result<Scene> loadScene(const std::string& path, const SceneLoadOptions& options) {

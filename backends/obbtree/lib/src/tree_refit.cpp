@@ -2,19 +2,61 @@
 #include <collido/obbtree/tree.h>
 
 namespace collido::obbtree {
+namespace {
 
-void ObbTree::refit(const Eigen::Ref<const Eigen::Matrix3Xd>& vertices) {
+// Marks the nodes whose triangles use a moved vertex: children come after their parent in
+// depth-first order, so a reverse sweep sees both children before their parent.
+template <typename NodeT>
+std::vector<char> dirtyNodes(const std::vector<NodeT>& nodes, const Eigen::Matrix3Xi& triangles,
+                             const std::vector<char>& moved) {
+  std::vector<char> dirty(nodes.size(), 0);
+  for (std::size_t i = nodes.size(); i-- > 0;) {
+    const NodeT& node = nodes[i];
+    if (node.isLeaf()) {
+      for (std::int32_t t = node.first; t < node.first + node.count && dirty[i] == 0; ++t) {
+        dirty[i] = moved[static_cast<std::size_t>(triangles(0, t))] |
+                   moved[static_cast<std::size_t>(triangles(1, t))] |
+                   moved[static_cast<std::size_t>(triangles(2, t))];
+      }
+    } else {
+      dirty[i] = dirty[i + 1] | dirty[static_cast<std::size_t>(node.second_child)];
+    }
+  }
+  return dirty;
+}
+
+}  // namespace
+
+RefitReport ObbTree::refit(const Eigen::Ref<const Eigen::Matrix3Xd>& vertices) {
   COLLIDO_ASSERT(vertices.cols() == vertices_.cols(), "refit needs the same vertex count");
+  RefitReport report;
+  std::vector<char> moved(static_cast<std::size_t>(vertices.cols()), 0);
+  for (Eigen::Index v = 0; v < vertices.cols(); ++v) {
+    if (vertices.col(v) != vertices_.col(v)) {
+      moved[static_cast<std::size_t>(v)] = 1;
+      ++report.moved_vertices;
+    }
+  }
+  if (report.moved_vertices == 0) return report;
   vertices_ = vertices;
-  // Children come after their parent in depth-first order, so a reverse sweep is bottom-up. Each
-  // box keeps its axes and is measured over its own triangles: exact extents, not a union of
-  // the children's boxes, which would grow with every level.
-  for (auto node = nodes_.rbegin(); node != nodes_.rend(); ++node) {
-    refitBoxExtents(node->box, vertices_, triangles_.middleCols(node->first, node->count));
-  }
-  for (auto node = compact_nodes_.rbegin(); node != compact_nodes_.rend(); ++node) {
-    refitCompactBox(node->box, vertices_, triangles_.middleCols(node->first, node->count));
-  }
+  // Bottom-up over the nodes holding a moved vertex only. Each box keeps its axes and is
+  // measured over its own triangles: exact extents, not a union of the children's boxes, which
+  // would grow with every level.
+  const auto refitDirty = [&](auto& nodes, auto&& measure) {
+    const std::vector<char> dirty = dirtyNodes(nodes, triangles_, moved);
+    for (std::size_t i = nodes.size(); i-- > 0;) {
+      if (dirty[i] == 0) continue;
+      measure(nodes[i].box, triangles_.middleCols(nodes[i].first, nodes[i].count));
+      ++report.nodes_refit;
+    }
+  };
+  refitDirty(nodes_, [&](OrientedBox& box, const auto& triangles) {
+    refitBoxExtents(box, vertices_, triangles);
+  });
+  refitDirty(compact_nodes_, [&](CompactBox& box, const auto& triangles) {
+    refitCompactBox(box, vertices_, triangles);
+  });
+  return report;
 }
 
 }  // namespace collido::obbtree

@@ -62,6 +62,10 @@ struct FrameRecord {
   /// kAllPairs: the floor, the median time of one exact triangle test per pair the oracle finds
   /// (runner/floor.h), measured beside the timed calls.
   std::optional<double> floor_us;
+  /// With deforming objects: the time of this frame's update() calls (movable nodes), one call
+  /// per deforming object, timed once (a repeated update with the same positions could be
+  /// cheaper than a real one). Switching active states selects a model and costs nothing.
+  std::optional<double> update_us;
   /// With a finest scene: whether the objects, meshed at the finest resolution, intersect.
   std::optional<bool> finest_intersecting;
   std::uint64_t bv_tests = 0;
@@ -108,7 +112,9 @@ struct QueryMeasurement {
   /// kAllPairs: the frames' median times summed over their floors summed (frames with a floor);
   /// 1 would be an answer that costs one exact triangle test per true pair and nothing else.
   std::optional<double> floor_ratio;
-  double build_ms = 0.0;                          ///< objects queried
+  /// With deforming objects: the median over frames of FrameRecord::update_us.
+  std::optional<double> update_median_us;
+  double build_ms = 0.0;                          ///< objects queried (every state's model)
   std::size_t triangles = 0;                      ///< objects queried
   std::size_t memory_bytes = 0;                   ///< objects queried, as the backend reports
   std::optional<std::size_t> heap_bytes;          ///< objects queried, measured around build

@@ -10,21 +10,49 @@
 #include <collido/mesh/mesh_report.h>
 #include <collido/mesh/triangle_mesh.h>
 #include <collido/query.h>
+#include <collido/scene/deformation.h>
 #include <collido/status.h>
 
 namespace collido {
 
-/// One object of a scene: a shape and its pose in every frame.
+/// One precomputed shape of an object with active states.
+struct ObjectState {
+  std::shared_ptr<const TriangleMesh> mesh;
+  MeshReport report;
+};
+
+/// One object of a scene: a shape and its pose in every frame. A deformable object also has
+/// active states (a few precomputed shapes, one active per frame) and movable nodes (a
+/// Deformation of the active state's vertices, frame by frame), or both.
 struct SceneObject {
   std::string name;
-  std::shared_ptr<const TriangleMesh> mesh;  ///< shared between objects using the same source
+  std::shared_ptr<const TriangleMesh> mesh;  ///< the rest shape (state 0); shared between
+                                             ///< objects using the same source
   MeshReport report;                         ///< where the mesh came from and what is in it
   std::vector<Pose> poses;                   ///< one per frame, or one for every frame
+  /// Active states: empty, or every state in order (states[0].mesh == mesh).
+  std::vector<ObjectState> states;
+  /// The active state per frame (indices into states); empty: state 0 throughout.
+  std::vector<std::size_t> schedule;
+  /// Movable nodes, applied to the active state's vertices; empty for none.
+  std::shared_ptr<const Deformation> deformation;
 
   /// The object's world pose in `frame`.
   const Pose& poseAt(std::size_t frame) const {
     return poses.size() == 1 ? poses[0] : poses[frame];
   }
+  /// Whether its shape changes between frames (states or movable nodes).
+  bool changesShape() const { return deformation != nullptr || states.size() > 1; }
+  std::size_t stateCount() const { return states.empty() ? 1 : states.size(); }
+  /// The state active in `frame`.
+  std::size_t stateAt(std::size_t frame) const { return schedule.empty() ? 0 : schedule[frame]; }
+  /// The rest shape of state `state`.
+  const std::shared_ptr<const TriangleMesh>& stateMesh(std::size_t state) const {
+    return states.empty() ? mesh : states[state].mesh;
+  }
+  /// The shape in `frame` (in the object's own frame): the active state's mesh, its vertices
+  /// moved by the deformation. The rest mesh itself when the object does not deform.
+  std::shared_ptr<const TriangleMesh> shapeAt(std::size_t frame) const;
 };
 
 /// One question asked in every frame: of two objects, or of a group of objects after a shared

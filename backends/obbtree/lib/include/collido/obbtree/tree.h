@@ -19,6 +19,12 @@ struct BuildOptions {
   bool float_boxes = false;
 };
 
+/// What a refit did.
+struct RefitReport {
+  std::size_t moved_vertices = 0;  ///< vertices whose position changed
+  std::size_t nodes_refit = 0;     ///< boxes measured anew (those holding a moved vertex)
+};
+
 /// One node of the flat tree. Depth-first order: the first child of node i is i + 1.
 struct Node {
   OrientedBox box;
@@ -68,9 +74,10 @@ class ObbTree {
   /// allowance for the boxes' axes not being exactly orthonormal).
   double axisDefect() const { return axis_defect_; }
 
-  /// Replaces the vertex positions (same count and order as at build) and refits every box
-  /// bottom-up, keeping its axes. The tree's shape is unchanged.
-  void refit(const Eigen::Ref<const Eigen::Matrix3Xd>& vertices);
+  /// Replaces the vertex positions (same count and order as at build) and refits, bottom-up,
+  /// every box holding a triangle with a moved vertex, keeping its axes; the other boxes are
+  /// untouched. The tree's shape is unchanged.
+  RefitReport refit(const Eigen::Ref<const Eigen::Matrix3Xd>& vertices);
 
   /// Checks the invariants: the structure (children partition their parent's range, every
   /// triangle in exactly one leaf) and that every triangle lies inside every ancestor box.

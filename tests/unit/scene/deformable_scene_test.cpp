@@ -1,0 +1,122 @@
+// Deformable scenes end to end: states and movable nodes load, change the shape frame by frame,
+// enter the oracle's fingerprint, and the OBB tree (updated every frame) answers exactly.
+#include <collido/scene/scene.h>
+
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include <collido/host/plugin_library.h>
+#include <collido/runner/runner.h>
+
+#include "support/test_paths.h"
+
+namespace collido {
+namespace {
+
+Scene load(const std::string& relative, double resolution = 1.0) {
+  SceneLoadOptions options;
+  options.resolution = resolution;
+  Result<Scene> scene = loadScene(test::sourcePath(relative), options);
+  EXPECT_TRUE(scene.ok()) << scene.status().message();
+  return scene.ok() ? std::move(scene).value() : Scene{};
+}
+
+// Two objects: "a" switches between a unit sphere (state 0) and a sphere of radius 0.1
+// (state 1); "b", a sphere at x = 1.5, meets only the large one.
+std::string statesScene(const std::string& schedule) {
+  return R"({"name": "states", "frames": 4, "objects": [
+    {"name": "a", "states": [
+       {"generator": "sphere", "radius": 1, "slices": 12, "stacks": 6},
+       {"generator": "sphere", "radius": 0.1, "slices": 12, "stacks": 6}])" +
+         schedule + R"(},
+    {"name": "b", "shape": {"generator": "sphere", "radius": 0.6, "slices": 12, "stacks": 6},
+     "pose": {"translation": [1.5, 0, 0]}}],
+   "queries": [{"name": "all", "a": "a", "b": "b", "kind": "all_pairs"},
+               {"name": "any", "a": "a", "b": "b", "kind": "boolean"}]})";
+}
+
+std::vector<std::size_t> scheduleOf(const std::string& schedule) {
+  Result<Scene> scene = parseScene(statesScene(schedule), "states.json", ".");
+  EXPECT_TRUE(scene.ok()) << scene.status().message();
+  return scene.ok() ? scene.value().objects[0].schedule : std::vector<std::size_t>{};
+}
+
+TEST(DeformableScene, SchedulesOfActiveStates) {
+  EXPECT_EQ(scheduleOf(""), (std::vector<std::size_t>{0, 0, 1, 1}));
+  EXPECT_EQ(scheduleOf(R"(, "schedule": [1, 0, 1, 1])"), (std::vector<std::size_t>{1, 0, 1, 1}));
+  EXPECT_EQ(scheduleOf(R"(, "schedule": {"hold": 1})"), (std::vector<std::size_t>{0, 1, 0, 1}));
+}
+
+TEST(DeformableScene, BundledScenesDeformEveryFrame) {
+  for (const char* name : {"scenes/deforming_tori.json", "scenes/squeezed_sphere.json"}) {
+    SCOPED_TRACE(name);
+    const Scene scene = load(name);
+    ASSERT_FALSE(scene.objects.empty());
+    const SceneObject& object = scene.objects[0];
+    ASSERT_TRUE(object.changesShape());
+    EXPECT_TRUE(scene.needsOf(0).deforms);
+    const auto first = object.shapeAt(1);
+    const auto second = object.shapeAt(2);
+    EXPECT_EQ(first->triangles, object.mesh->triangles);
+    EXPECT_NE(first->vertices, second->vertices);
+    EXPECT_EQ(object.shapeAt(1)->vertices, first->vertices);  // frames are pure functions
+  }
+}
+
+TEST(DeformableScene, TheFingerprintFollowsTheDeformation) {
+  Scene scene = load("scenes/squeezed_sphere.json", 0.25);
+  const std::string before = OracleCache(scene).fingerprint();
+  auto changed = std::make_shared<Deformation>(*scene.objects[0].deformation);
+  changed->rules[0].amount = 0.3;
+  scene.objects[0].deformation = changed;
+  EXPECT_NE(OracleCache(scene).fingerprint(), before);
+}
+
+RunReport runObbTree(const Scene& scene) {
+  Result<std::shared_ptr<PluginLibrary>> library =
+      PluginLibrary::open(test::pluginDirectory() + "/libcollido_plugin_obbtree.so");
+  EXPECT_TRUE(library.ok()) << library.status().message();
+  RunOptions options;
+  options.repetitions = 1;
+  return runScene(scene, BackendSpec{library.value(), "obbtree", {}}, options);
+}
+
+TEST(DeformableScene, ObbTreeIsExactOnEveryDeformedFrame) {
+  for (const char* name : {"scenes/deforming_tori.json", "scenes/squeezed_sphere.json"}) {
+    SCOPED_TRACE(name);
+    const RunReport report = runObbTree(load(name, 0.25));
+    ASSERT_FALSE(report.measurements.empty());
+    for (const QueryMeasurement& m : report.measurements) {
+      SCOPED_TRACE(m.query);
+      ASSERT_TRUE(m.ok()) << m.status;
+      EXPECT_EQ(m.disagreements, 0u);
+      ASSERT_TRUE(m.update_median_us.has_value());
+      std::size_t intersecting = 0;
+      for (const FrameRecord& f : m.frames) {
+        EXPECT_TRUE(f.update_us.has_value());
+        intersecting += f.oracle_intersecting ? 1 : 0;
+      }
+      EXPECT_GT(intersecting, 0u);  // the scenes are in contact
+    }
+  }
+}
+
+TEST(DeformableScene, SwitchingStatesSelectsTheStatesModel) {
+  Result<Scene> scene = parseScene(statesScene(R"(, "schedule": [0, 1, 1, 0])"), "s.json", ".");
+  ASSERT_TRUE(scene.ok()) << scene.status().message();
+  const RunReport report = runObbTree(scene.value());
+  for (const QueryMeasurement& m : report.measurements) {
+    ASSERT_TRUE(m.ok()) << m.status;
+    ASSERT_EQ(m.frames.size(), 4u);
+    EXPECT_EQ(m.disagreements, 0u);
+    EXPECT_TRUE(m.frames[0].oracle_intersecting);
+    EXPECT_FALSE(m.frames[1].oracle_intersecting);
+    EXPECT_FALSE(m.frames[2].reported_intersecting);
+    EXPECT_TRUE(m.frames[3].reported_intersecting);
+    EXPECT_FALSE(m.frames[0].update_us.has_value());  // states only: nothing to update
+  }
+}
+
+}  // namespace
+}  // namespace collido
