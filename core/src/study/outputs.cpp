@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include <collido/runner/text_table.h>
+#include <collido/study/deform_table.h>
 #include <collido/study/field_table.h>
 #include <collido/study/robustness.h>
 
@@ -72,6 +73,7 @@ std::string recordsJsonLines(const std::vector<CombinationResult>& results) {
             {"frame", f.frame},
             {"median_us", f.median_us},
             {"floor_us", optionalJson(f.floor_us)},
+            {"update_us", optionalJson(f.update_us)},
             {"oracle_intersecting", f.oracle_intersecting},
             {"reported_intersecting", f.reported_intersecting},
             {"finest_intersecting", optionalJson(f.finest_intersecting)},
@@ -138,6 +140,7 @@ std::string benchmarkJson(const std::vector<CombinationResult>& results) {
         entry["primitive_tests"] = perQuery(primitive, m.frames.size());
       }
       if (m.floor_ratio) entry["floor_ratio"] = *m.floor_ratio;
+      if (m.update_median_us) entry["update_median_us"] = *m.update_median_us;
       benchmarks.push_back(entry);
     }
   }
@@ -246,6 +249,10 @@ std::string studyTable(const std::vector<CombinationResult>& results) {
     out << "\nThe OBB tree against the field (single thread, exact answers; per scene and "
            "query):\n";
     out << field;
+  }
+  if (const std::string deforming = deformTable(results); !deforming.empty()) {
+    out << "\nDeforming scenes (update, then query, every frame):\n";
+    out << deforming;
   }
   if (const std::string robustness = robustnessText(robustnessMatrix(results));
       !robustness.empty()) {

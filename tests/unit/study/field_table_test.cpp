@@ -9,6 +9,7 @@
 #include <collido/runner/text_table.h>
 
 #include "study_test_data.h"
+#include "table_cells.h"
 
 namespace collido::study {
 namespace {
@@ -56,26 +57,9 @@ CombinationResult result(const std::string& backend, QueryMeasurement m,
   return r;
 }
 
-/// The table's single data row, split into cells on runs of two or more spaces.
+/// The table's first data row.
 std::vector<std::string> onlyRow(const std::string& table) {
-  std::vector<std::string> lines;
-  std::size_t start = 0;
-  for (std::size_t end; (end = table.find('\n', start)) != std::string::npos; start = end + 1)
-    lines.push_back(table.substr(start, end - start));
-  EXPECT_GE(lines.size(), 3u);  // header, rule, the row (then the legend)
-  std::vector<std::string> cells;
-  const std::string& row = lines.at(2);
-  std::size_t i = 0;
-  while (i < row.size()) {
-    while (i < row.size() && row[i] == ' ')
-      ++i;
-    std::size_t j = i;
-    while (j < row.size() && !(row[j] == ' ' && j + 1 < row.size() && row[j + 1] == ' '))
-      ++j;
-    if (j > i) cells.push_back(row.substr(i, j - i));
-    i = j;
-  }
-  return cells;
+  return testdata::cellsOfLine(table, 2);
 }
 
 TEST(FieldTable, FastestExactSingleThreadSettingAgainstEachFamilysFastest) {

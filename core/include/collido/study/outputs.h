@@ -21,7 +21,8 @@ std::string benchmarkJson(const std::vector<CombinationResult>& results);
 
 /// The table people read: per (combination, query) time quantiles, error, build and memory; then
 /// what building every need costs over the declared ones; then the OBB tree against the field
-/// (field_table.h); then, with stress scenes, the
+/// (field_table.h); then the deforming scenes' update and query costs (deform_table.h); then,
+/// with stress scenes, the
 /// robustness matrix's rates; then every failure.
 std::string studyTable(const std::vector<CombinationResult>& results);
 

@@ -1,0 +1,36 @@
+// "Deforming scenes": update and query costs per frame, only for measurements with updates.
+#include <collido/study/deform_table.h>
+
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "study_test_data.h"
+#include "table_cells.h"
+
+namespace collido::study {
+namespace {
+
+TEST(DeformTable, UpdateAndQueryPerFrame) {
+  CombinationResult r = testdata::okResult(testdata::combination("obbtree"));
+  QueryMeasurement& m = r.measurements[0];  // all pairs: frames at 10, 20 and 40 us
+  const double updates[3] = {5.0, 7.0, 30.0};
+  for (std::size_t i = 0; i < m.frames.size(); ++i)
+    m.frames[i].update_us = updates[i];
+  summariseMeasurement(m);
+  const std::string table = deformTable({r});
+  SCOPED_TRACE(table);
+  // Update median 7, mean 14; query median 20; update + query mean (15 + 27 + 70) / 3; one
+  // frame disagrees.
+  const std::vector<std::string> expected = {"obbtree", "tori", "all_pairs", "3", "7.0",
+                                             "14.0",    "20.0", "37.3",      "1"};
+  EXPECT_EQ(testdata::cellsOfLine(table, 2), expected);
+  EXPECT_EQ(table.find("boolean"), std::string::npos);  // no updates: not a deforming row
+}
+
+TEST(DeformTable, EmptyWithoutUpdates) {
+  EXPECT_EQ(deformTable({testdata::okResult(testdata::combination("obbtree"))}), "");
+}
+
+}  // namespace
+}  // namespace collido::study
