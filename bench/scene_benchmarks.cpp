@@ -1,6 +1,9 @@
 // Benchmark bodies written once, registered at run time per backend x scene x query.
 #include "scene_benchmarks.h"
 
+#include "bench_variant.h"
+#include "deform_benchmarks.h"
+
 #include <algorithm>
 #include <array>
 #include <filesystem>
@@ -24,13 +27,6 @@
 
 namespace collido::bench {
 namespace {
-
-struct Variant {
-  std::shared_ptr<PluginLibrary> library;
-  std::string name;
-  std::map<std::string, std::string> options;
-  std::string label;  // as in the study's tables: "variant" or "variant[key=value;...]"
-};
 
 std::vector<std::shared_ptr<PluginLibrary>> staticLibraries() {
   std::vector<std::shared_ptr<PluginLibrary>> out;
@@ -65,16 +61,6 @@ bool answers(const Variant& variant, QueryKind kind) {
   Result<std::unique_ptr<BackendInstance>> instance =
       BackendInstance::create(variant.library, variant.name, variant.options);
   return instance.ok() && instance.value()->capabilities().queries.contains(kind);
-}
-
-std::unique_ptr<BackendInstance> createOrSkip(const Variant& variant, benchmark::State& state) {
-  Result<std::unique_ptr<BackendInstance>> instance =
-      BackendInstance::create(variant.library, variant.name, variant.options);
-  if (!instance.ok()) {
-    state.SkipWithError(instance.status().message().c_str());
-    return nullptr;
-  }
-  return std::move(instance).value();
 }
 
 void buildBenchmark(benchmark::State& state, const Variant& variant,
@@ -187,8 +173,11 @@ void floorBenchmark(benchmark::State& state, const std::shared_ptr<const Scene>&
   for (std::size_t f = 0; f < scene->frames; ++f) {
     const SceneObject& a = scene->objects[query.a];
     const SceneObject& b = scene->objects[query.b];
-    const OracleAnswer answer = exactIntersectingPairs(*a.mesh, a.poseAt(f), *b.mesh, b.poseAt(f));
-    appendWorldPairs(*a.mesh, a.poseAt(f), *b.mesh, b.poseAt(f), answer.pairs, frames[f]);
+    const auto shape_a = a.shapeAt(f);
+    const auto shape_b = b.shapeAt(f);
+    const OracleAnswer answer =
+        exactIntersectingPairs(*shape_a, a.poseAt(f), *shape_b, b.poseAt(f));
+    appendWorldPairs(*shape_a, a.poseAt(f), *shape_b, b.poseAt(f), answer.pairs, frames[f]);
   }
   std::size_t frame = 0;
   double pairs = 0.0;
@@ -307,6 +296,9 @@ Result<int> registerSceneBenchmarks(const std::string& scenes_directory,
         ++registered;
       }
     }
+    const bool deforms = std::any_of(scene->objects.begin(), scene->objects.end(),
+                                     [](const SceneObject& o) { return o.changesShape(); });
+    registered += registerDeformBenchmarks(scene, variants);
     for (const Variant& variant : variants) {
       for (std::size_t object : distinct_meshes) {
         const std::string name =
@@ -319,7 +311,8 @@ Result<int> registerSceneBenchmarks(const std::string& scenes_directory,
             ->Unit(benchmark::kMicrosecond);
         registered += 2;
       }
-      for (std::size_t q = 0; q < scene->queries.size(); ++q) {
+      // A deforming scene's queries are measured with their updates (deform_benchmarks.h).
+      for (std::size_t q = 0; q < scene->queries.size() && !deforms; ++q) {
         const std::string name =
             "query/" + variant.label + "/" + scene->name + "/" + scene->queries[q].name;
         benchmark::RegisterBenchmark(name.c_str(), queryBenchmark, variant, scene, q)

@@ -38,11 +38,13 @@ class ObbTreeBackend final : public Backend {
   }
 
   Result<std::unique_ptr<BackendModel>> build(const MeshView& mesh,
-                                              const BuildNeeds& /*needs*/) override {
-    // Boolean and all-pairs queries use the same tree, and a refit needs nothing beyond the
-    // vertex copy every tree keeps, so the needs change nothing here.
+                                              const BuildNeeds& needs) override {
+    // Boolean and all-pairs queries use the same tree; a model that will deform keeps the
+    // vertex lists of a fast refit.
+    BuildOptions options = options_;
+    options.deformable = needs.deforms;
     return std::unique_ptr<BackendModel>(
-        std::make_unique<ObbTreeModel>(ObbTree::build(mesh.vertices, mesh.triangles, options_)));
+        std::make_unique<ObbTreeModel>(ObbTree::build(mesh.vertices, mesh.triangles, options)));
   }
 
   Status update(BackendModel& model, const Eigen::Ref<const Eigen::Matrix3Xd>& positions) override {

@@ -22,28 +22,47 @@ constexpr double kUnderflowGuard = 1e-290;
 // reasons about) contains every vertex exactly. The projections, the centre and the axes' own
 // deviation from orthonormality (axisDefect) each err by at most (axis defect + a few ulps)
 // times the magnitudes involved, |reference|_1 + |middle|_1 + |hi - lo|_1; the widening is 4
-// defects plus 64 ulps of that, plus kUnderflowGuard. `triangle(i)` gives the vertex indices of the
-// i-th of `count` triangles.
-template <typename TriangleAt>
+// defects plus 64 ulps of that, plus kUnderflowGuard. `for_each_vertex(visit)` calls visit(v) for
+// every vertex index v (repeats allowed); `axis_defect`, when >= 0, is a bound on the axes'
+// defect known ahead (else it is computed).
+template <typename ForEachVertex>
 void setExtents(OrientedBox& box, const Eigen::Vector3d& reference,
-                const Eigen::Ref<const Eigen::Matrix3Xd>& vertices, std::int32_t count,
-                TriangleAt&& triangle_at) {
+                const Eigen::Ref<const Eigen::Matrix3Xd>& vertices, ForEachVertex&& for_each_vertex,
+                double axis_defect = -1.0) {
   Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
   Eigen::Vector3d hi = -lo;
   const Eigen::Matrix3d axes_t = box.axes.transpose();
-  for (std::int32_t i = 0; i < count; ++i) {
-    const auto triangle = triangle_at(i);
-    for (int k = 0; k < 3; ++k) {
-      const Eigen::Vector3d u = axes_t * (vertices.col(triangle[k]) - reference);
-      lo = lo.cwiseMin(u);
-      hi = hi.cwiseMax(u);
-    }
-  }
+  for_each_vertex([&](Eigen::Index v) {
+    const Eigen::Vector3d u = axes_t * (vertices.col(v) - reference);
+    lo = lo.cwiseMin(u);
+    hi = hi.cwiseMax(u);
+  });
   const Eigen::Vector3d middle = 0.5 * (lo + hi);
   box.center = reference + box.axes * middle;
   const double scale = reference.lpNorm<1>() + middle.lpNorm<1>() + (hi - lo).lpNorm<1>();
-  box.half_extents = (0.5 * (hi - lo)).array() +
-                     (4.0 * axisDefect(box.axes) + 64.0 * kEpsilon) * scale + kUnderflowGuard;
+  const double defect = axis_defect >= 0.0 ? axis_defect : axisDefect(box.axes);
+  box.half_extents =
+      (0.5 * (hi - lo)).array() + (4.0 * defect + 64.0 * kEpsilon) * scale + kUnderflowGuard;
+}
+
+// Calls visit(v) for every corner of every triangle (a vertex shared by several, several times).
+auto cornersOf(const Eigen::Ref<const Eigen::Matrix3Xi>& triangles) {
+  return [&triangles](auto&& visit) {
+    for (Eigen::Index t = 0; t < triangles.cols(); ++t) {
+      for (int k = 0; k < 3; ++k)
+        visit(static_cast<Eigen::Index>(triangles(k, t)));
+    }
+  };
+}
+
+// Calls visit(v) for every vertex of a VertexSpan.
+auto verticesOf(const VertexSpan& span) {
+  return [&span](auto&& visit) {
+    for (const std::int32_t* v = span.first; v != span.last; ++v)
+      visit(static_cast<Eigen::Index>(*v));
+    for (const std::int32_t* v = span.extra_first; v != span.extra_last; ++v)
+      visit(static_cast<Eigen::Index>(*v));
+  };
 }
 
 }  // namespace
@@ -102,7 +121,12 @@ OrientedBox BoxFitter::fit(const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
     box.axes.col(1) = solver.eigenvectors().col(1).normalized();
     box.axes.col(2) = box.axes.col(0).cross(box.axes.col(1)).normalized();
   }
-  setExtents(box, mean, vertices, count, [&](std::int32_t i) { return triangles.col(order[i]); });
+  setExtents(box, mean, vertices, [&](auto&& visit) {
+    for (std::int32_t i = 0; i < count; ++i) {
+      for (int k = 0; k < 3; ++k)
+        visit(static_cast<Eigen::Index>(triangles(k, order[i])));
+    }
+  });
   // Order the axes by decreasing extent (the eigenvalue order is only a proxy for it), keeping
   // the frame right-handed, so that the longest axis is axis 0 for splitting. Swapping two
   // columns and negating the third are exact, so the box stays the very set it was measured as.
@@ -121,8 +145,14 @@ OrientedBox BoxFitter::fit(const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
 void refitBoxExtents(OrientedBox& box, const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
                      const Eigen::Ref<const Eigen::Matrix3Xi>& triangles) {
   const Eigen::Vector3d reference = vertices.col(triangles(0, 0));
-  setExtents(box, reference, vertices, static_cast<std::int32_t>(triangles.cols()),
-             [&](std::int32_t i) { return triangles.col(i); });
+  setExtents(box, reference, vertices, cornersOf(triangles));
+}
+
+void refitBoxExtents(OrientedBox& box, const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
+                     const VertexSpan& span, double axis_defect) {
+  const Eigen::Vector3d reference =
+      vertices.col(span.first != span.last ? *span.first : *span.extra_first);
+  setExtents(box, reference, vertices, verticesOf(span), axis_defect);
 }
 
 namespace {
@@ -135,23 +165,21 @@ float roundedUp(double value) {
 
 // Stores `center` (rounded to float) and the extents about it on the stored axes: the largest
 // projection of any vertex, widened as setExtents widens, rounded up to float.
+template <typename ForEachVertex>
 void measureCompact(CompactBox& box, const Eigen::Vector3d& center,
                     const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
-                    const Eigen::Ref<const Eigen::Matrix3Xi>& triangles) {
+                    ForEachVertex&& for_each_vertex, double axis_defect = -1.0) {
   for (int k = 0; k < 3; ++k)
     box.center[k] = static_cast<float>(center[k]);
   OrientedBox expanded = expandBox(box);
   const Eigen::Matrix3d axes_t = expanded.axes.transpose();
   Eigen::Vector3d reach = Eigen::Vector3d::Zero();
-  for (Eigen::Index t = 0; t < triangles.cols(); ++t) {
-    for (int k = 0; k < 3; ++k) {
-      reach =
-          reach.cwiseMax((axes_t * (vertices.col(triangles(k, t)) - expanded.center)).cwiseAbs());
-    }
-  }
+  for_each_vertex([&](Eigen::Index v) {
+    reach = reach.cwiseMax((axes_t * (vertices.col(v) - expanded.center)).cwiseAbs());
+  });
   const double scale = expanded.center.lpNorm<1>() + reach.lpNorm<1>();
-  const double widening =
-      (4.0 * axisDefect(expanded.axes) + 64.0 * kEpsilon) * scale + kUnderflowGuard;
+  const double defect = axis_defect >= 0.0 ? axis_defect : axisDefect(expanded.axes);
+  const double widening = (4.0 * defect + 64.0 * kEpsilon) * scale + kUnderflowGuard;
   for (int k = 0; k < 3; ++k)
     box.half_extents[k] = roundedUp(reach[k] + widening);
 }
@@ -177,7 +205,7 @@ CompactBox compactBox(const OrientedBox& box, const Eigen::Ref<const Eigen::Matr
   out.rotation[1] = static_cast<float>(q.x());
   out.rotation[2] = static_cast<float>(q.y());
   out.rotation[3] = static_cast<float>(q.z());
-  measureCompact(out, box.center, vertices, triangles);
+  measureCompact(out, box.center, vertices, cornersOf(triangles));
   return out;
 }
 
@@ -185,7 +213,14 @@ void refitCompactBox(CompactBox& box, const Eigen::Ref<const Eigen::Matrix3Xd>& 
                      const Eigen::Ref<const Eigen::Matrix3Xi>& triangles) {
   OrientedBox refitted = expandBox(box);
   refitBoxExtents(refitted, vertices, triangles);
-  measureCompact(box, refitted.center, vertices, triangles);
+  measureCompact(box, refitted.center, vertices, cornersOf(triangles));
+}
+
+void refitCompactBox(CompactBox& box, const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
+                     const VertexSpan& span, double axis_defect) {
+  OrientedBox refitted = expandBox(box);
+  refitBoxExtents(refitted, vertices, span, axis_defect);
+  measureCompact(box, refitted.center, vertices, verticesOf(span), axis_defect);
 }
 
 double axisDefect(const Eigen::Matrix3d& axes) {

@@ -103,6 +103,7 @@ ObbTree ObbTree::build(const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
     }
     std::vector<Node>().swap(tree.nodes_);
   }
+  if (options.deformable) tree.buildVertexSpans();
   // Refit keeps the axes, so this bound holds for the tree's whole life.
   for (const Node& node : tree.nodes_)
     tree.axis_defect_ = std::max(tree.axis_defect_, obbtree::axisDefect(node.box.axes));
@@ -111,11 +112,51 @@ ObbTree ObbTree::build(const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
   return tree;
 }
 
+void ObbTree::buildVertexSpans() {
+  const auto n = static_cast<std::int32_t>(triangles_.cols());
+  std::vector<std::int32_t> first_triangle(static_cast<std::size_t>(vertices_.cols()), -1);
+  refit_order_.clear();
+  first_use_.assign(static_cast<std::size_t>(n) + 1, 0);
+  for (std::int32_t k = 0; k < n; ++k) {
+    first_use_[static_cast<std::size_t>(k)] = static_cast<std::int32_t>(refit_order_.size());
+    for (int c = 0; c < 3; ++c) {
+      const std::int32_t v = triangles_(c, k);
+      if (first_triangle[static_cast<std::size_t>(v)] >= 0) continue;
+      first_triangle[static_cast<std::size_t>(v)] = k;
+      refit_order_.push_back(v);
+    }
+  }
+  first_use_[static_cast<std::size_t>(n)] = static_cast<std::int32_t>(refit_order_.size());
+  // A node's vertices first used before its triangles: found once per node with a stamp.
+  const std::size_t node_count = nodeCount();
+  extra_begin_.assign(node_count + 1, 0);
+  refit_extra_.clear();
+  std::vector<std::size_t> stamp(static_cast<std::size_t>(vertices_.cols()), 0);
+  for (std::size_t i = 0; i < node_count; ++i) {
+    extra_begin_[i] = static_cast<std::int32_t>(refit_extra_.size());
+    const std::int32_t first = float_boxes_ ? compact_nodes_[i].first : nodes_[i].first;
+    const std::int32_t count = float_boxes_ ? compact_nodes_[i].count : nodes_[i].count;
+    for (std::int32_t k = first; k < first + count; ++k) {
+      for (int c = 0; c < 3; ++c) {
+        const auto v = static_cast<std::size_t>(triangles_(c, k));
+        if (first_triangle[v] >= first || stamp[v] == i + 1) continue;
+        stamp[v] = i + 1;
+        refit_extra_.push_back(static_cast<std::int32_t>(v));
+      }
+    }
+  }
+  extra_begin_[node_count] = static_cast<std::int32_t>(refit_extra_.size());
+  refit_order_.shrink_to_fit();
+  refit_extra_.shrink_to_fit();
+}
+
 std::size_t ObbTree::memoryBytes() const {
   return nodes_.capacity() * sizeof(Node) + compact_nodes_.capacity() * sizeof(CompactNode) +
          static_cast<std::size_t>(vertices_.size()) * sizeof(double) +
          static_cast<std::size_t>(triangles_.size()) * sizeof(int) +
-         ids_.capacity() * sizeof(std::int32_t);
+         (ids_.capacity() + refit_order_.capacity() + first_use_.capacity() +
+          extra_begin_.capacity() + refit_extra_.capacity()) *
+             sizeof(std::int32_t);
 }
 
 }  // namespace collido::obbtree

@@ -341,9 +341,12 @@ TEST(ObbTreeRefit, KeepsShapeAndAxesAndContainsMovedTriangles) {
   }
   cases.push_back({NamedMesh{"bunny", bunny()}, 16});
   for (const auto& [m, max_leaf] : cases) {
-    {
-      const std::string label = m.name + ", max_leaf " + std::to_string(max_leaf);
-      ObbTree tree = ObbTree::build(m.mesh.vertices, m.mesh.triangles, {max_leaf});
+    // Refit over triangle corners, and over the vertex spans a deformable tree keeps.
+    for (const bool deformable : {false, true}) {
+      const std::string label =
+          m.name + ", max_leaf " + std::to_string(max_leaf) + (deformable ? ", deformable" : "");
+      ObbTree tree =
+          ObbTree::build(m.mesh.vertices, m.mesh.triangles, {max_leaf, false, deformable});
       const std::vector<Node> before = tree.nodes();
       const int depth = tree.depth();
 
@@ -394,6 +397,44 @@ TEST(ObbTreeRefit, KeepsShapeAndAxesAndContainsMovedTriangles) {
       }
       if (HasFatalFailure()) return;
     }
+  }
+}
+
+// Only the boxes holding a moved vertex are measured anew; the others stay as they were, and a
+// refit to the same positions does nothing.
+TEST(ObbTreeRefit, OnlyBoxesWithMovedVerticesAreRefit) {
+  const TriangleMesh& mesh = bunny();
+  for (const bool float_boxes : {false, true}) {
+    ObbTree tree = ObbTree::build(mesh.vertices, mesh.triangles, {4, float_boxes, true});
+    EXPECT_EQ(tree.refit(mesh.vertices).moved_vertices, 0u);
+    Eigen::Matrix3Xd moved = mesh.vertices;
+    moved.col(0) += Eigen::Vector3d(0.01, 0.02, -0.01);  // one vertex of a few triangles
+    const std::vector<CompactNode> compact_before = tree.compactNodes();
+    const std::vector<Node> before = tree.nodes();
+    const RefitReport report = tree.refit(moved);
+    EXPECT_EQ(report.moved_vertices, 1u);
+    EXPECT_GT(report.nodes_refit, 0u);
+    EXPECT_LT(report.nodes_refit, 4u * static_cast<std::size_t>(tree.depth() + 1));
+    EXPECT_EQ(tree.validate(), "");
+    std::size_t changed = 0;
+    for (std::size_t i = 0; i < tree.nodeCount(); ++i) {
+      if (float_boxes) {
+        const CompactBox& now = tree.compactNodes()[i].box;
+        const CompactBox& then = compact_before[i].box;
+        bool same = true;
+        for (int k = 0; k < 3; ++k) {
+          same = same && now.center[k] == then.center[k] &&
+                 now.half_extents[k] == then.half_extents[k];
+        }
+        changed += same ? 0 : 1;
+      } else {
+        changed += tree.nodes()[i].box.half_extents != before[i].box.half_extents ||
+                           tree.nodes()[i].box.center != before[i].box.center
+                       ? 1
+                       : 0;
+      }
+    }
+    EXPECT_LE(changed, report.nodes_refit);
   }
 }
 

@@ -46,6 +46,21 @@ OrientedBox fitBox(const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
 void refitBoxExtents(OrientedBox& box, const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
                      const Eigen::Ref<const Eigen::Matrix3Xi>& triangles);
 
+/// The vertices of a set of triangles, each once: indices [first, last) then [extra_first,
+/// extra_last); at least one in all.
+struct VertexSpan {
+  const std::int32_t* first = nullptr;
+  const std::int32_t* last = nullptr;
+  const std::int32_t* extra_first = nullptr;
+  const std::int32_t* extra_last = nullptr;
+};
+
+/// refitBoxExtents over the triangles whose vertices `span` lists: the same box (up to the
+/// rounding of another reference point), each vertex projected once; `axis_defect` is a bound
+/// on axisDefect(box.axes) known ahead (a refit keeps the axes), saving its computation.
+void refitBoxExtents(OrientedBox& box, const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
+                     const VertexSpan& span, double axis_defect);
+
 /// An oriented box stored in single precision: 40 bytes instead of 120. The axes are a unit
 /// quaternion (w, x, y, z), decoded in double by expandBox; the half extents were measured on
 /// the decoded axes about the stored centre when the box was made (compactBox), widened as a
@@ -69,6 +84,11 @@ CompactBox compactBox(const OrientedBox& box, const Eigen::Ref<const Eigen::Matr
 /// recomputes centre and extents over all columns of `triangles`.
 void refitCompactBox(CompactBox& box, const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
                      const Eigen::Ref<const Eigen::Matrix3Xi>& triangles);
+
+/// refitCompactBox over the vertices `span` lists, with a known bound on the decoded axes'
+/// defect (see refitBoxExtents).
+void refitCompactBox(CompactBox& box, const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
+                     const VertexSpan& span, double axis_defect);
 
 /// A bound on how far `axes` is from the nearest orthonormal matrix Q (the spectral norm of
 /// axes - Q): 3 max|axes^T axes - I| plus the rounding of that product. The box a query reasons

@@ -17,6 +17,10 @@ struct BuildOptions {
   /// Store the boxes in single precision (CompactBox: 52 instead of 136 bytes a node), still
   /// containing every triangle they bound; the tree's shape is the same as with double boxes.
   bool float_boxes = false;
+  /// The model will be refit (update() with moved vertices): keep, per node, the list of its
+  /// distinct vertices (in a compact form: about 10 bytes per triangle), so that a refit
+  /// projects each vertex once per level instead of once per triangle corner.
+  bool deformable = false;
 };
 
 /// What a refit did.
@@ -91,9 +95,20 @@ class ObbTree {
   std::vector<Node> nodes_;
   std::vector<CompactNode> compact_nodes_;
   bool float_boxes_ = false;
+
+  void buildVertexSpans();
+  VertexSpan vertexSpan(std::size_t node, std::int32_t first, std::int32_t count) const;
   Eigen::Matrix3Xd vertices_;
   Eigen::Matrix3Xi triangles_;
   std::vector<std::int32_t> ids_;
+  // With BuildOptions::deformable: every vertex in the order the leaf-ordered triangles first
+  // use it; the triangles at positions [a, b) first use refit_order_[first_use_[a] ..
+  // first_use_[b]), and node i also uses the earlier-seen vertices refit_extra_[extra_begin_[i]
+  // .. extra_begin_[i + 1]).
+  std::vector<std::int32_t> refit_order_;
+  std::vector<std::int32_t> first_use_;
+  std::vector<std::int32_t> extra_begin_;
+  std::vector<std::int32_t> refit_extra_;
   int depth_ = 0;
   double axis_defect_ = 0.0;
 };

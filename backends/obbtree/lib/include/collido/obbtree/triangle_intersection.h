@@ -14,13 +14,14 @@ struct UncertainPoint {
   Eigen::Vector3d error = Eigen::Vector3d::Zero();
 };
 
-/// exact::trianglesIntersect (collido/oracle/double_triangle_test.h) for the exact corners that the uncertain ones stand for, decided in double
-/// precision with certified error bounds: the answer when no exact corners within the radii, and
-/// no rounding, can change it; std::nullopt when one might (touching, coplanar, degenerate or
-/// nearly so, with inexact corners), and the caller must decide exactly
-/// (posedTrianglesIntersect). A sign whose inputs are all exact is decided by exact predicates
-/// when the filter cannot, and a sign that is zero for every point within the radii (e.g. exact
-/// equal coordinates) is certified as zero, so exactly placed contacts are answered here too.
+/// exact::trianglesIntersect (collido/oracle/double_triangle_test.h) for the exact corners that the
+/// uncertain ones stand for, decided in double precision with certified error bounds: the answer
+/// when no exact corners within the radii, and no rounding, can change it; std::nullopt when one
+/// might (touching, coplanar, degenerate or nearly so, with inexact corners), and the caller must
+/// decide exactly (posedTrianglesIntersect). A sign whose inputs are all exact is decided by exact
+/// predicates when the filter cannot, and a sign that is zero for every point within the radii
+/// (e.g. exact equal coordinates) is certified as zero, so exactly placed contacts are answered
+/// here too.
 std::optional<bool> trianglesIntersectCertified(const UncertainPoint& p1, const UncertainPoint& q1,
                                                 const UncertainPoint& r1, const UncertainPoint& p2,
                                                 const UncertainPoint& q2, const UncertainPoint& r2);
