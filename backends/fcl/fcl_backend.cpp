@@ -34,22 +34,20 @@ class FclModel : public BackendModel {
 template <typename BV>
 class TypedModel final : public FclModel {
  public:
-  explicit TypedModel(const MeshView& mesh) : model_(std::make_shared<fcl::BVHModel<BV>>()) {
+  TypedModel(const MeshView& mesh, bool rebuild_on_update) : rebuild_on_update_(rebuild_on_update) {
     std::vector<fcl::Vector3d> points(static_cast<std::size_t>(mesh.vertices.cols()));
     for (std::size_t i = 0; i < points.size(); ++i) {
       points[i] = mesh.vertices.col(static_cast<Eigen::Index>(i));
     }
-    std::vector<fcl::Triangle> triangles(static_cast<std::size_t>(mesh.triangles.cols()));
-    for (std::size_t t = 0; t < triangles.size(); ++t) {
+    triangles_.resize(static_cast<std::size_t>(mesh.triangles.cols()));
+    for (std::size_t t = 0; t < triangles_.size(); ++t) {
       const auto c = mesh.triangles.col(static_cast<Eigen::Index>(t));
-      triangles[t] = fcl::Triangle(static_cast<std::size_t>(c[0]), static_cast<std::size_t>(c[1]),
-                                   static_cast<std::size_t>(c[2]));
+      triangles_[t] = fcl::Triangle(static_cast<std::size_t>(c[0]), static_cast<std::size_t>(c[1]),
+                                    static_cast<std::size_t>(c[2]));
     }
-    check(model_->beginModel(static_cast<int>(triangles.size()), static_cast<int>(points.size())),
-          "beginModel");
-    check(model_->addSubModel(points, triangles), "addSubModel");
-    check(model_->endModel(), "endModel");
-    model_->computeLocalAABB();
+    buildFrom(points);
+    // The triangles are kept only to rebuild from; a refit reuses FCL's own copy.
+    if (!rebuild_on_update_) std::vector<fcl::Triangle>().swap(triangles_);
   }
 
   const fcl::CollisionGeometryd& geometry() const override { return *model_; }
@@ -60,6 +58,10 @@ class TypedModel final : public FclModel {
     std::vector<fcl::Vector3d> points(static_cast<std::size_t>(positions.cols()));
     for (std::size_t i = 0; i < points.size(); ++i) {
       points[i] = positions.col(static_cast<Eigen::Index>(i));
+    }
+    if (rebuild_on_update_) {
+      buildFrom(points);
+      return;
     }
     check(model_->beginUpdateModel(), "beginUpdateModel");
     check(model_->updateSubModel(points), "updateSubModel");
@@ -86,23 +88,36 @@ class TypedModel final : public FclModel {
     }
   }
 
+  // A new tree over `points` and the kept triangles (at build, and for every rebuild).
+  void buildFrom(const std::vector<fcl::Vector3d>& points) {
+    auto model = std::make_shared<fcl::BVHModel<BV>>();
+    check(model->beginModel(static_cast<int>(triangles_.size()), static_cast<int>(points.size())),
+          "beginModel");
+    check(model->addSubModel(points, triangles_), "addSubModel");
+    check(model->endModel(), "endModel");
+    model->computeLocalAABB();
+    model_ = std::move(model);
+  }
+
+  bool rebuild_on_update_ = false;
+  std::vector<fcl::Triangle> triangles_;
   std::shared_ptr<fcl::BVHModel<BV>> model_;
 };
 
 enum class BoxType { kObb, kObbRss, kKios, kRss, kAabb };
 
-std::unique_ptr<FclModel> makeModel(BoxType type, const MeshView& mesh) {
+std::unique_ptr<FclModel> makeModel(BoxType type, const MeshView& mesh, bool rebuild) {
   switch (type) {
     case BoxType::kObb:
-      return std::make_unique<TypedModel<fcl::OBBd>>(mesh);
+      return std::make_unique<TypedModel<fcl::OBBd>>(mesh, rebuild);
     case BoxType::kObbRss:
-      return std::make_unique<TypedModel<fcl::OBBRSSd>>(mesh);
+      return std::make_unique<TypedModel<fcl::OBBRSSd>>(mesh, rebuild);
     case BoxType::kKios:
-      return std::make_unique<TypedModel<fcl::kIOSd>>(mesh);
+      return std::make_unique<TypedModel<fcl::kIOSd>>(mesh, rebuild);
     case BoxType::kRss:
-      return std::make_unique<TypedModel<fcl::RSSd>>(mesh);
+      return std::make_unique<TypedModel<fcl::RSSd>>(mesh, rebuild);
     case BoxType::kAabb:
-      return std::make_unique<TypedModel<fcl::AABBd>>(mesh);
+      return std::make_unique<TypedModel<fcl::AABBd>>(mesh, rebuild);
   }
   return nullptr;
 }
@@ -116,7 +131,7 @@ Transform toTransform(const Pose& pose) {
 
 class FclBackend final : public Backend {
  public:
-  explicit FclBackend(BoxType type) : type_(type) {}
+  FclBackend(BoxType type, bool rebuild) : type_(type), rebuild_(rebuild) {}
 
   Capabilities capabilities() const override {
     Capabilities caps;
@@ -132,7 +147,7 @@ class FclBackend final : public Backend {
 
   Result<std::unique_ptr<BackendModel>> build(const MeshView& mesh,
                                               const BuildNeeds& /*needs*/) override {
-    return std::unique_ptr<BackendModel>(makeModel(type_, mesh));
+    return std::unique_ptr<BackendModel>(makeModel(type_, mesh, rebuild_));
   }
 
   Status update(BackendModel& model, const Eigen::Ref<const Eigen::Matrix3Xd>& positions) override {
@@ -195,6 +210,7 @@ class FclBackend final : public Backend {
 
  private:
   BoxType type_;
+  bool rebuild_ = false;
   fcl::CollisionResultd fcl_result_;
   std::vector<fcl::Contactd> contacts_;
 };
@@ -210,9 +226,14 @@ constexpr VariantSpec kVariants[] = {{"fcl:obb", BoxType::kObb},
                                      {"fcl:rss", BoxType::kRss},
                                      {"fcl:aabb", BoxType::kAabb}};
 
-Result<std::unique_ptr<Backend>> create(const std::string& variant, BackendOptions& /*options*/) {
+Result<std::unique_ptr<Backend>> create(const std::string& variant, BackendOptions& options) {
+  // rebuild=true: update() builds a new tree over the moved vertices instead of FCL's refit
+  // (beginUpdateModel / updateSubModel / endUpdateModel, bottom-up).
+  const Result<bool> rebuild = options.getBool("rebuild", false);
+  if (!rebuild.ok()) return rebuild.status();
   for (const VariantSpec& v : kVariants) {
-    if (variant == v.name) return std::unique_ptr<Backend>(std::make_unique<FclBackend>(v.type));
+    if (variant == v.name)
+      return std::unique_ptr<Backend>(std::make_unique<FclBackend>(v.type, rebuild.value()));
   }
   return Status(StatusCode::kInvalidArgument, "fcl has no variant '" + variant + "'");
 }
