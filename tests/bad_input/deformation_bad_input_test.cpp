@@ -135,6 +135,29 @@ TEST(DeformationBadInput, DeformationBeyondTheCoordinateLimit) {
   EXPECT_TRUE(rejected(parse(scene), {"/objects/0/deform:", "frame", "coordinate limit"}));
 }
 
+TEST(DeformationBadInput, DrapeOntoAnObjectDefinedLater) {
+  Json scene = validScene();
+  scene["objects"][0]["deform"]["rules"][0] = {{"drape", {{"onto", "b"}, {"drop", 1}}}};
+  EXPECT_TRUE(rejected(parse(scene), {"/objects/0/deform/rules/0/drape/onto:",
+                                      "'b' is not an object defined before this one"}));
+}
+
+TEST(DeformationBadInput, DrapeOfAnObjectWithStates) {
+  Json scene = validScene();
+  scene["objects"][1]["deform"] = {{"rules", {{{"drape", {{"onto", "a"}, {"drop", 1}}}}}}};
+  EXPECT_TRUE(rejected(parse(scene), {"/objects/1/deform/rules/0/drape:", "one shape"}));
+}
+
+TEST(DeformationBadInput, DrapeWithNegativePenetration) {
+  Json scene = validScene();
+  scene["objects"][1].erase("states");
+  scene["objects"][1].erase("schedule");
+  scene["objects"][1]["shape"] = scene["objects"][0]["shape"];
+  scene["objects"][1]["deform"] = {
+      {"rules", {{{"drape", {{"onto", "a"}, {"drop", 1}, {"penetration", -0.1}}}}}}};
+  EXPECT_TRUE(rejected(parse(scene), {"/objects/1/deform/rules/0/drape/penetration:", ">= 0"}));
+}
+
 TEST(DeformationBadInput, MissingRecording) {
   Json scene = validScene();
   scene["objects"][0]["deform"] = {{"recorded", "no_such.pos"}};

@@ -129,6 +129,14 @@ void applyRule(const DeformationRule& rule, const TriangleMesh& rest, std::size_
       each([&](Eigen::Index, const Eigen::Vector3d& p) { return bent(rule, theta, d, p); });
       break;
     }
+    case DeformationRule::Kind::kDrape: {
+      const double fallen = rule.amplitude * factor;
+      each([&](Eigen::Index v, const Eigen::Vector3d& p) {
+        const double stop = (*rule.stops)[static_cast<std::size_t>(v)] + rule.penetration;
+        return Eigen::Vector3d(p + std::min(fallen, stop) * rule.direction);
+      });
+      break;
+    }
     case DeformationRule::Kind::kSquash: {
       const double along = 1.0 - rule.amount * factor;
       const double side = 1.0 / std::sqrt(along);

@@ -3,6 +3,8 @@
 #include <filesystem>
 #include <map>
 
+#include "drop_distance.h"
+
 namespace collido::scene_reading {
 namespace {
 
@@ -32,15 +34,17 @@ DeformationTiming readTiming(const Reader& r, const Node& node) {
   return timing;
 }
 
-using RuleReader = void (*)(const Reader&, const Node&, DeformationRule&);
+using RuleReader = void (*)(const Reader&, const Node&, const DeformContext&, DeformationRule&);
 
-void readNoise(const Reader& r, const Node& n, DeformationRule& rule) {
+void readNoise(const Reader& r, const Node& n, const DeformContext& /*context*/,
+               DeformationRule& rule) {
   r.expectObject(n, {"amplitude", "period", "phase", "seed"});
   rule.amplitude = r.number(n, "amplitude", 0.0);
   rule.seed = static_cast<std::uint64_t>(r.integer(n, "seed", 1, 0, INT64_MAX));
 }
 
-void readWave(const Reader& r, const Node& n, DeformationRule& rule) {
+void readWave(const Reader& r, const Node& n, const DeformContext& /*context*/,
+              DeformationRule& rule) {
   r.expectObject(n, {"amplitude", "wavelength", "period", "phase", "along", "direction", "origin"});
   rule.amplitude = r.number(n, "amplitude", 0.0);
   rule.wavelength = r.positive(n, "wavelength", 1.0);
@@ -49,7 +53,8 @@ void readWave(const Reader& r, const Node& n, DeformationRule& rule) {
   if (n.has("origin")) rule.origin = r.vector3(n.at("origin"));
 }
 
-void readTwist(const Reader& r, const Node& n, DeformationRule& rule) {
+void readTwist(const Reader& r, const Node& n, const DeformContext& /*context*/,
+               DeformationRule& rule) {
   r.expectObject(n, {"angle_deg", "length", "axis", "origin", "period", "phase", "ramp"});
   rule.angle = r.number(n, "angle_deg", 0.0) * kDegrees;
   rule.length = r.positive(n, "length", 1.0);
@@ -57,12 +62,14 @@ void readTwist(const Reader& r, const Node& n, DeformationRule& rule) {
   if (n.has("origin")) rule.origin = r.vector3(n.at("origin"));
 }
 
-void readPulsate(const Reader& r, const Node& n, DeformationRule& rule) {
+void readPulsate(const Reader& r, const Node& n, const DeformContext& /*context*/,
+                 DeformationRule& rule) {
   r.expectObject(n, {"amplitude", "period", "phase", "ramp"});
   rule.amplitude = r.number(n, "amplitude", 0.0);
 }
 
-void readBend(const Reader& r, const Node& n, DeformationRule& rule) {
+void readBend(const Reader& r, const Node& n, const DeformContext& /*context*/,
+              DeformationRule& rule) {
   r.expectObject(n,
                  {"angle_deg", "length", "axis", "direction", "origin", "period", "phase", "ramp"});
   rule.angle = r.number(n, "angle_deg", 0.0) * kDegrees;
@@ -76,13 +83,38 @@ void readBend(const Reader& r, const Node& n, DeformationRule& rule) {
   if (n.has("origin")) rule.origin = r.vector3(n.at("origin"));
 }
 
-void readSquash(const Reader& r, const Node& n, DeformationRule& rule) {
+void readSquash(const Reader& r, const Node& n, const DeformContext& /*context*/,
+                DeformationRule& rule) {
   r.expectObject(n, {"amount", "axis", "origin", "period", "phase", "ramp"});
   rule.amount = r.number(n, "amount", 0.0);
   if (!(rule.amount >= 0.0 && rule.amount < 1.0))
     r.fail(n.has("amount") ? n.at("amount") : n, "amount must be in [0, 1)");
   rule.axis = unitVector(r, n, "axis", Eigen::Vector3d::UnitZ());
   if (n.has("origin")) rule.origin = r.vector3(n.at("origin"));
+}
+
+// A sheet settling onto an earlier object: each vertex's stop distance is cast in the world at
+// frame 0 (both objects' first poses and shapes).
+void readDrape(const Reader& r, const Node& n, const DeformContext& context,
+               DeformationRule& rule) {
+  r.expectObject(n, {"onto", "direction", "drop", "penetration", "period", "phase", "ramp"});
+  const SceneObject& object = *context.object;
+  if (object.states.size() > 1)
+    r.fail(n, "a drape moves an object with one shape (its stop distances are per vertex)");
+  if (!n.has("onto")) r.fail(n, "missing 'onto' (the object it settles onto)");
+  const std::string name = r.string(n.at("onto"));
+  const SceneObject* target = context.earlier ? context.earlier(name) : nullptr;
+  if (target == nullptr)
+    r.fail(n.at("onto"), "'" + name + "' is not an object defined before this one");
+  const Eigen::Vector3d world_direction = unitVector(r, n, "direction", -Eigen::Vector3d::UnitZ());
+  rule.amplitude = r.positive(n, "drop", 1.0);
+  rule.penetration = r.number(n, "penetration", 0.0);
+  if (rule.penetration < 0.0) r.fail(n.at("penetration"), "penetration must be >= 0");
+  const Pose& pose = object.poseAt(0);
+  const Eigen::Matrix3Xd world = pose * object.mesh->vertices;
+  rule.stops = std::make_shared<const std::vector<double>>(
+      dropDistances(world, world_direction, *target->shapeAt(0), target->poseAt(0)));
+  rule.direction = pose.linear().transpose() * world_direction;
 }
 
 const std::map<std::string, std::pair<DeformationRule::Kind, RuleReader>>& ruleReaders() {
@@ -92,11 +124,13 @@ const std::map<std::string, std::pair<DeformationRule::Kind, RuleReader>>& ruleR
       {"twist", {DeformationRule::Kind::kTwist, &readTwist}},
       {"pulsate", {DeformationRule::Kind::kPulsate, &readPulsate}},
       {"bend", {DeformationRule::Kind::kBend, &readBend}},
-      {"squash", {DeformationRule::Kind::kSquash, &readSquash}}};
+      {"squash", {DeformationRule::Kind::kSquash, &readSquash}},
+      {"drape", {DeformationRule::Kind::kDrape, &readDrape}}};
   return table;
 }
 
-DeformationRule readRule(const Reader& r, const Node& node, std::size_t frames) {
+DeformationRule readRule(const Reader& r, const Node& node, std::size_t frames,
+                         const DeformContext& context) {
   if (!node.value.is_object() || node.value.size() - (node.has("comment") ? 1 : 0) != 1) {
     r.fail(node,
            "a rule is an object with one key, its kind (noise, wave, twist, pulsate, "
@@ -108,12 +142,13 @@ DeformationRule readRule(const Reader& r, const Node& node, std::size_t frames) 
   }
   const auto found = ruleReaders().find(kind);
   if (found == ruleReaders().end()) {
-    r.fail(node, "unknown rule '" + kind + "' (known: noise, wave, twist, pulsate, bend, squash)");
+    r.fail(node,
+           "unknown rule '" + kind + "' (known: noise, wave, twist, pulsate, bend, squash, drape)");
   }
   const Node body = node.at(kind);
   DeformationRule rule;
   rule.kind = found->second.first;
-  found->second.second(r, body, rule);
+  found->second.second(r, body, context, rule);
   rule.timing = readTiming(r, body);
   if (rule.timing.period < 0.0) rule.timing.period = static_cast<double>(frames);
   return rule;
@@ -123,7 +158,8 @@ DeformationRule readRule(const Reader& r, const Node& node, std::size_t frames) 
 
 std::shared_ptr<const Deformation> readDeformation(const Reader& r, const Node& node,
                                                    const std::string& base_directory,
-                                                   std::size_t frames) {
+                                                   std::size_t frames,
+                                                   const DeformContext& context) {
   r.expectObject(node, {"rules", "recorded", "select"});
   auto deformation = std::make_shared<Deformation>();
   deformation->frames = frames;
@@ -151,10 +187,15 @@ std::shared_ptr<const Deformation> readDeformation(const Reader& r, const Node& 
     const Node rules = node.at("rules");
     r.expectArray(rules);
     for (std::size_t i = 0; i < rules.value.size(); ++i)
-      deformation->rules.push_back(readRule(r, rules.at(i), frames));
+      deformation->rules.push_back(readRule(r, rules.at(i), frames, context));
   }
   if (deformation->rules.empty() && !deformation->recorded)
     r.fail(node, "a deformation needs 'rules' or a 'recorded' file");
+  const bool drapes = std::any_of(
+      deformation->rules.begin(), deformation->rules.end(),
+      [](const DeformationRule& rule) { return rule.kind == DeformationRule::Kind::kDrape; });
+  if (drapes && deformation->recorded)
+    r.fail(node, "a drape falls from the rest shape: it does not combine with 'recorded'");
   return deformation;
 }
 

@@ -531,11 +531,9 @@ void readStress(const Reader& r, const Node& root, const std::string& base_direc
 
 // --- the scene -------------------------------------------------------------------------------
 
-// The object's shape: one ("shape"), or active states ("states", with a "schedule"), and the
-// movable nodes ("deform"). Every deformed frame is computed once here, so a scene that loads
-// holds finite shapes within the coordinate limit in every frame.
-void readShapes(const Reader& r, const Node& node, const std::string& base_directory,
-                std::size_t frames, ShapeLoader& shapes, SceneObject& object) {
+// The object's shape: one ("shape"), or active states ("states", with a "schedule").
+void readShapes(const Reader& r, const Node& node, std::size_t frames, ShapeLoader& shapes,
+                SceneObject& object) {
   if (!node.has("shape") && !node.has("states"))
     r.fail(node, "missing 'shape' (or 'states', a list of shapes)");
   if (node.has("shape") && node.has("states"))
@@ -559,9 +557,24 @@ void readShapes(const Reader& r, const Node& node, const std::string& base_direc
     object.schedule = scene_reading::readSchedule(r, node.has("schedule") ? &schedule : nullptr,
                                                   object.states.size(), frames);
   }
+}
+
+// The object's movable nodes ("deform"), read once its shapes and poses are: a drape casts from
+// its first pose onto an earlier object. Every deformed frame is computed once here, so a scene
+// that loads holds finite shapes within the coordinate limit in every frame.
+void readDeform(const Reader& r, const Node& node, const std::string& base_directory,
+                const Scene& scene, const std::map<std::string, std::size_t>& index_of,
+                SceneObject& object) {
   if (!node.has("deform")) return;
   const Node deform = node.at("deform");
-  object.deformation = scene_reading::readDeformation(r, deform, base_directory, frames);
+  scene_reading::DeformContext context;
+  context.object = &object;
+  context.earlier = [&](const std::string& name) -> const SceneObject* {
+    const auto found = index_of.find(name);
+    return found == index_of.end() ? nullptr : &scene.objects[found->second];
+  };
+  object.deformation =
+      scene_reading::readDeformation(r, deform, base_directory, scene.frames, context);
   for (std::size_t state = 0; state < object.stateCount(); ++state) {
     const std::size_t vertices = object.stateMesh(state)->vertexCount();
     if (object.deformation->recorded && object.deformation->recorded->vertices != vertices) {
@@ -571,7 +584,7 @@ void readShapes(const Reader& r, const Node& node, const std::string& base_direc
                                         std::to_string(vertices));
     }
   }
-  for (std::size_t f = 0; f < frames; ++f) {
+  for (std::size_t f = 0; f < scene.frames; ++f) {
     const std::shared_ptr<const TriangleMesh> shape = object.shapeAt(f);
     const double largest = shape->vertices.cwiseAbs().maxCoeff();
     if (!std::isfinite(largest) || largest > kMaxCoordinate) {
@@ -634,7 +647,7 @@ Scene readScene(const Reader& r, const Json& document, const std::string& base_d
     if (index_of.count(object.name) != 0) {
       r.fail(node.at("name"), "duplicate object name '" + object.name + "'");
     }
-    readShapes(r, node, base_directory, scene.frames, shapes, object);
+    readShapes(r, node, scene.frames, shapes, object);
     const Pose base = node.has("pose") ? readPose(r, node.at("pose")) : Pose::Identity();
     object.poses = {base};
     if (node.has("motion")) {
@@ -726,6 +739,7 @@ Scene readScene(const Reader& r, const Json& document, const std::string& base_d
         }
       }
     }
+    readDeform(r, node, base_directory, scene, index_of, object);
     index_of.emplace(object.name, scene.objects.size());
     scene.objects.push_back(std::move(object));
   }

@@ -50,28 +50,22 @@ TEST(DeformableScene, SchedulesOfActiveStates) {
 }
 
 TEST(DeformableScene, BundledScenesDeformEveryFrame) {
-  for (const char* name : {"scenes/deforming_tori.json", "scenes/squeezed_sphere.json"}) {
+  for (const auto& [name, index] :
+       {std::pair<const char*, std::size_t>{"scenes/deforming_tori.json", 0},
+        {"scenes/squeezed_sphere.json", 0},
+        {"scenes/sheet_over_bunny.json", 1}}) {
     SCOPED_TRACE(name);
     const Scene scene = load(name);
-    ASSERT_FALSE(scene.objects.empty());
-    const SceneObject& object = scene.objects[0];
+    ASSERT_GT(scene.objects.size(), index);
+    const SceneObject& object = scene.objects[index];
     ASSERT_TRUE(object.changesShape());
-    EXPECT_TRUE(scene.needsOf(0).deforms);
+    EXPECT_TRUE(scene.needsOf(index).deforms);
     const auto first = object.shapeAt(1);
     const auto second = object.shapeAt(2);
     EXPECT_EQ(first->triangles, object.mesh->triangles);
     EXPECT_NE(first->vertices, second->vertices);
     EXPECT_EQ(object.shapeAt(1)->vertices, first->vertices);  // frames are pure functions
   }
-}
-
-TEST(DeformableScene, TheFingerprintFollowsTheDeformation) {
-  Scene scene = load("scenes/squeezed_sphere.json", 0.25);
-  const std::string before = OracleCache(scene).fingerprint();
-  auto changed = std::make_shared<Deformation>(*scene.objects[0].deformation);
-  changed->rules[0].amount = 0.3;
-  scene.objects[0].deformation = changed;
-  EXPECT_NE(OracleCache(scene).fingerprint(), before);
 }
 
 RunReport runBackend(const Scene& scene, const std::string& plugin, const std::string& variant,
@@ -87,6 +81,43 @@ RunReport runBackend(const Scene& scene, const std::string& plugin, const std::s
 
 RunReport runObbTree(const Scene& scene) {
   return runBackend(scene, "obbtree", "obbtree");
+}
+
+// A sheet 1 unit above a unit sphere drapes onto it: the vertex over the pole (a vertex of the
+// sphere, at z = 1) stops 0.01 inside it; one beyond the sphere falls the whole drop.
+TEST(DeformableScene, DrapeStopsOnTheSurfacePlusThePenetration) {
+  const std::string text = R"({"name": "drape", "frames": 5, "objects": [
+    {"name": "ball", "shape": {"generator": "sphere", "radius": 1, "slices": 16, "stacks": 8}},
+    {"name": "sheet",
+     "shape": {"generator": "grid_sheet", "width": 4, "depth": 4, "cells_x": 4, "cells_y": 4},
+     "pose": {"translation": [0, 0, 2]},
+     "deform": {"rules": [{"drape": {"onto": "ball", "direction": [0, 0, -1], "drop": 3,
+                                     "penetration": 0.01, "ramp": true}}]}}],
+    "queries": [{"name": "q", "a": "ball", "b": "sheet", "kind": "all_pairs"}]})";
+  Result<Scene> scene = parseScene(text, "drape.json", ".");
+  ASSERT_TRUE(scene.ok()) << scene.status().message();
+  const SceneObject& sheet = scene.value().objects[1];
+  // Vertex i + 5 j of the 4 x 4 sheet is at (-2 + i, -2 + j): the centre is vertex 12, a
+  // corner vertex 0 at (-2, -2), beyond the ball.
+  const auto last = sheet.shapeAt(4);
+  EXPECT_NEAR(last->vertices(2, 12), 1.0 - 2.0 - 0.01, 1e-12);  // in the sheet's frame (z - 2)
+  EXPECT_NEAR(last->vertices(2, 0), -3.0, 1e-12);
+  const auto half = sheet.shapeAt(2);  // half the drop, 1.5: the centre has landed already
+  EXPECT_NEAR(half->vertices(2, 12), -1.01, 1e-12);
+  EXPECT_NEAR(half->vertices(2, 0), -1.5, 1e-12);
+  const RunReport report = runBackend(scene.value(), "obbtree", "obbtree");
+  ASSERT_EQ(report.measurements.size(), 1u);
+  EXPECT_EQ(report.measurements[0].disagreements, 0u);
+  EXPECT_TRUE(report.measurements[0].frames.back().oracle_intersecting);
+}
+
+TEST(DeformableScene, TheFingerprintFollowsTheDeformation) {
+  Scene scene = load("scenes/squeezed_sphere.json", 0.25);
+  const std::string before = OracleCache(scene).fingerprint();
+  auto changed = std::make_shared<Deformation>(*scene.objects[0].deformation);
+  changed->rules[0].amount = 0.3;
+  scene.objects[0].deformation = changed;
+  EXPECT_NE(OracleCache(scene).fingerprint(), before);
 }
 
 TEST(DeformableScene, ObbTreeIsExactOnEveryDeformedFrame) {

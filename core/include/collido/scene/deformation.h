@@ -42,19 +42,27 @@ struct DeformationRule {
                ///< the arc's end rigidly)
     kSquash,   ///< scaled about `origin` by 1 - amount * factor along `axis` and by
                ///< 1 / sqrt(1 - amount * factor) across it (volume kept)
+    kDrape,    ///< along `direction` by min(amplitude * factor, stop + penetration): falls
+               ///< until it meets another object (its stop distance), then sinks `penetration`
+               ///< into it and stays; a sheet settling onto a shape
   };
   Kind kind = Kind::kNoise;
   DeformationTiming timing;
-  double amplitude = 0.0;   ///< noise, wave, pulsate: a length
-  double wavelength = 1.0;  ///< wave: > 0
-  double angle = 0.0;       ///< twist, bend: radians
-  double length = 1.0;      ///< twist, bend: > 0
-  double amount = 0.0;      ///< squash: in [0, 1)
-  std::uint64_t seed = 1;   ///< noise
+  double amplitude = 0.0;    ///< noise, wave, pulsate: a length
+  double wavelength = 1.0;   ///< wave: > 0
+  double angle = 0.0;        ///< twist, bend: radians
+  double length = 1.0;       ///< twist, bend: > 0
+  double amount = 0.0;       ///< squash: in [0, 1)
+  double penetration = 0.0;  ///< drape: how far past the surface a vertex comes to rest, >= 0
+  /// drape: per vertex of the rest shape, the distance along `direction` to the surface it
+  /// lands on (infinity where it meets none), computed when the scene is read.
+  std::shared_ptr<const std::vector<double>> stops;
+  std::uint64_t seed = 1;  ///< noise
   Eigen::Vector3d origin = Eigen::Vector3d::Zero();
   Eigen::Vector3d axis = Eigen::Vector3d::UnitZ();       ///< twist, bend, squash: unit
   Eigen::Vector3d along = Eigen::Vector3d::UnitX();      ///< wave: unit
-  Eigen::Vector3d direction = Eigen::Vector3d::UnitZ();  ///< wave, bend: unit (bend: across axis)
+  Eigen::Vector3d direction = Eigen::Vector3d::UnitZ();  ///< wave, bend, drape: unit (bend:
+                                                         ///< across the axis)
 };
 
 /// Every position of a deforming object, frame by frame, from a recording (format: scenes/
