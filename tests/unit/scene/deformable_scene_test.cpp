@@ -53,7 +53,8 @@ TEST(DeformableScene, BundledScenesDeformEveryFrame) {
   for (const auto& [name, index] :
        {std::pair<const char*, std::size_t>{"scenes/deforming_tori.json", 0},
         {"scenes/squeezed_sphere.json", 0},
-        {"scenes/sheet_over_bunny.json", 1}}) {
+        {"scenes/sheet_over_bunny.json", 1},
+        {"scenes/station_panels_arm.json", 2}}) {
     SCOPED_TRACE(name);
     const Scene scene = load(name);
     ASSERT_GT(scene.objects.size(), index);
