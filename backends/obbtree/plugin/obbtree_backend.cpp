@@ -87,9 +87,16 @@ Result<std::unique_ptr<Backend>> create(const std::string& /*variant*/, BackendO
   if (!float_boxes.ok()) return float_boxes.status();
   Result<std::int64_t> threads = options.getInt("threads", 1, 1, 256);
   if (!threads.ok()) return threads.status();
+  Result<double> rebuild_ratio = options.getDouble("rebuild_ratio", 0.0, 0.0, 1e6);
+  if (!rebuild_ratio.ok()) return rebuild_ratio.status();
+  if (rebuild_ratio.value() > 0.0 && rebuild_ratio.value() < 1.0) {
+    return Status(StatusCode::kInvalidArgument,
+                  "obbtree: rebuild_ratio must be 0 (never) or at least 1");
+  }
   BuildOptions build_options;
   build_options.max_leaf_triangles = static_cast<std::int32_t>(leaf.value());
   build_options.float_boxes = float_boxes.value();
+  build_options.rebuild_ratio = rebuild_ratio.value();
   return std::unique_ptr<Backend>(
       std::make_unique<ObbTreeBackend>(build_options, static_cast<int>(threads.value())));
 }
@@ -103,7 +110,9 @@ const PluginInfo& describe() {
       {{"obbtree",
         "OBB tree (covariance-fitted boxes, mean split, 15-axis SAT, exact triangle tests); "
         "options max_leaf_triangles (default 1), float_boxes (default false: boxes in double), "
-        "threads (default 1: all-pairs queries on this many threads)"}},
+        "threads (default 1: all-pairs queries on this many threads), rebuild_ratio (default "
+        "0: a deforming model's subtree is rebuilt when its box grew past this many times its "
+        "fresh volume; 0 never)"}},
       &create};
   return info;
 }

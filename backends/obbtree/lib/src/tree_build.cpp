@@ -103,7 +103,11 @@ ObbTree ObbTree::build(const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
     }
     std::vector<Node>().swap(tree.nodes_);
   }
-  if (options.deformable) tree.buildVertexSpans();
+  tree.options_ = options;
+  if (options.deformable) {
+    tree.buildVertexSpans();
+    tree.recordFreshVolumes();
+  }
   // Refit keeps the axes, so this bound holds for the tree's whole life.
   for (const Node& node : tree.nodes_)
     tree.axis_defect_ = std::max(tree.axis_defect_, obbtree::axisDefect(node.box.axes));
@@ -156,7 +160,8 @@ std::size_t ObbTree::memoryBytes() const {
          static_cast<std::size_t>(triangles_.size()) * sizeof(int) +
          (ids_.capacity() + refit_order_.capacity() + first_use_.capacity() +
           extra_begin_.capacity() + refit_extra_.capacity()) *
-             sizeof(std::int32_t);
+             sizeof(std::int32_t) +
+         fresh_volume_.capacity() * sizeof(float);
 }
 
 }  // namespace collido::obbtree

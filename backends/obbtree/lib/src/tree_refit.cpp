@@ -71,6 +71,7 @@ RefitReport ObbTree::refit(const Eigen::Ref<const Eigen::Matrix3Xd>& vertices) {
       [&](CompactBox& box, const VertexSpan& span) {
         refitCompactBox(box, vertices_, span, axis_defect_);
       });
+  if (options_.deformable && options_.rebuild_ratio > 0.0) rebuildGrownSubtrees(report);
   return report;
 }
 

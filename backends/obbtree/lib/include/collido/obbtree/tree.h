@@ -21,12 +21,20 @@ struct BuildOptions {
   /// distinct vertices (in a compact form: about 10 bytes per triangle), so that a refit
   /// projects each vertex once per level instead of once per triangle corner.
   bool deformable = false;
+  /// With `deformable`: after a refit, rebuild (split and fit anew over its current triangles)
+  /// every subtree whose root box's volume grew past this many times its volume when last
+  /// fitted fresh (each extent counted as at least 1% of the box's size, so flat boxes compare
+  /// by area); 0 never rebuilds. Keeps boxes tight when a deformation turns the geometry
+  /// away from the axes the boxes were fitted to.
+  double rebuild_ratio = 0.0;
 };
 
 /// What a refit did.
 struct RefitReport {
-  std::size_t moved_vertices = 0;  ///< vertices whose position changed
-  std::size_t nodes_refit = 0;     ///< boxes measured anew (those holding a moved vertex)
+  std::size_t moved_vertices = 0;    ///< vertices whose position changed
+  std::size_t nodes_refit = 0;       ///< boxes measured anew (those holding a moved vertex)
+  std::size_t subtrees_rebuilt = 0;  ///< subtrees rebuilt (BuildOptions::rebuild_ratio)
+  std::size_t nodes_rebuilt = 0;     ///< nodes in them, after the rebuild
 };
 
 /// One node of the flat tree. Depth-first order: the first child of node i is i + 1.
@@ -97,6 +105,13 @@ class ObbTree {
   bool float_boxes_ = false;
 
   void buildVertexSpans();
+  void recordFreshVolumes();
+  double boxVolume(std::size_t node) const;
+  std::size_t subtreeEnd(std::size_t node) const;
+  /// Rebuilds the subtree rooted at `node` over its current triangles (in place: later nodes
+  /// shift); returns its new node count.
+  std::size_t rebuildSubtree(std::size_t node);
+  void rebuildGrownSubtrees(RefitReport& report);
   VertexSpan vertexSpan(std::size_t node, std::int32_t first, std::int32_t count) const;
   Eigen::Matrix3Xd vertices_;
   Eigen::Matrix3Xi triangles_;
@@ -109,6 +124,10 @@ class ObbTree {
   std::vector<std::int32_t> first_use_;
   std::vector<std::int32_t> extra_begin_;
   std::vector<std::int32_t> refit_extra_;
+  // With BuildOptions::deformable: each box's volume when it was last fitted fresh (at build or
+  // rebuild), the reference of rebuild_ratio.
+  std::vector<float> fresh_volume_;
+  BuildOptions options_;
   int depth_ = 0;
   double axis_defect_ = 0.0;
 };
