@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The dashboard in a real browser: runs a small study (two backends, needs declared and every,
 # two resolutions so the scaling view has curves, and a small stress scene so the robustness
-# matrix has cells, ODE's all-pairs ones unsupported), writes its report with itself as the
+# matrix has cells, ODE's all-pairs ones unsupported, and a deforming scene for the view over
+# time), writes its report with itself as the
 # baseline, and opens it in headless Chromium (web/tests/report.test.mjs): every chart drawn,
 # no console error, no network request.
 # Usage: browser_report_test.sh COLLIDO_EXECUTABLE SOURCE_DIR WORK_DIR
@@ -26,10 +27,11 @@ cat > "$work/stress_touching.json" <<'JSON'
 }
 JSON
 "$collido" study "$source_dir/scenes/interlocked_tori.json" "$work/stress_touching.json" \
+  "$source_dir/scenes/deforming_tori.json" \
   --sweep "$work/sweep.json" --out "$work/study" --quiet > "$work/table.txt"
 "$collido" report "$work/study" --baseline "$work/study" -o "$work/report.html"
 COLLIDO_REPORT_HTML="$work/report.html" \
-COLLIDO_EXPECT_VIEWS="time-vs-error,robustness,time-distribution,memory,scaling,needs,comparison" \
+COLLIDO_EXPECT_VIEWS="time-vs-error,robustness,time-distribution,deforming,memory,scaling,needs,comparison" \
 COLLIDO_EXPECT_SECTION_TEXT="robustness=unsupported,robustness=touching" \
 COLLIDO_REPORT_SCREENSHOT="$work/report.png" \
   node --test "$source_dir/web/tests/"

@@ -247,6 +247,47 @@
     }
   }
 
+  // --- 2b. deforming scenes: update and query per frame ----------------------------------------
+  {
+    const s = section('deforming', 'Deforming scenes over time',
+      'Per frame of each deforming scene: the cost of giving every deforming object its new ' +
+      'positions (update: a refit, a rebuild or a state switch) and of the query after it, per ' +
+      'backend setting (log scale). Frames whose answer differed from the oracle\'s are ringed: ' +
+      'an answer from stale boxes shows there.');
+    const box = el('div', { class: 'charts' });
+    s.appendChild(box);
+    const groups = groupBy(data.deforming || [], (d) => d.scene + ' · ' + d.query);
+    if (groups.size === 0) empty(s, 'No deforming scene in this study (scenes with states or ' +
+      '"deform": scenes/README.md).');
+    for (const [name, values] of groups) {
+      const rows = [];
+      for (const v of values) {
+        rows.push(Object.assign({}, v, { part: 'update', us: Math.max(v.update_us, 1e-3) }));
+        rows.push(Object.assign({}, v, { part: 'update + query',
+          us: Math.max(v.update_us + v.query_us, 1e-3) }));
+      }
+      const layers = [
+        { mark: { type: 'line', point: false },
+          encoding: { x: { field: 'frame', type: 'quantitative', title: 'frame' },
+            y: { field: 'us', type: 'quantitative', scale: { type: 'log' }, title: 'µs' },
+            color: colour, strokeDash: { field: 'part', type: 'nominal', title: 'cost' },
+            tooltip: [{ field: 'label', title: 'backend' }, { field: 'frame' },
+              { field: 'update_us', title: 'update µs', format: '.1f' },
+              { field: 'query_us', title: 'query µs', format: '.1f' },
+              { field: 'wrong', title: 'wrong answer' }] } }];
+      // Rings on the frames answered wrongly (only when there are some: an empty layer has no
+      // extent to draw).
+      if (values.some((v) => v.wrong)) {
+        layers.push({ transform: [{ filter: 'datum.wrong && datum.part === "update + query"' }],
+          mark: { type: 'point', shape: 'circle', size: 60, filled: false },
+          encoding: { x: { field: 'frame', type: 'quantitative' },
+            y: { field: 'us', type: 'quantitative', scale: { type: 'log' } }, color: colour } });
+      }
+      chart(box, 'deforming:' + name, {
+        title: name, width: 420, height: 220, data: { values: rows }, layer: layers });
+    }
+  }
+
   // --- 3. memory per triangle -----------------------------------------------------------------
   {
     const s = section('memory', 'Memory per triangle',

@@ -157,6 +157,27 @@ Json timesOf(const std::vector<CombinationResult>& results) {
   return times;
 }
 
+// Per frame of every measurement with updates (deforming scenes): the update cost, the query's
+// median and whether the answer differed from the oracle's.
+Json deformingOf(const std::vector<CombinationResult>& results) {
+  Json frames = Json::array();
+  for (const CombinationResult& r : results) {
+    for (const QueryMeasurement& m : tableMeasurements(r)) {
+      if (!m.ok() || !m.update_median_us) continue;
+      for (const FrameRecord& f : m.frames) {
+        frames.push_back({{"label", backendLabel(r.combination)},
+                          {"scene", r.combination.scene_name},
+                          {"query", m.query},
+                          {"frame", f.frame},
+                          {"update_us", f.update_us.value_or(0.0)},
+                          {"query_us", f.median_us},
+                          {"wrong", f.disagrees(m.kind)}});
+      }
+    }
+  }
+  return frames;
+}
+
 Result<std::string> readText(const std::filesystem::path& path, const std::string& hint) {
   std::ifstream in(path, std::ios::binary);
   if (!in) {
@@ -249,6 +270,7 @@ Json reportData(const std::vector<CombinationResult>& results,
           {"rows", rowsOf(results)},
           {"baseline_rows", rowsOf(baseline)},
           {"times", timesOf(results)},
+          {"deforming", deformingOf(results)},
           {"failures", failuresOf(results)},
           {"robustness", robustnessJson(robustnessMatrix(results))}};
 }
