@@ -24,7 +24,14 @@ int checkScenes(const std::vector<std::string>& paths) {
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
       const SceneObject& o = scene.objects[i];
       std::cout << "  object " << o.name << ": " << o.report.summary()
-                << (o.poses.size() == 1 ? ", fixed pose" : ", moving") << "\n";
+                << (o.poses.size() == 1 ? ", fixed pose" : ", moving");
+      if (o.states.size() > 1) std::cout << ", " << o.states.size() << " active states";
+      if (o.deformation) {
+        const std::size_t rules = o.deformation->rules.size();
+        std::cout << ", movable nodes (" << rules << " rule" << (rules == 1 ? "" : "s")
+                  << (o.deformation->recorded ? ", recorded positions" : "") << ")";
+      }
+      std::cout << "\n";
     }
     for (const SceneQuery& q : scene.queries) {
       std::cout << "  query " << q.name << ": " << queryKindName(q.request.kind) << " ";

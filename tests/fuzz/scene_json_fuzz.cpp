@@ -121,6 +121,28 @@ void checkScene(const collido::Scene& scene, const collido::SceneLoadOptions& op
     for (const collido::Pose& pose : object.poses) {
       if (!rigid(pose)) broken("object '" + object.name + "' has a pose that is not rigid");
     }
+    // Deformable objects: valid states, a schedule naming them, and deformed frames that keep
+    // the topology and stay valid (the first and the last, which the loader checked among all).
+    for (const collido::ObjectState& state : object.states) {
+      if (!state.mesh) broken("object '" + object.name + "' has a state without a mesh");
+      if (collido::Status s = collido::validateMesh(*state.mesh, object.name); !s.ok())
+        broken(s.message());
+    }
+    if (!object.schedule.empty() && object.schedule.size() != scene.frames)
+      broken("object '" + object.name + "' has a schedule of the wrong length");
+    for (std::size_t state : object.schedule) {
+      if (state >= object.stateCount())
+        broken("object '" + object.name + "' schedules a state that does not exist");
+    }
+    if (object.deformation) {
+      for (std::size_t frame : {std::size_t{0}, scene.frames - 1}) {
+        const auto shape = object.shapeAt(frame);
+        if (shape->triangles != object.stateMesh(object.stateAt(frame))->triangles)
+          broken("object '" + object.name + "' changes topology when it deforms");
+        if (collido::Status s = collido::validateMesh(*shape, object.name); !s.ok())
+          broken("deformed frame " + std::to_string(frame) + ": " + s.message());
+      }
+    }
   }
   if (triangles > options.max_triangles) broken("more triangles than max_triangles");
   const std::size_t n = scene.objects.size();

@@ -51,10 +51,10 @@ const OracleAnswer& OracleCache::get(std::size_t ia, std::size_t ib, std::size_t
     const SceneObject& a = scene_.objects[ia];
     const SceneObject& b = scene_.objects[ib];
     found = answers_
-                .emplace(key, exactIntersectingPairs(
-                                  *a.shapeAt(frame), a.poseAt(frame), *b.shapeAt(frame),
-                                  b.poseAt(frame),
-                                  needs_all ? OracleMode::kAllPairs : OracleMode::kFirstPair))
+                .emplace(key,
+                         exactIntersectingPairs(
+                             *a.shapeAt(frame), a.poseAt(frame), *b.shapeAt(frame), b.poseAt(frame),
+                             needs_all ? OracleMode::kAllPairs : OracleMode::kFirstPair))
                 .first;
   }
   return found->second;

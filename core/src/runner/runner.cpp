@@ -39,8 +39,7 @@ struct BuiltModel {
   std::string error;  // non-empty when the build failed
 };
 
-BuiltModel buildModel(BackendInstance& backend, const TriangleMesh& mesh,
-                      const BuildNeeds& needs) {
+BuiltModel buildModel(BackendInstance& backend, const TriangleMesh& mesh, const BuildNeeds& needs) {
   BuiltModel built;
   resetHeapPeak();
   const std::optional<HeapHookSample> hooks_before = heapHookSample();
