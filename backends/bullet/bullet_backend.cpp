@@ -112,14 +112,20 @@ class BulletModel final : public BackendModel {
   /// New positions, then GImpact's refit (postUpdate + updateBound re-bounds every node bottom-up
   /// over the moved triangles). When the mesh has left the span the tree was quantized over, a
   /// refit would clamp its boxes and miss contacts, so the shape is rebuilt instead.
-  void update(const Eigen::Ref<const Eigen::Matrix3Xd>& positions) {
+  UpdateCounters update(const Eigen::Ref<const Eigen::Matrix3Xd>& positions) {
     copyPositions(positions);
+    UpdateCounters counters;
+    counters.counted = true;
     if (!insideQuantizedSpan()) {
       buildShape();
-      return;
+      counters.rebuilds = 1;
+      counters.nodes_rebuilt = nodeCount();
+      return counters;
     }
     shape_->postUpdate();
     shape_->updateBound();
+    counters.nodes_refit = nodeCount();
+    return counters;
   }
 
  private:
@@ -155,6 +161,11 @@ class BulletModel final : public BackendModel {
     const btScalar grow = part_margin + kQuantizationMargin;
     span_low_ -= btVector3(grow, grow, grow);
     span_high_ += btVector3(grow, grow, grow);
+  }
+
+  // GImpact's refit and rebuild both cover the whole box tree of the one mesh part.
+  std::uint64_t nodeCount() const {
+    return static_cast<std::uint64_t>(shape_->getMeshPart(0)->getBoxSet()->getNodeCount());
   }
 
   bool insideQuantizedSpan() const {
@@ -250,6 +261,7 @@ class BulletBackend final : public Backend {
     caps.shape_kinds = static_cast<std::uint32_t>(ShapeKind::kTriangleMesh);
     caps.queries = QueryKindSet(QueryKind::kBoolean) | QueryKind::kAllPairs | QueryKind::kContacts;
     caps.update = true;
+    caps.counts_update_work = true;
     caps.max_contacts = settings_.manifold ? MANIFOLD_CACHE_SIZE : 0;
     caps.notes =
         "GImpact (btGImpactMeshShape, quantized AABB trees, clipping triangle test). No early "
@@ -266,15 +278,16 @@ class BulletBackend final : public Backend {
     return caps;
   }
 
-  Result<std::unique_ptr<BackendModel>> build(const MeshView& mesh,
-                                              const BuildNeeds& /*needs*/) override {
+  Result<std::unique_ptr<BackendModel>> build(const MeshView& mesh, const BuildNeeds& /*needs*/,
+                                              const StateSibling& /*sibling*/) override {
     // Every query kind uses the same shape, and GImpact reads triangles from the arrays the model
     // keeps anyway, so the needs change nothing.
     return std::unique_ptr<BackendModel>(std::make_unique<BulletModel>(mesh, settings_));
   }
 
-  Status update(BackendModel& model, const Eigen::Ref<const Eigen::Matrix3Xd>& positions) override {
-    static_cast<BulletModel&>(model).update(positions);
+  Status update(BackendModel& model, const Eigen::Ref<const Eigen::Matrix3Xd>& positions,
+                UpdateCounters& counters) override {
+    counters = static_cast<BulletModel&>(model).update(positions);
     return {};
   }
 

@@ -28,7 +28,8 @@ using Transform = fcl::Transform3d;
 class FclModel : public BackendModel {
  public:
   virtual const fcl::CollisionGeometryd& geometry() const = 0;
-  virtual void update(const Eigen::Ref<const Eigen::Matrix3Xd>& positions) = 0;
+  /// Moves the vertices; says what FCL rebuilt or refit (its whole tree, either way).
+  virtual UpdateCounters update(const Eigen::Ref<const Eigen::Matrix3Xd>& positions) = 0;
 };
 
 template <typename BV>
@@ -52,21 +53,27 @@ class TypedModel final : public FclModel {
 
   const fcl::CollisionGeometryd& geometry() const override { return *model_; }
 
-  void update(const Eigen::Ref<const Eigen::Matrix3Xd>& positions) override {
+  UpdateCounters update(const Eigen::Ref<const Eigen::Matrix3Xd>& positions) override {
     // All vertices at once through updateSubModel: FCL's update buffer is not initialised while
     // updating, so a partial update would leave garbage in it.
     std::vector<fcl::Vector3d> points(static_cast<std::size_t>(positions.cols()));
     for (std::size_t i = 0; i < points.size(); ++i) {
       points[i] = positions.col(static_cast<Eigen::Index>(i));
     }
+    UpdateCounters counters;
+    counters.counted = true;
     if (rebuild_on_update_) {
       buildFrom(points);
-      return;
+      counters.rebuilds = 1;
+      counters.nodes_rebuilt = static_cast<std::uint64_t>(model_->getNumBVs());
+      return counters;
     }
     check(model_->beginUpdateModel(), "beginUpdateModel");
     check(model_->updateSubModel(points), "updateSubModel");
     check(model_->endUpdateModel(/*refit=*/true, /*bottomup=*/true), "endUpdateModel");
     model_->computeLocalAABB();
+    counters.nodes_refit = static_cast<std::uint64_t>(model_->getNumBVs());
+    return counters;
   }
 
   std::size_t memoryBytes() const override {
@@ -138,6 +145,7 @@ class FclBackend final : public Backend {
     caps.shape_kinds = static_cast<std::uint32_t>(ShapeKind::kTriangleMesh);
     caps.queries = QueryKindSet(QueryKind::kBoolean) | QueryKind::kAllPairs | QueryKind::kContacts;
     caps.update = true;
+    caps.counts_update_work = true;
     caps.notes =
         "fcl::collide() on BVHModel meshes; triangle pairs decided by FCL's floating-point "
         "triangle test; contacts are FCL's per-pair points, normal (A to B) and depth. No work "
@@ -145,13 +153,14 @@ class FclBackend final : public Backend {
     return caps;
   }
 
-  Result<std::unique_ptr<BackendModel>> build(const MeshView& mesh,
-                                              const BuildNeeds& /*needs*/) override {
+  Result<std::unique_ptr<BackendModel>> build(const MeshView& mesh, const BuildNeeds& /*needs*/,
+                                              const StateSibling& /*sibling*/) override {
     return std::unique_ptr<BackendModel>(makeModel(type_, mesh, rebuild_));
   }
 
-  Status update(BackendModel& model, const Eigen::Ref<const Eigen::Matrix3Xd>& positions) override {
-    static_cast<FclModel&>(model).update(positions);
+  Status update(BackendModel& model, const Eigen::Ref<const Eigen::Matrix3Xd>& positions,
+                UpdateCounters& counters) override {
+    counters = static_cast<FclModel&>(model).update(positions);
     return {};
   }
 

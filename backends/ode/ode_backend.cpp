@@ -154,16 +154,7 @@ class OdeModel final : public BackendModel {
       for (std::size_t k = 0; k < 3; ++k)
         indices_.push_back(indices_[k]);
     }
-    data_.reset(dGeomTriMeshDataCreate());
-    const int vertex_count = static_cast<int>(mesh.vertices.cols());
-    const int index_count = static_cast<int>(indices_.size());
-#if defined(dDOUBLE)
-    dGeomTriMeshDataBuildDouble(data_.get(), vertices_.data(), 3 * sizeof(dReal), vertex_count,
-                                indices_.data(), index_count, 3 * sizeof(dTriIndex));
-#else
-    dGeomTriMeshDataBuildSingle(data_.get(), vertices_.data(), 3 * sizeof(dReal), vertex_count,
-                                indices_.data(), index_count, 3 * sizeof(dTriIndex));
-#endif
+    data_ = buildData();
     geom_.reset(dCreateTriMesh(nullptr, data_.get(), nullptr, nullptr, nullptr));
     dGeomTriMeshSetTriMergeCallback(geom_.get(), &keepFirstTriangle);
     // Temporal coherence caches serve sphere, box and capsule queries only (trimesh-trimesh runs
@@ -174,20 +165,30 @@ class OdeModel final : public BackendModel {
   }
 
   std::size_t memoryBytes() const override {
-    const std::size_t nodes = indices_.size() / 3 - 1;
     return sizeof(*this) + vertices_.capacity() * sizeof(dReal) +
-           indices_.capacity() * sizeof(dTriIndex) + nodes * kOpcodeNodeBytes;
+           indices_.capacity() * sizeof(dTriIndex) + nodeCount() * kOpcodeNodeBytes;
   }
 
-  // New positions into the array ODE reads, then OPCODE's bottom-up refit of its boxes.
-  void update(const Eigen::Ref<const Eigen::Matrix3Xd>& positions) {
+  // New positions into the array ODE reads, then OPCODE's bottom-up refit of every box, or
+  // (rebuild) a new OPCODE tree over them, swapped in under the same geom.
+  UpdateCounters update(const Eigen::Ref<const Eigen::Matrix3Xd>& positions, bool rebuild) {
     copyVertices(positions);
-    dGeomTriMeshDataUpdate(data_.get());
+    UpdateCounters counters;
+    counters.counted = true;
+    if (rebuild) {
+      std::unique_ptr<dxTriMeshData, TriMeshDataDeleter> fresh = buildData();
+      dGeomTriMeshSetData(geom_.get(), fresh.get());
+      data_ = std::move(fresh);
+      counters.rebuilds = 1;
+      counters.nodes_rebuilt = nodeCount();
+    } else {
+      dGeomTriMeshDataUpdate(data_.get());
+      counters.nodes_refit = nodeCount();
+    }
+    return counters;
   }
 
-  dGeomID geom() const {
-    return geom_.get();
-  }
+  dGeomID geom() const { return geom_.get(); }
 
   // The id build() was given for an id ODE reports (-1 stays -1).
   std::int32_t triangleId(int side) const {
@@ -195,6 +196,23 @@ class OdeModel final : public BackendModel {
   }
 
  private:
+  std::size_t nodeCount() const { return indices_.size() / 3 - 1; }
+
+  // ODE's data over the arrays this model owns: OPCODE builds its tree here.
+  std::unique_ptr<dxTriMeshData, TriMeshDataDeleter> buildData() {
+    std::unique_ptr<dxTriMeshData, TriMeshDataDeleter> data(dGeomTriMeshDataCreate());
+    const int vertex_count = static_cast<int>(vertices_.size() / 3);
+    const int index_count = static_cast<int>(indices_.size());
+#if defined(dDOUBLE)
+    dGeomTriMeshDataBuildDouble(data.get(), vertices_.data(), 3 * sizeof(dReal), vertex_count,
+                                indices_.data(), index_count, 3 * sizeof(dTriIndex));
+#else
+    dGeomTriMeshDataBuildSingle(data.get(), vertices_.data(), 3 * sizeof(dReal), vertex_count,
+                                indices_.data(), index_count, 3 * sizeof(dTriIndex));
+#endif
+    return data;
+  }
+
   template <typename Matrix>
   void copyVertices(const Matrix& positions) {
     for (Eigen::Index c = 0; c < positions.cols(); ++c) {
@@ -223,7 +241,8 @@ void placeGeom(dGeomID geom, const Pose& pose) {
 
 class OdeBackend final : public Backend {
  public:
-  explicit OdeBackend(bool pairs_from_contacts) : pairs_from_contacts_(pairs_from_contacts) {}
+  OdeBackend(bool pairs_from_contacts, bool rebuild)
+      : pairs_from_contacts_(pairs_from_contacts), rebuild_(rebuild) {}
 
   Capabilities capabilities() const override {
     Capabilities caps;
@@ -231,6 +250,7 @@ class OdeBackend final : public Backend {
     caps.queries = QueryKindSet(QueryKind::kBoolean) | QueryKind::kContacts;
     if (pairs_from_contacts_) caps.queries |= QueryKind::kAllPairs;
     caps.update = true;
+    caps.counts_update_work = true;
     caps.max_contacts = kMaxContactsPerCall;
     caps.notes =
         "dCollide on two dTriMesh geoms (OPCODE AABB tree; triangle overlap in single "
@@ -244,8 +264,8 @@ class OdeBackend final : public Backend {
     return caps;
   }
 
-  Result<std::unique_ptr<BackendModel>> build(const MeshView& mesh,
-                                              const BuildNeeds& /*needs*/) override {
+  Result<std::unique_ptr<BackendModel>> build(const MeshView& mesh, const BuildNeeds& /*needs*/,
+                                              const StateSibling& /*sibling*/) override {
     if (Status s = prepareThread(); !s.ok()) return s;
     // ODE takes counts as int: 3 indices per triangle must fit.
     if (mesh.triangles.cols() > INT_MAX / 3 || mesh.vertices.cols() > INT_MAX) {
@@ -258,9 +278,10 @@ class OdeBackend final : public Backend {
     return std::unique_ptr<BackendModel>(std::make_unique<OdeModel>(mesh));
   }
 
-  Status update(BackendModel& model, const Eigen::Ref<const Eigen::Matrix3Xd>& positions) override {
+  Status update(BackendModel& model, const Eigen::Ref<const Eigen::Matrix3Xd>& positions,
+                UpdateCounters& counters) override {
     if (Status s = prepareThread(); !s.ok()) return s;
-    static_cast<OdeModel&>(model).update(positions);
+    counters = static_cast<OdeModel&>(model).update(positions, rebuild_);
     return {};
   }
 
@@ -376,14 +397,18 @@ class OdeBackend final : public Backend {
   }
 
   bool pairs_from_contacts_;
+  bool rebuild_;
   std::vector<dContactGeom> contacts_;  // kept across queries: up to 65,535 x 96 bytes
 };
 
 Result<std::unique_ptr<Backend>> create(const std::string& /*variant*/, BackendOptions& options) {
   Result<bool> pairs = options.getBool("pairs_from_contacts", false);
   if (!pairs.ok()) return pairs.status();
+  // rebuild=true: update() builds a new OPCODE tree instead of dGeomTriMeshDataUpdate's refit.
+  Result<bool> rebuild = options.getBool("rebuild", false);
+  if (!rebuild.ok()) return rebuild.status();
   if (Status s = prepareThread(); !s.ok()) return s;
-  return std::unique_ptr<Backend>(std::make_unique<OdeBackend>(pairs.value()));
+  return std::unique_ptr<Backend>(std::make_unique<OdeBackend>(pairs.value(), rebuild.value()));
 }
 
 // ODE has no version call; CMakeLists.txt passes the version of its pkg-config file.
@@ -400,7 +425,8 @@ const PluginInfo& describe() {
       engineVersion(),
       {{"ode",
         "ODE trimesh-trimesh dCollide (OPCODE AABB tree, merged contacts, at most 65,535); "
-        "option pairs_from_contacts (default false) adds all_pairs as the pairs contacts name"}},
+        "option pairs_from_contacts (default false) adds all_pairs as the pairs contacts name, "
+        "rebuild (default false: update() refits OPCODE's boxes; true builds a new tree)"}},
       &create};
   return info;
 }

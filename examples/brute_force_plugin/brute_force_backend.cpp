@@ -99,12 +99,14 @@ class BruteForceBackend final : public collido::Backend {
   }
 
   collido::Result<std::unique_ptr<collido::BackendModel>> build(
-      const collido::MeshView& mesh, const collido::BuildNeeds& /*needs*/) override {
+      const collido::MeshView& mesh, const collido::BuildNeeds& /*needs*/,
+      const collido::StateSibling& /*sibling*/) override {
     return std::unique_ptr<collido::BackendModel>(std::make_unique<MeshModel>(mesh));
   }
 
   collido::Status update(collido::BackendModel& model,
-                         const Eigen::Ref<const Eigen::Matrix3Xd>& positions) override {
+                         const Eigen::Ref<const Eigen::Matrix3Xd>& positions,
+                         collido::UpdateCounters& /*counters*/) override {
     static_cast<MeshModel&>(model).vertices = positions;
     return {};
   }

@@ -1,13 +1,14 @@
 // The plugin conformance kit: one parameterised suite, written once, run against every plugin.
 //
 // Hard requirements (any plugin): the table and capabilities are sane, another interface version
-// is refused, unsupported requests answer "unsupported", bad handles are errors, results obey the
-// contact conventions, a crash fails the run (each plugin runs in its own process).
-// Measurements held to a committed record: every answer against the exact oracle on the bundled
-// scenes and the kit's own adversarial scenes. A variant must be exact unless its expectations
-// file (tests/conformance/expectations/<variant>.json) records, per scene and query, the counts
-// of its disagreements; then those counts must be met exactly, so a change in an engine's
-// behaviour, for better or worse, is noticed and reviewed instead of hidden by a tolerance.
+// is refused, unsupported requests answer "unsupported", bad handles are errors, state siblings
+// answer for their own shapes and survive each other, results obey the contact conventions, a crash
+// fails the run (each plugin runs in its own process). Measurements held to a committed record:
+// every answer against the exact oracle on the bundled scenes and the kit's own adversarial scenes.
+// A variant must be exact unless its expectations file
+// (tests/conformance/expectations/<variant>.json) records, per scene and query, the counts of its
+// disagreements; then those counts must be met exactly, so a change in an engine's behaviour, for
+// better or worse, is noticed and reviewed instead of hidden by a tolerance.
 #include <cmath>
 #include <cstring>
 #include <memory>
@@ -147,6 +148,57 @@ TEST_P(Interface, BadHandlesAreErrors) {
   EXPECT_FALSE(backend->memory(b.value()).ok());
 }
 
+// Another active state of an object, built as the first state's sibling (state_of): it answers
+// for its own shape, the first state for its own, and it survives the first state's release.
+// A sibling with another triangle list, or a dead one, is refused.
+TEST_P(Interface, StateSiblingsAnswerForTheirOwnShape) {
+  std::unique_ptr<BackendInstance> backend = createInstance(target());
+  ASSERT_TRUE(backend);
+  const QueryKindSet supported = backend->capabilities().queries;
+  if (!supported.contains(QueryKind::kBoolean)) COLLIDO_KIT_SKIP("answers no boolean queries");
+  const BuildNeeds needs{QueryKindSet(QueryKind::kBoolean)};
+  const TriangleMesh small = sphere(0.5, 24, 12);
+  TriangleMesh large = small;  // the same triangle list, twice the size
+  large.vertices *= 2.0;
+  const TriangleMesh other = sphere(1.0, 24, 12);
+  Result<ModelHandle> first = backend->build(small.view(), needs);
+  ASSERT_TRUE(first.ok()) << first.status().toString();
+  Result<ModelHandle> second = backend->build(large.view(), needs, first.value());
+  ASSERT_TRUE(second.ok()) << second.status().toString();
+  Result<ModelHandle> b = backend->build(other.view(), needs);
+  ASSERT_TRUE(b.ok());
+  // B (radius 1) 1.75 away: 0.25 from the small sphere, overlapping the large one by 0.25.
+  QueryRequest request;
+  request.kind = QueryKind::kBoolean;
+  QueryResult result;
+  ASSERT_TRUE(
+      backend->query(first.value(), Pose::Identity(), b.value(), moved(1.75), request, result)
+          .ok());
+  EXPECT_FALSE(result.intersecting) << "the first state must answer for its own shape";
+  ASSERT_TRUE(
+      backend->query(second.value(), Pose::Identity(), b.value(), moved(1.75), request, result)
+          .ok());
+  EXPECT_TRUE(result.intersecting) << "the second state must answer for its own shape";
+  ASSERT_TRUE(backend->release(first.value()).ok());
+  ASSERT_TRUE(
+      backend->query(second.value(), Pose::Identity(), b.value(), moved(1.75), request, result)
+          .ok());
+  EXPECT_TRUE(result.intersecting) << "a state must outlive its sibling";
+  EXPECT_TRUE(backend->memory(second.value()).ok());
+
+  // Refusals: a sibling that is gone, and one with another triangle list.
+  Result<ModelHandle> orphan = backend->build(large.view(), needs, first.value());
+  ASSERT_FALSE(orphan.ok());
+  EXPECT_EQ(orphan.status().code(), StatusCode::kInvalidHandle) << orphan.status().toString();
+  const TriangleMesh coarse = sphere(1.0, 12, 6);
+  Result<ModelHandle> mismatched = backend->build(coarse.view(), needs, second.value());
+  ASSERT_FALSE(mismatched.ok());
+  EXPECT_EQ(mismatched.status().code(), StatusCode::kInvalidArgument)
+      << mismatched.status().toString();
+  EXPECT_NE(mismatched.status().message().find("triangle list"), std::string::npos)
+      << mismatched.status().toString();
+}
+
 // --- contacts --------------------------------------------------------------------------------
 
 // Two spheres overlapping along +x: every contact must be finite, its normal a unit vector
@@ -212,7 +264,14 @@ TEST_P(Interface, UpdateThenQueryAnswersForTheNewShape) {
   QueryResult result;
   ASSERT_TRUE(backend->query(a.value(), Pose::Identity(), b.value(), pose_b, request, result).ok());
   EXPECT_FALSE(result.intersecting) << "before the update the spheres are 1 apart";
-  ASSERT_TRUE(backend->update(a.value(), grown.vertices).ok());
+  UpdateCounters work;
+  work.counted = true;  // must be cleared by a backend that does not count
+  ASSERT_TRUE(backend->update(a.value(), grown.vertices, &work).ok());
+  EXPECT_EQ(work.counted, caps.counts_update_work);
+  if (work.counted) {
+    EXPECT_GT(work.nodes_refit + work.nodes_rebuilt, 0u) << "every vertex moved: nothing redone?";
+    EXPECT_EQ(work.rebuilds == 0, work.nodes_rebuilt == 0) << "rebuilds without nodes, or back";
+  }
   ASSERT_TRUE(backend->query(a.value(), Pose::Identity(), b.value(), pose_b, request, result).ok());
   const OracleAnswer truth = exactIntersectingPairs(grown, Pose::Identity(), other, pose_b);
   ASSERT_TRUE(truth.intersecting);

@@ -15,6 +15,7 @@ class ObbTreeModel final : public BackendModel {
   explicit ObbTreeModel(ObbTree tree) : tree_(std::move(tree)) {}
   std::size_t memoryBytes() const override { return sizeof(*this) + tree_.memoryBytes(); }
   ObbTree& tree() { return tree_; }
+  const ObbTree& tree() const { return tree_; }
 
  private:
   ObbTree tree_;
@@ -22,7 +23,8 @@ class ObbTreeModel final : public BackendModel {
 
 class ObbTreeBackend final : public Backend {
  public:
-  ObbTreeBackend(BuildOptions options, int threads) : options_(options), threads_(threads) {}
+  ObbTreeBackend(BuildOptions options, int threads, bool share_states)
+      : options_(options), threads_(threads), share_states_(share_states) {}
 
   Capabilities capabilities() const override {
     Capabilities caps;
@@ -31,24 +33,36 @@ class ObbTreeBackend final : public Backend {
     caps.update = true;
     caps.counts_bv_tests = true;
     caps.counts_primitive_tests = true;
+    caps.counts_update_work = true;
     caps.notes =
         "Exact triangle-pair answers (exact predicates on the doubles of B's triangles mapped "
         "into A's frame). No contact points: mesh-mesh contact geometry is not defined yet.";
     return caps;
   }
 
-  Result<std::unique_ptr<BackendModel>> build(const MeshView& mesh,
-                                              const BuildNeeds& needs) override {
+  Result<std::unique_ptr<BackendModel>> build(const MeshView& mesh, const BuildNeeds& needs,
+                                              const StateSibling& sibling) override {
     // Boolean and all-pairs queries use the same tree; a model that will deform keeps the
-    // vertex lists of a fast refit.
+    // vertex lists of a fast refit. Another state of the same object shares the sibling's
+    // leaf order (share_states).
     BuildOptions options = options_;
     options.deformable = needs.deforms;
+    if (share_states_ && sibling.model != nullptr) {
+      const ObbTree& like = static_cast<const ObbTreeModel&>(*sibling.model).tree();
+      return std::unique_ptr<BackendModel>(
+          std::make_unique<ObbTreeModel>(ObbTree::buildLike(like, mesh.vertices, options)));
+    }
     return std::unique_ptr<BackendModel>(
         std::make_unique<ObbTreeModel>(ObbTree::build(mesh.vertices, mesh.triangles, options)));
   }
 
-  Status update(BackendModel& model, const Eigen::Ref<const Eigen::Matrix3Xd>& positions) override {
-    static_cast<ObbTreeModel&>(model).tree().refit(positions);
+  Status update(BackendModel& model, const Eigen::Ref<const Eigen::Matrix3Xd>& positions,
+                UpdateCounters& counters) override {
+    const RefitReport report = static_cast<ObbTreeModel&>(model).tree().refit(positions);
+    counters.nodes_refit = report.nodes_refit;
+    counters.rebuilds = report.subtrees_rebuilt;
+    counters.nodes_rebuilt = report.nodes_rebuilt;
+    counters.counted = true;
     return {};
   }
 
@@ -77,6 +91,7 @@ class ObbTreeBackend final : public Backend {
  private:
   BuildOptions options_;
   int threads_ = 1;
+  bool share_states_ = true;
   CollideResult scratch_;
 };
 
@@ -93,12 +108,14 @@ Result<std::unique_ptr<Backend>> create(const std::string& /*variant*/, BackendO
     return Status(StatusCode::kInvalidArgument,
                   "obbtree: rebuild_ratio must be 0 (never) or at least 1");
   }
+  Result<bool> share_states = options.getBool("share_states", true);
+  if (!share_states.ok()) return share_states.status();
   BuildOptions build_options;
   build_options.max_leaf_triangles = static_cast<std::int32_t>(leaf.value());
   build_options.float_boxes = float_boxes.value();
   build_options.rebuild_ratio = rebuild_ratio.value();
-  return std::unique_ptr<Backend>(
-      std::make_unique<ObbTreeBackend>(build_options, static_cast<int>(threads.value())));
+  return std::unique_ptr<Backend>(std::make_unique<ObbTreeBackend>(
+      build_options, static_cast<int>(threads.value()), share_states.value()));
 }
 
 const PluginInfo& describe() {
@@ -112,7 +129,9 @@ const PluginInfo& describe() {
         "options max_leaf_triangles (default 1), float_boxes (default false: boxes in double), "
         "threads (default 1: all-pairs queries on this many threads), rebuild_ratio (default "
         "0: a deforming model's subtree is rebuilt when its box grew past this many times its "
-        "fresh volume; 0 never)"}},
+        "fresh volume; 0 never), share_states (default true: the trees of an object's active "
+        "states "
+        "with one triangle list share its leaf order, each box fitted fresh per state)"}},
       &create};
   return info;
 }

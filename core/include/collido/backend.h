@@ -34,13 +34,15 @@ class Backend {
   virtual Capabilities capabilities() const = 0;
 
   /// Builds the structure for a mesh, computing only what `needs` asks for. The view is valid
-  /// only during the call.
-  virtual Result<std::unique_ptr<BackendModel>> build(const MeshView& mesh,
-                                                      const BuildNeeds& needs) = 0;
+  /// only during the call. `sibling` names another active state of the same object (same
+  /// triangle list) whose position-independent parts the new model may share.
+  virtual Result<std::unique_ptr<BackendModel>> build(const MeshView& mesh, const BuildNeeds& needs,
+                                                      const StateSibling& sibling) = 0;
 
-  /// Replaces the vertex positions of a model built with needs.deforms (same count and order).
-  virtual Status update(BackendModel& model,
-                        const Eigen::Ref<const Eigen::Matrix3Xd>& positions) = 0;
+  /// Replaces the vertex positions of a model built with needs.deforms (same count and order);
+  /// a backend that counts its work (Capabilities::counts_update_work) fills `counters`.
+  virtual Status update(BackendModel& model, const Eigen::Ref<const Eigen::Matrix3Xd>& positions,
+                        UpdateCounters& counters) = 0;
 
   /// Answers one question about two posed models. `result` arrives cleared.
   virtual Status query(BackendModel& a, const Pose& pose_a, BackendModel& b, const Pose& pose_b,

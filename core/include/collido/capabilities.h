@@ -19,6 +19,7 @@ struct Capabilities {
   bool update = false;                  ///< update() accepts new vertex positions
   bool counts_bv_tests = false;         ///< results carry bounding-volume test counts
   bool counts_primitive_tests = false;  ///< results carry primitive test counts
+  bool counts_update_work = false;      ///< update() reports the volumes it refit and rebuilt
   std::uint64_t max_contacts = 0;       ///< most contacts a query can return; 0 = no limit
   std::string notes;                    ///< limits worth knowing, for people
 
@@ -31,6 +32,23 @@ struct Capabilities {
 struct BuildNeeds {
   QueryKindSet queries;  ///< the questions the model will be part of
   bool deforms = false;  ///< update() will be called; rigid models skip refit bookkeeping
+};
+
+class BackendModel;
+
+/// Another active state of the same object, given to build() so the backend may share with it
+/// what does not depend on vertex positions: the same vertex count and triangle list (checked
+/// by the adapter). It is alive during the call; the new model must not rely on it afterwards.
+struct StateSibling {
+  const BackendModel* model = nullptr;  ///< null: the model is built on its own
+};
+
+/// Work one update() did; the figures are meaningful only when `counted`.
+struct UpdateCounters {
+  std::uint64_t nodes_refit = 0;    ///< bounding volumes measured anew, the structure kept
+  std::uint64_t rebuilds = 0;       ///< structures rebuilt from scratch (models or subtrees)
+  std::uint64_t nodes_rebuilt = 0;  ///< bounding volumes in those rebuilt structures
+  bool counted = false;
 };
 
 }  // namespace collido

@@ -27,7 +27,7 @@ extern "C" {
 #endif
 
 /** The interface version; bump it on any change to the structures or functions below. */
-#define COLLIDO_PLUGIN_ABI_VERSION 1u
+#define COLLIDO_PLUGIN_ABI_VERSION 2u
 
 /** The one symbol a plugin shared library exports. */
 #define COLLIDO_PLUGIN_ENTRY_SYMBOL "collido_plugin_table"
@@ -55,9 +55,10 @@ typedef enum CollidoShapeKind { COLLIDO_SHAPE_TRIANGLE_MESH = 1u << 0 } CollidoS
 
 /** Bit flags for what a backend can do beyond answering queries. */
 typedef enum CollidoFeature {
-  COLLIDO_FEATURE_UPDATE = 1u << 0,                /**< update() accepts new vertex positions */
-  COLLIDO_FEATURE_COUNTS_BV_TESTS = 1u << 1,       /**< results carry bounding-volume test counts */
-  COLLIDO_FEATURE_COUNTS_PRIMITIVE_TESTS = 1u << 2 /**< results carry primitive test counts */
+  COLLIDO_FEATURE_UPDATE = 1u << 0,          /**< update() accepts new vertex positions */
+  COLLIDO_FEATURE_COUNTS_BV_TESTS = 1u << 1, /**< results carry bounding-volume test counts */
+  COLLIDO_FEATURE_COUNTS_PRIMITIVE_TESTS = 1u << 2, /**< results carry primitive test counts */
+  COLLIDO_FEATURE_COUNTS_UPDATE_WORK = 1u << 3 /**< update() reports the volumes it refit/rebuilt */
 } CollidoFeature;
 
 /** Bit flags of CollidoBuildNeeds::flags. */
@@ -107,10 +108,18 @@ typedef struct CollidoShapeView {
   const CollidoTriangleMeshView* mesh; /**< set when kind == COLLIDO_SHAPE_TRIANGLE_MESH */
 } CollidoShapeView;
 
+/** A model handle; 0 is never valid. */
+typedef uint64_t CollidoModelHandle;
+
 /** What the scene will ask of a model, so the backend builds only that. */
 typedef struct CollidoBuildNeeds {
   uint32_t query_kinds; /**< CollidoQueryKind bits the model will be queried with */
   uint32_t flags;       /**< CollidoNeedFlag bits */
+  /** Another active state of the same object, or 0: a live model of this instance built from a
+   *  mesh with the same vertex count and the same triangle list (same order). The backend may
+   *  share with it whatever does not depend on vertex positions; the host never releases it
+   *  before this model's last use, but the backend must not rely on it outliving this model. */
+  CollidoModelHandle state_of;
 } CollidoBuildNeeds;
 
 /** A rigid transform: world = rotation * model + translation. */
@@ -161,11 +170,17 @@ typedef struct CollidoQueryResult {
   CollidoWorkCounters counters;
 } CollidoQueryResult;
 
+/** Work one update() did; the fields are valid only when `counted` is 1. */
+typedef struct CollidoUpdateCounters {
+  uint64_t nodes_refit;   /**< bounding volumes measured anew, the structure kept */
+  uint64_t rebuilds;      /**< structures rebuilt from scratch (whole models or subtrees) */
+  uint64_t nodes_rebuilt; /**< bounding volumes in those rebuilt structures */
+  uint32_t counted;       /**< 1 when the backend counted (COLLIDO_FEATURE_COUNTS_UPDATE_WORK) */
+  uint32_t reserved;
+} CollidoUpdateCounters;
+
 /** An opaque backend instance, created by CollidoPluginTable::create. */
 typedef struct CollidoInstance CollidoInstance;
-
-/** A model handle; 0 is never valid. */
-typedef uint64_t CollidoModelHandle;
 
 /** The table a plugin exports. The first two fields never move. */
 typedef struct CollidoPluginTable {
@@ -187,7 +202,7 @@ typedef struct CollidoPluginTable {
   int32_t (*build)(CollidoInstance* instance, const CollidoShapeView* shape,
                    const CollidoBuildNeeds* needs, CollidoModelHandle* out, CollidoMessage* error);
   int32_t (*update)(CollidoInstance* instance, CollidoModelHandle model, const double* positions,
-                    uint32_t vertex_count, CollidoMessage* error);
+                    uint32_t vertex_count, CollidoUpdateCounters* out, CollidoMessage* error);
   int32_t (*query)(CollidoInstance* instance, CollidoModelHandle a, const CollidoPose* pose_a,
                    CollidoModelHandle b, const CollidoPose* pose_b,
                    const CollidoQueryRequest* request, CollidoQueryResult* out,

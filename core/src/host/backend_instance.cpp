@@ -61,6 +61,7 @@ Result<std::unique_ptr<BackendInstance>> BackendInstance::create(
   out.update = (caps.features & COLLIDO_FEATURE_UPDATE) != 0;
   out.counts_bv_tests = (caps.features & COLLIDO_FEATURE_COUNTS_BV_TESTS) != 0;
   out.counts_primitive_tests = (caps.features & COLLIDO_FEATURE_COUNTS_PRIMITIVE_TESTS) != 0;
+  out.counts_update_work = (caps.features & COLLIDO_FEATURE_COUNTS_UPDATE_WORK) != 0;
   out.max_contacts = caps.max_contacts;
   out.notes = caps.notes != nullptr ? caps.notes : "";
   return Result<std::unique_ptr<BackendInstance>>(std::move(instance));
@@ -70,7 +71,8 @@ BackendInstance::~BackendInstance() {
   if (instance_ != nullptr) library_->table().destroy(instance_);
 }
 
-Result<ModelHandle> BackendInstance::build(const MeshView& mesh, const BuildNeeds& needs) {
+Result<ModelHandle> BackendInstance::build(const MeshView& mesh, const BuildNeeds& needs,
+                                           ModelHandle state_of) {
   CollidoTriangleMeshView c_mesh{};
   c_mesh.positions = mesh.vertices.data();
   c_mesh.vertex_count = static_cast<std::uint32_t>(mesh.vertices.cols());
@@ -82,6 +84,7 @@ Result<ModelHandle> BackendInstance::build(const MeshView& mesh, const BuildNeed
   CollidoBuildNeeds c_needs{};
   c_needs.query_kinds = needs.queries.bits();
   c_needs.flags = needs.deforms ? std::uint32_t{COLLIDO_NEED_DEFORMS} : 0u;
+  c_needs.state_of = state_of;
   CollidoMessage message{};
   ModelHandle handle = 0;
   if (Status s = fromCode(library_->table().build(instance_, &shape, &c_needs, &handle, &message),
@@ -93,12 +96,31 @@ Result<ModelHandle> BackendInstance::build(const MeshView& mesh, const BuildNeed
 }
 
 Status BackendInstance::update(ModelHandle model,
-                               const Eigen::Ref<const Eigen::Matrix3Xd>& positions) {
-  const Eigen::Matrix3Xd packed = positions;  // contiguous x y z per vertex for the C side
+                               const Eigen::Ref<const Eigen::Matrix3Xd>& positions,
+                               UpdateCounters* counters) {
+  // The C side reads x y z per vertex; copy only when the view is not already laid out so.
+  Eigen::Matrix3Xd packed;
+  const double* data = positions.data();
+  if (positions.outerStride() != 3) {
+    packed = positions;
+    data = packed.data();
+  }
   CollidoMessage message{};
-  return fromCode(library_->table().update(instance_, model, packed.data(),
-                                           static_cast<std::uint32_t>(packed.cols()), &message),
-                  message, variant_);
+  CollidoUpdateCounters c_counters{};
+  Status status = fromCode(
+      library_->table().update(instance_, model, data, static_cast<std::uint32_t>(positions.cols()),
+                               &c_counters, &message),
+      message, variant_);
+  if (counters != nullptr) {
+    *counters = UpdateCounters{};
+    if (status.ok() && c_counters.counted != 0) {
+      counters->nodes_refit = c_counters.nodes_refit;
+      counters->rebuilds = c_counters.rebuilds;
+      counters->nodes_rebuilt = c_counters.nodes_rebuilt;
+      counters->counted = true;
+    }
+  }
+  return status;
 }
 
 Status BackendInstance::query(ModelHandle a, const Pose& pose_a, ModelHandle b, const Pose& pose_b,

@@ -22,6 +22,7 @@ struct CollidoInstance {
     std::unique_ptr<collido::BackendModel> model;
     std::uint32_t generation = 1;
     std::uint32_t vertex_count = 0;
+    std::uint64_t triangle_list_hash = 0;  // to check a state sibling's topology
     collido::BuildNeeds needs;
   };
 
@@ -126,7 +127,8 @@ std::int32_t capabilitiesEntry(CollidoInstance* instance, CollidoCapabilities* o
   out->features =
       (caps.update ? std::uint32_t{COLLIDO_FEATURE_UPDATE} : 0u) |
       (caps.counts_bv_tests ? std::uint32_t{COLLIDO_FEATURE_COUNTS_BV_TESTS} : 0u) |
-      (caps.counts_primitive_tests ? std::uint32_t{COLLIDO_FEATURE_COUNTS_PRIMITIVE_TESTS} : 0u);
+      (caps.counts_primitive_tests ? std::uint32_t{COLLIDO_FEATURE_COUNTS_PRIMITIVE_TESTS} : 0u) |
+      (caps.counts_update_work ? std::uint32_t{COLLIDO_FEATURE_COUNTS_UPDATE_WORK} : 0u);
   out->max_contacts = caps.max_contacts;
   out->notes = caps.notes.c_str();
   return COLLIDO_STATUS_OK;
@@ -156,6 +158,16 @@ Status checkMesh(const CollidoTriangleMeshView& mesh) {
     }
   }
   return {};
+}
+
+// FNV-1a over the triangle indices and the vertex count: a state sibling must match both.
+std::uint64_t triangleListHash(const CollidoTriangleMeshView& mesh) {
+  std::uint64_t hash = 14695981039346656037ull ^ mesh.vertex_count;
+  for (std::uint64_t i = 0; i < 3ull * mesh.triangle_count; ++i) {
+    hash ^= static_cast<std::uint32_t>(mesh.triangles[i]);
+    hash *= 1099511628211ull;
+  }
+  return hash;
 }
 
 std::int32_t buildEntry(CollidoInstance* instance, const CollidoShapeView* shape,
@@ -189,8 +201,25 @@ std::int32_t buildEntry(CollidoInstance* instance, const CollidoShapeView* shape
     }
     const MeshView view{Eigen::Map<const Eigen::Matrix3Xd>(mesh.positions, 3, mesh.vertex_count),
                         Eigen::Map<const Eigen::Matrix3Xi>(mesh.triangles, 3, mesh.triangle_count)};
+    const std::uint64_t hash = triangleListHash(mesh);
+    StateSibling sibling;
+    if (needs->state_of != 0) {
+      const CollidoInstance::Slot* other = findSlot(instance, needs->state_of);
+      if (other == nullptr) {
+        return fail(
+            error, StatusCode::kInvalidHandle,
+            label + ": build: state_of " + handleText(needs->state_of) + " is not a live model");
+      }
+      if (other->triangle_list_hash != hash) {
+        return fail(error, StatusCode::kInvalidArgument,
+                    label + ": build: state_of " + handleText(needs->state_of) +
+                        " was built from another triangle list or vertex count");
+      }
+      sibling.model = other->model.get();
+    }
     BuildNeeds build_needs{wanted, deforms};
-    Result<std::unique_ptr<BackendModel>> built = instance->backend->build(view, build_needs);
+    Result<std::unique_ptr<BackendModel>> built =
+        instance->backend->build(view, build_needs, sibling);
     if (!built.ok()) return report(error, built.status());
     if (!built.value()) return fail(error, StatusCode::kInternal, label + ": build returned null");
 
@@ -208,6 +237,7 @@ std::int32_t buildEntry(CollidoInstance* instance, const CollidoShapeView* shape
     CollidoInstance::Slot& slot = instance->slots[index];
     slot.model = std::move(built).value();
     slot.vertex_count = mesh.vertex_count;
+    slot.triangle_list_hash = hash;
     slot.needs = build_needs;
     *out = (static_cast<std::uint64_t>(slot.generation) << 32) | (index + 1ull);
     return COLLIDO_STATUS_OK;
@@ -216,8 +246,8 @@ std::int32_t buildEntry(CollidoInstance* instance, const CollidoShapeView* shape
 
 std::int32_t updateEntry(CollidoInstance* instance, CollidoModelHandle model,
                          const double* positions, std::uint32_t vertex_count,
-                         CollidoMessage* error) {
-  if (instance == nullptr || positions == nullptr) {
+                         CollidoUpdateCounters* out, CollidoMessage* error) {
+  if (instance == nullptr || positions == nullptr || out == nullptr) {
     return fail(error, StatusCode::kInvalidArgument, "update: null argument");
   }
   const std::string& label = instance->label;
@@ -245,7 +275,16 @@ std::int32_t updateEntry(CollidoInstance* instance, CollidoModelHandle model,
       }
     }
     const Eigen::Map<const Eigen::Matrix3Xd> view(positions, 3, vertex_count);
-    return report(error, instance->backend->update(*slot->model, view));
+    UpdateCounters counters;
+    const Status status = instance->backend->update(*slot->model, view, counters);
+    *out = CollidoUpdateCounters{};
+    if (status.ok() && counters.counted) {
+      out->nodes_refit = counters.nodes_refit;
+      out->rebuilds = counters.rebuilds;
+      out->nodes_rebuilt = counters.nodes_rebuilt;
+      out->counted = 1;
+    }
+    return report(error, status);
   });
 }
 

@@ -18,22 +18,26 @@ std::optional<T> optionalFrom(const Json& json, const char* key) {
 }
 
 Json frameJson(const FrameRecord& f, const QueryMeasurement& m) {
-  return {{"frame", f.frame},
-          {"oracle_intersecting", f.oracle_intersecting},
-          {"reported_intersecting", f.reported_intersecting},
-          {"finest_intersecting", optionalJson(f.finest_intersecting)},
-          {"oracle_pairs", f.oracle_pairs},
-          {"reported_pairs", f.reported_pairs},
-          {"matched_pairs", f.matched_pairs},
-          {"invalid_pairs", f.invalid_pairs},
-          {"truncated", f.truncated},
-          {"object_pairs", f.object_pairs},
-          {"disagrees", f.disagrees(m.kind)},
-          {"median_us", f.median_us},
-          {"floor_us", optionalJson(f.floor_us)},
-          {"update_us", optionalJson(f.update_us)},
-          {"bv_tests", m.counts_bv_tests ? Json(f.bv_tests) : Json()},
-          {"primitive_tests", m.counts_primitive_tests ? Json(f.primitive_tests) : Json()}};
+  return {
+      {"frame", f.frame},
+      {"oracle_intersecting", f.oracle_intersecting},
+      {"reported_intersecting", f.reported_intersecting},
+      {"finest_intersecting", optionalJson(f.finest_intersecting)},
+      {"oracle_pairs", f.oracle_pairs},
+      {"reported_pairs", f.reported_pairs},
+      {"matched_pairs", f.matched_pairs},
+      {"invalid_pairs", f.invalid_pairs},
+      {"truncated", f.truncated},
+      {"object_pairs", f.object_pairs},
+      {"disagrees", f.disagrees(m.kind)},
+      {"median_us", f.median_us},
+      {"floor_us", optionalJson(f.floor_us)},
+      {"update_us", optionalJson(f.update_us)},
+      {"update_nodes_refit", f.update_work.counted ? Json(f.update_work.nodes_refit) : Json()},
+      {"update_rebuilds", f.update_work.counted ? Json(f.update_work.rebuilds) : Json()},
+      {"update_nodes_rebuilt", f.update_work.counted ? Json(f.update_work.nodes_rebuilt) : Json()},
+      {"bv_tests", m.counts_bv_tests ? Json(f.bv_tests) : Json()},
+      {"primitive_tests", m.counts_primitive_tests ? Json(f.primitive_tests) : Json()}};
 }
 
 FrameRecord frameFrom(const Json& j) {
@@ -51,6 +55,14 @@ FrameRecord frameFrom(const Json& j) {
   f.median_us = j.at("median_us").get<double>();
   f.floor_us = optionalFrom<double>(j, "floor_us");
   f.update_us = optionalFrom<double>(j, "update_us");
+  if (const std::optional<std::uint64_t> refit =
+          optionalFrom<std::uint64_t>(j, "update_nodes_refit")) {
+    f.update_work.counted = true;
+    f.update_work.nodes_refit = *refit;
+    f.update_work.rebuilds = optionalFrom<std::uint64_t>(j, "update_rebuilds").value_or(0);
+    f.update_work.nodes_rebuilt =
+        optionalFrom<std::uint64_t>(j, "update_nodes_rebuilt").value_or(0);
+  }
   f.bv_tests = optionalFrom<std::uint64_t>(j, "bv_tests").value_or(0);
   f.primitive_tests = optionalFrom<std::uint64_t>(j, "primitive_tests").value_or(0);
   return f;
@@ -82,6 +94,7 @@ Json measurementToJson(const QueryMeasurement& m) {
           {"counts_primitive_tests", m.counts_primitive_tests},
           {"floor_ratio", optionalJson(m.floor_ratio)},
           {"update_median_us", optionalJson(m.update_median_us)},
+          {"update_rebuilds", optionalJson(m.update_rebuilds)},
           {"build_ms", m.build_ms},
           {"triangles", m.triangles},
           {"memory_bytes", m.memory_bytes},

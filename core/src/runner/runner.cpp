@@ -39,13 +39,14 @@ struct BuiltModel {
   std::string error;  // non-empty when the build failed
 };
 
-BuiltModel buildModel(BackendInstance& backend, const TriangleMesh& mesh, const BuildNeeds& needs) {
+BuiltModel buildModel(BackendInstance& backend, const TriangleMesh& mesh, const BuildNeeds& needs,
+                      ModelHandle state_of) {
   BuiltModel built;
   resetHeapPeak();
   const std::optional<HeapHookSample> hooks_before = heapHookSample();
   const std::optional<std::size_t> heap_before = heapBytesInUse();
   const Clock::time_point start = Clock::now();
-  Result<ModelHandle> handle = backend.build(mesh.view(), needs);
+  Result<ModelHandle> handle = backend.build(mesh.view(), needs, state_of);
   const Clock::time_point stop = Clock::now();
   const std::optional<std::size_t> heap_after = heapBytesInUse();
   const std::optional<HeapHookSample> hooks_after = heapHookSample();
@@ -92,8 +93,11 @@ void summariseMeasurement(QueryMeasurement& m) {
   double timed_with_floor_us = 0.0;
   double floor_us = 0.0;
   std::vector<double> updates_us;
+  m.update_rebuilds.reset();
   for (const FrameRecord& f : m.frames) {
     if (f.update_us) updates_us.push_back(*f.update_us);
+    if (f.update_work.counted)
+      m.update_rebuilds = m.update_rebuilds.value_or(0) + f.update_work.rebuilds;
     if (f.floor_us) {
       timed_with_floor_us += f.median_us;
       floor_us += *f.floor_us;
@@ -183,8 +187,19 @@ void runSceneOnBackend(const Scene& scene, const BackendSpec& spec, OracleCache&
     if (needs.queries.empty()) continue;
     const SceneObject& object = scene.objects[index];
     say(options, label + ": building " + object.name);
-    for (std::size_t state = 0; state < object.stateCount(); ++state)
-      models[index].push_back(buildModel(backend, *object.stateMesh(state), needs));
+    for (std::size_t state = 0; state < object.stateCount(); ++state) {
+      // A state with the first state's triangle list is built as its sibling: the backend may
+      // share what does not depend on positions (the study's memory counts what it shares once).
+      const TriangleMesh& mesh = *object.stateMesh(state);
+      const TriangleMesh& first = *object.stateMesh(0);
+      const BuiltModel* sibling = models[index].empty() ? nullptr : &models[index].front();
+      const bool same_topology = sibling != nullptr && sibling->error.empty() &&
+                                 mesh.vertices.cols() == first.vertices.cols() &&
+                                 mesh.triangles.cols() == first.triangles.cols() &&
+                                 mesh.triangles == first.triangles;
+      models[index].push_back(
+          buildModel(backend, mesh, needs, same_topology ? sibling->handle : ModelHandle{0}));
+    }
   }
 
   std::size_t frames_done = 0;
@@ -262,7 +277,8 @@ void runSceneOnBackend(const Scene& scene, const BackendSpec& spec, OracleCache&
         shapes[i] = scene.objects[i].shapeAt(frame);
         if (!deforms(i)) continue;
         const Clock::time_point start = Clock::now();
-        const Status s = backend.update(modelAt(i), shapes[i]->vertices);
+        UpdateCounters work;
+        const Status s = backend.update(modelAt(i), shapes[i]->vertices, &work);
         const Clock::time_point stop = Clock::now();
         if (!s.ok()) {
           m.status = "failed: frame " + std::to_string(frame) + ": update " +
@@ -270,6 +286,12 @@ void runSceneOnBackend(const Scene& scene, const BackendSpec& spec, OracleCache&
           break;
         }
         record.update_us = record.update_us.value_or(0.0) + microseconds(stop - start);
+        if (work.counted) {
+          record.update_work.counted = true;
+          record.update_work.nodes_refit += work.nodes_refit;
+          record.update_work.rebuilds += work.rebuilds;
+          record.update_work.nodes_rebuilt += work.nodes_rebuilt;
+        }
       }
       if (!m.ok()) break;
       const auto ask = [&](std::size_t ia, std::size_t ib) {

@@ -25,17 +25,23 @@ std::string deformTable(const std::vector<CombinationResult>& results) {
                       std::to_string(m.frames.size()), formatNumber("%.1f", *m.update_median_us),
                       formatNumber("%.1f", update_total / frames),
                       formatNumber("%.1f", m.median_us), formatNumber("%.1f", both_total / frames),
+                      m.update_rebuilds ? std::to_string(*m.update_rebuilds) : "-",
+                      formatNumber("%.1f", static_cast<double>(m.memory_bytes) / 1024.0),
                       std::to_string(m.disagreements)});
     }
   }
   if (rows.empty()) return "";
   std::ostringstream out;
-  out << formatTextTable({"backend", "setting", "scene", "query", "frames", "update median us",
-                          "update mean us", "query median us", "update+query mean us", "disagree"},
-                         rows, 4);
+  out << formatTextTable(
+      {"backend", "setting", "scene", "query", "frames", "update median us", "update mean us",
+       "query median us", "update+query mean us", "rebuilds", "KiB", "disagree"},
+      rows, 4);
   out << "Each frame every deforming object's model gets the frame's positions (update(), timed "
          "once), then the query is asked; 'disagree' counts frames whose answer differed from "
-         "the oracle's on the deformed shapes.\n";
+         "the oracle's on the deformed shapes; 'rebuilds' the structures (models or subtrees) the "
+         "backend rebuilt instead of refitting, over all frames ('-': it does not count them); "
+         "'KiB' the models of the queried objects, every active state's, as the backend counts "
+         "them (what states share counted once).\n";
   return out.str();
 }
 

@@ -124,7 +124,8 @@ class MisbehavingBackend final : public collido::Backend {
   }
 
   collido::Result<std::unique_ptr<collido::BackendModel>> build(
-      const collido::MeshView& mesh, const collido::BuildNeeds& /*needs*/) override {
+      const collido::MeshView& mesh, const collido::BuildNeeds& /*needs*/,
+      const collido::StateSibling& /*sibling*/) override {
     if (mode_ == Mode::kCrashInBuild) crash();
     if (mode_ == Mode::kAbortInBuild) std::abort();
     if (mode_ == Mode::kHangInBuild) hang();
@@ -133,7 +134,8 @@ class MisbehavingBackend final : public collido::Backend {
   }
 
   collido::Status update(collido::BackendModel& model,
-                         const Eigen::Ref<const Eigen::Matrix3Xd>& positions) override {
+                         const Eigen::Ref<const Eigen::Matrix3Xd>& positions,
+                         collido::UpdateCounters& /*counters*/) override {
     static_cast<MeshModel&>(model).vertices = positions;
     return {};
   }

@@ -131,9 +131,15 @@ TEST(DeformableScene, ObbTreeIsExactOnEveryDeformedFrame) {
       ASSERT_TRUE(m.ok()) << m.status;
       EXPECT_EQ(m.disagreements, 0u);
       ASSERT_TRUE(m.update_median_us.has_value());
+      EXPECT_EQ(m.update_rebuilds, std::optional<std::uint64_t>(0));  // rebuild_ratio 0: never
       std::size_t intersecting = 0;
       for (const FrameRecord& f : m.frames) {
         EXPECT_TRUE(f.update_us.has_value());
+        EXPECT_TRUE(f.update_work.counted);
+        // Frame 0 is the rest shape the model was built from: nothing moved.
+        if (f.frame > 0) {
+          EXPECT_GT(f.update_work.nodes_refit, 0u) << "frame " << f.frame;
+        }
         intersecting += f.oracle_intersecting ? 1 : 0;
       }
       EXPECT_GT(intersecting, 0u);  // the scenes are in contact
@@ -157,8 +163,51 @@ TEST(DeformableScene, SwitchingStatesSelectsTheStatesModel) {
   }
 }
 
+// Two states with one triangle list: the second is built as the first's sibling and shares its
+// leaf order, so both states' trees hold less than two trees on their own, and answer the same.
+TEST(DeformableScene, StatesWithOneTriangleListShareTheirTreesOrder) {
+  Result<Scene> scene = parseScene(statesScene(R"(, "schedule": [0, 1, 1, 0])"), "s.json", ".");
+  ASSERT_TRUE(scene.ok()) << scene.status().message();
+  const RunReport shared = runObbTree(scene.value());
+  const RunReport apart =
+      runBackend(scene.value(), "obbtree", "obbtree", {{"share_states", "false"}});
+  ASSERT_EQ(shared.measurements.size(), apart.measurements.size());
+  for (std::size_t i = 0; i < shared.measurements.size(); ++i) {
+    const QueryMeasurement& m = shared.measurements[i];
+    ASSERT_TRUE(m.ok() && apart.measurements[i].ok()) << m.status;
+    EXPECT_EQ(m.disagreements, 0u);
+    // Object a's second state shares the leaf order and ids: 16 bytes a triangle.
+    const std::size_t triangles = scene.value().objects[0].mesh->triangleCount();
+    EXPECT_LE(m.memory_bytes + 16 * triangles, apart.measurements[i].memory_bytes) << m.query;
+  }
+}
+
 // FCL's refit of RSS and AABB trees answers wrongly after deformation (recorded in the
 // conformance expectations); rebuilding instead, FCL's other way to update, answers exactly.
+#ifdef COLLIDO_HAS_ODE
+// ODE's two ways to update: refit (dGeomTriMeshDataUpdate) and rebuild; each says which it did.
+TEST(DeformableScene, OdeCountsItsRefitsAndRebuilds) {
+  const Scene scene = load("scenes/deforming_tori.json", 0.25);
+  for (const bool rebuild : {false, true}) {
+    SCOPED_TRACE(rebuild ? "rebuild" : "refit");
+    const RunReport report =
+        runBackend(scene, "ode", "ode", {{"rebuild", rebuild ? "true" : "false"}});
+    ASSERT_FALSE(report.measurements.empty());
+    for (const QueryMeasurement& m : report.measurements) {
+      if (m.status.rfind("skipped", 0) == 0) continue;  // ODE answers no all_pairs
+      ASSERT_TRUE(m.ok()) << m.status;
+      ASSERT_TRUE(m.update_rebuilds.has_value());
+      for (const FrameRecord& f : m.frames) {
+        ASSERT_TRUE(f.update_work.counted);
+        EXPECT_EQ(f.update_work.nodes_rebuilt > 0, rebuild) << "frame " << f.frame;
+        EXPECT_EQ(f.update_work.nodes_refit > 0, !rebuild) << "frame " << f.frame;
+      }
+      EXPECT_EQ(*m.update_rebuilds > 0, rebuild);
+    }
+  }
+}
+#endif
+
 #ifdef COLLIDO_HAS_FCL
 TEST(DeformableScene, FclRebuildOnUpdateIsExact) {
   const Scene scene = load("scenes/deforming_tori.json", 0.25);
@@ -169,6 +218,9 @@ TEST(DeformableScene, FclRebuildOnUpdateIsExact) {
     for (const QueryMeasurement& m : report.measurements) {
       ASSERT_TRUE(m.ok()) << m.status;
       EXPECT_EQ(m.disagreements, 0u) << m.query;
+      // One rebuild a frame for each deforming object.
+      ASSERT_TRUE(m.update_rebuilds.has_value());
+      EXPECT_GE(*m.update_rebuilds, m.frames.size()) << m.query;
     }
   }
 }

@@ -1,6 +1,7 @@
 // "Deforming scenes": update and query costs per frame, only for measurements with updates.
 #include <collido/study/deform_table.h>
 
+#include <cstdint>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -15,17 +16,32 @@ TEST(DeformTable, UpdateAndQueryPerFrame) {
   CombinationResult r = testdata::okResult(testdata::combination("obbtree"));
   QueryMeasurement& m = r.measurements[0];  // all pairs: frames at 10, 20 and 40 us
   const double updates[3] = {5.0, 7.0, 30.0};
-  for (std::size_t i = 0; i < m.frames.size(); ++i)
+  const std::uint64_t rebuilds[3] = {0, 2, 1};
+  for (std::size_t i = 0; i < m.frames.size(); ++i) {
     m.frames[i].update_us = updates[i];
+    m.frames[i].update_work.counted = true;
+    m.frames[i].update_work.rebuilds = rebuilds[i];
+  }
+  m.memory_bytes = 3 * 1024 + 512;
   summariseMeasurement(m);
   const std::string table = deformTable({r});
   SCOPED_TRACE(table);
-  // Update median 7, mean 14; query median 20; update + query mean (15 + 27 + 70) / 3; one
-  // frame disagrees.
-  const std::vector<std::string> expected = {"obbtree", "tori", "all_pairs", "3", "7.0",
-                                             "14.0",    "20.0", "37.3",      "1"};
+  // Update median 7, mean 14; query median 20; update + query mean (15 + 27 + 70) / 3; three
+  // rebuilds; 3.5 KiB; one frame disagrees.
+  const std::vector<std::string> expected = {"obbtree", "tori", "all_pairs", "3",   "7.0", "14.0",
+                                             "20.0",    "37.3", "3",         "3.5", "1"};
   EXPECT_EQ(testdata::cellsOfLine(table, 2), expected);
   EXPECT_EQ(table.find("boolean"), std::string::npos);  // no updates: not a deforming row
+}
+
+TEST(DeformTable, RebuildsDashWhereTheBackendDoesNotCount) {
+  CombinationResult r = testdata::okResult(testdata::combination("obbtree"));
+  QueryMeasurement& m = r.measurements[0];
+  for (FrameRecord& f : m.frames)
+    f.update_us = 1.0;
+  summariseMeasurement(m);
+  EXPECT_FALSE(m.update_rebuilds.has_value());
+  EXPECT_EQ(testdata::cellsOfLine(deformTable({r}), 2).at(8), "-");
 }
 
 TEST(DeformTable, EmptyWithoutUpdates) {

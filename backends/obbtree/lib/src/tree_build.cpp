@@ -83,10 +83,10 @@ ObbTree ObbTree::build(const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
     stack.push_back(Task{task.first + lower, task.count - lower, index, task.depth + 1});
     stack.push_back(Task{task.first, lower, -1, task.depth + 1});
   }
-  tree.triangles_.resize(3, n);
-  tree.ids_ = order;
+  tree.topology_->triangles.resize(3, n);
+  tree.topology_->ids = order;
   for (std::int32_t k = 0; k < n; ++k)
-    tree.triangles_.col(k) = triangles.col(order[k]);
+    tree.topology_->triangles.col(k) = triangles.col(order[k]);
   tree.nodes_.shrink_to_fit();
   if (options.float_boxes) {
     // Built in double, then stored in float: each box measured anew around its own triangles.
@@ -94,8 +94,8 @@ ObbTree ObbTree::build(const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
     tree.compact_nodes_.reserve(tree.nodes_.size());
     for (const Node& node : tree.nodes_) {
       CompactNode compact;
-      compact.box =
-          compactBox(node.box, tree.vertices_, tree.triangles_.middleCols(node.first, node.count));
+      compact.box = compactBox(node.box, tree.vertices_,
+                               tree.topology_->triangles.middleCols(node.first, node.count));
       compact.second_child = node.second_child;
       compact.first = node.first;
       compact.count = node.count;
@@ -117,50 +117,57 @@ ObbTree ObbTree::build(const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
 }
 
 void ObbTree::buildVertexSpans() {
-  const auto n = static_cast<std::int32_t>(triangles_.cols());
+  TreeTopology& topology = ownTopology();
+  const auto n = static_cast<std::int32_t>(topology.triangles.cols());
   std::vector<std::int32_t> first_triangle(static_cast<std::size_t>(vertices_.cols()), -1);
-  refit_order_.clear();
-  first_use_.assign(static_cast<std::size_t>(n) + 1, 0);
+  topology.refit_order.clear();
+  topology.first_use.assign(static_cast<std::size_t>(n) + 1, 0);
   for (std::int32_t k = 0; k < n; ++k) {
-    first_use_[static_cast<std::size_t>(k)] = static_cast<std::int32_t>(refit_order_.size());
+    topology.first_use[static_cast<std::size_t>(k)] =
+        static_cast<std::int32_t>(topology.refit_order.size());
     for (int c = 0; c < 3; ++c) {
-      const std::int32_t v = triangles_(c, k);
+      const std::int32_t v = topology.triangles(c, k);
       if (first_triangle[static_cast<std::size_t>(v)] >= 0) continue;
       first_triangle[static_cast<std::size_t>(v)] = k;
-      refit_order_.push_back(v);
+      topology.refit_order.push_back(v);
     }
   }
-  first_use_[static_cast<std::size_t>(n)] = static_cast<std::int32_t>(refit_order_.size());
+  topology.first_use[static_cast<std::size_t>(n)] =
+      static_cast<std::int32_t>(topology.refit_order.size());
   // A node's vertices first used before its triangles: found once per node with a stamp.
   const std::size_t node_count = nodeCount();
-  extra_begin_.assign(node_count + 1, 0);
-  refit_extra_.clear();
+  topology.extra_begin.assign(node_count + 1, 0);
+  topology.refit_extra.clear();
   std::vector<std::size_t> stamp(static_cast<std::size_t>(vertices_.cols()), 0);
   for (std::size_t i = 0; i < node_count; ++i) {
-    extra_begin_[i] = static_cast<std::int32_t>(refit_extra_.size());
+    topology.extra_begin[i] = static_cast<std::int32_t>(topology.refit_extra.size());
     const std::int32_t first = float_boxes_ ? compact_nodes_[i].first : nodes_[i].first;
     const std::int32_t count = float_boxes_ ? compact_nodes_[i].count : nodes_[i].count;
     for (std::int32_t k = first; k < first + count; ++k) {
       for (int c = 0; c < 3; ++c) {
-        const auto v = static_cast<std::size_t>(triangles_(c, k));
+        const auto v = static_cast<std::size_t>(topology.triangles(c, k));
         if (first_triangle[v] >= first || stamp[v] == i + 1) continue;
         stamp[v] = i + 1;
-        refit_extra_.push_back(static_cast<std::int32_t>(v));
+        topology.refit_extra.push_back(static_cast<std::int32_t>(v));
       }
     }
   }
-  extra_begin_[node_count] = static_cast<std::int32_t>(refit_extra_.size());
-  refit_order_.shrink_to_fit();
-  refit_extra_.shrink_to_fit();
+  topology.extra_begin[node_count] = static_cast<std::int32_t>(topology.refit_extra.size());
+  topology.refit_order.shrink_to_fit();
+  topology.refit_extra.shrink_to_fit();
+}
+
+std::size_t TreeTopology::memoryBytes() const {
+  return static_cast<std::size_t>(triangles.size()) * sizeof(int) +
+         (ids.capacity() + refit_order.capacity() + first_use.capacity() + extra_begin.capacity() +
+          refit_extra.capacity()) *
+             sizeof(std::int32_t);
 }
 
 std::size_t ObbTree::memoryBytes() const {
   return nodes_.capacity() * sizeof(Node) + compact_nodes_.capacity() * sizeof(CompactNode) +
          static_cast<std::size_t>(vertices_.size()) * sizeof(double) +
-         static_cast<std::size_t>(triangles_.size()) * sizeof(int) +
-         (ids_.capacity() + refit_order_.capacity() + first_use_.capacity() +
-          extra_begin_.capacity() + refit_extra_.capacity()) *
-             sizeof(std::int32_t) +
+         (topology_borrowed_ && topology_.use_count() > 1 ? 0 : topology_->memoryBytes()) +
          fresh_volume_.capacity() * sizeof(float);
 }
 

@@ -70,20 +70,23 @@ std::size_t ObbTree::subtreeEnd(std::size_t node) const {
 }
 
 std::size_t ObbTree::rebuildSubtree(std::size_t node) {
+  TreeTopology& topology = ownTopology();
   const std::int32_t first = float_boxes_ ? compact_nodes_[node].first : nodes_[node].first;
   const std::int32_t count = float_boxes_ ? compact_nodes_[node].count : nodes_[node].count;
   const std::size_t end = subtreeEnd(node);
-  const Eigen::Matrix3Xi triangles = triangles_.middleCols(first, count);
+  const Eigen::Matrix3Xi triangles = topology.triangles.middleCols(first, count);
   BuildOptions options = options_;
   options.deformable = false;
   options.rebuild_ratio = 0.0;
   const ObbTree part = ObbTree::build(vertices_, triangles, options);
   // The subtree's triangles in the part's leaf order.
-  const std::vector<std::int32_t> ids(ids_.begin() + first, ids_.begin() + first + count);
+  const std::vector<std::int32_t> ids(topology.ids.begin() + first,
+                                      topology.ids.begin() + first + count);
   for (std::int32_t k = 0; k < count; ++k) {
-    triangles_.col(first + k) = triangles.col(part.ids_[static_cast<std::size_t>(k)]);
-    ids_[static_cast<std::size_t>(first) + static_cast<std::size_t>(k)] =
-        ids[static_cast<std::size_t>(part.ids_[static_cast<std::size_t>(k)])];
+    topology.triangles.col(first + k) =
+        triangles.col(part.topology_->ids[static_cast<std::size_t>(k)]);
+    topology.ids[static_cast<std::size_t>(first) + static_cast<std::size_t>(k)] =
+        ids[static_cast<std::size_t>(part.topology_->ids[static_cast<std::size_t>(k)])];
   }
   if (float_boxes_) {
     splice(compact_nodes_, node, end, placed(part.compact_nodes_, first, node));

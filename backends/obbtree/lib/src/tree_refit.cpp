@@ -46,15 +46,16 @@ RefitReport ObbTree::refit(const Eigen::Ref<const Eigen::Matrix3Xd>& vertices) {
   // once per triangle corner (about six times fewer projections on a closed mesh), and the
   // boxes are widened by the tree's bound on their axes' defect (axisDefect(), computed at
   // build over every box and kept by a refit, which keeps the axes).
-  const bool spans = !first_use_.empty();
+  const bool spans = !topology_->first_use.empty();
   const auto refitDirty = [&](auto& nodes, auto&& over_triangles, auto&& over_span) {
-    const std::vector<char> dirty = dirtyNodes(nodes, triangles_, moved);
+    const std::vector<char> dirty = dirtyNodes(nodes, topology_->triangles, moved);
     for (std::size_t i = nodes.size(); i-- > 0;) {
       if (dirty[i] == 0) continue;
       if (spans) {
         over_span(nodes[i].box, vertexSpan(i, nodes[i].first, nodes[i].count));
       } else {
-        over_triangles(nodes[i].box, triangles_.middleCols(nodes[i].first, nodes[i].count));
+        over_triangles(nodes[i].box,
+                       topology_->triangles.middleCols(nodes[i].first, nodes[i].count));
       }
       ++report.nodes_refit;
     }
@@ -77,11 +78,13 @@ RefitReport ObbTree::refit(const Eigen::Ref<const Eigen::Matrix3Xd>& vertices) {
 
 VertexSpan ObbTree::vertexSpan(std::size_t node, std::int32_t first, std::int32_t count) const {
   VertexSpan span;
-  span.first = refit_order_.data() + first_use_[static_cast<std::size_t>(first)];
-  span.last = refit_order_.data() +
-              first_use_[static_cast<std::size_t>(first) + static_cast<std::size_t>(count)];
-  span.extra_first = refit_extra_.data() + extra_begin_[node];
-  span.extra_last = refit_extra_.data() + extra_begin_[node + 1];
+  span.first =
+      topology_->refit_order.data() + topology_->first_use[static_cast<std::size_t>(first)];
+  span.last =
+      topology_->refit_order.data() +
+      topology_->first_use[static_cast<std::size_t>(first) + static_cast<std::size_t>(count)];
+  span.extra_first = topology_->refit_extra.data() + topology_->extra_begin[node];
+  span.extra_last = topology_->refit_extra.data() + topology_->extra_begin[node + 1];
   return span;
 }
 

@@ -75,11 +75,11 @@ std::string validateNodes(const std::vector<NodeT>& nodes, const std::vector<std
 std::string ObbTree::validate() const {
   if (float_boxes_) {
     if (!nodes_.empty()) return "a float-box tree holds double boxes too";
-    return validateNodes(compact_nodes_, ids_, vertices_, triangles_,
+    return validateNodes(compact_nodes_, topology_->ids, vertices_, topology_->triangles,
                          [](const CompactNode& node) { return expandBox(node.box); });
   }
   if (!compact_nodes_.empty()) return "a double-box tree holds float boxes too";
-  return validateNodes(nodes_, ids_, vertices_, triangles_,
+  return validateNodes(nodes_, topology_->ids, vertices_, topology_->triangles,
                        [](const Node& node) { return node.box; });
 }
 

@@ -34,8 +34,14 @@ class BackendInstance {
   const Capabilities& capabilities() const { return capabilities_; }
   const PluginLibrary& library() const { return *library_; }
 
-  Result<ModelHandle> build(const MeshView& mesh, const BuildNeeds& needs);
-  Status update(ModelHandle model, const Eigen::Ref<const Eigen::Matrix3Xd>& positions);
+  /// Builds a model; `state_of` (0: none) names another active state of the same object, built
+  /// from the same triangle list, whose position-independent parts the backend may share.
+  Result<ModelHandle> build(const MeshView& mesh, const BuildNeeds& needs,
+                            ModelHandle state_of = 0);
+  /// Moves a deforming model's vertices; `counters` (optional) receives the work the backend
+  /// reports (UpdateCounters::counted false when it does not count).
+  Status update(ModelHandle model, const Eigen::Ref<const Eigen::Matrix3Xd>& positions,
+                UpdateCounters* counters = nullptr);
   /// Fills `result` (cleared first; its vectors keep their capacity).
   Status query(ModelHandle a, const Pose& pose_a, ModelHandle b, const Pose& pose_b,
                const QueryRequest& request, QueryResult& result);

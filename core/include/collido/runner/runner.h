@@ -66,6 +66,9 @@ struct FrameRecord {
   /// per deforming object, timed once (a repeated update with the same positions could be
   /// cheaper than a real one). Switching active states selects a model and costs nothing.
   std::optional<double> update_us;
+  /// The work those update() calls reported, summed (counted false when the backend does not
+  /// count it: Capabilities::counts_update_work).
+  UpdateCounters update_work;
   /// With a finest scene: whether the objects, meshed at the finest resolution, intersect.
   std::optional<bool> finest_intersecting;
   std::uint64_t bv_tests = 0;
@@ -114,6 +117,8 @@ struct QueryMeasurement {
   std::optional<double> floor_ratio;
   /// With deforming objects: the median over frames of FrameRecord::update_us.
   std::optional<double> update_median_us;
+  /// With deforming objects, where the backend counts: structures it rebuilt over all frames.
+  std::optional<std::uint64_t> update_rebuilds;
   double build_ms = 0.0;                          ///< objects queried (every state's model)
   std::size_t triangles = 0;                      ///< objects queried
   std::size_t memory_bytes = 0;                   ///< objects queried, as the backend reports

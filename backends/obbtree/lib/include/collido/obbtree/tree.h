@@ -2,6 +2,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -56,6 +57,24 @@ struct CompactNode {
   bool isLeaf() const { return second_child < 0; }
 };
 
+/// What a tree's shape fixes whatever the vertex positions: the triangles in leaf order, their
+/// input ids, and (BuildOptions::deformable) the refit's vertex spans. Trees of one object's
+/// active states with the same triangle list share one (ObbTree::buildLike).
+struct TreeTopology {
+  Eigen::Matrix3Xi triangles;  ///< leaf order: column k is input triangle ids[k]
+  std::vector<std::int32_t> ids;
+  // The refit's vertex spans: every vertex in the order the leaf-ordered triangles first use
+  // it; the triangles at positions [a, b) first use refit_order[first_use[a] .. first_use[b]),
+  // and node i also uses the earlier-seen vertices refit_extra[extra_begin[i] ..
+  // extra_begin[i + 1]).
+  std::vector<std::int32_t> refit_order;
+  std::vector<std::int32_t> first_use;
+  std::vector<std::int32_t> extra_begin;
+  std::vector<std::int32_t> refit_extra;
+
+  std::size_t memoryBytes() const;
+};
+
 /// The OBB tree of a triangle mesh: a flat array of nodes, a copy of the vertices and the
 /// triangles stored in leaf order (so a leaf's triangles are contiguous).
 class ObbTree {
@@ -68,6 +87,18 @@ class ObbTree {
                        const Eigen::Ref<const Eigen::Matrix3Xi>& triangles,
                        const BuildOptions& options = {});
 
+  /// A tree of another active state of `sibling`'s object (the same vertex count and triangle
+  /// list, new positions): the same shape and leaf order, shared with `sibling` (memoryBytes()
+  /// counts it once, in the tree that built it), every box fitted fresh (new axes) around its
+  /// triangles at the new positions. Cheaper to build and smaller than build(); its boxes are
+  /// as tight as the old grouping allows, which suits states that move parts of the mesh
+  /// (a folding panel, an arm's configurations) more than ones that shuffle it.
+  static ObbTree buildLike(const ObbTree& sibling,
+                           const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
+                           const BuildOptions& options = {});
+  /// Whether this tree shares its topology with another (buildLike, either side).
+  bool sharesTopology() const { return topology_.use_count() > 1; }
+
   /// The nodes with double boxes; empty when the tree stores float boxes (compactNodes()).
   const std::vector<Node>& nodes() const { return nodes_; }
   /// The nodes with float boxes; empty unless built with BuildOptions::float_boxes.
@@ -76,10 +107,12 @@ class ObbTree {
   std::size_t nodeCount() const { return float_boxes_ ? compact_nodes_.size() : nodes_.size(); }
   const Eigen::Matrix3Xd& vertices() const { return vertices_; }
   /// Triangles in leaf order: column k is the input triangle triangleId(k).
-  const Eigen::Matrix3Xi& orderedTriangles() const { return triangles_; }
+  const Eigen::Matrix3Xi& orderedTriangles() const { return topology_->triangles; }
   /// The input index of the triangle at position k of the leaf order.
-  std::int32_t triangleId(std::int32_t k) const { return ids_[static_cast<std::size_t>(k)]; }
-  std::size_t triangleCount() const { return ids_.size(); }
+  std::int32_t triangleId(std::int32_t k) const {
+    return topology_->ids[static_cast<std::size_t>(k)];
+  }
+  std::size_t triangleCount() const { return topology_->ids.size(); }
   /// Deepest level (the root is at depth 0).
   int depth() const { return depth_; }
   /// The largest axisDefect of any box as the query decodes it (the separating-axis bound's
@@ -96,7 +129,8 @@ class ObbTree {
   /// Returns an empty string when valid, else the first violation found.
   std::string validate() const;
 
-  /// Bytes held: nodes, vertices, ordered triangles and ids (capacities, not sizes).
+  /// Bytes held: nodes, vertices, and the topology (ordered triangles, ids, vertex spans) unless
+  /// it was shared from a sibling (buildLike); capacities, not sizes.
   std::size_t memoryBytes() const;
 
  private:
@@ -113,17 +147,12 @@ class ObbTree {
   std::size_t rebuildSubtree(std::size_t node);
   void rebuildGrownSubtrees(RefitReport& report);
   VertexSpan vertexSpan(std::size_t node, std::int32_t first, std::int32_t count) const;
+  /// The topology to change: a private copy first when it is shared with a sibling.
+  TreeTopology& ownTopology();
   Eigen::Matrix3Xd vertices_;
-  Eigen::Matrix3Xi triangles_;
-  std::vector<std::int32_t> ids_;
-  // With BuildOptions::deformable: every vertex in the order the leaf-ordered triangles first
-  // use it; the triangles at positions [a, b) first use refit_order_[first_use_[a] ..
-  // first_use_[b]), and node i also uses the earlier-seen vertices refit_extra_[extra_begin_[i]
-  // .. extra_begin_[i + 1]).
-  std::vector<std::int32_t> refit_order_;
-  std::vector<std::int32_t> first_use_;
-  std::vector<std::int32_t> extra_begin_;
-  std::vector<std::int32_t> refit_extra_;
+  std::shared_ptr<TreeTopology> topology_ = std::make_shared<TreeTopology>();
+  // Built by buildLike: memoryBytes counts the topology only once no sibling holds it.
+  bool topology_borrowed_ = false;
   // With BuildOptions::deformable: each box's volume when it was last fitted fresh (at build or
   // rebuild), the reference of rebuild_ratio.
   std::vector<float> fresh_volume_;
