@@ -110,6 +110,36 @@ std::vector<std::string> backendSettings(const StudyArguments& args, const study
   return settings;
 }
 
+// Per setting from a sweep entry with "scenes", the scenes it runs on; a setting that an
+// unrestricted entry also gives runs everywhere. Names matching no scene of the study are
+// warned about (a typo would otherwise drop the setting silently).
+std::map<std::string, std::set<std::string>> onlyScenes(
+    const study::Sweep& sweep, const std::vector<study::PlannedScene>& scenes) {
+  std::map<std::string, std::set<std::string>> only;
+  std::set<std::string> everywhere;
+  std::set<std::string> names;
+  for (const study::PlannedScene& scene : scenes)
+    names.insert(scene.name);
+  for (const study::SweepBackend& backend : sweep.backends) {
+    for (const std::string& setting : backend.settings()) {
+      if (backend.scenes.empty()) {
+        everywhere.insert(setting);
+      } else {
+        only[setting].insert(backend.scenes.begin(), backend.scenes.end());
+      }
+    }
+    for (const std::string& scene : backend.scenes) {
+      if (names.count(scene) == 0) {
+        std::cerr << "warning: sweep: " << backend.variant << " names scene '" << scene
+                  << "', which is not among the scenes studied\n";
+      }
+    }
+  }
+  for (const std::string& setting : everywhere)
+    only.erase(setting);
+  return only;
+}
+
 // Runs one combination in a worker and reads its answer back.
 CombinationResult runInWorker(const Combination& c, const ResultStore& store,
                               const StudyArguments& args, int repetitions, double timeout_s,
@@ -232,7 +262,8 @@ int runStudy(const StudyArguments& args, const PluginOptions& plugins) {
     std::tie(shard_index, shard_count) = shard.value();
   }
   const std::vector<Combination> plan =
-      study::shardOf(study::planStudy(scenes, settings, sweep), shard_index, shard_count);
+      study::shardOf(study::planStudy(scenes, settings, sweep, onlyScenes(sweep, scenes)),
+                     shard_index, shard_count);
 
   const ResultStore store(args.out);
   Result<std::vector<Combination>> stored_plan = store.readPlan();

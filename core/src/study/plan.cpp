@@ -66,13 +66,16 @@ std::string Combination::label() const {
   return scene_name + " · " + backend + (setting.empty() ? "" : " · " + setting);
 }
 
-std::vector<Combination> planStudy(const std::vector<PlannedScene>& scenes,
-                                   const std::vector<std::string>& backends, const Sweep& sweep) {
+std::vector<Combination> planStudy(
+    const std::vector<PlannedScene>& scenes, const std::vector<std::string>& backends,
+    const Sweep& sweep, const std::map<std::string, std::set<std::string>>& only_scenes) {
   std::vector<Combination> plan;
   for (const PlannedScene& scene : scenes) {
     for (const double resolution : sweep.resolutionsOf(scene.name)) {
       if (resolution != 1.0 && !scene.has_generated_shapes) continue;
       for (const std::string& backend : backends) {
+        const auto only = only_scenes.find(backend);
+        if (only != only_scenes.end() && only->second.count(scene.name) == 0) continue;
         for (const NeedsMode needs : sweep.needs) {
           for (const std::uint64_t limit : sweep.limits) {
             Combination c;

@@ -65,12 +65,12 @@ std::string optionText(const Checker& c, const Json& value, const std::string& w
 }
 
 SweepBackend readBackend(const Checker& c, const Json& node, const std::string& where) {
-  if (node.is_string()) return SweepBackend{node.get<std::string>(), {}};
-  c.allowKeys(node, where, {"variant", "options"});
+  if (node.is_string()) return SweepBackend{node.get<std::string>(), {}, {}};
+  c.allowKeys(node, where, {"variant", "options", "scenes"});
   if (!node.contains("variant") || !node.at("variant").is_string()) {
     c.fail(where, "missing 'variant' (a backend name such as \"fcl:obb\")");
   }
-  SweepBackend backend{node.at("variant").get<std::string>(), {}};
+  SweepBackend backend{node.at("variant").get<std::string>(), {}, {}};
   if (backend.variant.empty()) c.fail(at(where, "variant"), "must not be empty");
   if (node.contains("options")) {
     const std::string options_at = at(where, "options");
@@ -87,6 +87,15 @@ SweepBackend readBackend(const Checker& c, const Json& node, const std::string& 
         values.push_back(optionText(c, item.value(), option_at));
       }
       backend.options.emplace_back(item.key(), values);
+    }
+  }
+  if (node.contains("scenes")) {
+    const std::string scenes_at = at(where, "scenes");
+    const Json& scenes = c.nonEmptyArray(node.at("scenes"), scenes_at);
+    for (std::size_t i = 0; i < scenes.size(); ++i) {
+      if (!scenes[i].is_string() || scenes[i].get<std::string>().empty())
+        c.fail(at(scenes_at, i), "expected a scene name");
+      backend.scenes.push_back(scenes[i].get<std::string>());
     }
   }
   return backend;

@@ -71,6 +71,18 @@ TEST(PlanStudy, OtherResolutionsOnlyForGeneratedShapes) {
   EXPECT_TRUE(planStudy({kScenes[1]}, {"obbtree"}, sweep).empty());
 }
 
+TEST(PlanStudy, ASettingKeptToSomeScenesRunsOnlyThere) {
+  Sweep sweep;
+  const std::vector<Combination> plan =
+      planStudy(kScenes, {"obbtree", "fcl:obb[rebuild=true]"}, sweep,
+                {{"fcl:obb[rebuild=true]", {"tori", "not_studied"}}});
+  std::vector<std::string> labels;
+  for (const Combination& c : plan)
+    labels.push_back(c.scene_name + " " + c.backend);
+  EXPECT_EQ(labels, (std::vector<std::string>{"tori obbtree", "tori fcl:obb[rebuild=true]",
+                                              "env_rob obbtree"}));
+}
+
 TEST(PlanStudy, NoBackendsOrScenesPlanNothing) {
   EXPECT_TRUE(planStudy(kScenes, {}, fullSweep()).empty());
   EXPECT_TRUE(planStudy({}, {"obbtree"}, fullSweep()).empty());

@@ -91,7 +91,24 @@ TEST(Sweep, OptionNumbersKeepTheirShortestForm) {
             (std::vector<std::string>{"0.1", "2", "-3", "0.001", "2.5"}));
 }
 
+TEST(Sweep, ABackendMayBeKeptToSomeScenes) {
+  const Result<Sweep> parsed = parseSweep(
+      R"({"backends": ["obbtree", {"variant": "fcl:obb", "options": {"rebuild": [true]},
+                                   "scenes": ["deforming_tori", "sheet_over_bunny"]}]})",
+      kLabel);
+  ASSERT_TRUE(parsed.ok()) << parsed.status().message();
+  EXPECT_TRUE(parsed.value().backends[0].scenes.empty());
+  EXPECT_EQ(parsed.value().backends[1].scenes,
+            (std::vector<std::string>{"deforming_tori", "sheet_over_bunny"}));
+}
+
 TEST(Sweep, ErrorsNameLabelPointerAndProblem) {
+  expectError(R"({"backends": [{"variant": "x", "scenes": []}]})", "/backends/0/scenes",
+              "at least one entry");
+  expectError(R"({"backends": [{"variant": "x", "scenes": ["a", 3]}]})", "/backends/0/scenes/1",
+              "expected a scene name");
+  expectError(R"({"backends": [{"variant": "x", "scenes": [""]}]})", "/backends/0/scenes/0",
+              "expected a scene name");
   expectError("[1]", "/", "expected an object");
   expectError(R"({"backend": []})", "/", "unknown key 'backend'");
   expectError(R"({"backends": []})", "/backends", "at least one entry");
@@ -150,12 +167,12 @@ TEST(Sweep, LoadSweepNamesTheFile) {
 }
 
 TEST(SweepBackend, SettingsAreTheCartesianProductInOptionOrder) {
-  EXPECT_EQ((SweepBackend{"obbtree", {}}.settings()), (std::vector<std::string>{"obbtree"}));
-  const SweepBackend backend{"obbtree", {{"a", {"1", "2"}}, {"b", {"x", "y", "z"}}}};
+  EXPECT_EQ((SweepBackend{"obbtree", {}, {}}.settings()), (std::vector<std::string>{"obbtree"}));
+  const SweepBackend backend{"obbtree", {{"a", {"1", "2"}}, {"b", {"x", "y", "z"}}}, {}};
   EXPECT_EQ(backend.settings(),
             (std::vector<std::string>{"obbtree[a=1;b=x]", "obbtree[a=1;b=y]", "obbtree[a=1;b=z]",
                                       "obbtree[a=2;b=x]", "obbtree[a=2;b=y]", "obbtree[a=2;b=z]"}));
-  const SweepBackend reversed{"fcl:obb", {{"b", {"x"}}, {"a", {"1"}}}};
+  const SweepBackend reversed{"fcl:obb", {{"b", {"x"}}, {"a", {"1"}}}, {}};
   EXPECT_EQ(reversed.settings(), (std::vector<std::string>{"fcl:obb[b=x;a=1]"}));
 }
 

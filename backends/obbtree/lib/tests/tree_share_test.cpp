@@ -44,7 +44,8 @@ Links links() {
   for (Eigen::Index v = 0; v < out.folded_a.vertices.cols(); ++v) {
     const Eigen::Vector3d p = out.a.vertices.col(v);
     if (p.x() <= 0.0) continue;  // the half with x > 0 turns a quarter about y
-    out.folded_a.vertices.col(v) = Eigen::AngleAxisd(0.5 * M_PI * p.x(), Eigen::Vector3d::UnitY()) * p;
+    out.folded_a.vertices.col(v) =
+        Eigen::AngleAxisd(0.5 * M_PI * p.x(), Eigen::Vector3d::UnitY()) * p;
   }
   return out;
 }

@@ -2,6 +2,8 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <map>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -43,9 +45,11 @@ struct PlannedScene {
 };
 
 /// Every combination of scenes × resolutions × backend settings × needs × limits, in that
-/// nesting order. Resolutions other than 1 are planned only for scenes with generated shapes.
-std::vector<Combination> planStudy(const std::vector<PlannedScene>& scenes,
-                                   const std::vector<std::string>& backends, const Sweep& sweep);
+/// nesting order. Resolutions other than 1 are planned only for scenes with generated shapes; a
+/// setting named in `only_scenes` runs only on the scenes listed for it (SweepBackend::scenes).
+std::vector<Combination> planStudy(
+    const std::vector<PlannedScene>& scenes, const std::vector<std::string>& backends,
+    const Sweep& sweep, const std::map<std::string, std::set<std::string>>& only_scenes = {});
 
 /// The part of a plan that shard `index` of `count` runs (every count-th combination from
 /// `index`, so each shard gets a fair mix of cheap and dear ones).

@@ -24,6 +24,9 @@ std::optional<NeedsMode> parseNeedsMode(const std::string& name);
 struct SweepBackend {
   std::string variant;
   std::vector<std::pair<std::string, std::vector<std::string>>> options;  ///< name, values
+  /// Only these scenes (by name); empty: every scene. For settings that matter only to some
+  /// scenes (a rebuild-on-update option on the deforming ones).
+  std::vector<std::string> scenes;
 
   /// Every setting as backend text: "variant" or "variant[a=1;b=x]", options in file order.
   std::vector<std::string> settings() const;
