@@ -273,6 +273,7 @@
             color: colour, strokeDash: { field: 'part', type: 'nominal', title: 'cost' },
             tooltip: [{ field: 'label', title: 'backend' }, { field: 'frame' },
               { field: 'update_us', title: 'update µs', format: '.1f' },
+              { field: 'rebuilds', title: 'rebuilds' },
               { field: 'query_us', title: 'query µs', format: '.1f' },
               { field: 'wrong', title: 'wrong answer' }] } }];
       // Rings on the frames answered wrongly (only when there are some: an empty layer has no

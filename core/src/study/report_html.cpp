@@ -157,21 +157,24 @@ Json timesOf(const std::vector<CombinationResult>& results) {
   return times;
 }
 
-// Per frame of every measurement with updates (deforming scenes): the update cost, the query's
-// median and whether the answer differed from the oracle's.
+// Per frame of every measurement with updates (deforming scenes): the update cost, the
+// structures it rebuilt (null where the backend does not count), the query's median and
+// whether the answer differed from the oracle's.
 Json deformingOf(const std::vector<CombinationResult>& results) {
   Json frames = Json::array();
   for (const CombinationResult& r : results) {
     for (const QueryMeasurement& m : tableMeasurements(r)) {
       if (!m.ok() || !m.update_median_us) continue;
       for (const FrameRecord& f : m.frames) {
-        frames.push_back({{"label", backendLabel(r.combination)},
-                          {"scene", r.combination.scene_name},
-                          {"query", m.query},
-                          {"frame", f.frame},
-                          {"update_us", f.update_us.value_or(0.0)},
-                          {"query_us", f.median_us},
-                          {"wrong", f.disagrees(m.kind)}});
+        frames.push_back(
+            {{"label", backendLabel(r.combination)},
+             {"scene", r.combination.scene_name},
+             {"query", m.query},
+             {"frame", f.frame},
+             {"update_us", f.update_us.value_or(0.0)},
+             {"rebuilds", f.update_work.counted ? Json(f.update_work.rebuilds) : Json()},
+             {"query_us", f.median_us},
+             {"wrong", f.disagrees(m.kind)}});
       }
     }
   }
