@@ -1,4 +1,5 @@
-// collido_bench: Google Benchmark suites over every backend and bundled scene.
+// collido_bench: Google Benchmark suites over every backend and bundled scene, and the pose
+// fits of core/pose (registered statically in pose_benchmarks.cpp).
 // Extra flags: --scenes=DIR (default: the source tree's scenes/); --backends=A,B,... in the
 // study's syntax, e.g. --backends='obbtree[max_leaf_triangles=4],fcl:obb' (default: every
 // statically linked variant with its default options).
