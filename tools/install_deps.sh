@@ -11,7 +11,7 @@ set -euo pipefail
 packages=(
   build-essential cmake ninja-build ccache pkg-config
   libeigen3-dev libcgal-dev libgmp-dev libmpfr-dev libboost-dev
-  libassimp-dev nlohmann-json3-dev libcli11-dev
+  libassimp-dev nlohmann-json3-dev libcli11-dev libfccp-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libfcl-dev libbullet-dev libode-dev libtbb-dev
   chromium

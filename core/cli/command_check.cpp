@@ -1,6 +1,7 @@
 #include <iostream>
 
 #include <collido/scene/scene.h>
+#include <collido/scene/tracking_summary.h>
 
 #include "commands.h"
 
@@ -32,6 +33,9 @@ int checkScenes(const std::vector<std::string>& paths) {
                   << (o.deformation->recorded ? ", recorded positions" : "") << ")";
       }
       std::cout << "\n";
+      if (o.tracking) {
+        std::cout << "    poses from " << summarizeTracking(o).text(*o.tracking) << "\n";
+      }
     }
     for (const SceneQuery& q : scene.queries) {
       std::cout << "  query " << q.name << ": " << queryKindName(q.request.kind) << " ";

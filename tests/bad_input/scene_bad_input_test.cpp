@@ -130,9 +130,9 @@ TEST(SceneBadInput, UnknownTopLevelKey) {
 TEST(SceneBadInput, UnknownKeyInObject) {
   Json scene = validScene();
   scene["objects"][0]["shpe"] = 1;
-  EXPECT_TRUE(
-      rejected(parse(scene), {"/objects/0:", "unknown key 'shpe'",
-                              "allowed: deform, motion, name, pose, schedule, shape, states"}));
+  EXPECT_TRUE(rejected(parse(scene),
+                       {"/objects/0:", "unknown key 'shpe'",
+                        "allowed: deform, markers, motion, name, pose, schedule, shape, states"}));
 }
 
 // "bad.json: /objects/1/shape: unknown key 'minor_raduis' (allowed: generator, major_radius,

@@ -14,7 +14,8 @@
 // by the loader's own limits (and an error naming the JSON path) instead of exhausting the
 // fuzzer's memory; those limits are part of what is fuzzed.
 // Mesh paths resolve against a temporary folder holding one tiny tetrahedron per format the
-// loader reads directly (tet.obj, tet.off, tet.ply, tet.stl) and a quad (quad.obj); the bundled
+// loader reads directly (tet.obj, tet.off, tet.ply, tet.stl), a quad (quad.obj) and a marker
+// tracks file (tracks.csv, object "m", markers 1 to 4, frames 0 to 2); the bundled
 // meshes are not used, since reading a 70,000-triangle scan per input would slow fuzzing a
 // hundredfold. The folder is removed at exit.
 #include <cmath>
@@ -59,6 +60,11 @@ constexpr const char* kTetStl =
     "endfacet\n"
     "endsolid tet\n";
 constexpr const char* kQuadObj = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n";
+// Marker tracks of an object "m" with markers 1 to 4 over frames 0 to 2 (frame 1 sees three).
+constexpr const char* kTracksCsv =
+    "frame,object,marker,x,y,z\n0,m,1,0,0,0\n0,m,2,1,0,0\n0,m,3,0,1,0\n0,m,4,0,0,1\n"
+    "1,m,1,0.5,0,0\n1,m,2,1.5,0,0\n1,m,3,0.5,1,0\n"
+    "2,m,1,1,0,0\n2,m,2,2,0,0\n2,m,3,1,1,0\n2,m,4,1,0,1\n";
 
 /// The folder of the tiny meshes, made on first use and removed at exit.
 class MeshFolder {
@@ -71,7 +77,8 @@ class MeshFolder {
                                                          {"tet.off", kTetOff},
                                                          {"tet.ply", kTetPly},
                                                          {"tet.stl", kTetStl},
-                                                         {"quad.obj", kQuadObj}};
+                                                         {"quad.obj", kQuadObj},
+                                                         {"tracks.csv", kTracksCsv}};
     for (const auto& [name, text] : files)
       std::ofstream(path_ / name) << text;
   }
@@ -133,6 +140,15 @@ void checkScene(const collido::Scene& scene, const collido::SceneLoadOptions& op
     for (std::size_t state : object.schedule) {
       if (state >= object.stateCount())
         broken("object '" + object.name + "' schedules a state that does not exist");
+    }
+    // Tracked objects: a true and a recovered pose per frame, the recovered ones rigid (above).
+    if (object.tracking) {
+      if (object.tracking->true_poses.size() != scene.frames ||
+          object.tracking->frames.size() != scene.frames || object.poses.size() != scene.frames)
+        broken("tracked object '" + object.name + "' lacks a pose for some frame");
+      for (const collido::Pose& pose : object.tracking->true_poses) {
+        if (!rigid(pose)) broken("tracked object '" + object.name + "' has a non-rigid truth");
+      }
     }
     if (object.deformation) {
       for (std::size_t frame : {std::size_t{0}, scene.frames - 1}) {

@@ -220,6 +220,7 @@ Result<PoseEstimate> fitPose(const MarkerLayout& layout,
   }
   const PointSet inliers = subset(all, used);
   std::vector<int> inlier_ids;
+  inlier_ids.reserve(used.size());
   for (std::size_t i : used)
     inlier_ids.push_back(ids[i]);
   const double condition = conditionOf(inliers, options.solver);

@@ -23,6 +23,7 @@ Json frameJson(const FrameRecord& f, const QueryMeasurement& m) {
       {"oracle_intersecting", f.oracle_intersecting},
       {"reported_intersecting", f.reported_intersecting},
       {"finest_intersecting", optionalJson(f.finest_intersecting)},
+      {"truth_intersecting", optionalJson(f.truth_intersecting)},
       {"oracle_pairs", f.oracle_pairs},
       {"reported_pairs", f.reported_pairs},
       {"matched_pairs", f.matched_pairs},
@@ -46,6 +47,7 @@ FrameRecord frameFrom(const Json& j) {
   f.oracle_intersecting = j.at("oracle_intersecting").get<bool>();
   f.reported_intersecting = j.at("reported_intersecting").get<bool>();
   f.finest_intersecting = optionalFrom<bool>(j, "finest_intersecting");
+  f.truth_intersecting = optionalFrom<bool>(j, "truth_intersecting");
   f.oracle_pairs = j.at("oracle_pairs").get<std::size_t>();
   f.reported_pairs = j.at("reported_pairs").get<std::size_t>();
   f.matched_pairs = j.at("matched_pairs").get<std::size_t>();
@@ -88,6 +90,10 @@ Json measurementToJson(const QueryMeasurement& m) {
           {"false_positives", m.false_positives},
           {"disagreements", m.disagreements},
           {"finest_disagreements", optionalJson(m.finest_disagreements)},
+          {"tracking_false_contacts", optionalJson(m.tracking_false_contacts)},
+          {"tracking_missed_contacts", optionalJson(m.tracking_missed_contacts)},
+          {"tracking_false_contacts", optionalJson(m.tracking_false_contacts)},
+          {"tracking_missed_contacts", optionalJson(m.tracking_missed_contacts)},
           {"recall", m.recall},
           {"precision", m.precision},
           {"counts_bv_tests", m.counts_bv_tests},

@@ -1,3 +1,4 @@
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -13,7 +14,15 @@ std::string formatRunTable(const RunReport& report) {
       "FP",      "recall", "precision", "disagree", "build ms",  "B/tri",  "B/tri heap"};
   std::vector<std::vector<std::string>> rows;
   std::vector<std::string> notes;
+  std::vector<std::string> tracking;
+  std::set<std::string> tracked;  // (scene, query): every backend has the same figure
   for (const QueryMeasurement& m : report.measurements) {
+    if (m.tracking_false_contacts && tracked.insert(m.scene + " / " + m.query).second) {
+      tracking.push_back(m.scene + " / " + m.query + ": on the poses recovered from markers the " +
+                         "exact answer has " + std::to_string(*m.tracking_false_contacts) +
+                         " false and " + std::to_string(m.tracking_missed_contacts.value_or(0)) +
+                         " missed contact frame(s) against the true poses");
+    }
     if (!m.ok()) {
       notes.push_back(m.backend + " / " + m.scene + " / " + m.query + ": " + m.status);
       rows.push_back({m.backend, m.scene, m.query, m.status.substr(0, m.status.find(':'))});
@@ -33,6 +42,8 @@ std::string formatRunTable(const RunReport& report) {
   out << formatTextTable(header, rows, 3);
   for (const std::string& note : notes)
     out << "note: " << note << "\n";
+  for (const std::string& line : tracking)
+    out << "tracking: " << line << "\n";
   for (const std::string& problem : report.problems)
     out << "problem: " << problem << "\n";
   return out.str();

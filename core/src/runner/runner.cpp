@@ -87,6 +87,8 @@ void summariseMeasurement(QueryMeasurement& m) {
   m.false_positives = 0;
   m.disagreements = 0;
   m.finest_disagreements.reset();
+  m.tracking_false_contacts.reset();
+  m.tracking_missed_contacts.reset();
   std::size_t oracle_pairs = 0;
   std::size_t reported_pairs = 0;
   std::size_t matched_pairs = 0;
@@ -105,6 +107,12 @@ void summariseMeasurement(QueryMeasurement& m) {
     if (f.oracle_intersecting && !f.reported_intersecting) ++m.false_negatives;
     if (!f.oracle_intersecting && f.reported_intersecting) ++m.false_positives;
     if (f.disagrees(m.kind)) ++m.disagreements;
+    if (f.truth_intersecting) {
+      m.tracking_false_contacts = m.tracking_false_contacts.value_or(0) +
+                                  (f.oracle_intersecting && !*f.truth_intersecting ? 1 : 0);
+      m.tracking_missed_contacts = m.tracking_missed_contacts.value_or(0) +
+                                   (!f.oracle_intersecting && *f.truth_intersecting ? 1 : 0);
+    }
     if (f.finest_intersecting) {
       m.finest_disagreements = m.finest_disagreements.value_or(0) +
                                (*f.finest_intersecting != f.reported_intersecting ? 1 : 0);
@@ -136,13 +144,14 @@ void addAnswer(const FrameRecord& one, FrameRecord& frame) {
   frame.truncated = frame.truncated || one.truncated;
 }
 
-// Whether the finest meshes intersect in `frame`: for a group query, whether any pair does
-// (the finest scene's own broad phase picks the candidates).
-bool finestIntersecting(OracleCache& finest, const SceneQuery& query,
-                        const BroadPhase* finest_broad_phase, std::size_t frame) {
-  if (finest_broad_phase == nullptr) return finest.get(query.a, query.b, frame).intersecting;
-  for (const auto& [ia, ib] : finest_broad_phase->pairsAt(frame)) {
-    if (finest.get(ia, ib, frame).intersecting) return true;
+// Whether another version of the scene (the finest meshes, the true poses) intersects in
+// `frame`: for a group query, whether any pair does (that scene's own broad phase picks the
+// candidates).
+bool otherIntersecting(OracleCache& other, const SceneQuery& query,
+                       const BroadPhase* other_broad_phase, std::size_t frame) {
+  if (other_broad_phase == nullptr) return other.get(query.a, query.b, frame).intersecting;
+  for (const auto& [ia, ib] : other_broad_phase->pairsAt(frame)) {
+    if (other.get(ia, ib, frame).intersecting) return true;
   }
   return false;
 }
@@ -202,6 +211,12 @@ void runSceneOnBackend(const Scene& scene, const BackendSpec& spec, OracleCache&
     }
   }
 
+  // Objects posed from tracked markers: the same scene at the true poses, whose exact answers
+  // say what tracking error did to the collision answer.
+  const Scene truth_scene = scene.hasTrackedObjects() ? scene.withTruePoses() : Scene{};
+  std::optional<OracleCache> truth_oracle;
+  if (scene.hasTrackedObjects()) truth_oracle.emplace(truth_scene, /*witness_only=*/true);
+
   std::size_t frames_done = 0;
   const std::size_t frames_total = scene.frames * scene.queries.size();
   for (const SceneQuery& query : scene.queries) {
@@ -256,9 +271,11 @@ void runSceneOnBackend(const Scene& scene, const BackendSpec& spec, OracleCache&
 
     std::optional<BroadPhase> broad_phase;
     std::optional<BroadPhase> finest_broad_phase;
+    std::optional<BroadPhase> truth_broad_phase;
     if (query.isGroup()) {
       broad_phase.emplace(scene, query);
       if (finest_oracle != nullptr) finest_broad_phase.emplace(finest_oracle->scene(), query);
+      if (truth_oracle) truth_broad_phase.emplace(truth_scene, query);
     }
     QueryResult result;
     for (std::size_t frame = 0; frame < scene.frames && m.ok(); ++frame) {
@@ -323,8 +340,12 @@ void runSceneOnBackend(const Scene& scene, const BackendSpec& spec, OracleCache&
       }
       if (!m.ok()) break;
       if (finest_oracle != nullptr) {
-        record.finest_intersecting = finestIntersecting(
+        record.finest_intersecting = otherIntersecting(
             *finest_oracle, query, finest_broad_phase ? &*finest_broad_phase : nullptr, frame);
+      }
+      if (truth_oracle) {
+        record.truth_intersecting = otherIntersecting(
+            *truth_oracle, query, truth_broad_phase ? &*truth_broad_phase : nullptr, frame);
       }
 
       std::vector<double> frame_times;

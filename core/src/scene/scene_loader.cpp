@@ -25,6 +25,7 @@
 #include <collido/stress/stress_cases.h>
 
 #include "deformation_reader.h"
+#include "marker_reader.h"
 #include "scene_motion.h"
 #include "scene_reader.h"
 
@@ -639,7 +640,8 @@ Scene readScene(const Reader& r, const Json& document, const std::string& base_d
   std::map<std::string, std::size_t> index_of;
   for (std::size_t i = 0; i < objects.value.size(); ++i) {
     const Node node = objects.at(i);
-    r.expectObject(node, {"name", "shape", "states", "schedule", "deform", "pose", "motion"});
+    r.expectObject(node,
+                   {"name", "shape", "states", "schedule", "deform", "pose", "motion", "markers"});
     SceneObject object;
     if (!node.has("name")) r.fail(node, "missing 'name'");
     object.name = r.string(node.at("name"));
@@ -739,6 +741,8 @@ Scene readScene(const Reader& r, const Json& document, const std::string& base_d
         }
       }
     }
+    if (node.has("markers"))
+      scene_reading::readMarkers(r, node.at("markers"), base_directory, scene.frames, object);
     readDeform(r, node, base_directory, scene, index_of, object);
     index_of.emplace(object.name, scene.objects.size());
     scene.objects.push_back(std::move(object));
@@ -856,6 +860,21 @@ Result<Scene> parseScene(const std::string& text, const std::string& label,
   } catch (const Json::exception& e) {
     return Status(StatusCode::kInvalidArgument, label + ": " + e.what());
   }
+}
+
+bool Scene::hasTrackedObjects() const {
+  return std::any_of(objects.begin(), objects.end(),
+                     [](const SceneObject& o) { return o.tracking != nullptr; });
+}
+
+Scene Scene::withTruePoses() const {
+  Scene truth = *this;
+  for (SceneObject& object : truth.objects) {
+    if (!object.tracking) continue;
+    object.poses = object.tracking->true_poses;
+    object.tracking.reset();
+  }
+  return truth;
 }
 
 bool Scene::hasGeneratedShapes() const {

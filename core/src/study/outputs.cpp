@@ -82,6 +82,7 @@ std::string recordsJsonLines(const std::vector<CombinationResult>& results) {
             {"oracle_intersecting", f.oracle_intersecting},
             {"reported_intersecting", f.reported_intersecting},
             {"finest_intersecting", optionalJson(f.finest_intersecting)},
+            {"truth_intersecting", optionalJson(f.truth_intersecting)},
             {"oracle_pairs", f.oracle_pairs},
             {"reported_pairs", f.reported_pairs},
             {"matched_pairs", f.matched_pairs},

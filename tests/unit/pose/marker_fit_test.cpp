@@ -29,12 +29,6 @@ Pose somePose(PortableRandom& random) {
   return pose;
 }
 
-double gaussian(PortableRandom& random) {  // Box-Muller from the portable uniform numbers
-  const double u1 = 1.0 - random.uniform();
-  const double u2 = random.uniform();
-  return std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * M_PI * u2);
-}
-
 std::vector<MarkerObservation> observe(const MarkerLayout& layout, const Eigen::Affine3d& map,
                                        PortableRandom* random = nullptr, double sigma = 0.0) {
   std::vector<MarkerObservation> out;
@@ -44,7 +38,7 @@ std::vector<MarkerObservation> observe(const MarkerLayout& layout, const Eigen::
     o.position = map * p;
     if (random != nullptr) {
       for (int k = 0; k < 3; ++k) {
-        const double n = gaussian(*random);
+        const double n = random->normal();
         o.position(k) += sigma * n;
       }
     }

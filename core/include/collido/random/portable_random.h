@@ -22,6 +22,13 @@ class PortableRandom {
   double uniform() { return static_cast<double>(engine_() >> 11) * 0x1.0p-53; }
   double uniform(double low, double high) { return low + (high - low) * uniform(); }
 
+  /// A standard normal number (Box-Muller; one uniform pair per call).
+  double normal() {
+    const double u1 = 1.0 - uniform();  // (0, 1]: log stays finite
+    const double u2 = uniform();
+    return std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * M_PI * u2);
+  }
+
   /// A uniform random unit vector.
   Eigen::Vector3d direction() {
     const double z = uniform(-1.0, 1.0);

@@ -71,6 +71,9 @@ struct FrameRecord {
   UpdateCounters update_work;
   /// With a finest scene: whether the objects, meshed at the finest resolution, intersect.
   std::optional<bool> finest_intersecting;
+  /// With objects posed from tracked markers: whether the objects intersect at their true
+  /// poses (the oracle's answers above are on the recovered poses every backend is given).
+  std::optional<bool> truth_intersecting;
   std::uint64_t bv_tests = 0;
   std::uint64_t primitive_tests = 0;
   /// Object pairs asked: 1 for a two-object query; for a group query, the candidates the shared
@@ -108,6 +111,11 @@ struct QueryMeasurement {
   /// With a finest scene: frames whose boolean answer differs from the finest meshes' truth,
   /// the error of answering on a coarser mesh.
   std::optional<std::size_t> finest_disagreements;
+  /// With objects posed from tracked markers: frames where the exact answer on the recovered
+  /// poses says contact and the true poses do not (false contacts), and the reverse (missed):
+  /// the collision error tracking error causes, whatever the backend.
+  std::optional<std::size_t> tracking_false_contacts;
+  std::optional<std::size_t> tracking_missed_contacts;
   double recall = 1.0;     ///< kAllPairs: matched / exact pairs over all frames (1 if none)
   double precision = 1.0;  ///< kAllPairs: matched / reported pairs over all frames (1 if none)
   bool counts_bv_tests = false;

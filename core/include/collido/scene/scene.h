@@ -11,6 +11,7 @@
 #include <collido/mesh/triangle_mesh.h>
 #include <collido/query.h>
 #include <collido/scene/deformation.h>
+#include <collido/scene/marker_tracking.h>
 #include <collido/status.h>
 
 namespace collido {
@@ -36,10 +37,17 @@ struct SceneObject {
   std::vector<std::size_t> schedule;
   /// Movable nodes, applied to the active state's vertices; empty for none.
   std::shared_ptr<const Deformation> deformation;
+  /// Tracked markers: `poses` are then the poses recovered from them, and the tracking holds
+  /// the true ones. Null for an object whose poses are given.
+  std::shared_ptr<const MarkerTracking> tracking;
 
-  /// The object's world pose in `frame`.
+  /// The object's world pose in `frame`: what every query uses (recovered, when tracked).
   const Pose& poseAt(std::size_t frame) const {
     return poses.size() == 1 ? poses[0] : poses[frame];
+  }
+  /// The pose the scene's motion gives in `frame`: poseAt() unless the object is tracked.
+  const Pose& truePoseAt(std::size_t frame) const {
+    return tracking ? tracking->true_poses[frame] : poseAt(frame);
   }
   /// Whether its shape changes between frames (states or movable nodes).
   bool changesShape() const { return deformation != nullptr || states.size() > 1; }
@@ -89,6 +97,10 @@ struct Scene {
 
   /// Whether some object comes from a generator (whose resolution a load option can change).
   bool hasGeneratedShapes() const;
+  /// Whether some object's poses are recovered from tracked markers.
+  bool hasTrackedObjects() const;
+  /// The scene as the world is: every tracked object at its true poses (a copy).
+  Scene withTruePoses() const;
 
   /// What the scene will ask of an object: the kinds of every query naming it.
   BuildNeeds needsOf(std::size_t object) const;
