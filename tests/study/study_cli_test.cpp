@@ -626,5 +626,30 @@ TEST(StudyCli, WorkersMeasureBuildsWithTheAllocationHooks) {
 #endif
 }
 
+// collido pose-error on the tracked docking scene: a row per solver, layout and count, the
+// JSON beside the table, and clear refusals of an unknown object and a layout it lacks.
+TEST(PoseErrorCli, TableJsonAndRefusals) {
+  const std::string dir = test::makeTempDirectory("pose_error");
+  const std::string scene = test::sourcePath("scenes/station_docking_tracked.json");
+  const CommandRun run =
+      collido({"pose-error", scene, "--object", "module_b", "--layouts", "given,compact",
+               "--markers", "4,6", "--trials", "20", "--json", dir + "/pose.json"},
+              dir);
+  ASSERT_EQ(run.exit_code, 0) << describe(run);
+  EXPECT_NE(run.out.find("rigid   given"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("affine  compact"), std::string::npos) << run.out;
+  const nlohmann::json json = nlohmann::json::parse(readText(dir + "/pose.json"));
+  EXPECT_EQ(json.at("rows").size(), 2u * 2u * 2u);
+  EXPECT_EQ(json.at("object"), "module_b");
+
+  const CommandRun unknown = collido({"pose-error", scene, "--object", "nobody"}, dir);
+  EXPECT_EQ(unknown.exit_code, 2) << describe(unknown);
+  EXPECT_NE(unknown.err.find("no object named 'nobody'"), std::string::npos) << unknown.err;
+  const CommandRun lacking =
+      collido({"pose-error", scene, "--object", "module_a", "--layouts", "given"}, dir);
+  EXPECT_EQ(lacking.exit_code, 2) << describe(lacking);
+  EXPECT_NE(lacking.err.find("has no marker layout"), std::string::npos) << lacking.err;
+}
+
 }  // namespace
 }  // namespace collido::study
