@@ -13,6 +13,7 @@
 
 #include <collido/runner/text_table.h>
 #include <collido/study/deform_table.h>
+#include <collido/study/tracking_table.h>
 #include <collido/study/field_table.h>
 #include <collido/study/robustness.h>
 
@@ -259,6 +260,10 @@ std::string studyTable(const std::vector<CombinationResult>& results) {
   if (const std::string deforming = deformTable(results); !deforming.empty()) {
     out << "\nDeforming scenes (update, then query, every frame):\n";
     out << deforming;
+  }
+  if (const std::string tracking = trackingTable(results); !tracking.empty()) {
+    out << "\nPoses from tracked markers (collision error against the true poses):\n";
+    out << tracking;
   }
   if (const std::string robustness = robustnessText(robustnessMatrix(results));
       !robustness.empty()) {
