@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # The dashboard in a real browser: runs a small study (two backends, needs declared and every,
 # two resolutions so the scaling view has curves, and a small stress scene so the robustness
-# matrix has cells, ODE's all-pairs ones unsupported, and a deforming scene for the view over
-# time), writes its report with itself as the
+# matrix has cells, ODE's all-pairs ones unsupported, a deforming scene for the view over
+# time, and a small scene posed from tracked markers), writes its report with itself as the
 # baseline, and opens it in headless Chromium (web/tests/report.test.mjs): every chart drawn,
 # no console error, no network request.
 # Usage: browser_report_test.sh COLLIDO_EXECUTABLE SOURCE_DIR WORK_DIR
@@ -26,12 +26,22 @@ cat > "$work/stress_touching.json" <<'JSON'
   "stress": {"category": "touching", "severities": [0, 2], "cases_per_severity": 3, "seed": 1}
 }
 JSON
+# A sphere passing through another, posed from four noisy markers (a contact frame can flip).
+cat > "$work/tracked.json" <<'JSON'
+{"name": "tracked_small", "frames": 8, "objects": [
+  {"name": "ball", "shape": {"generator": "sphere", "radius": 0.5, "slices": 12, "stacks": 6}},
+  {"name": "probe", "shape": {"generator": "sphere", "radius": 0.3, "slices": 12, "stacks": 6},
+   "motion": {"linear": {"from": {"translation": [-1.2, 0, 0]}, "to": {"translation": [1.2, 0, 0]}}},
+   "markers": {"layout": {"1": [0.3, 0, 0], "2": [0, 0.3, 0], "3": [0, 0, 0.3], "4": [-0.3, 0, 0]},
+               "generate": {"noise": 0.02, "seed": 2}}}],
+ "queries": [{"name": "touch", "a": "ball", "b": "probe", "kind": "boolean"}]}
+JSON
 "$collido" study "$source_dir/scenes/interlocked_tori.json" "$work/stress_touching.json" \
-  "$source_dir/scenes/deforming_tori.json" \
+  "$source_dir/scenes/deforming_tori.json" "$work/tracked.json" \
   --sweep "$work/sweep.json" --out "$work/study" --quiet > "$work/table.txt"
 "$collido" report "$work/study" --baseline "$work/study" -o "$work/report.html"
 COLLIDO_REPORT_HTML="$work/report.html" \
-COLLIDO_EXPECT_VIEWS="time-vs-error,robustness,time-distribution,deforming,memory,scaling,needs,comparison" \
+COLLIDO_EXPECT_VIEWS="time-vs-error,robustness,time-distribution,deforming,tracking,memory,scaling,needs,comparison" \
 COLLIDO_EXPECT_SECTION_TEXT="robustness=unsupported,robustness=touching" \
 COLLIDO_REPORT_SCREENSHOT="$work/report.png" \
   node --test "$source_dir/web/tests/"

@@ -289,6 +289,44 @@
     }
   }
 
+  // --- 2c. tracked markers: contact at the true and at the recovered poses --------------------
+  {
+    const s = section('tracking', 'Poses from tracked markers',
+      'Per frame of each scene whose objects are posed from tracked markers: whether the exact ' +
+      'answer says contact at the true poses and at the poses recovered from the markers (which ' +
+      'every backend is given). Frames where they differ are ringed: a false or a missed ' +
+      'contact caused by tracking error, whatever the backend.');
+    const box = el('div', { class: 'charts' });
+    s.appendChild(box);
+    const groups = groupBy(data.tracking || [], (d) => d.scene + ' · ' + d.query);
+    if (groups.size === 0) empty(s, 'No scene with tracked markers in this study ("markers": ' +
+      'scenes/README.md).');
+    for (const [name, values] of groups) {
+      const rows = [];
+      for (const v of values) {
+        rows.push({ frame: v.frame, poses: 'true', contact: v.truth ? 1 : 0,
+          differs: v.truth !== v.recovered });
+        rows.push({ frame: v.frame, poses: 'recovered', contact: v.recovered ? 1 : 0,
+          differs: v.truth !== v.recovered });
+      }
+      const layers = [
+        { mark: { type: 'line', interpolate: 'step-after', point: true },
+          encoding: { x: { field: 'frame', type: 'quantitative', title: 'frame' },
+            y: { field: 'contact', type: 'quantitative', title: 'contact',
+              scale: { domain: [-0.1, 1.1] }, axis: { values: [0, 1] } },
+            color: { field: 'poses', type: 'nominal', title: 'poses' },
+            tooltip: [{ field: 'frame' }, { field: 'poses' }, { field: 'contact' }] } }];
+      if (values.some((v) => v.truth !== v.recovered)) {
+        layers.push({ transform: [{ filter: 'datum.differs && datum.poses === "recovered"' }],
+          mark: { type: 'point', shape: 'circle', size: 140, filled: false, color: '#c0392b' },
+          encoding: { x: { field: 'frame', type: 'quantitative' },
+            y: { field: 'contact', type: 'quantitative' } } });
+      }
+      chart(box, 'tracking:' + name, {
+        title: name, width: 420, height: 140, data: { values: rows }, layer: layers });
+    }
+  }
+
   // --- 3. memory per triangle -----------------------------------------------------------------
   {
     const s = section('memory', 'Memory per triangle',

@@ -181,6 +181,27 @@ Json deformingOf(const std::vector<CombinationResult>& results) {
   return frames;
 }
 
+// Per frame of each tracked (scene, query), once (the oracle's answers, the same for every
+// backend): whether the objects touch at the true poses and at the recovered ones.
+Json trackingOf(const std::vector<CombinationResult>& results) {
+  Json frames = Json::array();
+  std::set<std::string> seen;
+  for (const CombinationResult& r : results) {
+    for (const QueryMeasurement& m : tableMeasurements(r)) {
+      if (!m.ok() || !m.tracking_false_contacts) continue;
+      if (!seen.insert(r.combination.scene_name + "\n" + m.query).second) continue;
+      for (const FrameRecord& f : m.frames) {
+        frames.push_back({{"scene", r.combination.scene_name},
+                          {"query", m.query},
+                          {"frame", f.frame},
+                          {"truth", f.truth_intersecting.value_or(false)},
+                          {"recovered", f.oracle_intersecting}});
+      }
+    }
+  }
+  return frames;
+}
+
 Result<std::string> readText(const std::filesystem::path& path, const std::string& hint) {
   std::ifstream in(path, std::ios::binary);
   if (!in) {
@@ -274,6 +295,7 @@ Json reportData(const std::vector<CombinationResult>& results,
           {"baseline_rows", rowsOf(baseline)},
           {"times", timesOf(results)},
           {"deforming", deformingOf(results)},
+          {"tracking", trackingOf(results)},
           {"failures", failuresOf(results)},
           {"robustness", robustnessJson(robustnessMatrix(results))}};
 }
