@@ -73,12 +73,9 @@ class MeshFolder {
       : path_(std::filesystem::temp_directory_path() /
               ("collido_scene_fuzz." + std::to_string(::getpid()))) {
     std::filesystem::create_directories(path_);
-    const std::pair<const char*, const char*> files[] = {{"tet.obj", kTetObj},
-                                                         {"tet.off", kTetOff},
-                                                         {"tet.ply", kTetPly},
-                                                         {"tet.stl", kTetStl},
-                                                         {"quad.obj", kQuadObj},
-                                                         {"tracks.csv", kTracksCsv}};
+    const std::pair<const char*, const char*> files[] = {
+        {"tet.obj", kTetObj}, {"tet.off", kTetOff},   {"tet.ply", kTetPly},
+        {"tet.stl", kTetStl}, {"quad.obj", kQuadObj}, {"tracks.csv", kTracksCsv}};
     for (const auto& [name, text] : files)
       std::ofstream(path_ / name) << text;
   }

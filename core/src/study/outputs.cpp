@@ -13,9 +13,9 @@
 
 #include <collido/runner/text_table.h>
 #include <collido/study/deform_table.h>
-#include <collido/study/tracking_table.h>
 #include <collido/study/field_table.h>
 #include <collido/study/robustness.h>
+#include <collido/study/tracking_table.h>
 
 namespace collido::study {
 namespace {

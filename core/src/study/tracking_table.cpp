@@ -51,10 +51,10 @@ std::string trackingTable(const std::vector<CombinationResult>& results) {
                      wrong.empty() ? "none" : wrong});
   }
   std::ostringstream out;
-  out << formatTextTable({"scene", "query", "frames", "contact (true poses)",
-                          "contact (recovered)", "false contacts", "missed contacts",
-                          "backends wrong on recovered poses (frames)"},
-                         cells, 2);
+  out << formatTextTable(
+      {"scene", "query", "frames", "contact (true poses)", "contact (recovered)", "false contacts",
+       "missed contacts", "backends wrong on recovered poses (frames)"},
+      cells, 2);
   out << "The recovered poses (from tracked markers) drive every backend and the oracle; "
          "'false' and 'missed' contacts are frames where the exact answer on them differs from "
          "the exact answer on the true poses: the collision error tracking causes, whatever the "

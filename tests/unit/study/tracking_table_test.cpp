@@ -28,8 +28,8 @@ CombinationResult tracked(const std::string& backend) {
 TEST(TrackingTable, ErrorOncePerQueryAndEachBackendsDisagreements) {
   const std::string table = trackingTable({tracked("obbtree"), tracked("fcl:obb")});
   SCOPED_TRACE(table);
-  const std::vector<std::string> expected = {
-      "tori", "all_pairs", "3", "2", "2", "1", "1", "obbtree 1, fcl:obb 1"};
+  const std::vector<std::string> expected = {"tori", "all_pairs", "3", "2",
+                                             "2",    "1",         "1", "obbtree 1, fcl:obb 1"};
   EXPECT_EQ(testdata::cellsOfLine(table, 2), expected);
   // One row (the boolean measurement has no true-pose answers), then the explanation.
   EXPECT_EQ(testdata::cellsOfLine(table, 3).at(0).rfind("The recovered poses", 0), 0u);
