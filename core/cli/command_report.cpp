@@ -1,6 +1,10 @@
 // collido report: the dashboard of a study folder as one self-contained HTML page.
 #include <filesystem>
+#include <fstream>
 #include <iostream>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
 
 #include <collido/study/report_html.h>
 #include <collido/study/result_store.h>
@@ -16,7 +20,27 @@ struct ReportArguments {
   std::string baseline;
   std::string web;
   std::string title;
+  std::vector<std::string> pose_error;  ///< collido pose-error --json files
 };
+
+// A pose-error sweep written by collido pose-error --json, checked enough to draw.
+Result<nlohmann::json> readPoseError(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) return Status(StatusCode::kInvalidArgument, path + ": file not found");
+  std::stringstream text;
+  text << in.rdbuf();
+  try {
+    nlohmann::json json = nlohmann::json::parse(text.str());
+    if (!json.is_object() || json.value("collidoscope_pose_error", 0) != 1 ||
+        !json.contains("rows") || !json.at("rows").is_array()) {
+      return Status(StatusCode::kInvalidArgument,
+                    path + ": not a pose-error file (write one with collido pose-error --json)");
+    }
+    return json;
+  } catch (const nlohmann::json::exception& e) {
+    return Status(StatusCode::kInvalidArgument, path + ": not valid JSON: " + e.what());
+  }
+}
 
 Result<std::vector<study::CombinationResult>> readStudy(const std::string& directory) {
   std::error_code ec;
@@ -46,8 +70,17 @@ int runReport(const ReportArguments& args) {
       args.title.empty()
           ? std::filesystem::absolute(args.directory).lexically_normal().filename().string()
           : args.title;
-  Result<std::string> html = study::renderReport(
-      study::reportData(results.value(), baseline, title), study::webDirectory(args.web));
+  nlohmann::json data = study::reportData(results.value(), baseline, title);
+  data["pose_error"] = nlohmann::json::array();
+  for (const std::string& path : args.pose_error) {
+    Result<nlohmann::json> sweep = readPoseError(path);
+    if (!sweep.ok()) {
+      std::cerr << "error: --pose-error: " << sweep.status().message() << "\n";
+      return 2;
+    }
+    data["pose_error"].push_back(std::move(sweep).value());
+  }
+  Result<std::string> html = study::renderReport(data, study::webDirectory(args.web));
   if (!html.ok()) {
     std::cerr << "error: " << html.status().message() << "\n";
     return 2;
@@ -81,6 +114,8 @@ void addReportCommand(CLI::App& app, int& exit_code) {
   command->add_option("--web", args->web,
                       "the front-end folder (default: $COLLIDO_WEB_DIR, else the source web/)");
   command->add_option("--title", args->title, "the page's title (default: the folder's name)");
+  command->add_option("--pose-error", args->pose_error,
+                      "pose-error sweeps to show (collido pose-error --json files; repeatable)");
   command->callback([args, &exit_code] { exit_code = runReport(*args); });
 }
 

@@ -39,9 +39,12 @@ JSON
 "$collido" study "$source_dir/scenes/interlocked_tori.json" "$work/stress_touching.json" \
   "$source_dir/scenes/deforming_tori.json" "$work/tracked.json" \
   --sweep "$work/sweep.json" --out "$work/study" --quiet > "$work/table.txt"
-"$collido" report "$work/study" --baseline "$work/study" -o "$work/report.html"
+"$collido" pose-error "$work/tracked.json" --object probe --layouts spread,given \
+  --markers 3,4 --trials 20 --json "$work/pose_error.json" > /dev/null
+"$collido" report "$work/study" --baseline "$work/study" --pose-error "$work/pose_error.json" \
+  -o "$work/report.html"
 COLLIDO_REPORT_HTML="$work/report.html" \
-COLLIDO_EXPECT_VIEWS="time-vs-error,robustness,time-distribution,deforming,tracking,memory,scaling,needs,comparison" \
+COLLIDO_EXPECT_VIEWS="time-vs-error,robustness,time-distribution,deforming,tracking,pose-error,memory,scaling,needs,comparison" \
 COLLIDO_EXPECT_SECTION_TEXT="robustness=unsupported,robustness=touching" \
 COLLIDO_REPORT_SCREENSHOT="$work/report.png" \
   node --test "$source_dir/web/tests/"

@@ -327,6 +327,43 @@
     }
   }
 
+  // --- 2d. pose error from tracked markers (collido pose-error sweeps) ------------------------
+  {
+    const s = section('pose-error', 'Pose error from tracked markers',
+      'From collido pose-error sweeps (collido report --pose-error FILE): the worst displacement ' +
+      'of the object\'s mesh by the fitted pose (median over seeded random true poses) against ' +
+      'the marker count, per solver, noise and dropout rate, one chart per marker layout (log ' +
+      'scale). Rows whose fits were all refused (too few markers, one plane for the affine fit) ' +
+      'have no point; the tooltip gives the refusals.');
+    const box = el('div', { class: 'charts' });
+    s.appendChild(box);
+    const sweeps = data.pose_error || [];
+    if (sweeps.length === 0) empty(s, 'No pose-error sweep given (collido pose-error SCENE ' +
+      '--object NAME --json F, then collido report DIR --pose-error F).');
+    for (const sweep of sweeps) {
+      const groups = groupBy(sweep.rows, (r) => r.layout);
+      for (const [layout, rows] of groups) {
+        const values = rows.filter((r) => r.worst_vertex_median !== null).map((r) => Object.assign(
+          {}, r, { series: r.solver + ', noise ' + r.noise + ', dropout ' + r.dropout }));
+        if (values.length === 0) continue;
+        const name = sweep.scene + ' · ' + sweep.object + ' · ' + layout;
+        chart(box, 'pose-error:' + name, {
+          title: name, width: 420, height: 220, data: { values: values },
+          mark: { type: 'line', point: true },
+          encoding: { x: { field: 'markers', type: 'quantitative', title: 'markers' },
+            y: { field: 'worst_vertex_median', type: 'quantitative', scale: { type: 'log' },
+              title: 'worst vertex displacement (median)' },
+            color: { field: 'series', type: 'nominal', title: 'solver, noise, dropout' },
+            tooltip: [{ field: 'solver' }, { field: 'markers' }, { field: 'noise' },
+              { field: 'dropout' }, { field: 'worst_vertex_median', format: '.2e' },
+              { field: 'worst_vertex_p90', format: '.2e' },
+              { field: 'rotation_deg_median', title: 'rotation deg', format: '.3f' },
+              { field: 'failed', title: 'refused' }, { field: 'trials' },
+              { field: 'solve_us_median', title: 'solve µs', format: '.1f' }] } });
+      }
+    }
+  }
+
   // --- 3. memory per triangle -----------------------------------------------------------------
   {
     const s = section('memory', 'Memory per triangle',

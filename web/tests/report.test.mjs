@@ -64,7 +64,7 @@ test('every chart of the report renders without console errors', async () => {
     }
     const sections = await page.$$eval('section.view', (nodes) => nodes.map((n) => n.id));
     for (const id of ['time-vs-error', 'robustness', 'time-distributions', 'deforming', 'tracking',
-      'memory', 'scaling',
+      'pose-error', 'memory', 'scaling',
       'failures', 'needs', 'comparison', 'table']) {
       assert.ok(sections.includes(id), `missing section ${id}`);
     }
