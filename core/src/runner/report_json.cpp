@@ -24,6 +24,8 @@ Json frameJson(const FrameRecord& f, const QueryMeasurement& m) {
       {"reported_intersecting", f.reported_intersecting},
       {"finest_intersecting", optionalJson(f.finest_intersecting)},
       {"truth_intersecting", optionalJson(f.truth_intersecting)},
+      {"possible_contact", optionalJson(f.possible_contact)},
+      {"tracking_margin", optionalJson(f.tracking_margin)},
       {"oracle_pairs", f.oracle_pairs},
       {"reported_pairs", f.reported_pairs},
       {"matched_pairs", f.matched_pairs},
@@ -48,6 +50,8 @@ FrameRecord frameFrom(const Json& j) {
   f.reported_intersecting = j.at("reported_intersecting").get<bool>();
   f.finest_intersecting = optionalFrom<bool>(j, "finest_intersecting");
   f.truth_intersecting = optionalFrom<bool>(j, "truth_intersecting");
+  f.possible_contact = optionalFrom<bool>(j, "possible_contact");
+  f.tracking_margin = optionalFrom<double>(j, "tracking_margin");
   f.oracle_pairs = j.at("oracle_pairs").get<std::size_t>();
   f.reported_pairs = j.at("reported_pairs").get<std::size_t>();
   f.matched_pairs = j.at("matched_pairs").get<std::size_t>();
@@ -92,8 +96,12 @@ Json measurementToJson(const QueryMeasurement& m) {
           {"finest_disagreements", optionalJson(m.finest_disagreements)},
           {"tracking_false_contacts", optionalJson(m.tracking_false_contacts)},
           {"tracking_missed_contacts", optionalJson(m.tracking_missed_contacts)},
+          {"tracking_possible_contacts", optionalJson(m.tracking_possible_contacts)},
+          {"tracking_missed_within_margin", optionalJson(m.tracking_missed_within_margin)},
           {"tracking_false_contacts", optionalJson(m.tracking_false_contacts)},
           {"tracking_missed_contacts", optionalJson(m.tracking_missed_contacts)},
+          {"tracking_possible_contacts", optionalJson(m.tracking_possible_contacts)},
+          {"tracking_missed_within_margin", optionalJson(m.tracking_missed_within_margin)},
           {"recall", m.recall},
           {"precision", m.precision},
           {"counts_bv_tests", m.counts_bv_tests},

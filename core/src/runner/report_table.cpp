@@ -21,7 +21,14 @@ std::string formatRunTable(const RunReport& report) {
       tracking.push_back(m.scene + " / " + m.query + ": on the poses recovered from markers the " +
                          "exact answer has " + std::to_string(*m.tracking_false_contacts) +
                          " false and " + std::to_string(m.tracking_missed_contacts.value_or(0)) +
-                         " missed contact frame(s) against the true poses");
+                         " missed contact frame(s) against the true poses" +
+                         (m.tracking_possible_contacts
+                              ? "; within tracking error (3 sigma) contact is possible in " +
+                                    std::to_string(*m.tracking_possible_contacts) +
+                                    " frame(s), and " +
+                                    std::to_string(m.tracking_missed_within_margin.value_or(0)) +
+                                    " true contact frame(s) fall outside that"
+                              : std::string()));
     }
     if (!m.ok()) {
       notes.push_back(m.backend + " / " + m.scene + " / " + m.query + ": " + m.status);

@@ -8,12 +8,14 @@
 // Memory: the backend's own figure, and the C heap's growth across build measured by the probe.
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <map>
 #include <set>
 #include <tuple>
 
 #include <collido/host/backend_instance.h>
 #include <collido/oracle/exact_oracle.h>
+#include <collido/oracle/proximity.h>
 #include <collido/runner/floor.h>
 #include <collido/runner/heap_probe.h>
 #include <collido/runner/runner.h>
@@ -89,6 +91,8 @@ void summariseMeasurement(QueryMeasurement& m) {
   m.finest_disagreements.reset();
   m.tracking_false_contacts.reset();
   m.tracking_missed_contacts.reset();
+  m.tracking_possible_contacts.reset();
+  m.tracking_missed_within_margin.reset();
   std::size_t oracle_pairs = 0;
   std::size_t reported_pairs = 0;
   std::size_t matched_pairs = 0;
@@ -112,6 +116,13 @@ void summariseMeasurement(QueryMeasurement& m) {
                                   (f.oracle_intersecting && !*f.truth_intersecting ? 1 : 0);
       m.tracking_missed_contacts = m.tracking_missed_contacts.value_or(0) +
                                    (!f.oracle_intersecting && *f.truth_intersecting ? 1 : 0);
+    }
+    if (f.possible_contact) {
+      m.tracking_possible_contacts =
+          m.tracking_possible_contacts.value_or(0) + (*f.possible_contact ? 1 : 0);
+      m.tracking_missed_within_margin =
+          m.tracking_missed_within_margin.value_or(0) +
+          (f.truth_intersecting.value_or(false) && !*f.possible_contact ? 1 : 0);
     }
     if (f.finest_intersecting) {
       m.finest_disagreements = m.finest_disagreements.value_or(0) +
@@ -154,6 +165,35 @@ bool otherIntersecting(OracleCache& other, const SceneQuery& query,
     if (other.get(ia, ib, frame).intersecting) return true;
   }
   return false;
+}
+
+// The "possible contact within tracking error" answer: whether some candidate object pair
+// comes within `sigmas` times the sum of its tracked objects' predicted spreads. Left unset
+// when a tracked object's spread is unknown (no redundant marker, or a lost frame).
+void possibleContact(const Scene& scene,
+                     const std::vector<std::pair<std::size_t, std::size_t>>& candidates,
+                     const std::map<std::size_t, std::shared_ptr<const TriangleMesh>>& shapes,
+                     std::size_t frame, double sigmas, FrameRecord& record) {
+  bool possible = false;
+  double widest = 0.0;
+  for (const auto& [ia, ib] : candidates) {
+    double margin = 0.0;
+    for (std::size_t i : {ia, ib}) {
+      const SceneObject& o = scene.objects[i];
+      if (!o.tracking) continue;
+      const double sigma = o.tracking->frames[frame].sigma;
+      if (std::isnan(sigma)) return;
+      margin += sigmas * sigma;
+    }
+    widest = std::max(widest, margin);
+    if (!possible) {
+      possible = meshesWithinDistance(*shapes.at(ia), scene.objects[ia].poseAt(frame),
+                                      *shapes.at(ib), scene.objects[ib].poseAt(frame), margin)
+                     .within;
+    }
+  }
+  record.possible_contact = possible;
+  record.tracking_margin = widest;
 }
 
 void say(const RunOptions& options, const std::string& line) {
@@ -346,6 +386,7 @@ void runSceneOnBackend(const Scene& scene, const BackendSpec& spec, OracleCache&
       if (truth_oracle) {
         record.truth_intersecting = otherIntersecting(
             *truth_oracle, query, truth_broad_phase ? &*truth_broad_phase : nullptr, frame);
+        possibleContact(scene, candidates, shapes, frame, options.tracking_sigmas, record);
       }
 
       std::vector<double> frame_times;

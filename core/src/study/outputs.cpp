@@ -84,6 +84,8 @@ std::string recordsJsonLines(const std::vector<CombinationResult>& results) {
             {"reported_intersecting", f.reported_intersecting},
             {"finest_intersecting", optionalJson(f.finest_intersecting)},
             {"truth_intersecting", optionalJson(f.truth_intersecting)},
+            {"possible_contact", optionalJson(f.possible_contact)},
+            {"tracking_margin", optionalJson(f.tracking_margin)},
             {"oracle_pairs", f.oracle_pairs},
             {"reported_pairs", f.reported_pairs},
             {"matched_pairs", f.matched_pairs},

@@ -244,6 +244,13 @@ TEST(MarkerScene, DockingTrackingErrorIsCountedAgainstTheTruePoses) {
     EXPECT_TRUE(*m.frames[20].truth_intersecting);
     EXPECT_FALSE(m.frames[20].oracle_intersecting);
     EXPECT_FALSE(*m.frames[19].truth_intersecting);
+    // Within tracking error (3 sigma) contact is possible in every truly touching frame.
+    ASSERT_TRUE(m.tracking_possible_contacts.has_value());
+    EXPECT_GE(*m.tracking_possible_contacts, 4u);
+    EXPECT_EQ(m.tracking_missed_within_margin, std::optional<std::size_t>(0));
+    EXPECT_TRUE(m.frames[20].possible_contact.value_or(false));
+    EXPECT_GT(m.frames[20].tracking_margin.value_or(0.0), 0.0);
+    EXPECT_FALSE(m.frames[0].possible_contact.value_or(true));  // 39 mm apart
   }
   const TrackingSummary summary = summarizeTracking(scene.value().objects[1]);
   EXPECT_EQ(summary.lost, 0u);

@@ -25,11 +25,34 @@ CombinationResult tracked(const std::string& backend) {
   return r;
 }
 
+// The same with the possible-contact answer: frames 0 and 1 within the margin (so frame 2's
+// true contact falls outside it).
+CombinationResult trackedWithMargin(const std::string& backend) {
+  CombinationResult r = tracked(backend);
+  QueryMeasurement& m = r.measurements[0];
+  const bool possible[3] = {true, true, false};
+  for (std::size_t i = 0; i < m.frames.size(); ++i) {
+    m.frames[i].possible_contact = possible[i];
+    m.frames[i].tracking_margin = 0.01;
+  }
+  summariseMeasurement(m);
+  return r;
+}
+
+TEST(TrackingTable, PossibleContactsAndTrueContactsOutsideThem) {
+  const std::string table = trackingTable({trackedWithMargin("obbtree")});
+  SCOPED_TRACE(table);
+  const std::vector<std::string> cells = testdata::cellsOfLine(table, 2);
+  ASSERT_EQ(cells.size(), 10u);
+  EXPECT_EQ(cells[7], "2");
+  EXPECT_EQ(cells[8], "1");
+}
+
 TEST(TrackingTable, ErrorOncePerQueryAndEachBackendsDisagreements) {
   const std::string table = trackingTable({tracked("obbtree"), tracked("fcl:obb")});
   SCOPED_TRACE(table);
-  const std::vector<std::string> expected = {"tori", "all_pairs", "3", "2",
-                                             "2",    "1",         "1", "obbtree 1, fcl:obb 1"};
+  const std::vector<std::string> expected = {"tori", "all_pairs", "3", "2", "2",
+                                             "1",    "1",         "-", "-", "obbtree 1, fcl:obb 1"};
   EXPECT_EQ(testdata::cellsOfLine(table, 2), expected);
   // One row (the boolean measurement has no true-pose answers), then the explanation.
   EXPECT_EQ(testdata::cellsOfLine(table, 3).at(0).rfind("The recovered poses", 0), 0u);

@@ -46,6 +46,9 @@ struct RunOptions {
   std::function<void(const std::string&)> progress;  ///< called with a line per step; may be empty
   /// Called after each frame of each query with (frames done, frames in all); may be empty.
   std::function<void(std::size_t, std::size_t)> frame_progress;
+  /// Objects posed from tracked markers: the margin of the "possible contact" answer is this
+  /// many times the sum of the objects' predicted spreads (TrackedFrame::sigma) in the frame.
+  double tracking_sigmas = 3.0;
 };
 
 /// The comparison of one frame's answer with the oracle's.
@@ -74,6 +77,11 @@ struct FrameRecord {
   /// With objects posed from tracked markers: whether the objects intersect at their true
   /// poses (the oracle's answers above are on the recovered poses every backend is given).
   std::optional<bool> truth_intersecting;
+  /// With objects posed from tracked markers, where their uncertainty is known: whether the
+  /// objects come within `tracking_margin` at the recovered poses — a possible contact within
+  /// tracking error, beside the exact answer (RunOptions::tracking_sigmas).
+  std::optional<bool> possible_contact;
+  std::optional<double> tracking_margin;
   std::uint64_t bv_tests = 0;
   std::uint64_t primitive_tests = 0;
   /// Object pairs asked: 1 for a two-object query; for a group query, the candidates the shared
@@ -116,6 +124,10 @@ struct QueryMeasurement {
   /// the collision error tracking error causes, whatever the backend.
   std::optional<std::size_t> tracking_false_contacts;
   std::optional<std::size_t> tracking_missed_contacts;
+  /// Frames with a possible contact within tracking error, and true-pose contacts that even
+  /// that answer missed (the margin was too small for the real error).
+  std::optional<std::size_t> tracking_possible_contacts;
+  std::optional<std::size_t> tracking_missed_within_margin;
   double recall = 1.0;     ///< kAllPairs: matched / exact pairs over all frames (1 if none)
   double precision = 1.0;  ///< kAllPairs: matched / reported pairs over all frames (1 if none)
   bool counts_bv_tests = false;
