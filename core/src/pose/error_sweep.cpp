@@ -8,6 +8,7 @@
 #include <limits>
 
 #include <collido/pose/pose_error.h>
+#include <collido/pose/synthetic_markers.h>
 #include <collido/random/portable_random.h>
 
 namespace collido::pose {
@@ -130,6 +131,11 @@ Result<std::vector<ErrorSweepRow>> runErrorSweep(const Eigen::Ref<const Eigen::M
             row.noise = noise;
             row.dropout = dropout;
             row.trials = options.trials;
+            MarkerNoise noise_model;
+            noise_model.noise = noise;
+            noise_model.dropout = dropout;
+            noise_model.outliers = options.outliers;
+            noise_model.outlier_offset = options.outlier_offset;
             FitOptions fit;
             fit.solver = solver;
             fit.reject_outliers = options.reject_outliers > 0.0;
@@ -142,23 +148,8 @@ Result<std::vector<ErrorSweepRow>> runErrorSweep(const Eigen::Ref<const Eigen::M
               truth.linear() = random.rotation();
               const Eigen::Vector3d shift = random.direction();
               truth.translation() = 3.0 * size * shift;
-              std::vector<MarkerObservation> seen;
-              for (const auto& [id, p] : layout.value()) {
-                const double dropped = random.uniform();
-                const double swapped = random.uniform();
-                Eigen::Vector3d error;
-                for (int k = 0; k < 3; ++k) {
-                  const double n = random.normal();
-                  error(k) = noise * n;
-                }
-                const Eigen::Vector3d away = random.direction();
-                if (dropped < dropout) continue;
-                MarkerObservation o;
-                o.id = id;
-                o.position = truth * p + error;
-                if (swapped < options.outliers) o.position += options.outlier_offset * away;
-                seen.push_back(o);
-              }
+              const std::vector<MarkerObservation> seen =
+                  observeMarkers(layout.value(), truth, noise_model, random);
               const auto begin = std::chrono::steady_clock::now();
               const Result<PoseEstimate> estimate = fitPose(layout.value(), seen, fit);
               const auto end = std::chrono::steady_clock::now();

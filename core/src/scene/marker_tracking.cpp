@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include <collido/pose/synthetic_markers.h>
 #include <collido/random/portable_random.h>
 
 namespace collido {
@@ -17,27 +18,10 @@ std::vector<std::vector<pose::MarkerObservation>> generateTracks(
     const pose::MarkerLayout& layout, const std::vector<Pose>& true_poses,
     const TrackNoise& noise) {
   PortableRandom random(noise.seed);
-  std::vector<std::vector<pose::MarkerObservation>> frames(true_poses.size());
-  for (std::size_t f = 0; f < true_poses.size(); ++f) {
-    for (const auto& [id, point] : layout) {
-      // Every draw is made whatever the outcome, so one marker's dropout does not shift the
-      // numbers every later marker gets (a tweak to one rate keeps the rest of the tracks).
-      const double dropped = random.uniform();
-      const double swapped = random.uniform();
-      Eigen::Vector3d error;
-      for (int k = 0; k < 3; ++k) {
-        const double n = random.normal();
-        error(k) = noise.noise * n;
-      }
-      const Eigen::Vector3d away = random.direction();
-      if (dropped < noise.dropout) continue;
-      pose::MarkerObservation o;
-      o.id = id;
-      o.position = true_poses[f] * point + error;
-      if (swapped < noise.outliers) o.position += noise.outlier_offset * away;
-      frames[f].push_back(o);
-    }
-  }
+  std::vector<std::vector<pose::MarkerObservation>> frames;
+  frames.reserve(true_poses.size());
+  for (const Pose& truth : true_poses)
+    frames.push_back(pose::observeMarkers(layout, truth, noise, random));
   return frames;
 }
 

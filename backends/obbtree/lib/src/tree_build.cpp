@@ -88,32 +88,38 @@ ObbTree ObbTree::build(const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
   for (std::int32_t k = 0; k < n; ++k)
     tree.topology_->triangles.col(k) = triangles.col(order[k]);
   tree.nodes_.shrink_to_fit();
-  if (options.float_boxes) {
-    // Built in double, then stored in float: each box measured anew around its own triangles.
-    tree.float_boxes_ = true;
-    tree.compact_nodes_.reserve(tree.nodes_.size());
-    for (const Node& node : tree.nodes_) {
-      CompactNode compact;
-      compact.box = compactBox(node.box, tree.vertices_,
-                               tree.topology_->triangles.middleCols(node.first, node.count));
-      compact.second_child = node.second_child;
-      compact.first = node.first;
-      compact.count = node.count;
-      tree.compact_nodes_.push_back(compact);
-    }
-    std::vector<Node>().swap(tree.nodes_);
-  }
+  if (options.float_boxes) tree.storeFloatBoxes();
   tree.options_ = options;
   if (options.deformable) {
     tree.buildVertexSpans();
     tree.recordFreshVolumes();
   }
-  // Refit keeps the axes, so this bound holds for the tree's whole life.
-  for (const Node& node : tree.nodes_)
-    tree.axis_defect_ = std::max(tree.axis_defect_, obbtree::axisDefect(node.box.axes));
-  for (const CompactNode& node : tree.compact_nodes_)
-    tree.axis_defect_ = std::max(tree.axis_defect_, obbtree::axisDefect(expandBox(node.box).axes));
+  tree.measureAxisDefect();
   return tree;
+}
+
+void ObbTree::storeFloatBoxes() {
+  // Built in double, then stored in float: each box measured anew around its own triangles.
+  float_boxes_ = true;
+  compact_nodes_.reserve(nodes_.size());
+  for (const Node& node : nodes_) {
+    CompactNode compact;
+    compact.box =
+        compactBox(node.box, vertices_, topology_->triangles.middleCols(node.first, node.count));
+    compact.second_child = node.second_child;
+    compact.first = node.first;
+    compact.count = node.count;
+    compact_nodes_.push_back(compact);
+  }
+  std::vector<Node>().swap(nodes_);
+}
+
+void ObbTree::measureAxisDefect() {
+  // Refit keeps the axes, so this bound holds for the tree's whole life.
+  for (const Node& node : nodes_)
+    axis_defect_ = std::max(axis_defect_, obbtree::axisDefect(node.box.axes));
+  for (const CompactNode& node : compact_nodes_)
+    axis_defect_ = std::max(axis_defect_, obbtree::axisDefect(expandBox(node.box).axes));
 }
 
 void ObbTree::buildVertexSpans() {

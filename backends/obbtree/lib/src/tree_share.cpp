@@ -41,29 +41,13 @@ ObbTree ObbTree::buildLike(const ObbTree& sibling,
     }
     node.box = fitter.fit(vertices, triangles, identity.data() + node.first, node.count);
   }
-  if (options.float_boxes) {
-    tree.float_boxes_ = true;
-    tree.compact_nodes_.reserve(node_count);
-    for (const Node& node : tree.nodes_) {
-      CompactNode compact;
-      compact.box =
-          compactBox(node.box, tree.vertices_, triangles.middleCols(node.first, node.count));
-      compact.second_child = node.second_child;
-      compact.first = node.first;
-      compact.count = node.count;
-      tree.compact_nodes_.push_back(compact);
-    }
-    std::vector<Node>().swap(tree.nodes_);
-  }
+  if (options.float_boxes) tree.storeFloatBoxes();
   if (options.deformable) {
     // A rigid sibling has no vertex spans: make them on a private copy, not on its topology.
     if (tree.topology_->first_use.empty()) tree.buildVertexSpans();
     tree.recordFreshVolumes();
   }
-  for (const Node& node : tree.nodes_)
-    tree.axis_defect_ = std::max(tree.axis_defect_, obbtree::axisDefect(node.box.axes));
-  for (const CompactNode& node : tree.compact_nodes_)
-    tree.axis_defect_ = std::max(tree.axis_defect_, obbtree::axisDefect(expandBox(node.box).axes));
+  tree.measureAxisDefect();
   return tree;
 }
 

@@ -8,6 +8,7 @@
 
 #include <collido/geometry.h>
 #include <collido/pose/marker_fit.h>
+#include <collido/pose/synthetic_markers.h>
 
 namespace collido {
 
@@ -40,12 +41,9 @@ struct MarkerTracking {
   std::size_t lostFrames() const;
 };
 
-/// How generated tracks deviate from the truth (scene "markers": {"generate": ...}).
-struct TrackNoise {
-  double noise = 0.0;            ///< per-axis standard deviation of each position (Gaussian)
-  double dropout = 0.0;          ///< chance a marker is not seen in a frame
-  double outliers = 0.0;         ///< chance a seen marker is mis-identified
-  double outlier_offset = 0.05;  ///< how far a mis-identified marker lands from its true place
+/// How generated tracks deviate from the truth (scene "markers": {"generate": ...}), and the
+/// seed that makes them.
+struct TrackNoise : pose::MarkerNoise {
   std::uint64_t seed = 1;
 };
 

@@ -138,6 +138,10 @@ class ObbTree {
   std::vector<CompactNode> compact_nodes_;
   bool float_boxes_ = false;
 
+  /// Replaces the double boxes by float boxes, each measured anew around its triangles.
+  void storeFloatBoxes();
+  /// Sets axis_defect_ from every box (after a build; a refit keeps the axes).
+  void measureAxisDefect();
   void buildVertexSpans();
   void recordFreshVolumes();
   double boxVolume(std::size_t node) const;
