@@ -17,6 +17,7 @@ struct PluginOptions {
 void addBackendsCommand(CLI::App& app, const PluginOptions& plugins, int& exit_code);
 void addCheckCommand(CLI::App& app, int& exit_code);
 void addPoseErrorCommand(CLI::App& app, int& exit_code);
+void addTracksCommand(CLI::App& app, int& exit_code);
 void addRunCommand(CLI::App& app, const PluginOptions& plugins, int& exit_code);
 void addConformanceCommand(CLI::App& app, int& exit_code);
 /// study, merge, and the internal worker mode the study starts.

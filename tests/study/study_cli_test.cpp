@@ -20,6 +20,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <collido/scene/scene.h>
 #include <collido/study/plan.h>
 #include <collido/study/result_store.h>
 
@@ -649,6 +650,33 @@ TEST(PoseErrorCli, TableJsonAndRefusals) {
       collido({"pose-error", scene, "--object", "module_a", "--layouts", "given"}, dir);
   EXPECT_EQ(lacking.exit_code, 2) << describe(lacking);
   EXPECT_NE(lacking.err.find("has no marker layout"), std::string::npos) << lacking.err;
+}
+
+// collido tracks writes the docking scene's generated tracks; a scene reading that file back
+// recovers the same poses as the generated one.
+TEST(TracksCli, GeneratedTracksWrittenAndReadBack) {
+  const std::string dir = test::makeTempDirectory("tracks");
+  const std::string scene = test::sourcePath("scenes/station_docking_tracked.json");
+  const CommandRun run = collido({"tracks", scene, "-o", dir + "/docking.csv"}, dir);
+  ASSERT_EQ(run.exit_code, 0) << describe(run);
+  EXPECT_NE(run.err.find("1 tracked object, 24 frames"), std::string::npos) << run.err;
+  nlohmann::json json = nlohmann::json::parse(readText(scene));
+  json["objects"][1]["markers"].erase("generate");
+  json["objects"][1]["markers"]["tracks"] = "docking.csv";
+  // The module meshes are generated, so the scene may move to the temporary folder.
+  std::ofstream(dir + "/docking.json") << json.dump();
+  const Result<Scene> generated = loadScene(scene);
+  const Result<Scene> read = loadScene(dir + "/docking.json");
+  ASSERT_TRUE(generated.ok() && read.ok()) << read.status().message();
+  for (std::size_t f = 0; f < generated.value().frames; ++f) {
+    EXPECT_EQ(read.value().objects[1].poseAt(f).matrix(),
+              generated.value().objects[1].poseAt(f).matrix())
+        << "frame " << f;
+  }
+  const CommandRun untracked =
+      collido({"tracks", test::sourcePath("scenes/env_rob.json"), "-o", dir + "/x.csv"}, dir);
+  EXPECT_EQ(untracked.exit_code, 2) << describe(untracked);
+  EXPECT_NE(untracked.err.find("no object has tracked markers"), std::string::npos);
 }
 
 }  // namespace
