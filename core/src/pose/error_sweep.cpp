@@ -162,9 +162,12 @@ Result<std::vector<ErrorSweepRow>> runErrorSweep(const Eigen::Ref<const Eigen::M
               rotation.push_back(e.rotation_deg);
               translation.push_back(e.translation);
               worst.push_back(e.worst_vertex);
+              // The rigid fit's map is its pose; only the affine fit's pose differs.
               pose_worst.push_back(
-                  poseError(Eigen::Affine3d(estimate.value().pose.matrix()), truth, vertices)
-                      .worst_vertex);
+                  solver == PoseSolver::kRigid
+                      ? e.worst_vertex
+                      : poseError(Eigen::Affine3d(estimate.value().pose.matrix()), truth, vertices)
+                            .worst_vertex);
             }
             row.rotation_deg_median = quantile(rotation, 0.5);
             row.rotation_deg_p90 = quantile(rotation, 0.9);

@@ -17,32 +17,6 @@ std::optional<T> optionalFrom(const Json& json, const char* key) {
   return found->get<T>();
 }
 
-Json frameJson(const FrameRecord& f, const QueryMeasurement& m) {
-  return {
-      {"frame", f.frame},
-      {"oracle_intersecting", f.oracle_intersecting},
-      {"reported_intersecting", f.reported_intersecting},
-      {"finest_intersecting", optionalJson(f.finest_intersecting)},
-      {"truth_intersecting", optionalJson(f.truth_intersecting)},
-      {"possible_contact", optionalJson(f.possible_contact)},
-      {"tracking_margin", optionalJson(f.tracking_margin)},
-      {"oracle_pairs", f.oracle_pairs},
-      {"reported_pairs", f.reported_pairs},
-      {"matched_pairs", f.matched_pairs},
-      {"invalid_pairs", f.invalid_pairs},
-      {"truncated", f.truncated},
-      {"object_pairs", f.object_pairs},
-      {"disagrees", f.disagrees(m.kind)},
-      {"median_us", f.median_us},
-      {"floor_us", optionalJson(f.floor_us)},
-      {"update_us", optionalJson(f.update_us)},
-      {"update_nodes_refit", f.update_work.counted ? Json(f.update_work.nodes_refit) : Json()},
-      {"update_rebuilds", f.update_work.counted ? Json(f.update_work.rebuilds) : Json()},
-      {"update_nodes_rebuilt", f.update_work.counted ? Json(f.update_work.nodes_rebuilt) : Json()},
-      {"bv_tests", m.counts_bv_tests ? Json(f.bv_tests) : Json()},
-      {"primitive_tests", m.counts_primitive_tests ? Json(f.primitive_tests) : Json()}};
-}
-
 FrameRecord frameFrom(const Json& j) {
   FrameRecord f;
   f.frame = j.at("frame").get<std::size_t>();
@@ -79,7 +53,7 @@ FrameRecord frameFrom(const Json& j) {
 Json measurementToJson(const QueryMeasurement& m) {
   Json frames = Json::array();
   for (const FrameRecord& f : m.frames)
-    frames.push_back(frameJson(f, m));
+    frames.push_back(frameRecordJson<Json>(f, m));
   return {{"backend", m.backend},
           {"scene", m.scene},
           {"query", m.query},
@@ -94,10 +68,6 @@ Json measurementToJson(const QueryMeasurement& m) {
           {"false_positives", m.false_positives},
           {"disagreements", m.disagreements},
           {"finest_disagreements", optionalJson(m.finest_disagreements)},
-          {"tracking_false_contacts", optionalJson(m.tracking_false_contacts)},
-          {"tracking_missed_contacts", optionalJson(m.tracking_missed_contacts)},
-          {"tracking_possible_contacts", optionalJson(m.tracking_possible_contacts)},
-          {"tracking_missed_within_margin", optionalJson(m.tracking_missed_within_margin)},
           {"tracking_false_contacts", optionalJson(m.tracking_false_contacts)},
           {"tracking_missed_contacts", optionalJson(m.tracking_missed_contacts)},
           {"tracking_possible_contacts", optionalJson(m.tracking_possible_contacts)},

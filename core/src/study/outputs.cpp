@@ -1,5 +1,7 @@
 #include <collido/study/outputs.h>
 
+#include <collido/runner/measurement_json.h>
+
 #include <unistd.h>
 
 #include <chrono>
@@ -21,11 +23,6 @@ namespace collido::study {
 namespace {
 
 using Json = nlohmann::ordered_json;
-
-template <typename T>
-Json optionalJson(const std::optional<T>& value) {
-  return value ? Json(*value) : Json();
-}
 
 std::string benchmarkName(const Combination& c, const QueryMeasurement& m) {
   const std::string setting = c.settingText();
@@ -61,40 +58,16 @@ std::string recordsJsonLines(const std::vector<CombinationResult>& results) {
     const Combination& c = r.combination;
     for (const QueryMeasurement& m : r.measurements) {
       for (const FrameRecord& f : m.frames) {
-        const Json line = {
-            {"combination", c.id},
-            {"backend", c.backend},
-            {"scene", c.scene_name},
-            {"category", c.category},
-            {"resolution", c.resolution},
-            {"needs", needsModeName(c.needs)},
-            {"limit", c.limit},
-            {"query", m.query},
-            {"kind", queryKindName(m.kind)},
-            {"frame", f.frame},
-            {"median_us", f.median_us},
-            {"floor_us", optionalJson(f.floor_us)},
-            {"update_us", optionalJson(f.update_us)},
-            {"update_nodes_refit",
-             f.update_work.counted ? Json(f.update_work.nodes_refit) : Json()},
-            {"update_rebuilds", f.update_work.counted ? Json(f.update_work.rebuilds) : Json()},
-            {"update_nodes_rebuilt",
-             f.update_work.counted ? Json(f.update_work.nodes_rebuilt) : Json()},
-            {"oracle_intersecting", f.oracle_intersecting},
-            {"reported_intersecting", f.reported_intersecting},
-            {"finest_intersecting", optionalJson(f.finest_intersecting)},
-            {"truth_intersecting", optionalJson(f.truth_intersecting)},
-            {"possible_contact", optionalJson(f.possible_contact)},
-            {"tracking_margin", optionalJson(f.tracking_margin)},
-            {"oracle_pairs", f.oracle_pairs},
-            {"reported_pairs", f.reported_pairs},
-            {"matched_pairs", f.matched_pairs},
-            {"invalid_pairs", f.invalid_pairs},
-            {"truncated", f.truncated},
-            {"object_pairs", f.object_pairs},
-            {"disagrees", f.disagrees(m.kind)},
-            {"bv_tests", m.counts_bv_tests ? Json(f.bv_tests) : Json()},
-            {"primitive_tests", m.counts_primitive_tests ? Json(f.primitive_tests) : Json()}};
+        Json line = {{"combination", c.id},
+                     {"backend", c.backend},
+                     {"scene", c.scene_name},
+                     {"category", c.category},
+                     {"resolution", c.resolution},
+                     {"needs", needsModeName(c.needs)},
+                     {"limit", c.limit},
+                     {"query", m.query},
+                     {"kind", queryKindName(m.kind)}};
+        line.update(frameRecordJson<Json>(f, m));
         out << line.dump() << "\n";
       }
     }

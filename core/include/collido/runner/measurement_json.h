@@ -1,5 +1,7 @@
 #pragma once
 
+#include <optional>
+
 #include <nlohmann/json.hpp>
 
 #include <collido/runner/runner.h>
@@ -13,5 +15,37 @@ nlohmann::json measurementToJson(const QueryMeasurement& measurement);
 
 /// Reads what measurementToJson wrote; errors name the missing or mistyped field.
 Result<QueryMeasurement> measurementFromJson(const nlohmann::json& json);
+
+/// One frame's record of measurement `m` as JSON: the fields of measurementToJson's "frames"
+/// and of a study's records.jsonl lines, written once for both (JsonT: nlohmann::json or
+/// nlohmann::ordered_json). Figures the backend or scene does not give are null.
+template <typename JsonT>
+JsonT frameRecordJson(const FrameRecord& f, const QueryMeasurement& m) {
+  const auto optional = [](const auto& value) { return value ? JsonT(*value) : JsonT(); };
+  const auto counted = [](bool flag, std::uint64_t value) { return flag ? JsonT(value) : JsonT(); };
+  const UpdateCounters& work = f.update_work;
+  return {{"frame", f.frame},
+          {"oracle_intersecting", f.oracle_intersecting},
+          {"reported_intersecting", f.reported_intersecting},
+          {"finest_intersecting", optional(f.finest_intersecting)},
+          {"truth_intersecting", optional(f.truth_intersecting)},
+          {"possible_contact", optional(f.possible_contact)},
+          {"tracking_margin", optional(f.tracking_margin)},
+          {"oracle_pairs", f.oracle_pairs},
+          {"reported_pairs", f.reported_pairs},
+          {"matched_pairs", f.matched_pairs},
+          {"invalid_pairs", f.invalid_pairs},
+          {"truncated", f.truncated},
+          {"object_pairs", f.object_pairs},
+          {"disagrees", f.disagrees(m.kind)},
+          {"median_us", f.median_us},
+          {"floor_us", optional(f.floor_us)},
+          {"update_us", optional(f.update_us)},
+          {"update_nodes_refit", counted(work.counted, work.nodes_refit)},
+          {"update_rebuilds", counted(work.counted, work.rebuilds)},
+          {"update_nodes_rebuilt", counted(work.counted, work.nodes_rebuilt)},
+          {"bv_tests", counted(m.counts_bv_tests, f.bv_tests)},
+          {"primitive_tests", counted(m.counts_primitive_tests, f.primitive_tests)}};
+}
 
 }  // namespace collido
