@@ -40,8 +40,12 @@ std::string trackingTable(const std::vector<CombinationResult>& results) {
         row.possible = m.tracking_possible_contacts;
         row.outside = m.tracking_missed_within_margin;
       }
-      if (m.disagreements > 0)
-        row.wrong.push_back(r.combination.backend + " " + std::to_string(m.disagreements));
+      if (m.disagreements > 0) {
+        // The setting too: the same backend built for every need is another combination.
+        const std::string setting = r.combination.settingText();
+        row.wrong.push_back(r.combination.backend + (setting.empty() ? "" : " " + setting) + " " +
+                            std::to_string(m.disagreements));
+      }
     }
   }
   if (rows.empty()) return "";
