@@ -324,6 +324,8 @@ class BulletBackend final : public Backend {
       case QueryKind::kContacts:
         collectContacts(pose_a, request.max_contacts, result);
         break;
+      case QueryKind::kDistance:  // not offered: GImpact has no mesh-mesh distance
+        break;
     }
     return {};
   }

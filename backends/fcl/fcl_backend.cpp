@@ -9,7 +9,12 @@
 //                one contact per intersecting triangle pair, with the triangle ids b1, b2 and no
 //                contact geometry, which is all the question needs;
 //   contacts  -> enable_contact = true: FCL's per-triangle-pair contact points, normal (o1 to o2)
-//                and penetration depth.
+//                and penetration depth;
+//   distance  -> fcl::distance() with enable_nearest_points and the request's tolerances as
+//                FCL's abs_err / rel_err; offered for the box types whose mesh-mesh distance FCL
+//                implements (RSS, OBBRSS, kIOS). Its nearest points are in the world frame
+//                (FCL >= 0.6).
+#include <algorithm>
 #include <limits>
 #include <memory>
 #include <string>
@@ -140,10 +145,16 @@ class FclBackend final : public Backend {
  public:
   FclBackend(BoxType type, bool rebuild) : type_(type), rebuild_(rebuild) {}
 
+  // FCL's mesh-mesh distance traversal exists for these box types only.
+  bool answersDistance() const {
+    return type_ == BoxType::kRss || type_ == BoxType::kObbRss || type_ == BoxType::kKios;
+  }
+
   Capabilities capabilities() const override {
     Capabilities caps;
     caps.shape_kinds = static_cast<std::uint32_t>(ShapeKind::kTriangleMesh);
     caps.queries = QueryKindSet(QueryKind::kBoolean) | QueryKind::kAllPairs | QueryKind::kContacts;
+    if (answersDistance()) caps.queries |= QueryKind::kDistance;
     caps.update = true;
     caps.counts_update_work = true;
     caps.notes =
@@ -166,6 +177,10 @@ class FclBackend final : public Backend {
 
   Status query(BackendModel& a, const Pose& pose_a, BackendModel& b, const Pose& pose_b,
                const QueryRequest& request, QueryResult& result) override {
+    if (request.kind == QueryKind::kDistance) {
+      return distance(static_cast<FclModel&>(a), pose_a, static_cast<FclModel&>(b), pose_b, request,
+                      result);
+    }
     const std::size_t unlimited = std::numeric_limits<std::size_t>::max();
     fcl::CollisionRequestd fcl_request;
     std::uint64_t limit = 0;
@@ -183,6 +198,8 @@ class FclBackend final : public Backend {
         limit = request.max_contacts;
         fcl_request.num_max_contacts = limit == 0 ? unlimited : limit + 1;
         fcl_request.enable_contact = true;
+        break;
+      case QueryKind::kDistance:  // answered above
         break;
     }
     fcl_result_.clear();
@@ -218,6 +235,25 @@ class FclBackend final : public Backend {
   }
 
  private:
+  Status distance(const FclModel& a, const Pose& pose_a, const FclModel& b, const Pose& pose_b,
+                  const QueryRequest& request, QueryResult& result) const {
+    fcl::DistanceRequestd fcl_request(/*enable_nearest_points=*/true);
+    fcl_request.abs_err = request.abs_tolerance;
+    fcl_request.rel_err = request.rel_tolerance;
+    fcl::DistanceResultd fcl_result;
+    fcl::distance(&a.geometry(), toTransform(pose_a), &b.geometry(), toTransform(pose_b),
+                  fcl_request, fcl_result);
+    DistanceResult& d = result.distance;
+    // FCL answers a negative distance for some colliding shapes; the interface's is >= 0.
+    d.distance = std::max(fcl_result.min_distance, 0.0);
+    d.point_a = fcl_result.nearest_points[0];
+    d.point_b = fcl_result.nearest_points[1];
+    d.triangle_a = static_cast<std::int32_t>(fcl_result.b1);
+    d.triangle_b = static_cast<std::int32_t>(fcl_result.b2);
+    result.intersecting = d.distance == 0.0;
+    return {};
+  }
+
   BoxType type_;
   bool rebuild_ = false;
   fcl::CollisionResultd fcl_result_;

@@ -307,6 +307,8 @@ class OdeBackend final : public Backend {
         return allPairsQuery(model_a, model_b, request.max_pairs, result);
       case QueryKind::kContacts:
         return contactsQuery(model_a, model_b, pose_a, request.max_contacts, result);
+      case QueryKind::kDistance:  // not offered: ODE has no trimesh-trimesh distance
+        break;
     }
     return {StatusCode::kInternal, "ode: unknown query kind"};
   }

@@ -446,6 +446,21 @@ TEST(PluginLoading, QueryKindTheBackendDoesNotAnswerIsUnsupported) {
                               StatusCode::kUnsupported, {"obbtree", "contacts"}));
 }
 
+// "obbtree: query: distance tolerances must be finite and >= 0 (absolute -1.000000, ...)"
+TEST(PluginLoading, NegativeOrNonFiniteDistanceToleranceIsInvalid) {
+  Built built = builtTetrahedron(BuildNeeds{QueryKindSet(QueryKind::kDistance)});
+  ASSERT_NE(built.model, 0u);
+  for (const auto& [abs_tolerance, rel_tolerance] :
+       {std::pair{-1.0, 0.0}, std::pair{0.0, std::numeric_limits<double>::quiet_NaN()},
+        std::pair{std::numeric_limits<double>::infinity(), 0.0}}) {
+    QueryRequest request{QueryKind::kDistance, 0, 0, abs_tolerance, rel_tolerance};
+    QueryResult result;
+    EXPECT_TRUE(rejected(built.backend->query(built.model, Pose::Identity(), built.model,
+                                              Pose::Identity(), request, result),
+                         {"obbtree", "distance tolerances must be finite and >= 0"}));
+  }
+}
+
 // A request must name exactly one kind: "obbtree: query: kind 3 is not one kind"
 TEST(PluginLoading, QueryOfTwoKindsAtOnceIsInvalid) {
   const CollidoPluginTable& table = *collido_plugin_table_obbtree();

@@ -162,14 +162,49 @@ TEST(SceneBadInput, UnknownKeyInRotation) {
                                       "allowed: axis, degrees, matrix, quaternion"}));
 }
 
-// "bad.json: /queries/0: unknown key 'max_pair' (allowed: a, among, b, kind, max_contacts,
-//  max_pairs, name)"
+// "bad.json: /queries/0: unknown key 'max_pair' (allowed: a, abs_tolerance, among, b, kind,
+//  max_contacts, max_pairs, name, rel_tolerance)"
 TEST(SceneBadInput, UnknownKeyInQuery) {
   Json scene = validScene();
   scene["queries"][0]["max_pair"] = 3;
-  EXPECT_TRUE(
-      rejected(parse(scene), {"/queries/0:", "unknown key 'max_pair'",
-                              "allowed: a, among, b, kind, max_contacts, max_pairs, name"}));
+  EXPECT_TRUE(rejected(parse(scene), {"/queries/0:", "unknown key 'max_pair'",
+                                      "allowed: a, abs_tolerance, among, b, kind, max_contacts, "
+                                      "max_pairs, name, rel_tolerance"}));
+}
+
+TEST(SceneBadInput, ADistanceQueryWithTolerancesLoads) {
+  Json scene = validScene();
+  scene["queries"][0]["kind"] = "distance";
+  scene["queries"][0]["abs_tolerance"] = 1e-3;
+  scene["queries"][0]["rel_tolerance"] = 0.01;
+  Result<Scene> loaded = parse(scene);
+  ASSERT_TRUE(loaded.ok()) << loaded.status().toString();
+  const QueryRequest& request = loaded.value().queries[0].request;
+  EXPECT_EQ(request.kind, QueryKind::kDistance);
+  EXPECT_EQ(request.abs_tolerance, 1e-3);
+  EXPECT_EQ(request.rel_tolerance, 0.01);
+}
+
+// "bad.json: /queries/0/rel_tolerance: rel_tolerance must be >= 0"
+TEST(SceneBadInput, NegativeDistanceTolerance) {
+  Json scene = validScene();
+  scene["queries"][0]["kind"] = "distance";
+  scene["queries"][0]["rel_tolerance"] = -0.1;
+  EXPECT_TRUE(rejected(parse(scene), {"/queries/0/rel_tolerance:", "must be >= 0"}));
+}
+
+// "bad.json: /queries/0/abs_tolerance: abs_tolerance applies to distance queries only"
+TEST(SceneBadInput, ToleranceOnANonDistanceQuery) {
+  Json scene = validScene();
+  scene["queries"][0]["abs_tolerance"] = 0.1;
+  EXPECT_TRUE(rejected(parse(scene), {"/queries/0/abs_tolerance:", "distance queries only"}));
+}
+
+// "bad.json: /queries/0/kind: a group query ('among') asks all_pairs only, not distance"
+TEST(SceneBadInput, GroupAsksForADistance) {
+  Json scene = validScene();
+  scene["queries"] = Json::array({Json{{"among", "*"}, {"kind", "distance"}}});
+  EXPECT_TRUE(rejected(parse(scene), {"/queries/0/kind:", "all_pairs only, not distance"}));
 }
 
 // ---- group queries ---------------------------------------------------------------------------
@@ -375,13 +410,13 @@ TEST(SceneBadInput, QueryOfAnObjectWithItself) {
   EXPECT_TRUE(rejected(parse(scene), {"/queries/0", "two different objects"}));
 }
 
-// "bad.json: /queries/0/kind: unknown query kind 'distance' (known: boolean, all_pairs,
-//  contacts)"
+// "bad.json: /queries/0/kind: unknown query kind 'penetration' (known: boolean, all_pairs,
+//  contacts, distance)"
 TEST(SceneBadInput, UnknownQueryKind) {
   Json scene = validScene();
-  scene["queries"][0]["kind"] = "distance";
-  EXPECT_TRUE(rejected(parse(scene), {"/queries/0/kind:", "unknown query kind 'distance'",
-                                      "boolean, all_pairs, contacts"}));
+  scene["queries"][0]["kind"] = "penetration";
+  EXPECT_TRUE(rejected(parse(scene), {"/queries/0/kind:", "unknown query kind 'penetration'",
+                                      "boolean, all_pairs, contacts, distance"}));
 }
 
 // "bad.json: /queries/0/max_pairs: expected an integer in [0, 9223372036854775807], got -1"

@@ -20,6 +20,7 @@
 
 #include <collido/host/backend_instance.h>
 #include <collido/mesh/procedural.h>
+#include <collido/oracle/distance_oracle.h>
 #include <collido/oracle/exact_oracle.h>
 #include <collido/runner/runner.h>
 
@@ -103,7 +104,7 @@ TEST_P(Interface, UnsupportedRequestsAnswerUnsupported) {
   ASSERT_TRUE(backend);
   const QueryKindSet supported = backend->capabilities().queries;
   std::vector<QueryKind> missing;
-  for (QueryKind kind : {QueryKind::kBoolean, QueryKind::kAllPairs, QueryKind::kContacts}) {
+  for (QueryKind kind : kAllQueryKinds) {
     if (!supported.contains(kind)) missing.push_back(kind);
   }
   if (missing.empty()) COLLIDO_KIT_SKIP(target().variant + " answers every query kind");
@@ -238,6 +239,59 @@ TEST_P(Interface, ContactsFollowTheConventions) {
       << "contact normals must point from A towards B (+x); mean " << mean_normal.transpose();
 }
 
+// --- distance ----------------------------------------------------------------------------------
+
+// Two spheres, one the mirror image of the other, at gaps from apart to touching exactly (a
+// shared vertex) to overlapping: every answer against the exact distance, within rounding; then
+// a loose tolerance must still hold. Counted as the "distance/spheres" expectation.
+TEST_P(Interface, DistanceAnswersTheGapBetweenTwoSpheres) {
+  std::unique_ptr<BackendInstance> backend = createInstance(target());
+  ASSERT_TRUE(backend);
+  if (!backend->capabilities().queries.contains(QueryKind::kDistance)) {
+    COLLIDO_KIT_SKIP(target().variant + " answers no distance queries");
+  }
+  const TriangleMesh one = sphere(1.0, 16, 8);
+  TriangleMesh mirrored = one;
+  mirrored.vertices.row(0) *= -1.0;
+  const BuildNeeds needs{QueryKindSet(QueryKind::kDistance)};
+  Result<ModelHandle> a = backend->build(one.view(), needs);
+  Result<ModelHandle> b = backend->build(mirrored.view(), needs);
+  ASSERT_TRUE(a.ok() && b.ok());
+  Disagreement sum;
+  QueryResult result;
+  for (const double rel_tolerance : {0.0, 0.1}) {
+    for (const double gap : {0.75, 1e-4, 0.0, -0.3}) {
+      const Pose pose_b = moved(2.0 + gap);
+      QueryRequest request;
+      request.kind = QueryKind::kDistance;
+      request.rel_tolerance = rel_tolerance;
+      ASSERT_TRUE(
+          backend->query(a.value(), Pose::Identity(), b.value(), pose_b, request, result).ok());
+      OracleAnswer truth;
+      truth.distance = exactMeshDistance(one, Pose::Identity(), mirrored, pose_b);
+      truth.intersecting = truth.distance->distance == 0.0;
+      FrameRecord record;
+      compareWithOracle(one, Pose::Identity(), mirrored, pose_b, request, result, truth, record);
+      const Disagreement d = disagreementOf(record, QueryKind::kDistance);
+      sum.disagreeing_frames += d.disagreeing_frames;
+      sum.false_negatives += d.false_negatives;
+      sum.false_positives += d.false_positives;
+      sum.invalid_pairs += d.invalid_pairs;
+    }
+  }
+  const std::string key = "distance/spheres";
+  Result<Expectations> expectations =
+      loadExpectations(settings().expectations_dir, target().variant);
+  ASSERT_TRUE(expectations.ok()) << expectations.status().message();
+  if (!settings().write_expectations_dir.empty()) {
+    ASSERT_TRUE(
+        recordMeasurement(settings().write_expectations_dir, target().variant, key, sum).ok());
+  }
+  const Disagreement expected = expectations.value().expectedFor(key);
+  if (!(sum == expected))
+    ADD_FAILURE() << key << ": measured " << sum.toString() << "; expected " << expected.toString();
+}
+
 // --- deformation -----------------------------------------------------------------------------
 
 TEST_P(Interface, UpdateThenQueryAnswersForTheNewShape) {
@@ -277,7 +331,7 @@ TEST_P(Interface, UpdateThenQueryAnswersForTheNewShape) {
   ASSERT_TRUE(truth.intersecting);
 
   FrameRecord record;
-  compareWithOracle(grown, Pose::Identity(), other, pose_b, kind, result, truth, record);
+  compareWithOracle(grown, Pose::Identity(), other, pose_b, request, result, truth, record);
   const Disagreement d = disagreementOf(record, kind);
   const std::string key = std::string("update/") + queryKindName(kind);
   Result<Expectations> expectations =

@@ -56,7 +56,8 @@ Disagreement disagreementOf(const FrameRecord& f, QueryKind kind) {
   d.false_negatives = f.oracle_intersecting && !f.reported_intersecting ? 1 : 0;
   d.false_positives = !f.oracle_intersecting && f.reported_intersecting ? 1 : 0;
   d.disagreeing_frames = f.disagrees(kind) ? 1 : 0;
-  d.invalid_pairs = f.invalid_pairs;
+  // A distance answer's points that do not hold together are a false witness too.
+  d.invalid_pairs = f.invalid_pairs + (f.invalid_distance_witness ? 1 : 0);
   if (kind == QueryKind::kAllPairs) {
     // A truncated answer leaves pairs out on purpose; only its wrong pairs count.
     if (!f.truncated) d.missed_pairs = f.oracle_pairs - f.matched_pairs;

@@ -17,7 +17,8 @@ struct Disagreement {
   std::size_t false_positives = 0;  ///< frames reported intersecting that are disjoint
   std::size_t missed_pairs = 0;     ///< exact pairs not reported (all_pairs)
   std::size_t extra_pairs = 0;      ///< reported pairs that do not intersect (all_pairs)
-  std::size_t invalid_pairs = 0;    ///< out of range, duplicated, or false witnesses
+  std::size_t invalid_pairs = 0;    ///< out of range, duplicated, or false witnesses (a
+                                    ///< boolean's pair, a distance's points)
 
   bool none() const;
   bool operator==(const Disagreement& o) const;

@@ -2,7 +2,8 @@
 # The dashboard in a real browser: runs a small study (two backends, needs declared and every,
 # two resolutions so the scaling view has curves, and a small stress scene so the robustness
 # matrix has cells, ODE's all-pairs ones unsupported, a deforming scene for the view over
-# time, and a small scene posed from tracked markers), writes its report with itself as the
+# time, and a small scene posed from tracked markers; the tori's distance query fills the distance
+# view), writes its report with itself as the
 # baseline, and opens it in headless Chromium (web/tests/report.test.mjs): every chart drawn,
 # no console error, no network request.
 # Usage: browser_report_test.sh COLLIDO_EXECUTABLE SOURCE_DIR WORK_DIR
@@ -44,7 +45,7 @@ JSON
 "$collido" report "$work/study" --baseline "$work/study" --pose-error "$work/pose_error.json" \
   -o "$work/report.html"
 COLLIDO_REPORT_HTML="$work/report.html" \
-COLLIDO_EXPECT_VIEWS="time-vs-error,robustness,time-distribution,deforming,tracking,pose-error,memory,scaling,needs,comparison" \
+COLLIDO_EXPECT_VIEWS="time-vs-error,distance-error,robustness,time-distribution,deforming,tracking,pose-error,memory,scaling,needs,comparison" \
 COLLIDO_EXPECT_SECTION_TEXT="robustness=unsupported,robustness=touching" \
 COLLIDO_REPORT_SCREENSHOT="$work/report.png" \
   node --test "$source_dir/web/tests/"

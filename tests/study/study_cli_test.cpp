@@ -292,7 +292,7 @@ TEST(StudyCli, EnvRobOnObbtreeAgreesWithTheOracle) {
   ASSERT_EQ(results.size(), 1u);
   EXPECT_EQ(results[0].outcome.status, "ok");
   EXPECT_EQ(results[0].combination.scene_name, "env_rob");
-  ASSERT_EQ(results[0].measurements.size(), 2u);
+  ASSERT_EQ(results[0].measurements.size(), 3u);  // all pairs, boolean, distance
   for (const QueryMeasurement& m : results[0].measurements) {
     SCOPED_TRACE(m.query);
     EXPECT_EQ(m.status, "ok");
@@ -300,9 +300,9 @@ TEST(StudyCli, EnvRobOnObbtreeAgreesWithTheOracle) {
     EXPECT_EQ(m.disagreements, 0u);
     EXPECT_EQ(m.triangles, 2180u + 216u);
   }
-  EXPECT_EQ(lineCount(readText(out + "/records.jsonl")), 2u * 40u);
+  EXPECT_EQ(lineCount(readText(out + "/records.jsonl")), 3u * 40u);
   const nlohmann::json summary = nlohmann::json::parse(readText(out + "/summary.json"));
-  ASSERT_EQ(summary.at("benchmarks").size(), 2u);
+  ASSERT_EQ(summary.at("benchmarks").size(), 3u);
   EXPECT_EQ(summary.at("benchmarks")[0].at("name"), "obbtree/env_rob/all_pairs");
 
   // The oracle's answers were kept for the next combination on this scene: one file.

@@ -140,6 +140,39 @@
     }
   }
 
+  // --- 1b. distances: run time against distance error -----------------------------------------
+  {
+    const s = section('distance-error', 'Distances: run time against error',
+      'Distance queries only: median time per query (log scale) against the largest error of ' +
+      'the reported distance over the frames, relative to the exact distance (log scale; an ' +
+      'answer exact to the last bit is drawn at 1e-17). The share of wrong frames (time against ' +
+      'error above) also counts closest points that do not hold together.');
+    const box = el('div', { class: 'charts' });
+    s.appendChild(box);
+    const rows = ok.filter((r) => r.kind === 'distance' && r.max_distance_error !== null &&
+      r.max_distance_error !== undefined);
+    const groups = groupBy(rows, (r) => r.scene + ' · ' + r.query);
+    if (groups.size === 0) empty(s, 'No measured distance query.');
+    for (const [name, points] of groups) {
+      const values = points.map((p) => Object.assign({}, p, {
+        shown_error: Math.max(p.max_relative_distance_error === null ? p.max_distance_error :
+          p.max_relative_distance_error, 1e-17) }));
+      chart(box, 'distance-error:' + name, {
+        title: name, width: 360, height: 220, data: { values: values },
+        mark: { type: 'point', filled: true, size: 70 },
+        encoding: {
+          x: { field: 'median_us', type: 'quantitative', scale: { type: 'log' },
+            title: 'median time per query (µs)' },
+          y: { field: 'shown_error', type: 'quantitative', scale: { type: 'log' },
+            title: 'largest relative distance error' },
+          color: colour,
+          tooltip: [{ field: 'label' }, { field: 'median_us', format: '.1f' },
+            { field: 'max_distance_error', format: '.3g' },
+            { field: 'max_relative_distance_error', format: '.3g' },
+            { field: 'error_rate', format: '.3f' }] } });
+    }
+  }
+
   // --- robustness matrix ----------------------------------------------------------------------
   {
     const s = section('robustness', 'Robustness matrix',

@@ -27,7 +27,7 @@ extern "C" {
 #endif
 
 /** The interface version; bump it on any change to the structures or functions below. */
-#define COLLIDO_PLUGIN_ABI_VERSION 2u
+#define COLLIDO_PLUGIN_ABI_VERSION 3u
 
 /** The one symbol a plugin shared library exports. */
 #define COLLIDO_PLUGIN_ENTRY_SYMBOL "collido_plugin_table"
@@ -47,7 +47,8 @@ typedef enum CollidoStatusCode {
 typedef enum CollidoQueryKind {
   COLLIDO_QUERY_BOOLEAN = 1u << 0,   /**< do the two shapes share a point? (early exit allowed) */
   COLLIDO_QUERY_ALL_PAIRS = 1u << 1, /**< every intersecting (triangle of A, triangle of B) pair */
-  COLLIDO_QUERY_CONTACTS = 1u << 2   /**< contact points with normal and depth */
+  COLLIDO_QUERY_CONTACTS = 1u << 2,  /**< contact points with normal and depth */
+  COLLIDO_QUERY_DISTANCE = 1u << 3   /**< the distance between the shapes, with closest points */
 } CollidoQueryKind;
 
 /** Bit flags naming the shape kinds a backend can build. */
@@ -134,6 +135,11 @@ typedef struct CollidoQueryRequest {
   uint32_t reserved;     /**< zero */
   uint64_t max_pairs;    /**< ALL_PAIRS: stop after this many pairs; 0 = no limit */
   uint64_t max_contacts; /**< CONTACTS: stop after this many contacts; 0 = no limit */
+  /** DISTANCE: the answer may exceed the true distance d by at most
+   *  max(abs_tolerance, rel_tolerance * d) (beyond rounding); both 0 = as exact as the backend
+   *  can. Finite and >= 0. */
+  double abs_tolerance;
+  double rel_tolerance;
 } CollidoQueryRequest;
 
 /** An intersecting pair: triangle index in A, triangle index in B (as given to build). */
@@ -151,6 +157,20 @@ typedef struct CollidoContact {
   int32_t triangle_b; /**< -1 when the engine does not say */
 } CollidoContact;
 
+/** The answer to a DISTANCE query, in the world frame. The distance is 0 when the shapes share
+ *  a point; otherwise it is |point_b - point_a|, the points lying on A and on B. */
+typedef struct CollidoDistance {
+  double distance;
+  double point_a[3];   /**< on A (on the reported triangle when triangle_a >= 0) */
+  double point_b[3];   /**< on B */
+  double lower;        /**< a certified lower bound on the true distance; valid with has_bounds */
+  double upper;        /**< a certified upper bound; valid with has_bounds */
+  int32_t triangle_a;  /**< triangle of A holding point_a, or -1 when the engine does not say */
+  int32_t triangle_b;  /**< triangle of B holding point_b, or -1 */
+  uint32_t has_bounds; /**< 1 when [lower, upper] is certified by the backend */
+  uint32_t reserved;
+} CollidoDistance;
+
 /** Work the backend did for one query; fields are valid only where `counted` has the bit. */
 typedef struct CollidoWorkCounters {
   uint64_t bv_tests;        /**< bounding-volume overlap tests */
@@ -167,6 +187,7 @@ typedef struct CollidoQueryResult {
   uint64_t pair_count;
   const CollidoContact* contacts;
   uint64_t contact_count;
+  CollidoDistance distance; /**< DISTANCE queries only */
   CollidoWorkCounters counters;
 } CollidoQueryResult;
 

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -14,7 +15,12 @@ enum class QueryKind : std::uint32_t {
   kBoolean = 1u << 0,   ///< do the shapes share a point? (a backend may stop at the first hit)
   kAllPairs = 1u << 1,  ///< every intersecting (triangle of A, triangle of B) pair
   kContacts = 1u << 2,  ///< contact points with normal and depth
+  kDistance = 1u << 3,  ///< the distance between the shapes, with closest points
 };
+
+/// Every query kind, in the order tables list them.
+inline constexpr QueryKind kAllQueryKinds[] = {QueryKind::kBoolean, QueryKind::kAllPairs,
+                                               QueryKind::kContacts, QueryKind::kDistance};
 
 /// Stable lower-case name ("boolean", "all_pairs", "contacts").
 const char* queryKindName(QueryKind kind);
@@ -79,6 +85,23 @@ struct QueryRequest {
   QueryKind kind = QueryKind::kBoolean;
   std::uint64_t max_pairs = 0;     ///< kAllPairs: stop after this many pairs; 0 = no limit
   std::uint64_t max_contacts = 0;  ///< kContacts: stop after this many contacts; 0 = no limit
+  /// kDistance: the answer may exceed the true distance d by max(abs_tolerance, rel_tolerance *
+  /// d) beyond rounding; both 0 asks for the backend's best.
+  double abs_tolerance = 0.0;
+  double rel_tolerance = 0.0;
+};
+
+/// The answer to a kDistance query, in the world frame. 0 when the shapes share a point;
+/// otherwise |point_b - point_a|, with point_a on A and point_b on B.
+struct DistanceResult {
+  double distance = std::numeric_limits<double>::infinity();
+  Eigen::Vector3d point_a = Eigen::Vector3d::Zero();
+  Eigen::Vector3d point_b = Eigen::Vector3d::Zero();
+  std::int32_t triangle_a = -1;  ///< triangle of A holding point_a, or -1 when not said
+  std::int32_t triangle_b = -1;  ///< triangle of B holding point_b, or -1
+  /// A certified interval holding the true distance, where the backend gives one.
+  std::optional<double> lower;
+  std::optional<double> upper;
 };
 
 /// Work a backend did for one query; each figure is meaningful only when its flag is set.
@@ -95,6 +118,7 @@ struct QueryResult {
   bool truncated = false;           ///< a limit in the request stopped the query early
   std::vector<TrianglePair> pairs;  ///< kAllPairs (and, where known, kBoolean's witness)
   std::vector<Contact> contacts;    ///< kContacts
+  DistanceResult distance;          ///< kDistance
   WorkCounters counters;
 
   /// Empties the answer, keeping vector capacity.
@@ -103,6 +127,7 @@ struct QueryResult {
     truncated = false;
     pairs.clear();
     contacts.clear();
+    distance = DistanceResult{};
     counters = WorkCounters{};
   }
 };

@@ -132,6 +132,8 @@ Status BackendInstance::query(ModelHandle a, const Pose& pose_a, ModelHandle b, 
   c_request.kind = static_cast<std::uint32_t>(request.kind);
   c_request.max_pairs = request.max_pairs;
   c_request.max_contacts = request.max_contacts;
+  c_request.abs_tolerance = request.abs_tolerance;
+  c_request.rel_tolerance = request.rel_tolerance;
   CollidoQueryResult out{};
   CollidoMessage message{};
   if (Status s = fromCode(library_->table().query(instance_, a, &c_pose_a, b, &c_pose_b, &c_request,
@@ -158,6 +160,18 @@ Status BackendInstance::query(ModelHandle a, const Pose& pose_a, ModelHandle b, 
       d.depth = c.depth;
       d.triangle_a = c.triangle_a;
       d.triangle_b = c.triangle_b;
+    }
+  }
+  if (request.kind == QueryKind::kDistance) {
+    const CollidoDistance& d = out.distance;
+    result.distance.distance = d.distance;
+    result.distance.point_a = Eigen::Vector3d(d.point_a[0], d.point_a[1], d.point_a[2]);
+    result.distance.point_b = Eigen::Vector3d(d.point_b[0], d.point_b[1], d.point_b[2]);
+    result.distance.triangle_a = d.triangle_a;
+    result.distance.triangle_b = d.triangle_b;
+    if (d.has_bounds != 0) {
+      result.distance.lower = d.lower;
+      result.distance.upper = d.upper;
     }
   }
   result.counters.bv_tests = out.counters.bv_tests;

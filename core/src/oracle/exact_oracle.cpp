@@ -15,6 +15,9 @@
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/intersections.h>
+#include <CGAL/squared_distance_3.h>
+
+#include <collido/oracle/distance_oracle.h>
 
 namespace collido {
 namespace {
@@ -168,6 +171,60 @@ bool elementsIntersect(const Element& x, const Element& y) {
   return kExactTests[x.kind][y.kind](x, y);
 }
 
+// Exact squared distances, by the same dispatch; 0 for elements that share a point.
+FT triTriDistance(const Element& x, const Element& y) {
+  if (triTri(x, y)) return FT(0);
+  return CGAL::squared_distance(triangleOf(x), triangleOf(y));
+}
+FT triSegDistance(const Element& x, const Element& y) {
+  if (triSeg(x, y)) return FT(0);
+  const EK::Triangle_3 t = triangleOf(x);
+  const EK::Segment_3 s = segmentOf(y);
+  FT best = CGAL::min(CGAL::squared_distance(s.source(), t), CGAL::squared_distance(s.target(), t));
+  for (int i = 0; i < 3; ++i)
+    best = CGAL::min(best, CGAL::squared_distance(s, EK::Segment_3(x.p[i], x.p[(i + 1) % 3])));
+  return best;
+}
+FT triPointDistance(const Element& x, const Element& y) {
+  return CGAL::squared_distance(y.p[0], triangleOf(x));
+}
+FT segTriDistance(const Element& x, const Element& y) {
+  return triSegDistance(y, x);
+}
+FT segSegDistance(const Element& x, const Element& y) {
+  return CGAL::squared_distance(segmentOf(x), segmentOf(y));
+}
+FT segPointDistance(const Element& x, const Element& y) {
+  return CGAL::squared_distance(y.p[0], segmentOf(x));
+}
+FT pointTriDistance(const Element& x, const Element& y) {
+  return triPointDistance(y, x);
+}
+FT pointSegDistance(const Element& x, const Element& y) {
+  return segPointDistance(y, x);
+}
+FT pointPointDistance(const Element& x, const Element& y) {
+  return CGAL::squared_distance(x.p[0], y.p[0]);
+}
+
+using ExactDistance = FT (*)(const Element&, const Element&);
+constexpr ExactDistance kExactDistances[3][3] = {
+    {&triTriDistance, &triSegDistance, &triPointDistance},
+    {&segTriDistance, &segSegDistance, &segPointDistance},
+    {&pointTriDistance, &pointSegDistance, &pointPointDistance},
+};
+
+// One triangle of a mesh, posed exactly and classified.
+Element posedElement(const TriangleMesh& mesh, const Pose& pose, std::int32_t t) {
+  TriangleMesh single;
+  single.vertices.resize(3, 3);
+  for (int k = 0; k < 3; ++k)
+    single.vertices.col(k) = mesh.corner(static_cast<std::size_t>(t), k);
+  single.triangles = Eigen::Matrix3Xi(3, 1);
+  single.triangles.col(0) << 0, 1, 2;
+  return poseMesh(single, pose).elements.front();
+}
+
 // A uniform grid over the region where the two meshes' bounds overlap, holding A's elements.
 class Grid {
  public:
@@ -308,16 +365,15 @@ OracleAnswer exactIntersectingPairs(const TriangleMesh& a, const Pose& pose_a,
 
 bool exactPairIntersects(const TriangleMesh& a, const Pose& pose_a, const TriangleMesh& b,
                          const Pose& pose_b, const TrianglePair& pair) {
-  const auto element = [](const TriangleMesh& mesh, const Pose& pose, std::int32_t t) {
-    TriangleMesh single;
-    single.vertices.resize(3, 3);
-    for (int k = 0; k < 3; ++k)
-      single.vertices.col(k) = mesh.corner(static_cast<std::size_t>(t), k);
-    single.triangles = Eigen::Matrix3Xi(3, 1);
-    single.triangles.col(0) << 0, 1, 2;
-    return poseMesh(single, pose).elements.front();
-  };
-  return elementsIntersect(element(a, pose_a, pair.a), element(b, pose_b, pair.b));
+  return elementsIntersect(posedElement(a, pose_a, pair.a), posedElement(b, pose_b, pair.b));
+}
+
+double exactPairSquaredDistance(const TriangleMesh& a, const Pose& pose_a, const TriangleMesh& b,
+                                const Pose& pose_b, const TrianglePair& pair) {
+  const Element x = posedElement(a, pose_a, pair.a);
+  const Element y = posedElement(b, pose_b, pair.b);
+  const FT d2 = kExactDistances[x.kind][y.kind](x, y);
+  return CGAL::to_double(d2.exact());
 }
 
 bool exactTrianglesIntersect(const std::array<Eigen::Vector3d, 3>& t1,

@@ -85,9 +85,27 @@ std::string handleText(CollidoModelHandle handle) {
 }
 
 bool isSingleQueryKind(std::uint32_t kind) {
-  return kind == static_cast<std::uint32_t>(QueryKind::kBoolean) ||
-         kind == static_cast<std::uint32_t>(QueryKind::kAllPairs) ||
-         kind == static_cast<std::uint32_t>(QueryKind::kContacts);
+  return std::any_of(std::begin(kAllQueryKinds), std::end(kAllQueryKinds),
+                     [kind](QueryKind k) { return kind == static_cast<std::uint32_t>(k); });
+}
+
+bool isTolerance(double value) {
+  return std::isfinite(value) && value >= 0.0;
+}
+
+// A distance answer must be a distance: finite, >= 0, its points finite, its interval ordered.
+Status checkDistance(const DistanceResult& d) {
+  if (!std::isfinite(d.distance) || d.distance < 0.0) {
+    return {StatusCode::kInternal, "distance query answered " + std::to_string(d.distance)};
+  }
+  if (!d.point_a.allFinite() || !d.point_b.allFinite()) {
+    return {StatusCode::kInternal, "distance query answered non-finite closest points"};
+  }
+  if (d.lower.has_value() != d.upper.has_value() ||
+      (d.lower && !(*d.lower >= 0.0 && *d.lower <= *d.upper))) {
+    return {StatusCode::kInternal, "distance query answered an empty or half interval"};
+  }
+  return {};
 }
 
 // Poses must be rigid: a backend may invert them by transposition.
@@ -328,13 +346,37 @@ std::int32_t queryEntry(CollidoInstance* instance, CollidoModelHandle a, const C
     if (Status s = toPose(pose_b, "pose of B", world_b); !s.ok()) {
       return fail(error, s.code(), label + ": query: " + s.message());
     }
-    const QueryRequest req{kind, request->max_pairs, request->max_contacts};
+    if (kind == QueryKind::kDistance &&
+        !(isTolerance(request->abs_tolerance) && isTolerance(request->rel_tolerance))) {
+      return fail(error, StatusCode::kInvalidArgument,
+                  label + ": query: distance tolerances must be finite and >= 0 (absolute " +
+                      std::to_string(request->abs_tolerance) + ", relative " +
+                      std::to_string(request->rel_tolerance) + ")");
+    }
+    const QueryRequest req{kind, request->max_pairs, request->max_contacts, request->abs_tolerance,
+                           request->rel_tolerance};
     QueryResult& result = instance->scratch;
     result.clear();
     if (Status s =
             instance->backend->query(*slot_a->model, world_a, *slot_b->model, world_b, req, result);
         !s.ok()) {
       return report(error, s);
+    }
+    if (kind == QueryKind::kDistance) {
+      if (Status s = checkDistance(result.distance); !s.ok()) {
+        return fail(error, s.code(), label + ": " + s.message());
+      }
+      const DistanceResult& d = result.distance;
+      out->distance.distance = d.distance;
+      for (int k = 0; k < 3; ++k) {
+        out->distance.point_a[k] = d.point_a[k];
+        out->distance.point_b[k] = d.point_b[k];
+      }
+      out->distance.triangle_a = d.triangle_a;
+      out->distance.triangle_b = d.triangle_b;
+      out->distance.has_bounds = d.lower ? 1u : 0u;
+      out->distance.lower = d.lower.value_or(0.0);
+      out->distance.upper = d.upper.value_or(0.0);
     }
     out->intersecting = result.intersecting ? 1u : 0u;
     out->truncated = result.truncated ? 1u : 0u;

@@ -10,12 +10,14 @@ const char* queryKindName(QueryKind kind) {
       return "all_pairs";
     case QueryKind::kContacts:
       return "contacts";
+    case QueryKind::kDistance:
+      return "distance";
   }
   return "unknown";
 }
 
 std::optional<QueryKind> parseQueryKind(const std::string& name) {
-  for (QueryKind kind : {QueryKind::kBoolean, QueryKind::kAllPairs, QueryKind::kContacts}) {
+  for (QueryKind kind : kAllQueryKinds) {
     if (name == queryKindName(kind)) return kind;
   }
   return std::nullopt;
@@ -23,7 +25,7 @@ std::optional<QueryKind> parseQueryKind(const std::string& name) {
 
 std::string queryKindsText(QueryKindSet set) {
   std::string text;
-  for (QueryKind kind : {QueryKind::kBoolean, QueryKind::kAllPairs, QueryKind::kContacts}) {
+  for (QueryKind kind : kAllQueryKinds) {
     if (!set.contains(kind)) continue;
     if (!text.empty()) text += ", ";
     text += queryKindName(kind);

@@ -32,6 +32,11 @@ FrameRecord frameFrom(const Json& j) {
   f.invalid_pairs = j.at("invalid_pairs").get<std::size_t>();
   f.truncated = j.at("truncated").get<bool>();
   f.object_pairs = optionalFrom<std::size_t>(j, "object_pairs").value_or(1);
+  f.oracle_distance = optionalFrom<double>(j, "oracle_distance");
+  f.reported_distance = optionalFrom<double>(j, "reported_distance");
+  f.distance_below = optionalFrom<double>(j, "distance_below").value_or(0.0);
+  f.distance_above = optionalFrom<double>(j, "distance_above").value_or(0.0);
+  f.invalid_distance_witness = optionalFrom<bool>(j, "invalid_distance_witness").value_or(false);
   f.median_us = j.at("median_us").get<double>();
   f.floor_us = optionalFrom<double>(j, "floor_us");
   f.update_us = optionalFrom<double>(j, "update_us");
@@ -72,6 +77,8 @@ Json measurementToJson(const QueryMeasurement& m) {
           {"tracking_missed_contacts", optionalJson(m.tracking_missed_contacts)},
           {"tracking_possible_contacts", optionalJson(m.tracking_possible_contacts)},
           {"tracking_missed_within_margin", optionalJson(m.tracking_missed_within_margin)},
+          {"max_distance_error", optionalJson(m.max_distance_error)},
+          {"max_relative_distance_error", optionalJson(m.max_relative_distance_error)},
           {"recall", m.recall},
           {"precision", m.precision},
           {"counts_bv_tests", m.counts_bv_tests},

@@ -15,6 +15,7 @@ std::string formatRunTable(const RunReport& report) {
   std::vector<std::vector<std::string>> rows;
   std::vector<std::string> notes;
   std::vector<std::string> tracking;
+  std::vector<std::string> distances;
   std::set<std::string> tracked;  // (scene, query): every backend has the same figure
   for (const QueryMeasurement& m : report.measurements) {
     if (m.tracking_false_contacts && tracked.insert(m.scene + " / " + m.query).second) {
@@ -35,6 +36,14 @@ std::string formatRunTable(const RunReport& report) {
       rows.push_back({m.backend, m.scene, m.query, m.status.substr(0, m.status.find(':'))});
       continue;
     }
+    if (m.max_distance_error) {
+      distances.push_back(
+          m.backend + " / " + m.scene + " / " + m.query + ": largest error " +
+          formatNumber("%.3g", *m.max_distance_error) +
+          (m.max_relative_distance_error
+               ? " (" + formatNumber("%.3g", *m.max_relative_distance_error) + " of the distance)"
+               : std::string()));
+    }
     const bool pairs = m.kind == QueryKind::kAllPairs;
     rows.push_back({m.backend, m.scene, m.query, std::to_string(m.frames.size()),
                     formatNumber("%.1f", m.median_us), formatNumber("%.1f", m.p90_us),
@@ -51,6 +60,8 @@ std::string formatRunTable(const RunReport& report) {
     out << "note: " << note << "\n";
   for (const std::string& line : tracking)
     out << "tracking: " << line << "\n";
+  for (const std::string& line : distances)
+    out << "distance: " << line << "\n";
   for (const std::string& problem : report.problems)
     out << "problem: " << problem << "\n";
   return out.str();

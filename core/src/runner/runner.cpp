@@ -16,6 +16,7 @@
 #include <collido/host/backend_instance.h>
 #include <collido/oracle/exact_oracle.h>
 #include <collido/oracle/proximity.h>
+#include <collido/oracle/triangle_distance.h>
 #include <collido/runner/floor.h>
 #include <collido/runner/heap_probe.h>
 #include <collido/runner/runner.h>
@@ -100,7 +101,17 @@ void summariseMeasurement(QueryMeasurement& m) {
   double floor_us = 0.0;
   std::vector<double> updates_us;
   m.update_rebuilds.reset();
+  m.max_distance_error.reset();
+  m.max_relative_distance_error.reset();
   for (const FrameRecord& f : m.frames) {
+    if (f.oracle_distance && f.reported_distance) {
+      const double error = std::abs(*f.reported_distance - *f.oracle_distance);
+      m.max_distance_error = std::max(m.max_distance_error.value_or(0.0), error);
+      if (*f.oracle_distance > 0.0) {
+        m.max_relative_distance_error =
+            std::max(m.max_relative_distance_error.value_or(0.0), error / *f.oracle_distance);
+      }
+    }
     if (f.update_us) updates_us.push_back(*f.update_us);
     if (f.update_work.counted)
       m.update_rebuilds = m.update_rebuilds.value_or(0) + f.update_work.rebuilds;
@@ -153,6 +164,12 @@ void addAnswer(const FrameRecord& one, FrameRecord& frame) {
   frame.matched_pairs += one.matched_pairs;
   frame.invalid_pairs += one.invalid_pairs;
   frame.truncated = frame.truncated || one.truncated;
+  // Distance queries name two objects, never a group: one answer per frame.
+  frame.oracle_distance = one.oracle_distance;
+  frame.reported_distance = one.reported_distance;
+  frame.distance_below = one.distance_below;
+  frame.distance_above = one.distance_above;
+  frame.invalid_distance_witness = one.invalid_distance_witness;
 }
 
 // Whether another version of the scene (the finest meshes, the true poses) intersects in
@@ -367,8 +384,8 @@ void runSceneOnBackend(const Scene& scene, const BackendSpec& spec, OracleCache&
         const OracleAnswer& truth = oracle.get(ia, ib, frame);
         const TriangleMesh& shape_a = *shapes[ia];
         const TriangleMesh& shape_b = *shapes[ib];
-        compareWithOracle(shape_a, a.poseAt(frame), shape_b, b.poseAt(frame), query.request.kind,
-                          result, truth, one);
+        compareWithOracle(shape_a, a.poseAt(frame), shape_b, b.poseAt(frame), query.request, result,
+                          truth, one);
         if (query.request.kind == QueryKind::kAllPairs)
           appendWorldPairs(shape_a, a.poseAt(frame), shape_b, b.poseAt(frame), truth.pairs,
                            true_pairs);
@@ -423,9 +440,54 @@ void runSceneOnBackend(const Scene& scene, const BackendSpec& spec, OracleCache&
 
 }  // namespace
 
+namespace {
+
+std::array<Eigen::Vector3d, 3> posedTriangle(const TriangleMesh& mesh, const Pose& pose,
+                                             std::int32_t t) {
+  std::array<Eigen::Vector3d, 3> corners;
+  for (int k = 0; k < 3; ++k)
+    corners[static_cast<std::size_t>(k)] = pose * mesh.corner(static_cast<std::size_t>(t), k);
+  return corners;
+}
+
+// The distance answer against the exact one: within rounding below, within tolerance and
+// rounding above; points the reported distance apart and on their triangles; a certified
+// interval that holds the exact distance.
+void compareDistance(const TriangleMesh& a, const Pose& pose_a, const TriangleMesh& b,
+                     const Pose& pose_b, const QueryRequest& request, const DistanceResult& d,
+                     const MeshDistance& truth, FrameRecord& record) {
+  const double magnitude = std::max((pose_a * a.vertices).cwiseAbs().maxCoeff(),
+                                    (pose_b * b.vertices).cwiseAbs().maxCoeff());
+  const double rounding = 1e-10 * magnitude;
+  record.oracle_distance = truth.distance;
+  record.reported_distance = d.distance;
+  record.distance_below = rounding;
+  record.distance_above =
+      rounding + std::max(request.abs_tolerance, request.rel_tolerance * truth.distance);
+  record.oracle_intersecting = truth.distance == 0.0;
+  record.reported_intersecting = d.distance <= rounding;
+  bool invalid = std::abs((d.point_b - d.point_a).norm() - d.distance) > rounding;
+  const auto off_triangle = [&](const TriangleMesh& mesh, const Pose& pose, std::int32_t t,
+                                const Eigen::Vector3d& p) {
+    if (t < 0) return false;
+    if (static_cast<std::size_t>(t) >= mesh.triangleCount()) return true;
+    return (closestPointOnTriangle(p, posedTriangle(mesh, pose, t)) - p).norm() > rounding;
+  };
+  invalid = invalid || off_triangle(a, pose_a, d.triangle_a, d.point_a) ||
+            off_triangle(b, pose_b, d.triangle_b, d.point_b);
+  if (d.lower && d.upper) {
+    invalid =
+        invalid || *d.lower > truth.distance + rounding || *d.upper < truth.distance - rounding;
+  }
+  record.invalid_distance_witness = invalid;
+}
+
+}  // namespace
+
 void compareWithOracle(const TriangleMesh& a, const Pose& pose_a, const TriangleMesh& b,
-                       const Pose& pose_b, QueryKind kind, const QueryResult& result,
+                       const Pose& pose_b, const QueryRequest& request, const QueryResult& result,
                        const OracleAnswer& truth, FrameRecord& record) {
+  const QueryKind kind = request.kind;
   record.oracle_intersecting = truth.intersecting;
   record.reported_intersecting = result.intersecting;
   record.truncated = result.truncated;
@@ -440,6 +502,12 @@ void compareWithOracle(const TriangleMesh& a, const Pose& pose_a, const Triangle
     } else {
       ++record.invalid_pairs;
     }
+  }
+  if (kind == QueryKind::kDistance) {
+    if (truth.distance) {
+      compareDistance(a, pose_a, b, pose_b, request, result.distance, *truth.distance, record);
+    }
+    return;
   }
   std::sort(reported.begin(), reported.end());
   const std::size_t before_dedupe = reported.size();
@@ -464,6 +532,11 @@ void compareWithOracle(const TriangleMesh& a, const Pose& pose_a, const Triangle
 }
 
 bool FrameRecord::disagrees(QueryKind kind) const {
+  if (kind == QueryKind::kDistance) {
+    if (!oracle_distance || !reported_distance) return true;
+    return invalid_distance_witness || *reported_distance < *oracle_distance - distance_below ||
+           *reported_distance > *oracle_distance + distance_above;
+  }
   if (oracle_intersecting != reported_intersecting || invalid_pairs != 0) return true;
   if (kind != QueryKind::kAllPairs) return false;
   // A truncated answer is right when every pair it gives is real and some were left out.

@@ -337,7 +337,7 @@ class ShapeLoader {
 QueryKind readQueryKind(const Reader& r, const Node& node) {
   const std::string text = r.string(node);
   if (const std::optional<QueryKind> kind = parseQueryKind(text)) return *kind;
-  r.fail(node, "unknown query kind '" + text + "' (known: boolean, all_pairs, contacts)");
+  r.fail(node, "unknown query kind '" + text + "' (known: boolean, all_pairs, contacts, distance)");
 }
 
 // "among": "*" (every object) or an array of at least two different object names.
@@ -755,7 +755,8 @@ Scene readScene(const Reader& r, const Json& document, const std::string& base_d
   std::set<std::string> query_names;
   for (std::size_t i = 0; i < queries.value.size(); ++i) {
     const Node node = queries.at(i);
-    r.expectObject(node, {"name", "a", "b", "among", "kind", "max_pairs", "max_contacts"});
+    r.expectObject(node, {"name", "a", "b", "among", "kind", "max_pairs", "max_contacts",
+                          "abs_tolerance", "rel_tolerance"});
     SceneQuery query;
     const auto object_index = [&](const Node& name_node) {
       const std::string name = r.string(name_node);
@@ -785,6 +786,15 @@ Scene readScene(const Reader& r, const Json& document, const std::string& base_d
         static_cast<std::uint64_t>(r.integer(node, "max_pairs", 0, 0, INT64_MAX));
     query.request.max_contacts =
         static_cast<std::uint64_t>(r.integer(node, "max_contacts", 0, 0, INT64_MAX));
+    for (const char* key : {"abs_tolerance", "rel_tolerance"}) {
+      if (!node.has(key)) continue;
+      if (query.request.kind != QueryKind::kDistance) {
+        r.fail(node.at(key), std::string(key) + " applies to distance queries only");
+      }
+      const double value = r.number(node.at(key));
+      if (value < 0.0) r.fail(node.at(key), std::string(key) + " must be >= 0");
+      (key[0] == 'a' ? query.request.abs_tolerance : query.request.rel_tolerance) = value;
+    }
     if (node.has("name")) {
       query.name = r.string(node.at("name"));
     } else if (query.isGroup()) {

@@ -47,6 +47,23 @@ Status loadOracleAnswers(const std::string& path, OracleCache& cache) {
       if (answer.intersecting == answer.pairs.empty()) {
         return bad("an answer whose pairs contradict its verdict");
       }
+      if (entry.size() > 7) {
+        // [distance, pair a, pair b, point a xyz, point b xyz, candidates, exact tests]
+        const Json& d = entry.at(7);
+        MeshDistance distance;
+        distance.distance = d.at(0).get<double>();
+        distance.pair = TrianglePair{d.at(1).get<std::int32_t>(), d.at(2).get<std::int32_t>()};
+        for (int k = 0; k < 3; ++k) {
+          distance.point_a[k] = d.at(3 + k).get<double>();
+          distance.point_b[k] = d.at(6 + k).get<double>();
+        }
+        distance.candidate_pairs = d.at(9).get<std::size_t>();
+        distance.exact_tests = d.at(10).get<std::size_t>();
+        if (!(distance.distance >= 0.0) || (distance.distance == 0.0) != answer.intersecting) {
+          return bad("a distance that contradicts its verdict");
+        }
+        answer.distance = distance;
+      }
       read.emplace_back(key, std::move(answer));
     }
     for (auto& [key, answer] : read)
@@ -65,9 +82,16 @@ Status saveOracleAnswers(const std::string& path, const OracleCache& cache) {
       flat.push_back(p.a);
       flat.push_back(p.b);
     }
-    answers.push_back(
+    Json entry =
         Json::array({std::get<0>(key), std::get<1>(key), std::get<2>(key), answer.intersecting,
-                     answer.candidate_pairs, answer.exact_tests, std::move(flat)}));
+                     answer.candidate_pairs, answer.exact_tests, std::move(flat)});
+    if (answer.distance) {
+      const MeshDistance& d = *answer.distance;
+      entry.push_back(Json::array({d.distance, d.pair.a, d.pair.b, d.point_a.x(), d.point_a.y(),
+                                   d.point_a.z(), d.point_b.x(), d.point_b.y(), d.point_b.z(),
+                                   d.candidate_pairs, d.exact_tests}));
+    }
+    answers.push_back(std::move(entry));
   }
   std::error_code ec;
   std::filesystem::create_directories(std::filesystem::path(path).parent_path(), ec);

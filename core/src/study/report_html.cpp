@@ -64,6 +64,8 @@ Json row(const CombinationResult& r, const QueryMeasurement& m) {
           {"false_positives", m.false_positives},
           {"recall", m.recall},
           {"precision", m.precision},
+          {"max_distance_error", nullable(m.max_distance_error)},
+          {"max_relative_distance_error", nullable(m.max_relative_distance_error)},
           {"finest_error_rate", m.finest_disagreements
                                     ? Json(static_cast<double>(*m.finest_disagreements) / frames)
                                     : Json()},

@@ -222,7 +222,8 @@ TEST(MarkerScene, OutlierRejectionKeepsThePoseClose) {
 
 // The bundled docking scene: module B's recovered pose is about a millimetre off, and the true
 // docking faces touch in frame 20 only by the exact coplanar contact, which the recovered pose
-// misses; every backend is still checked on the recovered poses (and the OBB tree is exact).
+// misses; every backend is still checked on the recovered poses (and the OBB tree is exact). The
+// distance query gives the docking clearance per frame: 39 mm apart at first, 0 in contact.
 TEST(MarkerScene, DockingTrackingErrorIsCountedAgainstTheTruePoses) {
   const Result<Scene> scene = loadScene(test::sourcePath("scenes/station_docking_tracked.json"));
   ASSERT_TRUE(scene.ok()) << scene.status().message();
@@ -233,9 +234,14 @@ TEST(MarkerScene, DockingTrackingErrorIsCountedAgainstTheTruePoses) {
   options.repetitions = 1;
   const RunReport report =
       runScene(scene.value(), BackendSpec{library.value(), "obbtree", {}}, options);
-  ASSERT_EQ(report.measurements.size(), 2u);
+  ASSERT_EQ(report.measurements.size(), 3u);
   for (const QueryMeasurement& m : report.measurements) {
     SCOPED_TRACE(m.query);
+    if (m.kind == QueryKind::kDistance) {
+      ASSERT_TRUE(m.frames.front().oracle_distance.has_value());
+      EXPECT_NEAR(*m.frames.front().oracle_distance, 0.039, 0.002);
+      EXPECT_EQ(m.frames[21].oracle_distance, std::optional<double>(0.0));
+    }
     ASSERT_TRUE(m.ok()) << m.status;
     EXPECT_EQ(m.disagreements, 0u);
     EXPECT_EQ(m.tracking_false_contacts, std::optional<std::size_t>(0));

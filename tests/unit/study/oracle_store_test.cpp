@@ -48,6 +48,34 @@ TEST(OracleStore, AnswersComeBackExactly) {
   }
 }
 
+// Distances come back bit for bit: the pair, the points and the distance.
+TEST(OracleStore, DistancesComeBackExactly) {
+  std::string text = kScene;
+  text.replace(text.find("[0.3, 0.1, 0]"), 13, "[3.0, 0.0, 0]");
+  text.replace(text.find("\"all_pairs\"}]"), 13, "\"distance\"}]");
+  const Scene s = scene(text);
+  OracleCache computed(s);
+  int apart = 0;
+  for (std::size_t f = 0; f < s.frames; ++f) {
+    const OracleAnswer& answer = computed.get(0, 1, f);
+    ASSERT_TRUE(answer.distance.has_value());
+    apart += answer.distance->distance > 0.0 ? 1 : 0;
+  }
+  EXPECT_EQ(apart, 3);
+  const std::string path = oracleStorePath(test::makeTempDirectory("oracle_store"), computed);
+  ASSERT_TRUE(saveOracleAnswers(path, computed).ok());
+  OracleCache loaded(s);
+  ASSERT_TRUE(loadOracleAnswers(path, loaded).ok());
+  for (const auto& [key, answer] : computed.answers()) {
+    const OracleAnswer& back = loaded.answers().at(key);
+    ASSERT_TRUE(back.distance.has_value());
+    EXPECT_EQ(back.distance->distance, answer.distance->distance);
+    EXPECT_EQ(back.distance->pair, answer.distance->pair);
+    EXPECT_EQ(back.distance->point_a, answer.distance->point_a);
+    EXPECT_EQ(back.distance->point_b, answer.distance->point_b);
+  }
+}
+
 TEST(OracleStore, AMissingFileAddsNothingAndIsNoError) {
   const Scene s = scene();
   OracleCache cache(s);

@@ -2,12 +2,14 @@
 
 #include <array>
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 #include <Eigen/Core>
 
 #include <collido/geometry.h>
 #include <collido/mesh/triangle_mesh.h>
+#include <collido/oracle/distance_oracle.h>
 #include <collido/query.h>
 
 namespace collido {
@@ -24,6 +26,8 @@ struct OracleAnswer {
   std::vector<TrianglePair> pairs;  ///< sorted by (a, b); one witness in kFirstPair mode
   std::size_t candidate_pairs = 0;  ///< pairs whose conservative boxes overlapped
   std::size_t exact_tests = 0;      ///< pairs decided by exact predicates
+  /// The exact distance, where a distance query asks about the pair (exactMeshDistance).
+  std::optional<MeshDistance> distance;
 };
 
 /// Every pair (triangle of A, triangle of B) whose closed triangles share at least one point,

@@ -82,6 +82,17 @@ struct FrameRecord {
   /// tracking error, beside the exact answer (RunOptions::tracking_sigmas).
   std::optional<bool> possible_contact;
   std::optional<double> tracking_margin;
+  /// kDistance: the exact distance (exactMeshDistance) and the reported one.
+  std::optional<double> oracle_distance;
+  std::optional<double> reported_distance;
+  /// kDistance: how far below the exact distance the answer may lie (rounding: 1e-10 of the
+  /// largest posed coordinate) and how far above it (that, plus the request's tolerance).
+  double distance_below = 0.0;
+  double distance_above = 0.0;
+  /// kDistance: the reported points are not the reported distance apart, or not on their
+  /// reported triangles, or a certified interval misses the exact distance (all within
+  /// `distance_below`).
+  bool invalid_distance_witness = false;
   std::uint64_t bv_tests = 0;
   std::uint64_t primitive_tests = 0;
   /// Object pairs asked: 1 for a two-object query; for a group query, the candidates the shared
@@ -95,9 +106,10 @@ struct FrameRecord {
 /// Compares a backend's answer with the oracle's for meshes posed by `pose_a` and `pose_b` and
 /// fills the answer fields of `record`: out-of-range and repeated pairs and (for boolean
 /// queries) witnesses that do not intersect count as invalid; all-pairs answers are matched
-/// against the exact set.
+/// against the exact set; distances against the exact distance (truth.distance), within the
+/// request's tolerance and rounding, their points checked against their triangles.
 void compareWithOracle(const TriangleMesh& a, const Pose& pose_a, const TriangleMesh& b,
-                       const Pose& pose_b, QueryKind kind, const QueryResult& result,
+                       const Pose& pose_b, const QueryRequest& request, const QueryResult& result,
                        const OracleAnswer& truth, FrameRecord& record);
 
 /// Results of one (backend, scene, query).
@@ -128,6 +140,10 @@ struct QueryMeasurement {
   /// that answer missed (the margin was too small for the real error).
   std::optional<std::size_t> tracking_possible_contacts;
   std::optional<std::size_t> tracking_missed_within_margin;
+  /// kDistance: the largest |reported - exact| distance over the frames, absolute and relative
+  /// to the exact distance (frames at distance 0 count in the absolute figure only).
+  std::optional<double> max_distance_error;
+  std::optional<double> max_relative_distance_error;
   double recall = 1.0;     ///< kAllPairs: matched / exact pairs over all frames (1 if none)
   double precision = 1.0;  ///< kAllPairs: matched / reported pairs over all frames (1 if none)
   bool counts_bv_tests = false;

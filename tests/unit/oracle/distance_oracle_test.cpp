@@ -1,0 +1,191 @@
+// The reference distance: closest points of triangles against dense sampling, the exact mesh
+// distance against analytic cases and the peer case's exact distances for FCL's env/rob poses.
+#include <cmath>
+#include <fstream>
+#include <random>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <collido/mesh/mesh_io.h>
+#include <collido/mesh/procedural.h>
+#include <collido/oracle/distance_oracle.h>
+#include <collido/oracle/triangle_distance.h>
+
+#include "support/test_paths.h"
+
+namespace collido {
+namespace {
+
+using Json = nlohmann::json;
+using Triangle = std::array<Eigen::Vector3d, 3>;
+
+Eigen::Vector3d vec(const Json& j) {
+  return {j[0].get<double>(), j[1].get<double>(), j[2].get<double>()};
+}
+
+Triangle randomTriangle(std::mt19937_64& rng, double spread) {
+  std::uniform_real_distribution<double> u(-spread, spread);
+  Triangle t;
+  for (auto& p : t)
+    p = Eigen::Vector3d(u(rng), u(rng), u(rng));
+  return t;
+}
+
+Eigen::Vector3d pointOf(const Triangle& t, double s, double r) {
+  return t[0] + s * (t[1] - t[0]) + r * (t[2] - t[0]);
+}
+
+// Dense barycentric sampling: an upper bound on the distance close to it.
+double sampledDistance(const Triangle& a, const Triangle& b, int n) {
+  double best = std::numeric_limits<double>::infinity();
+  std::vector<Eigen::Vector3d> pa;
+  std::vector<Eigen::Vector3d> pb;
+  for (int i = 0; i <= n; ++i) {
+    for (int j = 0; i + j <= n; ++j) {
+      pa.push_back(pointOf(a, static_cast<double>(i) / n, static_cast<double>(j) / n));
+      pb.push_back(pointOf(b, static_cast<double>(i) / n, static_cast<double>(j) / n));
+    }
+  }
+  for (const auto& x : pa) {
+    for (const auto& y : pb)
+      best = std::min(best, (x - y).norm());
+  }
+  return best;
+}
+
+TriangleMesh singleTriangle(const Triangle& t) {
+  TriangleMesh mesh;
+  mesh.vertices.resize(3, 3);
+  for (int k = 0; k < 3; ++k)
+    mesh.vertices.col(k) = t[static_cast<std::size_t>(k)];
+  mesh.triangles = Eigen::Matrix3Xi(3, 1);
+  mesh.triangles.col(0) << 0, 1, 2;
+  return mesh;
+}
+
+TEST(TriangleDistance, NeverAboveSamplingAndMatchesTheExactDistance) {
+  std::mt19937_64 rng(7);
+  for (int trial = 0; trial < 300; ++trial) {
+    const Triangle a = randomTriangle(rng, 1.0);
+    Triangle b = randomTriangle(rng, 1.0);
+    const Eigen::Vector3d shift(1.5 * (trial % 3), 0.3, -0.2);
+    for (auto& p : b)
+      p += shift;
+    const TriangleClosestPoints closest = closestPointsOfTriangles(a, b);
+    EXPECT_NEAR((closest.point_a - closest.point_b).norm(), closest.distance, 1e-12);
+    EXPECT_NEAR((closestPointOnTriangle(closest.point_a, a) - closest.point_a).norm(), 0.0, 1e-12);
+    EXPECT_NEAR((closestPointOnTriangle(closest.point_b, b) - closest.point_b).norm(), 0.0, 1e-12);
+    EXPECT_LE(closest.distance, sampledDistance(a, b, 24) + 1e-12) << "trial " << trial;
+    const TriangleMesh ma = singleTriangle(a);
+    const TriangleMesh mb = singleTriangle(b);
+    const double exact =
+        std::sqrt(exactPairSquaredDistance(ma, Pose::Identity(), mb, Pose::Identity(), {0, 0}));
+    EXPECT_NEAR(closest.distance, exact, 1e-12) << "trial " << trial;
+  }
+}
+
+TEST(TriangleDistance, CrossingTrianglesAreAtZeroAtThePiercingPoint) {
+  const Triangle a{Eigen::Vector3d(-1, -1, 0), Eigen::Vector3d(2, -1, 0),
+                   Eigen::Vector3d(-1, 2, 0)};
+  const Triangle b{Eigen::Vector3d(0.2, 0.2, -1), Eigen::Vector3d(0.2, 0.3, 1),
+                   Eigen::Vector3d(0.3, 0.2, 1)};
+  const TriangleClosestPoints closest = closestPointsOfTriangles(a, b);
+  EXPECT_EQ(closest.distance, 0.0);
+  EXPECT_NEAR(closest.point_a.z(), 0.0, 1e-15);
+}
+
+TEST(TriangleDistance, DegenerateTrianglesCountAsSegmentsAndPoints) {
+  const Triangle face{Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(0, 1, 0)};
+  // A segment (collinear corners) above the face, and a point (three equal corners).
+  const Triangle segment{Eigen::Vector3d(0.2, 0.2, 0.5), Eigen::Vector3d(0.2, 0.2, 1.5),
+                         Eigen::Vector3d(0.2, 0.2, 1.0)};
+  EXPECT_NEAR(closestPointsOfTriangles(face, segment).distance, 0.5, 1e-15);
+  EXPECT_NEAR(closestPointsOfTriangles(segment, face).distance, 0.5, 1e-15);
+  const Triangle point{Eigen::Vector3d(2, 0, 0), Eigen::Vector3d(2, 0, 0),
+                       Eigen::Vector3d(2, 0, 0)};
+  EXPECT_NEAR(closestPointsOfTriangles(face, point).distance, 1.0, 1e-15);
+  const TriangleMesh mf = singleTriangle(face);
+  const TriangleMesh ms = singleTriangle(segment);
+  EXPECT_EQ(exactPairSquaredDistance(mf, Pose::Identity(), ms, Pose::Identity(), {0, 0}), 0.25);
+}
+
+TEST(MeshDistance, SpheresAtKnownGapsAndTouching) {
+  SphereParams params;
+  params.slices = 16;
+  params.stacks = 8;  // the equator is a ring, (1, 0, 0) a vertex
+  const TriangleMesh sphere = makeSphere(params).value();
+  // Its mirror image in x: vertex (1, 0, z) of one meets vertex (-1, 0, z) of the other exactly
+  // at gap 0 (a rotation by pi would not be exact: sin(pi) is not 0 in double).
+  TriangleMesh mirrored = sphere;
+  mirrored.vertices.row(0) *= -1.0;
+  for (const double gap : {1.0, 1e-3, 1e-9, 0.0, -0.25}) {
+    Pose pose = Pose::Identity();
+    pose.translation() = Eigen::Vector3d(2.0 + gap, 0, 0);
+    const MeshDistance d = exactMeshDistance(sphere, Pose::Identity(), mirrored, pose);
+    // Vertex (1, 0, z) faces its mirror image across the gap.
+    EXPECT_NEAR(d.distance, std::max(gap, 0.0), 1e-15 + 1e-12 * std::abs(gap)) << gap;
+    EXPECT_EQ(d.distance == 0.0, gap <= 0.0) << gap;
+    EXPECT_NEAR((d.point_b - d.point_a).norm(), d.distance, 1e-12);
+  }
+}
+
+// Every non-colliding pose of the peer case has its exact minimum distance listed; colliding
+// ones are at 0.
+TEST(MeshDistance, MatchesTheExactDistancesOfTheFortyEnvRobPoses) {
+  Result<TriangleMesh> env = loadMesh(test::sourcePath("scenes/meshes/env.obj"));
+  Result<TriangleMesh> rob = loadMesh(test::sourcePath("scenes/meshes/rob.obj"));
+  ASSERT_TRUE(env.ok() && rob.ok());
+  std::ifstream in(test::sourcePath("tests/data/peer_cases/fcl_env_rob_poses.json"));
+  const Json cases = Json::parse(in)["cases"];
+  int separated = 0;
+  for (const Json& c : cases) {
+    Pose pose = Pose::Identity();
+    for (int r = 0; r < 3; ++r) {
+      for (int k = 0; k < 3; ++k)
+        pose.linear()(r, k) = c["R"][r][k].get<double>();
+    }
+    pose.translation() = vec(c["t"]);
+    const MeshDistance d = exactMeshDistance(env.value(), pose, rob.value(), Pose::Identity());
+    if (c["collide"].get<bool>()) {
+      EXPECT_EQ(d.distance, 0.0) << c["id"];
+      continue;
+    }
+    ++separated;
+    const double listed = c["min_distance"].get<double>();
+    EXPECT_NEAR(d.distance, listed, 4e-16 * listed) << c["id"];
+    // The listed closest pair is at the same exact distance (ties are allowed).
+    const TrianglePair pair{c["closest_pair_env_rob"][0].get<int>(),
+                            c["closest_pair_env_rob"][1].get<int>()};
+    EXPECT_EQ(exactPairSquaredDistance(env.value(), pose, rob.value(), Pose::Identity(), pair),
+              exactPairSquaredDistance(env.value(), pose, rob.value(), Pose::Identity(), d.pair))
+        << c["id"];
+    EXPECT_NEAR((d.point_a - vec(c["closest_points_world"][0])).norm() +
+                    (d.point_b - vec(c["closest_points_world"][1])).norm(),
+                0.0, d.pair == pair ? 1e-9 : 1e300)
+        << c["id"];
+  }
+  EXPECT_EQ(separated, 23);
+}
+
+// A thin gap far from the origin: the search must find the one pair 1e-7 apart among many
+// pairs a little further.
+TEST(MeshDistance, FindsTheClosestPairOfParallelSheetsFarFromTheOrigin) {
+  GridSheetParams params;
+  params.cells_x = 16;
+  params.cells_y = 16;
+  const TriangleMesh sheet = makeGridSheet(params).value();
+  TriangleMesh bumped = sheet;
+  bumped.vertices(2, 100) -= 0.5 - 1e-7;  // one vertex dips towards the lower sheet
+  Pose lower = Pose::Identity();
+  lower.translation() = Eigen::Vector3d(1e5, -2e5, 3e4);
+  Pose upper = lower;
+  upper.translation().z() += 0.5;
+  const MeshDistance d = exactMeshDistance(sheet, lower, bumped, upper);
+  EXPECT_NEAR(d.distance, 1e-7, 1e-11);
+  EXPECT_EQ(bumped.triangles.col(d.pair.b).cwiseEqual(100).any(), true);
+}
+
+}  // namespace
+}  // namespace collido
