@@ -83,29 +83,26 @@ Closest closestToOrigin(const std::array<Vertex, 4>& s, int n) {
 
 PointSetSupport::PointSetSupport(const Eigen::Matrix3Xd& points, const Eigen::Isometry3d& pose,
                                  double radius)
-    : points_(points.data()), count_(points.cols()), radius_(radius) {
-  if (!pose.matrix().isIdentity(0.0)) {
-    posed_ = pose * points;
-    points_ = posed_.data();
-  }
-}
+    : points_(points), pose_(pose), posed_(!pose.matrix().isIdentity(0.0)), radius_(radius) {}
 
 Eigen::Vector3d PointSetSupport::support(const Eigen::Vector3d& direction) const {
-  const Eigen::Map<const Eigen::Matrix3Xd> points(points_, 3, count_);
+  // The support of R P + t along d is R (support of P along R^T d) + t.
+  const Eigen::Vector3d local =
+      posed_ ? Eigen::Vector3d(pose_.linear().transpose() * direction) : direction;
   Eigen::Index best = 0;
   double best_dot = -std::numeric_limits<double>::infinity();
-  for (Eigen::Index c = 0; c < count_; ++c) {
-    const double dot = direction.dot(points.col(c));
+  for (Eigen::Index c = 0; c < points_.cols(); ++c) {
+    const double dot = local.dot(points_.col(c));
     if (dot > best_dot) {
       best_dot = dot;
       best = c;
     }
   }
-  return points.col(best);
+  return posed_ ? Eigen::Vector3d(pose_ * points_.col(best)) : Eigen::Vector3d(points_.col(best));
 }
 
 Eigen::Vector3d PointSetSupport::anyPoint() const {
-  return Eigen::Vector3d(points_[0], points_[1], points_[2]);
+  return posed_ ? Eigen::Vector3d(pose_ * points_.col(0)) : Eigen::Vector3d(points_.col(0));
 }
 
 GjkResult gjkDistance(const SupportFunction& a, const SupportFunction& b,

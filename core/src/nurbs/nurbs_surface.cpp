@@ -10,20 +10,24 @@ namespace {
 
 using Vec4 = Eigen::Vector4d;
 
+// The knot at an int index (knot arithmetic is in ints; indices are never negative here).
+double knotAt(const std::vector<double>& knots, int i) {
+  return knots[static_cast<std::size_t>(i)];
+}
+
 // The knot span holding t: the index k with U[k] <= t < U[k + 1], and the last non-empty span
 // at the domain's end.
 int findSpan(int count, int degree, double t, const std::vector<double>& knots) {
   const int n = count - 1;
-  if (t >= knots[static_cast<std::size_t>(n + 1)]) {
+  if (t >= knotAt(knots, n + 1)) {
     int k = n;
-    while (k > degree &&
-           knots[static_cast<std::size_t>(k)] == knots[static_cast<std::size_t>(n + 1)])
+    while (k > degree && knotAt(knots, k) == knotAt(knots, n + 1))
       --k;
     return k;
   }
-  if (t <= knots[static_cast<std::size_t>(degree)]) {
+  if (t <= knotAt(knots, degree)) {
     int k = degree;
-    while (knots[static_cast<std::size_t>(k + 1)] <= t)
+    while (knotAt(knots, k + 1) <= t)
       ++k;
     return k;
   }
@@ -41,8 +45,8 @@ void basis(int span, double t, int degree, const std::vector<double>& knots, dou
   values[0] = 1.0;
   lower[0] = 1.0;
   for (int j = 1; j <= degree; ++j) {
-    left[j] = t - knots[static_cast<std::size_t>(span + 1 - j)];
-    right[j] = knots[static_cast<std::size_t>(span + j)] - t;
+    left[j] = t - knotAt(knots, span + 1 - j);
+    right[j] = knotAt(knots, span + j) - t;
     if (j == degree) std::copy(values, values + degree, lower);
     double saved = 0.0;
     for (int r = 0; r < j; ++r) {
@@ -53,7 +57,7 @@ void basis(int span, double t, int degree, const std::vector<double>& knots, dou
     }
     values[j] = saved;
   }
-  const auto knot = [&](int i) { return knots[static_cast<std::size_t>(i)]; };
+  const auto knot = [&](int i) { return knotAt(knots, i); };
   for (int r = 0; r <= degree; ++r) {
     double d = 0.0;
     if (r >= 1) {
@@ -85,7 +89,7 @@ void insertOnce(NurbsSurface& s, Direction direction, double t) {
   };
   NurbsSurface out = s;
   (along_u ? out.count_u : out.count_v) = count + 1;
-  out.control.assign(static_cast<std::size_t>(count + 1) * static_cast<std::size_t>(other),
+  out.control.assign((static_cast<std::size_t>(count) + 1) * static_cast<std::size_t>(other),
                      Vec4::Zero());
   const auto new_at = [&](int i, int j) -> Vec4& { return along_u ? out.at(i, j) : out.at(j, i); };
   for (int j = 0; j < other; ++j) {
@@ -96,8 +100,7 @@ void insertOnce(NurbsSurface& s, Direction direction, double t) {
         new_at(i, j) = old_at(i - 1, j);
       } else {
         const double alpha =
-            (t - knots[static_cast<std::size_t>(i)]) /
-            (knots[static_cast<std::size_t>(i + degree)] - knots[static_cast<std::size_t>(i)]);
+            (t - knotAt(knots, i)) / (knotAt(knots, i + degree) - knotAt(knots, i));
         new_at(i, j) = alpha * old_at(i, j) + (1.0 - alpha) * old_at(i - 1, j);
       }
     }
@@ -157,7 +160,7 @@ Status validate(const NurbsSurface& s) {
                  std::to_string(degree) + " needs at least " + std::to_string(degree + 1) +
                  " control points");
     }
-    if (knots->size() != static_cast<std::size_t>(count + degree + 1)) {
+    if (knots->size() != static_cast<std::size_t>(count) + static_cast<std::size_t>(degree) + 1) {
       return bad("knots_" + axis + " has " + std::to_string(knots->size()) +
                  " values: count + degree + 1 = " + std::to_string(count + degree + 1) +
                  " expected");

@@ -32,6 +32,7 @@
 namespace collido {
 namespace {
 
+using scene_reading::duplicateKeyCheck;
 using scene_reading::Json;
 using scene_reading::Node;
 using scene_reading::Reader;
@@ -365,55 +366,6 @@ std::vector<std::size_t> readGroup(const Reader& r, const Node& node, const Inde
 }
 
 // --- the document ----------------------------------------------------------------------------
-
-// nlohmann::json keeps the last of two equal keys in an object; a scene with "frames" twice must
-// not silently mean the second. The parser's callback sees every key; a stack of the open
-// containers (the key or index being read in each) gives the JSON pointer of a repeated key.
-Json::parser_callback_t duplicateKeyCheck(const std::string& label) {
-  struct Open {
-    bool array = false;
-    std::size_t index = 0;  // arrays: the element being read
-    std::string key;        // objects: the key being read
-    std::set<std::string> keys;
-  };
-  auto open = std::make_shared<std::vector<Open>>();
-  return [open, label](int /*depth*/, Json::parse_event_t event, Json& parsed) {
-    const auto escaped = [](const std::string& key) {  // RFC 6901: '~' -> "~0", '/' -> "~1"
-      std::string out;
-      for (char c : key)
-        out += c == '~' ? "~0" : c == '/' ? "~1" : std::string(1, c);
-      return out;
-    };
-    switch (event) {
-      case Json::parse_event_t::object_start:
-      case Json::parse_event_t::array_start:
-        open->push_back(Open{event == Json::parse_event_t::array_start, 0, "", {}});
-        break;
-      case Json::parse_event_t::key: {
-        Open& object = open->back();
-        object.key = parsed.get<std::string>();
-        if (!object.keys.insert(object.key).second) {
-          std::string pointer;
-          for (const Open& o : *open) {
-            pointer += "/" + (o.array ? std::to_string(o.index) : escaped(o.key));
-          }
-          throw SceneError(label + ": " + pointer + ": duplicate key '" + object.key +
-                           "' (only one of them would count)");
-        }
-        break;
-      }
-      case Json::parse_event_t::object_end:
-      case Json::parse_event_t::array_end:
-        open->pop_back();
-        if (!open->empty() && open->back().array) ++open->back().index;
-        break;
-      case Json::parse_event_t::value:
-        if (!open->empty() && open->back().array) ++open->back().index;
-        break;
-    }
-    return true;
-  };
-}
 
 // --- stress scenes ---------------------------------------------------------------------------
 

@@ -35,6 +35,10 @@ struct Node {
   std::string where() const { return pointer.empty() ? "/" : pointer; }
 };
 
+/// A parser callback that throws SceneError naming the file (`label`) and the JSON pointer of a
+/// key repeated in one object: nlohmann::json would keep the last silently.
+Json::parser_callback_t duplicateKeyCheck(const std::string& label);
+
 inline const char* typeName(const Json& v) {
   return v.type_name();
 }

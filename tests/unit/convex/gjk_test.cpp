@@ -1,6 +1,7 @@
 // Our GJK against brute-force hull distances, Coal's capsule/sphere cases, and degenerate and
 // near-touching inputs: the distance within tolerance of the truth, the lower bound never above
 // it, the witnesses in the sets and the distance apart.
+#include <deque>
 #include <fstream>
 #include <random>
 
@@ -183,6 +184,7 @@ TEST(Gjk, CoalCapsuleAndSphereCases) {
       ssr = std::stod(
           id.substr(id.find("_ssr") + 4, id.find("_c", id.find("_ssr")) - id.find("_ssr") - 4));
     }
+    std::deque<Eigen::Matrix3Xd> cores;  // the supports refer to them: they must stay put
     std::vector<std::unique_ptr<PointSetSupport>> shapes;
     Eigen::Vector3d triangle_shift = Eigen::Vector3d::Zero();
     for (const nlohmann::json& s : c["shapes"]) {
@@ -191,16 +193,16 @@ TEST(Gjk, CoalCapsuleAndSphereCases) {
       pose.translation() = t;
       const std::string type = s["type"];
       if (type == "capsule") {
-        Eigen::Matrix3Xd core(3, 2);
+        Eigen::Matrix3Xd& core = cores.emplace_back(3, 2);
         const double half = 0.5 * s["length"].get<double>();
         core << 0, 0, 0, 0, -half, half;
         shapes.push_back(std::make_unique<PointSetSupport>(core, pose, s["radius"].get<double>()));
       } else if (type == "sphere") {
-        const Eigen::Matrix3Xd core = Eigen::Vector3d::Zero();
+        const Eigen::Matrix3Xd& core = cores.emplace_back(Eigen::Matrix3Xd::Zero(3, 1));
         shapes.push_back(
             std::make_unique<PointSetSupport>(core, pose, s["radius"].get<double>() + ssr));
       } else {
-        Eigen::Matrix3Xd core(3, 3);
+        Eigen::Matrix3Xd& core = cores.emplace_back(3, 3);
         for (int k = 0; k < 3; ++k)
           core.col(k) = vec(s["vertices_local"][k]);
         shapes.push_back(std::make_unique<PointSetSupport>(core, pose));

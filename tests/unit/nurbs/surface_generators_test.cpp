@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <collido/nurbs/surface_generators.h>
+#include <collido/nurbs/tessellate.h>
 
 namespace collido::nurbs {
 namespace {
@@ -47,6 +48,30 @@ TEST(SurfaceGenerators, SheetsAndBladesAreValid) {
   const Eigen::Vector3d chord = evaluate(blade, 1.0, 1.0) - evaluate(blade, 1.0, 0.0);
   EXPECT_NEAR(std::atan2(chord.y(), chord.x()) * 180.0 / M_PI, 40.0, 1e-9);
   EXPECT_NEAR(evaluate(blade, 1.0, 0.5).z(), 3.0, 1e-12);
+}
+
+}  // namespace
+}  // namespace collido::nurbs
+
+namespace collido::nurbs {
+namespace {
+
+TEST(Tessellate, VerticesLieOnTheSurfaceAndTheGridIsComplete) {
+  const NurbsSurface zone = sphereZone(Eigen::Vector3d(1, 2, 3), 2.0, 0.0);
+  const TriangleMesh mesh = tessellate(zone, 6, 4);
+  EXPECT_EQ(mesh.vertexCount(), 7u * 5u);
+  EXPECT_EQ(mesh.triangleCount(), 2u * 6u * 4u);
+  for (Eigen::Index v = 0; v < mesh.vertices.cols(); ++v)
+    EXPECT_NEAR((mesh.vertices.col(v) - Eigen::Vector3d(1, 2, 3)).norm(), 2.0, 1e-14);
+  // Every triangle is non-degenerate and faces the same side (outward for the zone).
+  for (Eigen::Index t = 0; t < mesh.triangles.cols(); ++t) {
+    const Eigen::Vector3d a = mesh.vertices.col(mesh.triangles(0, t));
+    const Eigen::Vector3d b = mesh.vertices.col(mesh.triangles(1, t));
+    const Eigen::Vector3d c = mesh.vertices.col(mesh.triangles(2, t));
+    const Eigen::Vector3d normal = (b - a).cross(c - a);
+    EXPECT_GT(normal.norm(), 1e-6);
+    EXPECT_GT(std::abs(normal.normalized().dot((a - Eigen::Vector3d(1, 2, 3)).normalized())), 0.9);
+  }
 }
 
 }  // namespace

@@ -21,9 +21,9 @@ class SupportFunction {
 };
 
 /// The convex hull of points (columns, at least one), optionally posed rigidly and inflated:
-/// its support function is the points' own, so no hull is ever built. Without a pose the
-/// points are used where they lie, not copied: like a string_view, they must outlive this
-/// object (a temporary matrix is refused at compile time).
+/// its support function is the points' own (posed on the fly), so no hull is built and nothing
+/// is copied. Like a string_view, it refers to the points: they must outlive it (a temporary
+/// matrix is refused at compile time).
 class PointSetSupport final : public SupportFunction {
  public:
   explicit PointSetSupport(const Eigen::Matrix3Xd& points,
@@ -31,16 +31,14 @@ class PointSetSupport final : public SupportFunction {
                            double radius = 0.0);
   PointSetSupport(Eigen::Matrix3Xd&& points, const Eigen::Isometry3d& pose = {},
                   double radius = 0.0) = delete;
-  PointSetSupport(const PointSetSupport&) = delete;
-  PointSetSupport& operator=(const PointSetSupport&) = delete;
   Eigen::Vector3d support(const Eigen::Vector3d& direction) const override;
   Eigen::Vector3d anyPoint() const override;
   double radius() const override { return radius_; }
 
  private:
-  Eigen::Matrix3Xd posed_;          // the posed copy, when posed
-  const double* points_ = nullptr;  // the points used: the caller's or posed_
-  Eigen::Index count_ = 0;
+  const Eigen::Matrix3Xd& points_;
+  Eigen::Isometry3d pose_;
+  bool posed_;
   double radius_;
 };
 

@@ -34,7 +34,8 @@ struct DistanceAnswer {
 /// The distance between two OBB trees by best-first simultaneous descent, in A's model frame:
 /// node pairs wait in a queue ordered by a lower bound on the distance between their boxes (the
 /// largest gap between the boxes' projections on the 15 separating-axis candidates, each divided
-/// by its axis length, less the bound on the rounding of the relative map); the pair with the
+/// by its axis length, and on the line of their centres, less the bound on the rounding of the
+/// relative map); the pair with the
 /// smallest bound is taken next, its larger box split (or, at two leaves, every triangle pair's
 /// distance computed), and a pair is dropped once its bound reaches the best distance found less
 /// the tolerance (never less than 1e-13 of the coordinates' magnitude, except near contact, so
