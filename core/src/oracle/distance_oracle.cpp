@@ -11,6 +11,8 @@
 #include <collido/oracle/exact_oracle.h>
 #include <collido/oracle/triangle_distance.h>
 
+#include "box_sweep.h"
+
 namespace collido {
 namespace {
 
@@ -47,56 +49,26 @@ struct Candidate {
 };
 
 // Every pair whose boxes come within `radius`, with its double distance, skipping pairs whose
-// box gap already exceeds the best distance found plus `slack`. A sweep along the axis where the
-// two meshes spread most: triangles enter by their low end (A's lowered by the radius) and leave
-// the active lists once they end before the entering one starts.
+// box gap already exceeds the best distance found plus `slack`; swept along `axis`, where the
+// meshes spread most.
 std::vector<Candidate> sweep(const std::vector<PosedTriangle>& xs,
                              const std::vector<PosedTriangle>& ys, int axis, double radius,
                              double slack, double& best, std::size_t& computed) {
-  struct Entry {
-    double start;
-    bool from_a;
-    std::int32_t index;
-  };
-  std::vector<Entry> entries;
-  entries.reserve(xs.size() + ys.size());
-  for (std::size_t i = 0; i < xs.size(); ++i)
-    entries.push_back({xs[i].lo[axis] - radius, true, static_cast<std::int32_t>(i)});
-  for (std::size_t j = 0; j < ys.size(); ++j)
-    entries.push_back({ys[j].lo[axis], false, static_cast<std::int32_t>(j)});
-  std::sort(entries.begin(), entries.end(),
-            [](const Entry& l, const Entry& r) { return l.start < r.start; });
   std::vector<Candidate> out;
-  std::vector<std::int32_t> open_a;
-  std::vector<std::int32_t> open_b;
-  const auto at = [](const std::vector<PosedTriangle>& v, std::int32_t i) -> const PosedTriangle& {
-    return v[static_cast<std::size_t>(i)];
-  };
-  const auto test = [&](std::int32_t i, std::int32_t j) {
-    const PosedTriangle& x = at(xs, i);
-    const PosedTriangle& y = at(ys, j);
-    const double gap = boxGap(x, y);
-    if (gap > radius || gap > best + slack) return;
-    ++computed;
-    const double d = closestPointsOfTriangles(x.corners, y.corners).distance;
-    best = std::min(best, d);
-    out.push_back({d, i, j});
-  };
-  for (const Entry& e : entries) {
-    const auto ended_a = [&](std::int32_t i) { return at(xs, i).hi[axis] + radius < e.start; };
-    const auto ended_b = [&](std::int32_t j) { return at(ys, j).hi[axis] < e.start; };
-    open_a.erase(std::remove_if(open_a.begin(), open_a.end(), ended_a), open_a.end());
-    open_b.erase(std::remove_if(open_b.begin(), open_b.end(), ended_b), open_b.end());
-    if (e.from_a) {
-      for (std::int32_t j : open_b)
-        test(e.index, j);
-      open_a.push_back(e.index);
-    } else {
-      for (std::int32_t i : open_a)
-        test(i, e.index);
-      open_b.push_back(e.index);
-    }
-  }
+  detail::sweepPairs(
+      xs.size(), [&](std::size_t i) { return xs[i].lo[axis]; },
+      [&](std::size_t i) { return xs[i].hi[axis]; }, ys.size(),
+      [&](std::size_t j) { return ys[j].lo[axis]; }, [&](std::size_t j) { return ys[j].hi[axis]; },
+      radius,
+      [&](std::size_t i, std::size_t j) {
+        const double gap = boxGap(xs[i], ys[j]);
+        if (gap > radius || gap > best + slack) return true;
+        ++computed;
+        const double d = closestPointsOfTriangles(xs[i].corners, ys[j].corners).distance;
+        best = std::min(best, d);
+        out.push_back({d, static_cast<std::int32_t>(i), static_cast<std::int32_t>(j)});
+        return true;
+      });
   return out;
 }
 

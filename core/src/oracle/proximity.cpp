@@ -13,6 +13,8 @@
 
 #include <collido/oracle/exact_oracle.h>
 
+#include "box_sweep.h"
+
 namespace collido {
 namespace {
 
@@ -104,58 +106,27 @@ ProximityAnswer meshesWithinDistance(const TriangleMesh& a, const Pose& pose_a,
   }
   const std::vector<Element> xs = posed(a, pose_a);
   const std::vector<Element> ys = posed(b, pose_b);
-  // Sweep along x over both sets, boxes grown by the distance (A's by all of it).
-  struct Entry {
-    double start;
-    bool from_a;
-    std::size_t index;
-  };
-  std::vector<Entry> entries;
-  entries.reserve(xs.size() + ys.size());
-  for (std::size_t i = 0; i < xs.size(); ++i)
-    entries.push_back({xs[i].lo.x() - distance, true, i});
-  for (std::size_t j = 0; j < ys.size(); ++j)
-    entries.push_back({ys[j].lo.x(), false, j});
-  std::sort(entries.begin(), entries.end(),
-            [](const Entry& l, const Entry& r) { return l.start < r.start; });
+  // Sweep along x over both sets, A's boxes grown by the distance.
   const double limit = distance * distance;
-  std::vector<std::size_t> open_a;
-  std::vector<std::size_t> open_b;
   const auto near = [&](const Element& x, const Element& y) {
     return (x.lo.array() - distance <= y.hi.array()).all() &&
            (y.lo.array() <= x.hi.array() + distance).all();
   };
-  for (const Entry& e : entries) {
-    // Drop what ends before this starts.
-    const auto ended_a = [&](std::size_t i) { return xs[i].hi.x() + distance < e.start; };
-    const auto ended_b = [&](std::size_t j) { return ys[j].hi.x() < e.start; };
-    open_a.erase(std::remove_if(open_a.begin(), open_a.end(), ended_a), open_a.end());
-    open_b.erase(std::remove_if(open_b.begin(), open_b.end(), ended_b), open_b.end());
-    const auto test = [&](const Element& x, const Element& y) {
-      if (!near(x, y)) return false;
-      ++answer.candidate_pairs;
-      const double d2 = squaredDistance(x, y);
-      answer.closest = std::min(answer.closest, std::sqrt(d2));
-      return d2 <= limit;
-    };
-    if (e.from_a) {
-      for (std::size_t j : open_b) {
-        if (test(xs[e.index], ys[j])) {
-          answer.within = true;
-          return answer;
-        }
-      }
-      open_a.push_back(e.index);
-    } else {
-      for (std::size_t i : open_a) {
-        if (test(xs[i], ys[e.index])) {
-          answer.within = true;
-          return answer;
-        }
-      }
-      open_b.push_back(e.index);
-    }
-  }
+  detail::sweepPairs(
+      xs.size(), [&](std::size_t i) { return xs[i].lo.x(); },
+      [&](std::size_t i) { return xs[i].hi.x(); }, ys.size(),
+      [&](std::size_t j) { return ys[j].lo.x(); }, [&](std::size_t j) { return ys[j].hi.x(); },
+      distance,
+      [&](std::size_t i, std::size_t j) {
+        const Element& x = xs[i];
+        const Element& y = ys[j];
+        if (!near(x, y)) return true;
+        ++answer.candidate_pairs;
+        const double d2 = squaredDistance(x, y);
+        answer.closest = std::min(answer.closest, std::sqrt(d2));
+        answer.within = d2 <= limit;
+        return !answer.within;  // the first pair within the distance answers it
+      });
   return answer;
 }
 

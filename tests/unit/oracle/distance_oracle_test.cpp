@@ -14,6 +14,7 @@
 #include <collido/oracle/triangle_distance.h>
 
 #include "support/test_paths.h"
+#include "unit/oracle/peer_poses.h"
 
 namespace collido {
 namespace {
@@ -141,12 +142,7 @@ TEST(MeshDistance, MatchesTheExactDistancesOfTheFortyEnvRobPoses) {
   const Json cases = Json::parse(in)["cases"];
   int separated = 0;
   for (const Json& c : cases) {
-    Pose pose = Pose::Identity();
-    for (int r = 0; r < 3; ++r) {
-      for (int k = 0; k < 3; ++k)
-        pose.linear()(r, k) = c["R"][r][k].get<double>();
-    }
-    pose.translation() = vec(c["t"]);
+    const Pose pose = test::peerCasePose(c);
     const MeshDistance d = exactMeshDistance(env.value(), pose, rob.value(), Pose::Identity());
     if (c["collide"].get<bool>()) {
       EXPECT_EQ(d.distance, 0.0) << c["id"];

@@ -10,6 +10,7 @@
 #include <collido/oracle/exact_oracle.h>
 
 #include "support/test_paths.h"
+#include "unit/oracle/peer_poses.h"
 
 namespace collido {
 namespace {
@@ -72,12 +73,7 @@ TEST(ExactOracle, GivesTheListedPairsForTheFortyEnvRobPoses) {
   ASSERT_EQ(cases.size(), 40u);
   int colliding = 0;
   for (const Json& c : cases) {
-    Pose pose = Pose::Identity();
-    for (int r = 0; r < 3; ++r) {
-      for (int k = 0; k < 3; ++k)
-        pose.linear()(r, k) = c["R"][r][k].get<double>();
-    }
-    pose.translation() = vec(c["t"]);
+    const Pose pose = test::peerCasePose(c);
     std::vector<TrianglePair> expected;
     for (const Json& p : c["intersecting_pairs_env_rob"]) {
       expected.push_back(TrianglePair{p[0].get<int>(), p[1].get<int>()});

@@ -98,4 +98,13 @@ Pose makePose(const Eigen::Matrix3d& rotation, const Eigen::Vector3d& translatio
   return pose;
 }
 
+TriangleMesh chainLink(const TriangleMesh& chain, int links, int i) {
+  const Eigen::Index v = chain.vertices.cols() / links;
+  const Eigen::Index t = chain.triangles.cols() / links;
+  TriangleMesh link;
+  link.vertices = chain.vertices.middleCols(i * v, v);
+  link.triangles = chain.triangles.middleCols(i * t, t).array() - static_cast<int>(i * v);
+  return link;
+}
+
 }  // namespace collido::obbtree

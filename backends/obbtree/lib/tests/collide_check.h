@@ -42,6 +42,10 @@ Outcome checkQuery(const TriangleMesh& mesh_a, const ObbTree& tree_a, const Pose
                    const std::string& label);
 
 Eigen::Matrix3d randomRotation(std::mt19937_64& rng);
+
+/// Link i of a chain of `links` built by makeChain, as a mesh of its own (V vertices and 2 V
+/// triangles per link, in order).
+TriangleMesh chainLink(const TriangleMesh& chain, int links, int i);
 Pose makePose(const Eigen::Matrix3d& rotation, const Eigen::Vector3d& translation);
 
 }  // namespace collido::obbtree

@@ -56,17 +56,6 @@ const ObbTree& torusTree(int max_leaf) {
   return max_leaf == 1 ? leaf1 : leaf8;
 }
 
-// Link i of a chain as a mesh of its own (the chain's documented layout: V vertices and 2V
-// triangles per link, in order).
-TriangleMesh chainLink(const TriangleMesh& chain, int links, int i) {
-  const Eigen::Index v = chain.vertices.cols() / links;
-  const Eigen::Index t = chain.triangles.cols() / links;
-  TriangleMesh link;
-  link.vertices = chain.vertices.middleCols(i * v, v);
-  link.triangles = chain.triangles.middleCols(i * t, t).array() - static_cast<int>(i * v);
-  return link;
-}
-
 // ---------------------------------------------------------------------------------------------
 
 // Two interlocked links (even one in xy, odd one in xz), both at the identity: intersecting,

@@ -104,12 +104,8 @@ TEST(Distance, TouchingAndNearlyTouchingLinks) {
     params.link.minor_segments = 16;
     params.clearance = clearance;
     const TriangleMesh chain = unwrap(makeChain(params), "chain");
-    // The chain is one mesh: split it into its two links.
-    TriangleMesh a = chain;
-    TriangleMesh b = chain;
-    const Eigen::Index half = chain.triangles.cols() / 2;
-    a.triangles = chain.triangles.leftCols(half);
-    b.triangles = chain.triangles.rightCols(half);
+    const TriangleMesh a = chainLink(chain, 2, 0);
+    const TriangleMesh b = chainLink(chain, 2, 1);
     const ObbTree tree_a = ObbTree::build(a.vertices, a.triangles);
     const ObbTree tree_b = ObbTree::build(b.vertices, b.triangles);
     const Pose shared = makePose(Eigen::Matrix3d::Identity(), Eigen::Vector3d(1e4, -3e3, 0.5));
