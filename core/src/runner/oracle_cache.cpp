@@ -36,34 +36,34 @@ class Digest {
 
 }  // namespace
 
-const OracleAnswer& OracleCache::get(std::size_t ia, std::size_t ib, std::size_t frame) {
+const OracleAnswer& OracleCache::get(std::size_t ia, std::size_t ib, std::size_t frame,
+                                     bool distance) {
   const auto key = std::make_tuple(ia, ib, frame);
+  const SceneObject& a = scene_.objects[ia];
+  const SceneObject& b = scene_.objects[ib];
   auto found = answers_.find(key);
   if (found == answers_.end()) {
     // Boolean queries need only a witness; a pair that any all-pairs query also names shares the
     // full answer, which contains the boolean one.
-    const auto asked = [&](auto&& kind_matches) {
-      return !witness_only_ &&
-             std::any_of(scene_.queries.begin(), scene_.queries.end(), [&](const SceneQuery& q) {
-               return kind_matches(q.request.kind) &&
-                      (q.isGroup() ? q.names(ia) && q.names(ib) : q.a == ia && q.b == ib);
-             });
-    };
     const bool needs_all =
-        asked([](QueryKind k) { return k == QueryKind::kAllPairs || k == QueryKind::kContacts; });
-    const bool needs_distance = asked([](QueryKind k) { return k == QueryKind::kDistance; });
-    const SceneObject& a = scene_.objects[ia];
-    const SceneObject& b = scene_.objects[ib];
+        !witness_only_ &&
+        std::any_of(scene_.queries.begin(), scene_.queries.end(), [&](const SceneQuery& q) {
+          const QueryKind k = q.request.kind;
+          return (k == QueryKind::kAllPairs || k == QueryKind::kContacts) &&
+                 (q.isGroup() ? q.names(ia) && q.names(ib) : q.a == ia && q.b == ib);
+        });
     found = answers_
                 .emplace(key,
                          exactIntersectingPairs(
                              *a.shapeAt(frame), a.poseAt(frame), *b.shapeAt(frame), b.poseAt(frame),
                              needs_all ? OracleMode::kAllPairs : OracleMode::kFirstPair))
                 .first;
-    if (needs_distance) {
-      found->second.distance =
-          exactMeshDistance(*a.shapeAt(frame), a.poseAt(frame), *b.shapeAt(frame), b.poseAt(frame));
-    }
+    ++computed_;
+  }
+  if (distance && !found->second.distance) {
+    ++computed_;
+    found->second.distance =
+        exactMeshDistance(*a.shapeAt(frame), a.poseAt(frame), *b.shapeAt(frame), b.poseAt(frame));
   }
   return found->second;
 }

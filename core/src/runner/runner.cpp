@@ -381,7 +381,8 @@ void runSceneOnBackend(const Scene& scene, const BackendSpec& spec, OracleCache&
         const SceneObject& a = scene.objects[ia];
         const SceneObject& b = scene.objects[ib];
         FrameRecord one;
-        const OracleAnswer& truth = oracle.get(ia, ib, frame);
+        const OracleAnswer& truth =
+            oracle.get(ia, ib, frame, query.request.kind == QueryKind::kDistance);
         const TriangleMesh& shape_a = *shapes[ia];
         const TriangleMesh& shape_b = *shapes[ib];
         compareWithOracle(shape_a, a.poseAt(frame), shape_b, b.poseAt(frame), query.request, result,

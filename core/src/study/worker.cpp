@@ -53,16 +53,16 @@ Result<CombinationResult> runCombination(const WorkerRequest& request) {
     return path;
   };
   const std::string oracle_path = stored(oracle);
-  const std::size_t oracle_known = oracle.answers().size();
+  const std::size_t oracle_known = oracle.computed();
   const std::string finest_path = finest_oracle ? stored(*finest_oracle) : std::string();
-  const std::size_t finest_known = finest_oracle ? finest_oracle->answers().size() : 0;
+  const std::size_t finest_known = finest_oracle ? finest_oracle->computed() : 0;
 
   RunReport report = runScene(scene, specs.value().front(), options, oracle,
                               finest_oracle ? &*finest_oracle : nullptr);
 
   // Keep what this run added; a failure to store costs time later, never an answer.
   const auto keep = [](const std::string& path, const OracleCache& cache, std::size_t known) {
-    if (path.empty() || cache.answers().size() == known) return;
+    if (path.empty() || cache.computed() == known) return;
     if (Status s = saveOracleAnswers(path, cache); !s.ok()) {
       std::cerr << "note: " << s.message() << "\n";
     }

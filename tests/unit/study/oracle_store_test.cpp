@@ -57,7 +57,7 @@ TEST(OracleStore, DistancesComeBackExactly) {
   OracleCache computed(s);
   int apart = 0;
   for (std::size_t f = 0; f < s.frames; ++f) {
-    const OracleAnswer& answer = computed.get(0, 1, f);
+    const OracleAnswer& answer = computed.get(0, 1, f, /*distance=*/true);
     ASSERT_TRUE(answer.distance.has_value());
     apart += answer.distance->distance > 0.0 ? 1 : 0;
   }

@@ -1,84 +1,124 @@
 #pragma once
 
+#include <type_traits>
+
 #include <Eigen/Core>
-#include <Eigen/Geometry>
+
+#include <collido/geometry.h>
 
 namespace collido::convex {
 
-/// A convex set given by its support function: the point of the set farthest along a
-/// direction. A set may be "inflated" by a radius (a sphere is a point with a radius, a capsule
-/// a segment with one): the distance is then taken between the cores and the radii subtracted,
-/// which keeps the iteration on polytopes.
+/// What a support function answers for one direction. The slack is what makes GJK's lower bound
+/// certified: the search for the extreme point and any transform round, so the set may reach a
+/// little beyond the returned point along the direction, and the bound must know how far.
+struct SupportPoint {
+  /// A point of the set (its core, before inflation) farthest along the direction, as rounded.
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();
+  /// max over the set of direction·x <= direction·point + slack in exact arithmetic, for the
+  /// direction as passed (not normalised). >= 0; 0 only for an exact support.
+  double slack = 0.0;
+};
+
+/// A convex set given by its support function, optionally inflated by a radius (a sphere is a
+/// point with a radius, a capsule a segment with one). GJK runs on the cores and subtracts the
+/// radii at the end: the iteration then stays on polytopes, which it solves in finitely many
+/// steps, rather than creeping towards a curved surface.
 class SupportFunction {
  public:
   virtual ~SupportFunction() = default;
-  /// A point of the core maximising direction · x (direction need not be unit length).
-  virtual Eigen::Vector3d support(const Eigen::Vector3d& direction) const = 0;
-  /// Some point of the core, to start from.
-  virtual Eigen::Vector3d anyPoint() const = 0;
-  /// The radius the core is inflated by (>= 0).
-  virtual double radius() const { return 0.0; }
+  /// The extreme point of the core along `direction` (any length, not zero) and its slack.
+  virtual SupportPoint support(const Eigen::Vector3d& direction) const = 0;
+  /// The radius the core is inflated by (the swept-sphere radius), >= 0.
+  virtual double inflation() const { return 0.0; }
 };
 
-/// The convex hull of points (columns, at least one), optionally posed rigidly and inflated:
-/// its support function is the points' own (posed on the fly), so no hull is built and nothing
-/// is copied. Like a string_view, it refers to the points: they must outlive it (a temporary
-/// matrix is refused at compile time).
+/// The convex hull of points, optionally posed rigidly and inflated. The support of a point set
+/// is that of its hull, so no hull is built: each query is one pass over the points. The search
+/// runs on the points' offsets from their box centre, so its rounding (the slack) scales with
+/// the set's size, not with its distance from the origin; a pose adds the rounding of the
+/// transformed point, which does grow with the translation, so for sets far from the origin
+/// pose B relative to A and leave A unposed (Box2D's "origin independent" distance input).
 class PointSetSupport final : public SupportFunction {
  public:
-  explicit PointSetSupport(const Eigen::Matrix3Xd& points,
-                           const Eigen::Isometry3d& pose = Eigen::Isometry3d::Identity(),
-                           double radius = 0.0);
-  PointSetSupport(Eigen::Matrix3Xd&& points, const Eigen::Isometry3d& pose = {},
-                  double radius = 0.0) = delete;
-  Eigen::Vector3d support(const Eigen::Vector3d& direction) const override;
-  Eigen::Vector3d anyPoint() const override;
-  double radius() const override { return radius_; }
+  /// Borrows `points` (one column each; none: every query is invalid): they must outlive the
+  /// support, so pass a matrix, a block of columns or a map, not an expression that Eigen would
+  /// copy into a temporary. `pose` maps the points into the query frame (world = pose * point).
+  explicit PointSetSupport(const Eigen::Ref<const Eigen::Matrix3Xd>& points,
+                           const Pose& pose = Pose::Identity(), double inflation = 0.0);
+  /// A temporary matrix would be gone before the first query.
+  template <typename Temporary,
+            std::enable_if_t<std::is_same_v<Temporary, Eigen::Matrix3Xd>, int> = 0>
+  explicit PointSetSupport(Temporary&& points, const Pose& pose = Pose::Identity(),
+                           double inflation = 0.0) = delete;
+
+  SupportPoint support(const Eigen::Vector3d& direction) const override;
+  double inflation() const override { return inflation_; }
 
  private:
-  const Eigen::Matrix3Xd& points_;
-  Eigen::Isometry3d pose_;
-  bool posed_;
-  double radius_;
+  Eigen::Ref<const Eigen::Matrix3Xd> points_;
+  Eigen::Vector3d center_;    // midpoint of the points' box, in their own frame
+  double spread_;             // >= max |point - center_| per coordinate, rounded up
+  bool posed_;                // false: the pose is exactly the identity
+  Eigen::Matrix3d rotation_;  // the pose's linear part (any matrix: no orthogonality assumed)
+  Eigen::Vector3d translation_;
+  Eigen::Vector3d abs_row_sums_;  // sum_j |rotation_(i, j)|, for the slack
+  double inflation_;
 };
 
-/// When the iteration stops.
+/// When the iteration stops. Upper and lower bounds are those of the inflated sets.
 struct GjkOptions {
   /// Stop when distance - lower_bound <= max(abs_tolerance, rel_tolerance * distance).
-  double abs_tolerance = 1e-12;
+  /// Tolerances below what rounding lets the bounds certify (a few units in the last place of
+  /// the support points' size) are raised to that floor. Sets whose distance cannot be told
+  /// from 0 within max(abs_tolerance, that floor) count as intersecting.
+  double abs_tolerance = 0.0;
   double rel_tolerance = 1e-12;
-  int max_iterations = 128;
+  int max_iterations = 128;  ///< support-point pairs queried, the first included (>= 1)
+  /// The first search direction, from B towards A (e.g. the previous answer's
+  /// point_a - point_b for coherent queries); zero or not finite: +x.
+  Eigen::Vector3d initial_direction = Eigen::Vector3d::UnitX();
 };
 
-/// Why the iteration stopped.
+/// Why the iteration stopped. Whatever the reason, lower_bound never exceeds the true distance.
 enum class GjkStatus {
-  kConverged,      ///< the bounds met the tolerance
-  kIntersecting,   ///< the sets overlap or touch (distance and lower bound 0)
-  kNoProgress,     ///< the support point was already in the simplex: the bounds are final
-  kMaxIterations,  ///< the limit stopped it; both bounds are still valid
+  kConverged,      ///< the bounds met the tolerance, or the sets intersect
+  kMaxIterations,  ///< the limit stopped it before the bounds met
+  kDegenerate,     ///< rounding stalled the simplex (no closer point) and no other direction
+                   ///< tried certified the rest: only near touching, at gaps of a few
+                   ///< hundred ulps of the sets' size or coordinates
+  kInvalidInput,   ///< a support point or slack was not finite (an empty set, NaN or infinite
+                   ///< coordinates) or an inflation was negative or not finite
 };
 
-/// The distance between two convex sets, with witnesses and a certified lower bound.
+/// "converged", "max_iterations", "degenerate", "invalid_input".
+const char* gjkStatusName(GjkStatus status);
+
+/// The distance between two convex sets, bracketed: lower_bound <= true distance <= distance
+/// (the latter up to the rounding of the witnesses themselves).
 struct GjkResult {
-  /// An upper bound: |point_b - point_a|, the points lying in the (inflated) sets.
+  /// An upper bound: the distance between the witnesses, which lie in the (inflated) sets.
+  /// 0 when intersecting; +infinity for invalid input.
   double distance = 0.0;
-  /// Never above the true distance, whatever the stop: the largest gap found between a
-  /// separating plane's two sides (for direction v, min over A - B of v·x / |v|), less the
-  /// rounding of its computation, less the radii.
+  /// A certified lower bound, at every exit: the widest gap found between two parallel
+  /// supporting planes (for a direction v, min over A of v·a - max over B of v·b, over |v|),
+  /// less the support slacks and the rounding of its own computation, less the radii.
   double lower_bound = 0.0;
-  Eigen::Vector3d point_a = Eigen::Vector3d::Zero();
-  Eigen::Vector3d point_b = Eigen::Vector3d::Zero();
+  Eigen::Vector3d point_a = Eigen::Vector3d::Zero();  ///< witness in A (a common point if
+                                                      ///< intersecting, up to rounding)
+  Eigen::Vector3d point_b = Eigen::Vector3d::Zero();  ///< witness in B
+  /// The sets overlap or touch: the distance could not be told from 0 within max(abs_tolerance,
+  /// the rounding floor). Then distance and lower_bound are 0; no penetration depth is computed.
   bool intersecting = false;
-  int iterations = 0;
+  int iterations = 0;  ///< support-point pairs queried
   GjkStatus status = GjkStatus::kConverged;
 };
 
-/// GJK on the Minkowski difference A - B: the simplex's closest point to the origin (the best
-/// over all its faces, each solved by a least-squares projection, degenerate faces skipped —
-/// robust on collinear, coplanar and repeated support points), a new support point against it,
-/// until the certified lower bound meets the distance. Sets that touch within rounding are
-/// reported intersecting only when the simplex encloses the origin or the distance is within
-/// the tolerance of 0.
+/// The distance between the convex sets A and B by GJK on their Minkowski difference A - B:
+/// the simplex's point closest to the origin (signed-volume style sub-simplex solver that falls
+/// back to the faces of a degenerate simplex: collinear, coplanar or repeated support points),
+/// then a new support point against it, until the upper bound (that closest point) and the
+/// certified lower bound (the gap along the search direction) meet the tolerance, or the
+/// simplex stops getting closer.
 GjkResult gjkDistance(const SupportFunction& a, const SupportFunction& b,
                       const GjkOptions& options = {});
 

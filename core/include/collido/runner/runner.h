@@ -185,8 +185,9 @@ class OracleCache {
       : scene_(scene), witness_only_(witness_only) {}
 
   /// The answer for objects `a` and `b` in `frame`: all pairs when some all-pairs query of the
-  /// scene asks about both, else a witness.
-  const OracleAnswer& get(std::size_t a, std::size_t b, std::size_t frame);
+  /// scene asks about both, else a witness; with `distance`, the exact distance too (computed on
+  /// the first distance query that asks, so backends that answer no distance never pay for it).
+  const OracleAnswer& get(std::size_t a, std::size_t b, std::size_t frame, bool distance = false);
   const Scene& scene() const { return scene_; }
   bool witnessOnly() const { return witness_only_; }
 
@@ -194,6 +195,9 @@ class OracleCache {
   const std::map<Key, OracleAnswer>& answers() const { return answers_; }
   /// Adds an answer computed elsewhere for this same scene (see fingerprint()).
   void add(const Key& key, OracleAnswer answer) { answers_.emplace(key, std::move(answer)); }
+  /// How many answers and distances this cache has computed itself: grows whenever there is
+  /// something new to keep (a distance added to a known answer included).
+  std::size_t computed() const { return computed_; }
   /// A digest (16 hex digits) of everything the answers depend on: each object's vertices,
   /// triangles and poses, the frames, the queries' kinds and objects, and witness_only. Two
   /// caches with equal fingerprints hold interchangeable answers.
@@ -203,6 +207,7 @@ class OracleCache {
   const Scene& scene_;
   bool witness_only_;
   std::map<Key, OracleAnswer> answers_;
+  std::size_t computed_ = 0;
 };
 
 /// Runs every query of every scene on every backend, checks each answer against the exact
