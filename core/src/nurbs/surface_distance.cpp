@@ -26,6 +26,10 @@ struct Patch {
   Eigen::Vector3d hi;
   int depth = 0;
   std::array<int, 4> children{-1, -1, -1, -1};
+  // A clamped patch passes through its corner control points: four surface points for free,
+  // with their parameters, found once (each patch meets many others).
+  std::array<Eigen::Vector3d, 4> corners;
+  std::array<Eigen::Vector2d, 4> corner_params;
 };
 
 class PatchTree {
@@ -55,6 +59,14 @@ class PatchTree {
     p.lo = p.points.rowwise().minCoeff();
     p.hi = p.points.rowwise().maxCoeff();
     p.depth = depth;
+    for (int k = 0; k < 4; ++k) {
+      const int i = (k & 2) != 0 ? surface.count_u - 1 : 0;
+      const int j = (k & 1) != 0 ? surface.count_v - 1 : 0;
+      p.corners[static_cast<std::size_t>(k)] = surface.point(i, j);
+      p.corner_params[static_cast<std::size_t>(k)] =
+          Eigen::Vector2d((k & 2) != 0 ? surface.uMax() : surface.uMin(),
+                          (k & 1) != 0 ? surface.vMax() : surface.vMin());
+    }
     patches_.push_back(std::move(p));
     return static_cast<int>(patches_.size()) - 1;
   }
@@ -90,25 +102,11 @@ struct Best {
   }
 };
 
-// A clamped patch passes through its corner control points: four surface points for free.
+// Every pair of the two patches' corners is a candidate closest pair.
 void offerCorners(const Patch& a, const Patch& b, Best& best) {
-  const NurbsSurface& sa = a.surface;
-  const NurbsSurface& sb = b.surface;
-  const auto corner = [](const NurbsSurface& s, int k, Eigen::Vector2d& params) {
-    const int i = (k & 2) != 0 ? s.count_u - 1 : 0;
-    const int j = (k & 1) != 0 ? s.count_v - 1 : 0;
-    params =
-        Eigen::Vector2d((k & 2) != 0 ? s.uMax() : s.uMin(), (k & 1) != 0 ? s.vMax() : s.vMin());
-    return s.point(i, j);
-  };
-  for (int ka = 0; ka < 4; ++ka) {
-    Eigen::Vector2d pa;
-    const Eigen::Vector3d xa = corner(sa, ka, pa);
-    for (int kb = 0; kb < 4; ++kb) {
-      Eigen::Vector2d pb;
-      const Eigen::Vector3d xb = corner(sb, kb, pb);
-      best.offer(pa, xa, pb, xb);
-    }
+  for (std::size_t ka = 0; ka < 4; ++ka) {
+    for (std::size_t kb = 0; kb < 4; ++kb)
+      best.offer(a.corner_params[ka], a.corners[ka], b.corner_params[kb], b.corners[kb]);
   }
 }
 

@@ -1,4 +1,4 @@
-// The parser callback that refuses repeated keys in scene and surface files.
+// Parsing scene and surface files: repeated keys refused, errors naming the file.
 #include <memory>
 #include <set>
 #include <vector>
@@ -54,6 +54,20 @@ Json::parser_callback_t duplicateKeyCheck(const std::string& label) {
     }
     return true;
   };
+}
+
+Result<Json> parseDocument(const std::string& text, const std::string& label) {
+  try {
+    return Json::parse(text, duplicateKeyCheck(label));
+  } catch (const Json::parse_error& e) {
+    return Status(StatusCode::kInvalidArgument,
+                  label + ": not valid JSON (byte " + std::to_string(e.byte) + "): " + e.what());
+  } catch (const SceneError& e) {
+    return Status(StatusCode::kInvalidArgument, e.what());
+  } catch (const Json::exception& e) {
+    // E.g. out_of_range.406: a number literal beyond the double range ("1e400").
+    return Status(StatusCode::kInvalidArgument, label + ": not valid JSON: " + e.what());
+  }
 }
 
 }  // namespace collido::scene_reading

@@ -32,7 +32,6 @@
 namespace collido {
 namespace {
 
-using scene_reading::duplicateKeyCheck;
 using scene_reading::Json;
 using scene_reading::Node;
 using scene_reading::Reader;
@@ -799,18 +798,9 @@ Result<Scene> parseScene(const std::string& text, const std::string& label,
     return Status(StatusCode::kInvalidArgument,
                   label + ": resolution must be a positive finite number");
   }
-  Json document;
-  try {
-    document = Json::parse(text, duplicateKeyCheck(label));
-  } catch (const Json::parse_error& e) {
-    return Status(StatusCode::kInvalidArgument,
-                  label + ": not valid JSON (byte " + std::to_string(e.byte) + "): " + e.what());
-  } catch (const SceneError& e) {
-    return Status(StatusCode::kInvalidArgument, e.what());
-  } catch (const Json::exception& e) {
-    // E.g. out_of_range.406: a number literal beyond the double range ("1e400").
-    return Status(StatusCode::kInvalidArgument, label + ": not valid JSON: " + e.what());
-  }
+  Result<Json> parsed = scene_reading::parseDocument(text, label);
+  if (!parsed.ok()) return parsed.status();
+  const Json& document = parsed.value();
   try {
     const Reader reader(label, options.resolution);
     Scene scene = readScene(reader, document, base_directory, options);

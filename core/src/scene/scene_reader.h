@@ -13,6 +13,8 @@
 #include <Eigen/Core>
 #include <nlohmann/json.hpp>
 
+#include <collido/status.h>
+
 namespace collido::scene_reading {
 
 using Json = nlohmann::json;
@@ -38,6 +40,10 @@ struct Node {
 /// A parser callback that throws SceneError naming the file (`label`) and the JSON pointer of a
 /// key repeated in one object: nlohmann::json would keep the last silently.
 Json::parser_callback_t duplicateKeyCheck(const std::string& label);
+
+/// The JSON text of a scene or surface file, parsed with duplicateKeyCheck; an error names the
+/// file and, for a syntax error, the byte.
+Result<Json> parseDocument(const std::string& text, const std::string& label);
 
 inline const char* typeName(const Json& v) {
   return v.type_name();

@@ -101,8 +101,10 @@ nurbs::NurbsSurface readGenerated(const Reader& r, const Node& node) {
 }  // namespace
 
 Result<std::vector<NamedSurface>> parseSurfaces(const std::string& text, const std::string& label) {
+  Result<Json> parsed = scene_reading::parseDocument(text, label);
+  if (!parsed.ok()) return parsed.status();
+  const Json& document = parsed.value();
   try {
-    const Json document = Json::parse(text, scene_reading::duplicateKeyCheck(label));
     const Reader r(label, 1.0);
     const Node root{document, ""};
     r.expectObject(root, {"surfaces"});
@@ -125,9 +127,6 @@ Result<std::vector<NamedSurface>> parseSurfaces(const std::string& text, const s
       out.push_back(std::move(named));
     }
     return out;
-  } catch (const Json::parse_error& e) {
-    return Status(StatusCode::kInvalidArgument,
-                  label + ": not valid JSON (byte " + std::to_string(e.byte) + "): " + e.what());
   } catch (const SceneError& e) {
     return Status(StatusCode::kInvalidArgument, e.what());
   } catch (const Json::exception& e) {

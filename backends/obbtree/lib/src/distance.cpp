@@ -193,6 +193,17 @@ class Search {
     const Eigen::Matrix3Xd& vb = b_.vertices();
     const Eigen::Matrix3Xi& ta = a_.orderedTriangles();
     const Eigen::Matrix3Xi& tb = b_.orderedTriangles();
+    // A's triangles with their bounds, once per leaf pair (each meets every triangle of B's leaf).
+    leaf_a_.clear();
+    for (std::int32_t i = na.first; i < na.first + na.count; ++i) {
+      LeafTriangle t;
+      for (int k = 0; k < 3; ++k)
+        t.corners[static_cast<std::size_t>(k)] = va.col(ta(k, i));
+      t.lo = t.corners[0].cwiseMin(t.corners[1]).cwiseMin(t.corners[2]);
+      t.hi = t.corners[0].cwiseMax(t.corners[1]).cwiseMax(t.corners[2]);
+      t.id = a_.triangleId(i);
+      leaf_a_.push_back(t);
+    }
     for (std::int32_t j = nb.first; j < nb.first + nb.count; ++j) {
       std::array<Eigen::Vector3d, 3> corners_b;
       std::array<Eigen::Vector3d, 3> local_b;
@@ -205,15 +216,11 @@ class Search {
       const double mapping_error =
           std::sqrt(3.0) * map_.bounds.pointError(local_b[0].cwiseAbs().cwiseMax(
                                local_b[1].cwiseAbs().cwiseMax(local_b[2].cwiseAbs())));
-      for (std::int32_t i = na.first; i < na.first + na.count; ++i) {
-        std::array<Eigen::Vector3d, 3> corners_a;
-        for (int k = 0; k < 3; ++k)
-          corners_a[static_cast<std::size_t>(k)] = va.col(ta(k, i));
+      for (const LeafTriangle& ta_leaf : leaf_a_) {
+        const std::array<Eigen::Vector3d, 3>& corners_a = ta_leaf.corners;
         // The gap between the triangles' axis-aligned bounds (in A's frame) is a lower bound on
         // their distance: a pair that cannot beat the best is not measured.
-        const Eigen::Vector3d lo_a = corners_a[0].cwiseMin(corners_a[1]).cwiseMin(corners_a[2]);
-        const Eigen::Vector3d hi_a = corners_a[0].cwiseMax(corners_a[1]).cwiseMax(corners_a[2]);
-        const double gap = (lo_a - hi_b).cwiseMax(lo_b - hi_a).cwiseMax(0.0).norm();
+        const double gap = (ta_leaf.lo - hi_b).cwiseMax(lo_b - ta_leaf.hi).cwiseMax(0.0).norm();
         if (gap * (1.0 - 8.0 * kEps) - mapping_error >= best_ - tolerance()) continue;
         ++answer_.triangle_tests;
         TriangleClosestPoints closest = closestPointsOfTriangles(corners_a, corners_b);
@@ -231,7 +238,7 @@ class Search {
         best_ = closest.distance;
         answer_.point_a = pose_a_ * closest.point_a;
         answer_.point_b = closest.distance == 0.0 ? answer_.point_a : pose_a_ * closest.point_b;
-        answer_.triangle_a = a_.triangleId(i);
+        answer_.triangle_a = ta_leaf.id;
         answer_.triangle_b = b_.triangleId(j);
         if (best_ == 0.0) {
           // Nothing can be closer: end the search.
@@ -254,6 +261,13 @@ class Search {
   std::priority_queue<Pending, std::vector<Pending>, std::greater<>> queue_;
   double best_ = std::numeric_limits<double>::infinity();
   double rounding_ = 0.0;
+  struct LeafTriangle {
+    std::array<Eigen::Vector3d, 3> corners;
+    Eigen::Vector3d lo;
+    Eigen::Vector3d hi;
+    std::int32_t id = 0;
+  };
+  std::vector<LeafTriangle> leaf_a_;  // scratch of leaves(), kept for its capacity
 };
 
 template <typename NodeA, typename NodeB>
