@@ -38,14 +38,22 @@ std::vector<std::shared_ptr<PluginLibrary>> staticLibraries() {
   return out;
 }
 
-// Every variant with its default options, or the backends named (study syntax).
+// Whether a variant builds triangle meshes (the scenes' objects); surface-only backends have
+// their own benchmarks (nurbs_benchmarks.cpp).
+bool buildsMeshes(const std::shared_ptr<PluginLibrary>& library, const std::string& variant) {
+  Result<std::unique_ptr<BackendInstance>> instance = BackendInstance::create(library, variant);
+  return instance.ok() && instance.value()->capabilities().buildsShape(ShapeKind::kTriangleMesh);
+}
+
+// Every mesh variant with its default options, or the backends named (study syntax).
 Result<std::vector<Variant>> variantsToRun(const std::vector<std::string>& backends) {
   const std::vector<std::shared_ptr<PluginLibrary>> libraries = staticLibraries();
   std::vector<Variant> out;
   if (backends.empty()) {
     for (const auto& library : libraries) {
-      for (const VariantInfo& v : library->variants())
-        out.push_back({library, v.name, {}, v.name});
+      for (const VariantInfo& v : library->variants()) {
+        if (buildsMeshes(library, v.name)) out.push_back({library, v.name, {}, v.name});
+      }
     }
     return out;
   }

@@ -1,7 +1,7 @@
 // collido surface-distance: the minimum distance between two NURBS surfaces of a surface file by
 // the seed method (certified interval, hull or box bounds, work per subdivision level), and the
-// same question answered by mesh backends on tessellations of the surfaces: run time against
-// error.
+// same question answered by surface backends (OpenCASCADE, the seed as a plugin) and by mesh
+// backends on tessellations of the surfaces: run time against error.
 #include <algorithm>
 #include <chrono>
 #include <iostream>
@@ -81,7 +81,7 @@ int surfaceDistance(const SurfaceDistanceArguments& args, const PluginOptions& p
                          {"model_size", size},
                          {"tolerance", tolerance},
                          {"seed", nlohmann::json::array()},
-                         {"tessellations", nlohmann::json::array()}};
+                         {"backends", nlohmann::json::array()}};
 
   // The seed method, per bound, as published (corners only) and with the descent.
   std::vector<std::vector<std::string>> rows;
@@ -148,8 +148,15 @@ int surfaceDistance(const SurfaceDistanceArguments& args, const PluginOptions& p
                                  level_rows, 2);
   }
 
-  // Mesh backends on tessellations, against the certified interval.
+  // Backends, against a tighter certified reference: surface backends on the surfaces
+  // themselves, mesh backends on tessellations.
   if (!args.backends.empty()) {
+    nurbs::SurfaceDistanceOptions reference_options;
+    reference_options.tolerance = 1e-10 * size;
+    reference_options.max_pairs = 5'000'000;
+    const nurbs::SurfaceDistance tight =
+        nurbs::minimumDistance(a->surface, b->surface, reference_options);
+    if (tight.converged) reference = tight;
     if (!reference) {
       std::cerr << "error: no bound converged: no certified distance to measure errors against\n";
       return 1;
@@ -162,68 +169,93 @@ int surfaceDistance(const SurfaceDistanceArguments& args, const PluginOptions& p
       return 2;
     }
     const double truth = 0.5 * (reference->lower + reference->upper);
-    std::vector<std::vector<std::string>> mesh_rows;
-    for (const int segments : args.tessellations) {
-      const TriangleMesh mesh_a = nurbs::tessellate(a->surface, segments, segments);
-      const TriangleMesh mesh_b = nurbs::tessellate(b->surface, segments, segments);
-      for (const BackendSpec& spec : specs.value()) {
-        Result<std::unique_ptr<BackendInstance>> backend =
-            BackendInstance::create(spec.library, spec.variant, spec.options);
-        std::string status;
-        double distance = 0.0;
-        double build_ms = 0.0;
-        std::vector<double> times;
-        if (!backend.ok()) {
-          status = backend.status().message();
-        } else if (!backend.value()->capabilities().queries.contains(QueryKind::kDistance)) {
-          status = "does not answer distance queries";
+    json["reference"] = {{"lower", reference->lower}, {"upper", reference->upper}};
+    std::vector<std::vector<std::string>> backend_rows;
+    std::vector<std::string> failures;
+    for (const BackendSpec& spec : specs.value()) {
+      Result<std::unique_ptr<BackendInstance>> created =
+          BackendInstance::create(spec.library, spec.variant, spec.options);
+      if (!created.ok()) {
+        backend_rows.push_back({spec.label(), "-", "-", "-", "-", "-", "-", "-", "failed"});
+        failures.push_back(spec.label() + ": " + created.status().message());
+        continue;
+      }
+      BackendInstance& backend = *created.value();
+      const Capabilities& caps = backend.capabilities();
+      const bool on_surfaces = caps.buildsShape(ShapeKind::kNurbsSurface);
+      std::vector<int> resolutions = on_surfaces ? std::vector<int>{0} : args.tessellations;
+      for (const int segments : resolutions) {
+        const std::string shape = segments == 0 ? "surfaces" : std::to_string(segments);
+        if (!caps.queries.contains(QueryKind::kDistance)) {
+          backend_rows.push_back({spec.label(), shape, "-", "-", "-", "-", "-", "-", "skipped"});
+          failures.push_back(spec.label() + ": does not answer distance queries");
+          break;
+        }
+        const BuildNeeds needs{QueryKindSet(QueryKind::kDistance)};
+        std::size_t triangles = 0;
+        const Clock::time_point start = Clock::now();
+        const Status not_built{StatusCode::kInternal, "not built"};
+        Result<ModelHandle> ma = not_built;
+        Result<ModelHandle> mb = not_built;
+        if (segments == 0) {
+          ma = backend.build(nurbs::viewOf(a->surface), needs);
+          mb = backend.build(nurbs::viewOf(b->surface), needs);
         } else {
-          const BuildNeeds needs{QueryKindSet(QueryKind::kDistance)};
-          const Clock::time_point start = Clock::now();
-          Result<ModelHandle> ma = backend.value()->build(mesh_a.view(), needs);
-          Result<ModelHandle> mb = backend.value()->build(mesh_b.view(), needs);
-          build_ms = seconds(Clock::now() - start) * 1e3;
-          QueryRequest request;
-          request.kind = QueryKind::kDistance;
-          QueryResult result;
-          for (int rep = 0; rep <= args.repetitions && ma.ok() && mb.ok() && status.empty();
-               ++rep) {
-            const Clock::time_point q = Clock::now();
-            const Status s = backend.value()->query(ma.value(), Pose::Identity(), mb.value(),
-                                                    Pose::Identity(), request, result);
-            if (!s.ok()) status = s.message();
-            if (rep > 0) times.push_back(seconds(Clock::now() - q) * 1e6);
-          }
-          if (!ma.ok() || !mb.ok()) status = (ma.ok() ? mb.status() : ma.status()).message();
-          distance = result.distance.distance;
+          const TriangleMesh mesh_a = nurbs::tessellate(a->surface, segments, segments);
+          const TriangleMesh mesh_b = nurbs::tessellate(b->surface, segments, segments);
+          triangles = mesh_a.triangleCount() + mesh_b.triangleCount();
+          ma = backend.build(mesh_a.view(), needs);
+          mb = backend.build(mesh_b.view(), needs);
+        }
+        const double build_ms = seconds(Clock::now() - start) * 1e3;
+        std::string status;
+        if (!ma.ok() || !mb.ok()) status = (ma.ok() ? mb.status() : ma.status()).message();
+        QueryRequest request;
+        request.kind = QueryKind::kDistance;
+        // Surface backends are asked for the seed's tolerance; mesh backends for their best.
+        if (segments == 0) request.abs_tolerance = tolerance;
+        QueryResult result;
+        std::vector<double> times;
+        for (int rep = 0; rep <= args.repetitions && status.empty(); ++rep) {
+          const Clock::time_point q = Clock::now();
+          const Status s = backend.query(ma.value(), Pose::Identity(), mb.value(), Pose::Identity(),
+                                         request, result);
+          if (!s.ok()) status = s.message();
+          if (rep > 0) times.push_back(seconds(Clock::now() - q) * 1e6);
         }
         if (!status.empty()) {
-          mesh_rows.push_back(
-              {spec.label(), std::to_string(segments), "-", "-", "-", "-", "-", status});
+          backend_rows.push_back({spec.label(), shape, "-", "-", "-", "-", "-", "-", "failed"});
+          failures.push_back(spec.label() + " (" + shape + "): " + status);
+          json["backends"].push_back(
+              {{"backend", spec.label()}, {"segments", segments}, {"status", status}});
           continue;
         }
+        const double distance = result.distance.distance;
         const double error = distance - truth;
-        mesh_rows.push_back({spec.label(), std::to_string(segments),
-                             std::to_string(mesh_a.triangleCount() + mesh_b.triangleCount()),
-                             formatNumber("%.9g", distance), formatNumber("%.3g", error),
-                             formatNumber("%.3g", std::abs(error) / std::max(truth, 1e-300)),
-                             formatNumber("%.1f", quantile(times, 0.5)),
-                             formatNumber("%.2f", build_ms)});
-        json["tessellations"].push_back({{"backend", spec.label()},
-                                         {"segments", segments},
-                                         {"distance", distance},
-                                         {"error", error},
-                                         {"median_us", quantile(times, 0.5)},
-                                         {"build_ms", build_ms}});
+        backend_rows.push_back(
+            {spec.label(), shape, segments == 0 ? "-" : std::to_string(triangles),
+             formatNumber("%.12g", distance), formatNumber("%.3g", error),
+             formatNumber("%.3g", std::abs(error) / size),
+             formatNumber("%.1f", quantile(times, 0.5)), formatNumber("%.2f", build_ms), "ok"});
+        json["backends"].push_back({{"backend", spec.label()},
+                                    {"segments", segments},
+                                    {"triangles", triangles},
+                                    {"distance", distance},
+                                    {"error", error},
+                                    {"median_us", quantile(times, 0.5)},
+                                    {"build_ms", build_ms},
+                                    {"status", "ok"}});
       }
     }
-    std::cout << "\nMesh backends on tessellations (segments x segments per surface), error "
-                 "against the certified distance "
-              << formatNumber("%.12g", truth) << " (+- "
+    std::cout << "\nBackends (surfaces, or tessellations of segments x segments per surface), "
+                 "error against the certified distance "
+              << formatNumber("%.15g", truth) << " (+- "
               << formatNumber("%.2g", 0.5 * (reference->upper - reference->lower)) << "):\n"
-              << formatTextTable({"backend", "segments", "triangles", "distance", "error",
-                                  "relative", "median us", "build ms"},
-                                 mesh_rows, 2);
+              << formatTextTable({"backend", "shape", "triangles", "distance", "error",
+                                  "error / size", "median us", "build ms", "status"},
+                                 backend_rows, 2);
+    for (const std::string& failure : failures)
+      std::cout << "  " << failure << "\n";
   }
   if (!args.json_path.empty()) {
     if (Status s = study::writeFileAtomically(args.json_path, json.dump(1) + "\n"); !s.ok()) {
@@ -257,7 +289,10 @@ void addSurfaceDistanceCommand(CLI::App& app, const PluginOptions& plugins, int&
   command->add_option("--max-pairs", args->max_pairs, "patch pairs bounded before giving up");
   command->add_option("--repetitions", args->repetitions, "timed runs (median reported)")
       ->check(CLI::Range(1, 100000));
-  command->add_option("--backends", args->backends, "mesh backends to run on tessellations")
+  command
+      ->add_option("--backends", args->backends,
+                   "backends to compare: surface backends (nurbs:hull, occt:brep_extrema, ...) "
+                   "on the surfaces, mesh backends on tessellations")
       ->delimiter(',');
   command->add_option("--tessellations", args->tessellations, "segments per parameter")
       ->delimiter(',')

@@ -9,6 +9,7 @@
 // (tests/conformance/expectations/<variant>.json) records, per scene and query, the counts of its
 // disagreements; then those counts must be met exactly, so a change in an engine's behaviour, for
 // better or worse, is noticed and reviewed instead of hidden by a tolerance.
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <memory>
@@ -20,6 +21,7 @@
 
 #include <collido/host/backend_instance.h>
 #include <collido/mesh/procedural.h>
+#include <collido/nurbs/surface_generators.h>
 #include <collido/oracle/distance_oracle.h>
 #include <collido/oracle/exact_oracle.h>
 #include <collido/runner/runner.h>
@@ -59,6 +61,26 @@ Pose moved(double x) {
   return pose;
 }
 
+// A small shape of the kind the backend builds: a sphere mesh, or (surface-only backends) a zone
+// of a sphere as an exact NURBS surface. Both lie within the unit ball about the origin.
+struct SampleShape {
+  TriangleMesh mesh;
+  nurbs::NurbsSurface surface;
+};
+
+const SampleShape& sampleShape() {
+  static const SampleShape shape{sphere(1.0, 8, 4),
+                                 nurbs::sphereZone(Eigen::Vector3d::Zero(), 1.0, 0.0)};
+  return shape;
+}
+
+Result<ModelHandle> buildSample(BackendInstance& backend, const BuildNeeds& needs) {
+  if (backend.capabilities().buildsShape(ShapeKind::kTriangleMesh)) {
+    return backend.build(sampleShape().mesh.view(), needs);
+  }
+  return backend.build(nurbs::viewOf(sampleShape().surface), needs);
+}
+
 // --- the interface ---------------------------------------------------------------------------
 
 class Interface : public ::testing::TestWithParam<std::size_t> {
@@ -75,7 +97,9 @@ TEST_P(Interface, TableAndCapabilitiesAreSane) {
   std::unique_ptr<BackendInstance> backend = createInstance(target());
   ASSERT_TRUE(backend);
   const Capabilities& caps = backend->capabilities();
-  EXPECT_TRUE(caps.buildsShape(ShapeKind::kTriangleMesh)) << "no triangle meshes";
+  EXPECT_TRUE(caps.buildsShape(ShapeKind::kTriangleMesh) ||
+              caps.buildsShape(ShapeKind::kNurbsSurface))
+      << "builds no shape kind";
   EXPECT_FALSE(caps.queries.empty()) << "answers no query kind";
 }
 
@@ -108,14 +132,13 @@ TEST_P(Interface, UnsupportedRequestsAnswerUnsupported) {
     if (!supported.contains(kind)) missing.push_back(kind);
   }
   if (missing.empty()) COLLIDO_KIT_SKIP(target().variant + " answers every query kind");
-  const TriangleMesh mesh = sphere(1.0, 8, 4);
   for (QueryKind kind : missing) {
-    Result<ModelHandle> refused = backend->build(mesh.view(), BuildNeeds{QueryKindSet(kind)});
+    Result<ModelHandle> refused = buildSample(*backend, BuildNeeds{QueryKindSet(kind)});
     ASSERT_FALSE(refused.ok()) << queryKindName(kind);
     EXPECT_EQ(refused.status().code(), StatusCode::kUnsupported) << refused.status().message();
   }
-  Result<ModelHandle> a = backend->build(mesh.view(), BuildNeeds{supported});
-  Result<ModelHandle> b = backend->build(mesh.view(), BuildNeeds{supported});
+  Result<ModelHandle> a = buildSample(*backend, BuildNeeds{supported});
+  Result<ModelHandle> b = buildSample(*backend, BuildNeeds{supported});
   ASSERT_TRUE(a.ok() && b.ok());
   QueryResult result;
   for (QueryKind kind : missing) {
@@ -131,15 +154,13 @@ TEST_P(Interface, BadHandlesAreErrors) {
   std::unique_ptr<BackendInstance> backend = createInstance(target());
   ASSERT_TRUE(backend);
   const QueryKindSet supported = backend->capabilities().queries;
-  const TriangleMesh mesh = sphere(1.0, 8, 4);
-  Result<ModelHandle> a = backend->build(mesh.view(), BuildNeeds{supported});
-  Result<ModelHandle> b = backend->build(mesh.view(), BuildNeeds{supported});
+  Result<ModelHandle> a = buildSample(*backend, BuildNeeds{supported});
+  Result<ModelHandle> b = buildSample(*backend, BuildNeeds{supported});
   ASSERT_TRUE(a.ok() && b.ok());
   ASSERT_TRUE(backend->release(b.value()).ok());
   QueryRequest request;
-  request.kind = supported.contains(QueryKind::kBoolean)    ? QueryKind::kBoolean
-                 : supported.contains(QueryKind::kAllPairs) ? QueryKind::kAllPairs
-                                                            : QueryKind::kContacts;
+  request.kind = *std::find_if(std::begin(kAllQueryKinds), std::end(kAllQueryKinds),
+                               [&](QueryKind k) { return supported.contains(k); });
   QueryResult result;
   for (ModelHandle bad : {b.value(), ModelHandle{0}, a.value() + 12345}) {
     const Status s = backend->query(a.value(), Pose::Identity(), bad, moved(0.5), request, result);
@@ -155,6 +176,9 @@ TEST_P(Interface, BadHandlesAreErrors) {
 TEST_P(Interface, StateSiblingsAnswerForTheirOwnShape) {
   std::unique_ptr<BackendInstance> backend = createInstance(target());
   ASSERT_TRUE(backend);
+  if (!backend->capabilities().buildsShape(ShapeKind::kTriangleMesh)) {
+    COLLIDO_KIT_SKIP(target().variant + " builds no triangle meshes");
+  }
   const QueryKindSet supported = backend->capabilities().queries;
   if (!supported.contains(QueryKind::kBoolean)) COLLIDO_KIT_SKIP("answers no boolean queries");
   const BuildNeeds needs{QueryKindSet(QueryKind::kBoolean)};
@@ -207,6 +231,9 @@ TEST_P(Interface, StateSiblingsAnswerForTheirOwnShape) {
 TEST_P(Interface, ContactsFollowTheConventions) {
   std::unique_ptr<BackendInstance> backend = createInstance(target());
   ASSERT_TRUE(backend);
+  if (!backend->capabilities().buildsShape(ShapeKind::kTriangleMesh)) {
+    COLLIDO_KIT_SKIP(target().variant + " builds no triangle meshes");
+  }
   if (!backend->capabilities().queries.contains(QueryKind::kContacts)) {
     COLLIDO_KIT_SKIP(target().variant + " does not answer contacts queries");
   }
@@ -247,6 +274,9 @@ TEST_P(Interface, ContactsFollowTheConventions) {
 TEST_P(Interface, DistanceAnswersTheGapBetweenTwoSpheres) {
   std::unique_ptr<BackendInstance> backend = createInstance(target());
   ASSERT_TRUE(backend);
+  if (!backend->capabilities().buildsShape(ShapeKind::kTriangleMesh)) {
+    COLLIDO_KIT_SKIP(target().variant + " builds no triangle meshes");
+  }
   if (!backend->capabilities().queries.contains(QueryKind::kDistance)) {
     COLLIDO_KIT_SKIP(target().variant + " answers no distance queries");
   }
@@ -292,11 +322,80 @@ TEST_P(Interface, DistanceAnswersTheGapBetweenTwoSpheres) {
     ADD_FAILURE() << key << ": measured " << sum.toString() << "; expected " << expected.toString();
 }
 
+// Two zones of unit spheres facing each other along x (A about the origin, B about (2 + gap, 0,
+// 0)), exact NURBS surfaces: the true distance is max(gap, 0) (at gap 0 they touch at one point,
+// below it they cross). Asked with an absolute and with a relative tolerance; an answer counts as
+// disagreeing when it fails, lies below the truth by more than rounding (1e-9 of the model's size)
+// or above it by more than the tolerance plus that, or when its points are not on the surfaces'
+// sphere or not the reported distance apart, or its certified interval misses the truth.
+// Counted as the "surface_distance/sphere_zones" expectation.
+TEST_P(Interface, SurfaceDistanceAnswersTheGapBetweenTwoSphereZones) {
+  std::unique_ptr<BackendInstance> backend = createInstance(target());
+  ASSERT_TRUE(backend);
+  const Capabilities& caps = backend->capabilities();
+  if (!caps.buildsShape(ShapeKind::kNurbsSurface) || !caps.queries.contains(QueryKind::kDistance)) {
+    COLLIDO_KIT_SKIP(target().variant + " answers no distance queries between NURBS surfaces");
+  }
+  const nurbs::NurbsSurface zone_a = nurbs::sphereZone(Eigen::Vector3d::Zero(), 1.0, -45.0);
+  const nurbs::NurbsSurface zone_b = nurbs::sphereZone(Eigen::Vector3d::Zero(), 1.0, 135.0);
+  const BuildNeeds needs{QueryKindSet(QueryKind::kDistance)};
+  Result<ModelHandle> a = backend->build(nurbs::viewOf(zone_a), needs);
+  Result<ModelHandle> b = backend->build(nurbs::viewOf(zone_b), needs);
+  ASSERT_TRUE(a.ok() && b.ok()) << (a.ok() ? b.status() : a.status()).toString();
+  constexpr double kSize = 4.0;  // the scene's extent, about
+  const double rounding = 1e-9 * kSize;
+  Disagreement sum;
+  std::string failures;
+  QueryResult result;
+  for (const auto& [abs_tolerance, rel_tolerance] : {std::pair{1e-7, 0.0}, std::pair{0.0, 1e-3}}) {
+    for (const double gap : {0.75, 1e-4, 0.0, -0.3}) {
+      const Pose pose_b = moved(2.0 + gap);
+      const double truth = std::max(gap, 0.0);
+      QueryRequest request;
+      request.kind = QueryKind::kDistance;
+      request.abs_tolerance = abs_tolerance;
+      request.rel_tolerance = rel_tolerance;
+      const Status s =
+          backend->query(a.value(), Pose::Identity(), b.value(), pose_b, request, result);
+      const DistanceResult& d = result.distance;
+      const double allowed = std::max(abs_tolerance, rel_tolerance * truth) + rounding;
+      const bool on_spheres =
+          std::abs(d.point_a.norm() - 1.0) <= rounding &&
+          std::abs((d.point_b - pose_b.translation()).norm() - 1.0) <= rounding &&
+          std::abs((d.point_b - d.point_a).norm() - d.distance) <= rounding;
+      const bool interval_holds =
+          !d.lower || (*d.lower <= truth + rounding && *d.upper >= truth - rounding);
+      if (!s.ok() || d.distance < truth - rounding || d.distance > truth + allowed || !on_spheres ||
+          !interval_holds) {
+        ++sum.disagreeing_frames;
+        failures += " gap " + std::to_string(gap) + ": " +
+                    (s.ok() ? "answered " + std::to_string(d.distance) : s.message()) + ";";
+      }
+    }
+  }
+  const std::string key = "surface_distance/sphere_zones";
+  Result<Expectations> expectations =
+      loadExpectations(settings().expectations_dir, target().variant);
+  ASSERT_TRUE(expectations.ok()) << expectations.status().message();
+  if (!settings().write_expectations_dir.empty()) {
+    ASSERT_TRUE(
+        recordMeasurement(settings().write_expectations_dir, target().variant, key, sum).ok());
+  }
+  const Disagreement expected = expectations.value().expectedFor(key);
+  if (!expected.none()) RecordProperty("detail", "as recorded: " + expected.toString() + failures);
+  if (!(sum == expected))
+    ADD_FAILURE() << key << ": measured " << sum.toString() << "; expected " << expected.toString()
+                  << failures;
+}
+
 // --- deformation -----------------------------------------------------------------------------
 
 TEST_P(Interface, UpdateThenQueryAnswersForTheNewShape) {
   std::unique_ptr<BackendInstance> backend = createInstance(target());
   ASSERT_TRUE(backend);
+  if (!backend->capabilities().buildsShape(ShapeKind::kTriangleMesh)) {
+    COLLIDO_KIT_SKIP(target().variant + " builds no triangle meshes");
+  }
   const Capabilities& caps = backend->capabilities();
   if (!caps.update) COLLIDO_KIT_SKIP(target().variant + " does not update models");
   const QueryKind kind =

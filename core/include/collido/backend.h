@@ -39,6 +39,12 @@ class Backend {
   virtual Result<std::unique_ptr<BackendModel>> build(const MeshView& mesh, const BuildNeeds& needs,
                                                       const StateSibling& sibling) = 0;
 
+  /// Builds the structure for a NURBS surface, for backends whose capabilities list
+  /// ShapeKind::kNurbsSurface; the adapter has checked sizes, finiteness and weights > 0 (the
+  /// backend checks knot semantics it relies on). The default refuses.
+  virtual Result<std::unique_ptr<BackendModel>> buildSurface(const SurfaceView& surface,
+                                                             const BuildNeeds& needs);
+
   /// Replaces the vertex positions of a model built with needs.deforms (same count and order);
   /// a backend that counts its work (Capabilities::counts_update_work) fills `counters`.
   virtual Status update(BackendModel& model, const Eigen::Ref<const Eigen::Matrix3Xd>& positions,

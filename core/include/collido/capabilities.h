@@ -10,6 +10,7 @@ namespace collido {
 /// The shape kinds a backend builds; values are CollidoShapeKind bits.
 enum class ShapeKind : std::uint32_t {
   kTriangleMesh = 1u << 0,
+  kNurbsSurface = 1u << 1,
 };
 
 /// What a backend instance can do. The runner skips, and reports as skipped, everything else.

@@ -14,4 +14,17 @@ struct MeshView {
                                                  ///< counter-clockwise seen from outside
 };
 
+/// A read-only view of a NURBS surface in its model frame: degrees, clamped knot vectors, and
+/// the homogeneous control net (w x, w y, w z, w) as columns, the u index outermost (column
+/// i * count_v + j).
+struct SurfaceView {
+  int degree_u = 0;
+  int degree_v = 0;
+  int count_u = 0;
+  int count_v = 0;
+  Eigen::Map<const Eigen::VectorXd> knots_u{nullptr, 0};
+  Eigen::Map<const Eigen::VectorXd> knots_v{nullptr, 0};
+  Eigen::Map<const Eigen::Matrix4Xd> control{nullptr, 4, 0};
+};
+
 }  // namespace collido

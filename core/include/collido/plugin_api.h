@@ -27,7 +27,7 @@ extern "C" {
 #endif
 
 /** The interface version; bump it on any change to the structures or functions below. */
-#define COLLIDO_PLUGIN_ABI_VERSION 3u
+#define COLLIDO_PLUGIN_ABI_VERSION 4u
 
 /** The one symbol a plugin shared library exports. */
 #define COLLIDO_PLUGIN_ENTRY_SYMBOL "collido_plugin_table"
@@ -52,7 +52,10 @@ typedef enum CollidoQueryKind {
 } CollidoQueryKind;
 
 /** Bit flags naming the shape kinds a backend can build. */
-typedef enum CollidoShapeKind { COLLIDO_SHAPE_TRIANGLE_MESH = 1u << 0 } CollidoShapeKind;
+typedef enum CollidoShapeKind {
+  COLLIDO_SHAPE_TRIANGLE_MESH = 1u << 0,
+  COLLIDO_SHAPE_NURBS_SURFACE = 1u << 1
+} CollidoShapeKind;
 
 /** Bit flags for what a backend can do beyond answering queries. */
 typedef enum CollidoFeature {
@@ -102,11 +105,24 @@ typedef struct CollidoTriangleMeshView {
   const int32_t* triangles; /**< 3 * triangle_count vertex indices, counter-clockwise = outward */
 } CollidoTriangleMeshView;
 
+/** A NURBS surface in its model frame: degrees p, q; clamped knot vectors; a net of
+ *  count_u x count_v homogeneous control points (w x, w y, w z, w), the u index outermost. */
+typedef struct CollidoNurbsSurfaceView {
+  uint32_t degree_u;     /**< p >= 1 */
+  uint32_t degree_v;     /**< q >= 1 */
+  uint32_t count_u;      /**< control points along u, > p */
+  uint32_t count_v;      /**< control points along v, > q */
+  const double* knots_u; /**< count_u + p + 1 values, non-decreasing */
+  const double* knots_v; /**< count_v + q + 1 values, non-decreasing */
+  const double* control; /**< 4 * count_u * count_v doubles; control[4 * (i * count_v + j)] */
+} CollidoNurbsSurfaceView;
+
 /** A shape to build; `kind` says which pointer is set. */
 typedef struct CollidoShapeView {
   uint32_t kind; /**< one CollidoShapeKind value */
   uint32_t reserved;
-  const CollidoTriangleMeshView* mesh; /**< set when kind == COLLIDO_SHAPE_TRIANGLE_MESH */
+  const CollidoTriangleMeshView* mesh;    /**< set when kind == COLLIDO_SHAPE_TRIANGLE_MESH */
+  const CollidoNurbsSurfaceView* surface; /**< set when kind == COLLIDO_SHAPE_NURBS_SURFACE */
 } CollidoShapeView;
 
 /** A model handle; 0 is never valid. */
@@ -165,10 +181,12 @@ typedef struct CollidoDistance {
   double point_b[3];   /**< on B */
   double lower;        /**< a certified lower bound on the true distance; valid with has_bounds */
   double upper;        /**< a certified upper bound; valid with has_bounds */
+  double params_a[2];  /**< (u, v) of point_a on a NURBS surface A; valid with has_params */
+  double params_b[2];  /**< (u, v) of point_b on a NURBS surface B; valid with has_params */
   int32_t triangle_a;  /**< triangle of A holding point_a, or -1 when the engine does not say */
   int32_t triangle_b;  /**< triangle of B holding point_b, or -1 */
   uint32_t has_bounds; /**< 1 when [lower, upper] is certified by the backend */
-  uint32_t reserved;
+  uint32_t has_params; /**< 1 when params_a and params_b are set (both shapes are surfaces) */
 } CollidoDistance;
 
 /** Work the backend did for one query; fields are valid only where `counted` has the bit. */

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <limits>
 #include <optional>
@@ -99,6 +100,9 @@ struct DistanceResult {
   Eigen::Vector3d point_b = Eigen::Vector3d::Zero();
   std::int32_t triangle_a = -1;  ///< triangle of A holding point_a, or -1 when not said
   std::int32_t triangle_b = -1;  ///< triangle of B holding point_b, or -1
+  /// (u, v) of the closest points on NURBS surfaces, where both shapes are surfaces.
+  std::optional<std::array<double, 2>> params_a;
+  std::optional<std::array<double, 2>> params_b;
   /// A certified interval holding the true distance, where the backend gives one.
   std::optional<double> lower;
   std::optional<double> upper;

@@ -95,6 +95,31 @@ Result<ModelHandle> BackendInstance::build(const MeshView& mesh, const BuildNeed
   return handle;
 }
 
+Result<ModelHandle> BackendInstance::build(const SurfaceView& surface, const BuildNeeds& needs) {
+  CollidoNurbsSurfaceView c_surface{};
+  c_surface.degree_u = static_cast<std::uint32_t>(surface.degree_u);
+  c_surface.degree_v = static_cast<std::uint32_t>(surface.degree_v);
+  c_surface.count_u = static_cast<std::uint32_t>(surface.count_u);
+  c_surface.count_v = static_cast<std::uint32_t>(surface.count_v);
+  c_surface.knots_u = surface.knots_u.data();
+  c_surface.knots_v = surface.knots_v.data();
+  c_surface.control = surface.control.data();
+  CollidoShapeView shape{};
+  shape.kind = COLLIDO_SHAPE_NURBS_SURFACE;
+  shape.surface = &c_surface;
+  CollidoBuildNeeds c_needs{};
+  c_needs.query_kinds = needs.queries.bits();
+  c_needs.flags = needs.deforms ? std::uint32_t{COLLIDO_NEED_DEFORMS} : 0u;
+  CollidoMessage message{};
+  ModelHandle handle = 0;
+  if (Status s = fromCode(library_->table().build(instance_, &shape, &c_needs, &handle, &message),
+                          message, variant_);
+      !s.ok()) {
+    return s;
+  }
+  return handle;
+}
+
 Status BackendInstance::update(ModelHandle model,
                                const Eigen::Ref<const Eigen::Matrix3Xd>& positions,
                                UpdateCounters* counters) {
@@ -169,6 +194,10 @@ Status BackendInstance::query(ModelHandle a, const Pose& pose_a, ModelHandle b, 
     result.distance.point_b = Eigen::Vector3d(d.point_b[0], d.point_b[1], d.point_b[2]);
     result.distance.triangle_a = d.triangle_a;
     result.distance.triangle_b = d.triangle_b;
+    if (d.has_params != 0) {
+      result.distance.params_a = std::array<double, 2>{d.params_a[0], d.params_a[1]};
+      result.distance.params_b = std::array<double, 2>{d.params_b[0], d.params_b[1]};
+    }
     if (d.has_bounds != 0) {
       result.distance.lower = d.lower;
       result.distance.upper = d.upper;

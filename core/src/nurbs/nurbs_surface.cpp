@@ -299,4 +299,41 @@ std::array<NurbsSurface, 4> splitInFour(const NurbsSurface& surface) {
   return {low[0], low[1], high[0], high[1]};
 }
 
+SurfaceView viewOf(const NurbsSurface& surface) {
+  const auto points = static_cast<Eigen::Index>(surface.control.size());
+  return SurfaceView{
+      surface.degree_u,
+      surface.degree_v,
+      surface.count_u,
+      surface.count_v,
+      Eigen::Map<const Eigen::VectorXd>(surface.knots_u.data(),
+                                        static_cast<Eigen::Index>(surface.knots_u.size())),
+      Eigen::Map<const Eigen::VectorXd>(surface.knots_v.data(),
+                                        static_cast<Eigen::Index>(surface.knots_v.size())),
+      Eigen::Map<const Eigen::Matrix4Xd>(
+          surface.control.empty() ? nullptr : surface.control.front().data(), 4, points)};
+}
+
+NurbsSurface fromView(const SurfaceView& view) {
+  NurbsSurface s;
+  s.degree_u = view.degree_u;
+  s.degree_v = view.degree_v;
+  s.count_u = view.count_u;
+  s.count_v = view.count_v;
+  s.knots_u.assign(view.knots_u.data(), view.knots_u.data() + view.knots_u.size());
+  s.knots_v.assign(view.knots_v.data(), view.knots_v.data() + view.knots_v.size());
+  s.control.resize(static_cast<std::size_t>(view.control.cols()));
+  for (Eigen::Index k = 0; k < view.control.cols(); ++k)
+    s.control[static_cast<std::size_t>(k)] = view.control.col(k);
+  return s;
+}
+
+NurbsSurface transformed(const NurbsSurface& surface, const Pose& pose) {
+  NurbsSurface moved = surface;
+  for (Eigen::Vector4d& c : moved.control) {
+    c.head<3>() = pose.linear() * c.head<3>() + c.w() * pose.translation();
+  }
+  return moved;
+}
+
 }  // namespace collido::nurbs

@@ -12,6 +12,7 @@
 #include <memory>
 #include <new>
 #include <string>
+#include <tuple>
 #include <type_traits>
 #include <vector>
 
@@ -34,6 +35,15 @@ struct CollidoInstance {
   collido::QueryResult scratch;
   std::vector<CollidoContact> contacts;
 };
+
+namespace collido {
+
+Result<std::unique_ptr<BackendModel>> Backend::buildSurface(const SurfaceView& /*surface*/,
+                                                            const BuildNeeds& /*needs*/) {
+  return Status{StatusCode::kUnsupported, "this backend does not build NURBS surfaces"};
+}
+
+}  // namespace collido
 
 namespace collido::detail {
 namespace {
@@ -188,6 +198,100 @@ std::uint64_t triangleListHash(const CollidoTriangleMeshView& mesh) {
   return hash;
 }
 
+// Sizes, finiteness and positive weights: what every backend reading the net relies on. Knot
+// semantics (clamping, multiplicities) are left to the backend, which knows what it needs.
+Status checkSurface(const CollidoNurbsSurfaceView& s) {
+  if (s.degree_u < 1 || s.degree_v < 1 || s.degree_u > 64 || s.degree_v > 64) {
+    return {StatusCode::kInvalidArgument, "surface degrees " + std::to_string(s.degree_u) + " x " +
+                                              std::to_string(s.degree_v) +
+                                              " (each must be 1 to 64)"};
+  }
+  if (s.count_u <= s.degree_u || s.count_v <= s.degree_v || s.count_u > (1u << 16) ||
+      s.count_v > (1u << 16)) {
+    return {StatusCode::kInvalidArgument,
+            "surface has " + std::to_string(s.count_u) + " x " + std::to_string(s.count_v) +
+                " control points for degrees " + std::to_string(s.degree_u) + " x " +
+                std::to_string(s.degree_v) + " (need more than the degree, at most 65536)"};
+  }
+  if (s.knots_u == nullptr || s.knots_v == nullptr || s.control == nullptr) {
+    return {StatusCode::kInvalidArgument, "surface arrays are null"};
+  }
+  for (const auto& [knots, count, name] :
+       {std::tuple{s.knots_u, s.count_u + s.degree_u + 1, "knots_u"},
+        std::tuple{s.knots_v, s.count_v + s.degree_v + 1, "knots_v"}}) {
+    for (std::uint32_t i = 0; i < count; ++i) {
+      if (!std::isfinite(knots[i]) || (i > 0 && knots[i] < knots[i - 1])) {
+        return {StatusCode::kInvalidArgument, std::string(name) + "[" + std::to_string(i) +
+                                                  "] is not finite or not non-decreasing"};
+      }
+    }
+  }
+  const std::uint64_t points = std::uint64_t{s.count_u} * s.count_v;
+  for (std::uint64_t k = 0; k < points; ++k) {
+    const double* c = s.control + 4 * k;
+    if (!(std::isfinite(c[0]) && std::isfinite(c[1]) && std::isfinite(c[2]) &&
+          std::isfinite(c[3]) && c[3] > 0.0)) {
+      return {StatusCode::kInvalidArgument, "control point (" + std::to_string(k / s.count_v) +
+                                                ", " + std::to_string(k % s.count_v) +
+                                                ") is not finite or its weight is not > 0"};
+    }
+  }
+  return {};
+}
+
+std::int32_t storeModel(CollidoInstance* instance, std::unique_ptr<BackendModel> model,
+                        std::uint32_t vertex_count, std::uint64_t hash, const BuildNeeds& needs,
+                        CollidoModelHandle* out, CollidoMessage* error) {
+  std::uint32_t index;
+  if (!instance->free_slots.empty()) {
+    index = instance->free_slots.back();
+    instance->free_slots.pop_back();
+  } else {
+    if (instance->slots.size() >= std::numeric_limits<std::uint32_t>::max() - 1) {
+      return fail(error, StatusCode::kOutOfMemory, instance->label + ": too many models");
+    }
+    index = static_cast<std::uint32_t>(instance->slots.size());
+    instance->slots.emplace_back();
+  }
+  CollidoInstance::Slot& slot = instance->slots[index];
+  slot.model = std::move(model);
+  slot.vertex_count = vertex_count;
+  slot.triangle_list_hash = hash;
+  slot.needs = needs;
+  *out = (static_cast<std::uint64_t>(slot.generation) << 32) | (index + 1ull);
+  return COLLIDO_STATUS_OK;
+}
+
+std::int32_t buildSurfaceModel(CollidoInstance* instance, const CollidoNurbsSurfaceView& surface,
+                               const BuildNeeds& needs, CollidoModelHandle* out,
+                               CollidoMessage* error) {
+  const std::string& label = instance->label;
+  if (!instance->capabilities.buildsShape(ShapeKind::kNurbsSurface)) {
+    return fail(error, StatusCode::kUnsupported, label + ": does not build NURBS surfaces");
+  }
+  if (needs.deforms) {
+    return fail(error, StatusCode::kUnsupported, label + ": NURBS surfaces cannot deform");
+  }
+  if (Status s = checkSurface(surface); !s.ok()) {
+    return fail(error, s.code(), label + ": build: " + s.message());
+  }
+  const auto p = static_cast<Eigen::Index>(surface.degree_u);
+  const auto q = static_cast<Eigen::Index>(surface.degree_v);
+  const auto nu = static_cast<Eigen::Index>(surface.count_u);
+  const auto nv = static_cast<Eigen::Index>(surface.count_v);
+  const SurfaceView view{static_cast<int>(p),
+                         static_cast<int>(q),
+                         static_cast<int>(nu),
+                         static_cast<int>(nv),
+                         Eigen::Map<const Eigen::VectorXd>(surface.knots_u, nu + p + 1),
+                         Eigen::Map<const Eigen::VectorXd>(surface.knots_v, nv + q + 1),
+                         Eigen::Map<const Eigen::Matrix4Xd>(surface.control, 4, nu * nv)};
+  Result<std::unique_ptr<BackendModel>> built = instance->backend->buildSurface(view, needs);
+  if (!built.ok()) return report(error, built.status());
+  if (!built.value()) return fail(error, StatusCode::kInternal, label + ": build returned null");
+  return storeModel(instance, std::move(built).value(), 0, 0, needs, out, error);
+}
+
 std::int32_t buildEntry(CollidoInstance* instance, const CollidoShapeView* shape,
                         const CollidoBuildNeeds* needs, CollidoModelHandle* out,
                         CollidoMessage* error) {
@@ -197,11 +301,10 @@ std::int32_t buildEntry(CollidoInstance* instance, const CollidoShapeView* shape
   const std::string& label = instance->label;
   return guarded(label, error, [&]() -> std::int32_t {
     const Capabilities& caps = instance->capabilities;
-    if (shape->kind != COLLIDO_SHAPE_TRIANGLE_MESH || shape->mesh == nullptr) {
+    const bool is_mesh = shape->kind == COLLIDO_SHAPE_TRIANGLE_MESH && shape->mesh != nullptr;
+    const bool is_surface = shape->kind == COLLIDO_SHAPE_NURBS_SURFACE && shape->surface != nullptr;
+    if (!is_mesh && !is_surface) {
       return fail(error, StatusCode::kInvalidArgument, label + ": build: unknown shape kind");
-    }
-    if (!caps.buildsShape(ShapeKind::kTriangleMesh)) {
-      return fail(error, StatusCode::kUnsupported, label + ": does not build triangle meshes");
     }
     const QueryKindSet wanted(needs->query_kinds);
     if (!caps.queries.containsAll(wanted)) {
@@ -212,6 +315,16 @@ std::int32_t buildEntry(CollidoInstance* instance, const CollidoShapeView* shape
     const bool deforms = (needs->flags & COLLIDO_NEED_DEFORMS) != 0;
     if (deforms && !caps.update) {
       return fail(error, StatusCode::kUnsupported, label + ": cannot update deforming models");
+    }
+    if (is_surface) {
+      if (needs->state_of != 0) {
+        return fail(error, StatusCode::kInvalidArgument,
+                    label + ": build: state_of is for triangle meshes, not surfaces");
+      }
+      return buildSurfaceModel(instance, *shape->surface, BuildNeeds{wanted, deforms}, out, error);
+    }
+    if (!caps.buildsShape(ShapeKind::kTriangleMesh)) {
+      return fail(error, StatusCode::kUnsupported, label + ": does not build triangle meshes");
     }
     const CollidoTriangleMeshView& mesh = *shape->mesh;
     if (Status s = checkMesh(mesh); !s.ok()) {
@@ -240,25 +353,8 @@ std::int32_t buildEntry(CollidoInstance* instance, const CollidoShapeView* shape
         instance->backend->build(view, build_needs, sibling);
     if (!built.ok()) return report(error, built.status());
     if (!built.value()) return fail(error, StatusCode::kInternal, label + ": build returned null");
-
-    std::uint32_t index;
-    if (!instance->free_slots.empty()) {
-      index = instance->free_slots.back();
-      instance->free_slots.pop_back();
-    } else {
-      if (instance->slots.size() >= std::numeric_limits<std::uint32_t>::max() - 1) {
-        return fail(error, StatusCode::kOutOfMemory, label + ": too many models");
-      }
-      index = static_cast<std::uint32_t>(instance->slots.size());
-      instance->slots.emplace_back();
-    }
-    CollidoInstance::Slot& slot = instance->slots[index];
-    slot.model = std::move(built).value();
-    slot.vertex_count = mesh.vertex_count;
-    slot.triangle_list_hash = hash;
-    slot.needs = build_needs;
-    *out = (static_cast<std::uint64_t>(slot.generation) << 32) | (index + 1ull);
-    return COLLIDO_STATUS_OK;
+    return storeModel(instance, std::move(built).value(), mesh.vertex_count, hash, build_needs, out,
+                      error);
   });
 }
 
@@ -374,6 +470,13 @@ std::int32_t queryEntry(CollidoInstance* instance, CollidoModelHandle a, const C
       }
       out->distance.triangle_a = d.triangle_a;
       out->distance.triangle_b = d.triangle_b;
+      if (d.params_a && d.params_b) {
+        out->distance.has_params = 1;
+        for (int k = 0; k < 2; ++k) {
+          out->distance.params_a[k] = (*d.params_a)[static_cast<std::size_t>(k)];
+          out->distance.params_b[k] = (*d.params_b)[static_cast<std::size_t>(k)];
+        }
+      }
       out->distance.has_bounds = d.lower ? 1u : 0u;
       out->distance.lower = d.lower.value_or(0.0);
       out->distance.upper = d.upper.value_or(0.0);

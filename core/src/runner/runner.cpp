@@ -246,7 +246,9 @@ void runSceneOnBackend(const Scene& scene, const BackendSpec& spec, OracleCache&
   // One model per active state of each object (an object without states has one), built ahead:
   // switching states selects a model.
   std::map<std::size_t, std::vector<BuiltModel>> models;
+  const bool builds_meshes = caps.buildsShape(ShapeKind::kTriangleMesh);
   for (std::size_t index : scene.queriedObjects()) {
+    if (!builds_meshes) break;  // every query is skipped below
     BuildNeeds needs = scene.needsOf(index);
     if (options.build_every_need) needs.queries = caps.queries;
     needs.queries = QueryKindSet(needs.queries.bits() & caps.queries.bits());
@@ -282,6 +284,12 @@ void runSceneOnBackend(const Scene& scene, const BackendSpec& spec, OracleCache&
     m.scene = scene.name;
     m.query = query.name;
     m.kind = query.request.kind;
+    if (!builds_meshes) {
+      m.status =
+          "skipped: " + label + " builds no triangle meshes (the scene's objects are meshes)";
+      report.measurements.push_back(m);
+      continue;
+    }
     if (!caps.queries.contains(query.request.kind)) {
       m.status = std::string("skipped: ") + label + " does not answer " +
                  queryKindName(query.request.kind) + " queries";

@@ -38,6 +38,8 @@ class BackendInstance {
   /// from the same triangle list, whose position-independent parts the backend may share.
   Result<ModelHandle> build(const MeshView& mesh, const BuildNeeds& needs,
                             ModelHandle state_of = 0);
+  /// Builds a model of a NURBS surface (backends whose capabilities list kNurbsSurface).
+  Result<ModelHandle> build(const SurfaceView& surface, const BuildNeeds& needs);
   /// Moves a deforming model's vertices; `counters` (optional) receives the work the backend
   /// reports (UpdateCounters::counted false when it does not count).
   Status update(ModelHandle model, const Eigen::Ref<const Eigen::Matrix3Xd>& positions,

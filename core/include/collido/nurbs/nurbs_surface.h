@@ -6,6 +6,7 @@
 
 #include <Eigen/Core>
 
+#include <collido/geometry.h>
 #include <collido/status.h>
 
 namespace collido::nurbs {
@@ -49,6 +50,16 @@ struct NurbsSurface {
                                  const std::vector<Eigen::Vector3d>& points,
                                  const std::vector<double>& weights);
 };
+
+/// A view of the surface for a backend's build (borrowed: valid while `surface` is unchanged).
+SurfaceView viewOf(const NurbsSurface& surface);
+
+/// A copy of a viewed surface (not validated: call validate()).
+NurbsSurface fromView(const SurfaceView& view);
+
+/// The surface moved rigidly: a NURBS surface follows an affine map of its control points, the
+/// weights unchanged, so the homogeneous net (w x, w) becomes (R w x + w t, w).
+NurbsSurface transformed(const NurbsSurface& surface, const Pose& pose);
 
 /// Checks what evaluation and splitting rely on; the error names the field and the problem
 /// ("knots_u: not non-decreasing at index 5", "weight of control point (2, 3) is -1: must be
