@@ -2,6 +2,7 @@
 # The default study: installs what is missing, builds Release, and runs every backend variant
 # on the bundled scenes and the stress scenes with the default sweep (scenes/sweeps/default.json),
 # each combination in its own worker process, every answer checked against the exact oracle.
+# Then compares the NURBS distance backends on scenes/surfaces/ (collido surface-distance).
 # Prints the table and writes the dashboard. Results: build/release/study/ (table.txt,
 # records.jsonl, summary.json, robustness.txt, report.html). An interrupted run resumes where it
 # stopped; a finished one is kept as build/release/study.previous and the new report compares
@@ -36,8 +37,29 @@ else
   "${study[@]}" "$@"
 fi
 touch "$out/.complete"
+# NURBS surfaces: each surface file's pair, by the seed method and OpenCASCADE (where built) on
+# the surfaces and by mesh backends on tessellations, against the certified distance; one
+# process per file, so a crashing engine loses only that file's comparison.
+surface_backends=nurbs:hull,nurbs:box,obbtree,obbtree[max_leaf_triangles=4],fcl:rss,fcl:obbrss
+if build/release/collido backends | grep -q '^  occt:brep_extrema'; then
+  surface_backends+=,occt:brep_extrema,occt:extrema_surface
+fi
+mkdir -p "$out/surfaces"
+surface_files=()
+for file in scenes/surfaces/*.json; do
+  json="$out/surfaces/$(basename "$file")"
+  if build/release/collido surface-distance "$file" --backends "$surface_backends" \
+      --tessellations 8,32,128 --repetitions 3 --json "$json" > "${json%.json}.txt"; then
+    surface_files+=(--surface-distance "$json")
+  else
+    echo "warning: collido surface-distance $file failed (exit $?): see ${json%.json}.txt" >&2
+    if [[ -f "$json" ]]; then
+      surface_files+=(--surface-distance "$json")
+    fi
+  fi
+done
 baseline=()
 if [[ -f "$previous/.complete" ]]; then
   baseline=(--baseline "$previous")
 fi
-build/release/collido report "$out" "${baseline[@]}" -o "$out/report.html"
+build/release/collido report "$out" "${baseline[@]}" "${surface_files[@]}" -o "$out/report.html"

@@ -20,21 +20,23 @@ struct ReportArguments {
   std::string baseline;
   std::string web;
   std::string title;
-  std::vector<std::string> pose_error;  ///< collido pose-error --json files
+  std::vector<std::string> pose_error;        ///< collido pose-error --json files
+  std::vector<std::string> surface_distance;  ///< collido surface-distance --json files
 };
 
-// A pose-error sweep written by collido pose-error --json, checked enough to draw.
-Result<nlohmann::json> readPoseError(const std::string& path) {
+// A results file written by another command's --json (`marker` is its format key, `array` a
+// field that must be an array), checked enough to draw.
+Result<nlohmann::json> readResultsFile(const std::string& path, const char* marker,
+                                       const char* array, const char* how) {
   std::ifstream in(path);
   if (!in) return Status(StatusCode::kInvalidArgument, path + ": file not found");
   std::stringstream text;
   text << in.rdbuf();
   try {
     nlohmann::json json = nlohmann::json::parse(text.str());
-    if (!json.is_object() || json.value("collidoscope_pose_error", 0) != 1 ||
-        !json.contains("rows") || !json.at("rows").is_array()) {
-      return Status(StatusCode::kInvalidArgument,
-                    path + ": not a pose-error file (write one with collido pose-error --json)");
+    if (!json.is_object() || json.value(marker, 0) != 1 || !json.contains(array) ||
+        !json.at(array).is_array()) {
+      return Status(StatusCode::kInvalidArgument, path + ": not a file of " + how);
     }
     return json;
   } catch (const nlohmann::json::exception& e) {
@@ -73,12 +75,23 @@ int runReport(const ReportArguments& args) {
   nlohmann::json data = study::reportData(results.value(), baseline, title);
   data["pose_error"] = nlohmann::json::array();
   for (const std::string& path : args.pose_error) {
-    Result<nlohmann::json> sweep = readPoseError(path);
+    Result<nlohmann::json> sweep = readResultsFile(path, "collidoscope_pose_error", "rows",
+                                                   "collido pose-error --json");
     if (!sweep.ok()) {
       std::cerr << "error: --pose-error: " << sweep.status().message() << "\n";
       return 2;
     }
     data["pose_error"].push_back(std::move(sweep).value());
+  }
+  data["surfaces"] = nlohmann::json::array();
+  for (const std::string& path : args.surface_distance) {
+    Result<nlohmann::json> comparison = readResultsFile(
+        path, "collidoscope_surface_distance", "backends", "collido surface-distance --json");
+    if (!comparison.ok()) {
+      std::cerr << "error: --surface-distance: " << comparison.status().message() << "\n";
+      return 2;
+    }
+    data["surfaces"].push_back(std::move(comparison).value());
   }
   Result<std::string> html = study::renderReport(data, study::webDirectory(args.web));
   if (!html.ok()) {
@@ -116,6 +129,9 @@ void addReportCommand(CLI::App& app, int& exit_code) {
   command->add_option("--title", args->title, "the page's title (default: the folder's name)");
   command->add_option("--pose-error", args->pose_error,
                       "pose-error sweeps to show (collido pose-error --json files; repeatable)");
+  command->add_option("--surface-distance", args->surface_distance,
+                      "NURBS distance comparisons to show (collido surface-distance --json "
+                      "files; repeatable)");
   command->callback([args, &exit_code] { exit_code = runReport(*args); });
 }
 

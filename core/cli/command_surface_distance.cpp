@@ -4,6 +4,7 @@
 // backends on tessellations of the surfaces: run time against error.
 #include <algorithm>
 #include <chrono>
+#include <filesystem>
 #include <iostream>
 
 #include <nlohmann/json.hpp>
@@ -76,6 +77,7 @@ int surfaceDistance(const SurfaceDistanceArguments& args, const PluginOptions& p
   const double tolerance = args.tolerance > 0.0 ? args.tolerance : 1e-6 * size;
   nlohmann::json json = {{"collidoscope_surface_distance", 1},
                          {"file", args.file},
+                         {"name", std::filesystem::path(args.file).stem().string()},
                          {"a", a->name},
                          {"b", b->name},
                          {"model_size", size},
@@ -178,6 +180,8 @@ int surfaceDistance(const SurfaceDistanceArguments& args, const PluginOptions& p
       if (!created.ok()) {
         backend_rows.push_back({spec.label(), "-", "-", "-", "-", "-", "-", "-", "failed"});
         failures.push_back(spec.label() + ": " + created.status().message());
+        json["backends"].push_back(
+            {{"backend", spec.label()}, {"segments", 0}, {"status", created.status().message()}});
         continue;
       }
       BackendInstance& backend = *created.value();
@@ -189,6 +193,9 @@ int surfaceDistance(const SurfaceDistanceArguments& args, const PluginOptions& p
         if (!caps.queries.contains(QueryKind::kDistance)) {
           backend_rows.push_back({spec.label(), shape, "-", "-", "-", "-", "-", "-", "skipped"});
           failures.push_back(spec.label() + ": does not answer distance queries");
+          json["backends"].push_back({{"backend", spec.label()},
+                                      {"segments", 0},
+                                      {"status", "does not answer distance queries"}});
           break;
         }
         const BuildNeeds needs{QueryKindSet(QueryKind::kDistance)};

@@ -3,7 +3,8 @@
 # two resolutions so the scaling view has curves, and a small stress scene so the robustness
 # matrix has cells, ODE's all-pairs ones unsupported, a deforming scene for the view over
 # time, and a small scene posed from tracked markers; the tori's distance query fills the distance
-# view), writes its report with itself as the
+# view; a NURBS comparison on the sphere zones fills the surfaces view), writes its report with
+# itself as the
 # baseline, and opens it in headless Chromium (web/tests/report.test.mjs): every chart drawn,
 # no console error, no network request.
 # Usage: browser_report_test.sh COLLIDO_EXECUTABLE SOURCE_DIR WORK_DIR
@@ -42,10 +43,13 @@ JSON
   --sweep "$work/sweep.json" --out "$work/study" --quiet > "$work/table.txt"
 "$collido" pose-error "$work/tracked.json" --object probe --layouts spread,given \
   --markers 3,4 --trials 20 --json "$work/pose_error.json" > /dev/null
+"$collido" surface-distance "$source_dir/scenes/surfaces/sphere_zones.json" --seed-only \
+  --backends nurbs:hull,obbtree --tessellations 8,16 --repetitions 1 \
+  --json "$work/surfaces.json" > /dev/null
 "$collido" report "$work/study" --baseline "$work/study" --pose-error "$work/pose_error.json" \
-  -o "$work/report.html"
+  --surface-distance "$work/surfaces.json" -o "$work/report.html"
 COLLIDO_REPORT_HTML="$work/report.html" \
-COLLIDO_EXPECT_VIEWS="time-vs-error,distance-error,robustness,time-distribution,deforming,tracking,pose-error,memory,scaling,needs,comparison" \
+COLLIDO_EXPECT_VIEWS="time-vs-error,distance-error,surfaces,robustness,time-distribution,deforming,tracking,pose-error,memory,scaling,needs,comparison" \
 COLLIDO_EXPECT_SECTION_TEXT="robustness=unsupported,robustness=touching" \
 COLLIDO_REPORT_SCREENSHOT="$work/report.png" \
   node --test "$source_dir/web/tests/"

@@ -173,6 +173,63 @@
     }
   }
 
+  // --- NURBS surfaces: run time against error (collido surface-distance files) ---------------
+  {
+    const s = section('surfaces', 'NURBS surfaces: run time against error',
+      'From collido surface-distance comparisons (collido report --surface-distance FILE; ' +
+      'tools/study.sh runs every scenes/surfaces file): per surface pair, each backend\'s median ' +
+      'time per distance query against its error, measured from the middle of the seed ' +
+      'method\'s certified interval (1e-10 of the model\'s size wide), relative to the model\'s ' +
+      'size (log scales; an error below 1e-16 is drawn at 1e-16). Surface backends (the seed as ' +
+      'nurbs:*, OpenCASCADE as occt:*) answer on the surfaces; mesh backends on tessellations ' +
+      '(the label gives the segments per parameter; the tooltip the build time). Below each ' +
+      'chart, the seed method\'s work with hull and with box bounds, and the failures.');
+    const comparisons = data.surfaces || [];
+    if (comparisons.length === 0) empty(s, 'No surface comparison given (collido ' +
+      'surface-distance FILE --backends ... --json F, then collido report DIR ' +
+      '--surface-distance F).');
+    for (const c of comparisons) {
+      const name = (c.name || c.file) + ': ' + c.a + ' · ' + c.b;
+      const box = el('div', { class: 'charts' });
+      s.appendChild(box);
+      const answered = c.backends.filter((b) => b.status === 'ok');
+      const values = answered.map((b) => Object.assign({}, b, {
+        label: b.segments > 0 ? b.backend + ' @' + b.segments : b.backend,
+        shape: b.segments > 0 ? 'tessellation' : 'surfaces',
+        relative_error: Math.max(Math.abs(b.error) / c.model_size, 1e-16) }));
+      if (values.length > 0) {
+        chart(box, 'surfaces:' + name, {
+          title: name, width: 420, height: 240, data: { values: values },
+          mark: { type: 'point', filled: true, size: 80 },
+          encoding: {
+            x: { field: 'median_us', type: 'quantitative', scale: { type: 'log' },
+              title: 'median time per query (µs)' },
+            y: { field: 'relative_error', type: 'quantitative', scale: { type: 'log' },
+              title: '|error| / model size' },
+            color: { field: 'backend', type: 'nominal', title: 'backend' },
+            shape: { field: 'shape', type: 'nominal', title: 'answers on' },
+            tooltip: [{ field: 'label', title: 'backend' }, { field: 'distance', format: '.12g' },
+              { field: 'error', format: '.3g' }, { field: 'median_us', format: '.1f' },
+              { field: 'triangles' }, { field: 'build_ms', title: 'build ms', format: '.2f' }] } });
+      } else {
+        empty(box, name + ': no backend answered.');
+      }
+      const seeds = (c.seed || []).map((r) => [r.bound + (r.descent ? ' + descent' : ' (seed)'),
+        r.lower.toPrecision(12), r.upper.toPrecision(12), (r.upper - r.lower).toPrecision(2),
+        r.converged ? 'yes' : 'no', String(r.pairs_bounded), String(r.levels.length),
+        fmt(r.median_ms, 3)]);
+      if (seeds.length > 0) {
+        table(s, ['bound', 'lower', 'upper', 'gap', 'converged', 'pairs bounded', 'levels',
+          'median ms'], seeds);
+      }
+      const failed = c.backends.filter((b) => b.status !== 'ok');
+      if (failed.length > 0) {
+        s.appendChild(el('ul', {}, failed.map((b) => el('li', { text: b.backend +
+          (b.segments > 0 ? ' @' + b.segments : '') + ': ' + b.status }))));
+      }
+    }
+  }
+
   // --- robustness matrix ----------------------------------------------------------------------
   {
     const s = section('robustness', 'Robustness matrix',

@@ -63,7 +63,7 @@ test('every chart of the report renders without console errors', async () => {
       assert.ok(charts.some((c) => c.view.startsWith(view)), `no chart for view ${view}`);
     }
     const sections = await page.$$eval('section.view', (nodes) => nodes.map((n) => n.id));
-    for (const id of ['time-vs-error', 'distance-error', 'robustness', 'time-distributions', 'deforming', 'tracking',
+    for (const id of ['time-vs-error', 'distance-error', 'surfaces', 'robustness', 'time-distributions', 'deforming', 'tracking',
       'pose-error', 'memory', 'scaling',
       'failures', 'needs', 'comparison', 'table']) {
       assert.ok(sections.includes(id), `missing section ${id}`);
