@@ -75,8 +75,8 @@ int runReport(const ReportArguments& args) {
   nlohmann::json data = study::reportData(results.value(), baseline, title);
   data["pose_error"] = nlohmann::json::array();
   for (const std::string& path : args.pose_error) {
-    Result<nlohmann::json> sweep = readResultsFile(path, "collidoscope_pose_error", "rows",
-                                                   "collido pose-error --json");
+    Result<nlohmann::json> sweep =
+        readResultsFile(path, "collidoscope_pose_error", "rows", "collido pose-error --json");
     if (!sweep.ok()) {
       std::cerr << "error: --pose-error: " << sweep.status().message() << "\n";
       return 2;
