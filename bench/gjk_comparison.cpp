@@ -158,10 +158,11 @@ std::shared_ptr<fcl::CollisionGeometryd> fclConvex(const Eigen::Matrix3Xd& point
 
 void fclBenchmark(benchmark::State& state, fcl::GJKSolverType solver, double tolerance) {
   const std::vector<Case>& all = cases();
-  // Held by pointer: a CollisionObject keeps pointers into itself, so it must not move.
+  // One object pair per case, at addresses that stay put.
   std::vector<
       std::pair<std::unique_ptr<fcl::CollisionObjectd>, std::unique_ptr<fcl::CollisionObjectd>>>
       objects;
+  objects.reserve(all.size());
   for (const Case& c : all)
     objects.emplace_back(std::make_unique<fcl::CollisionObjectd>(fclConvex(c.a, c.faces_a)),
                          std::make_unique<fcl::CollisionObjectd>(fclConvex(c.b, c.faces_b)));

@@ -232,7 +232,8 @@ int surfaceDistance(const SurfaceDistanceArguments& args, const PluginOptions& p
         }
         if (!status.empty()) {
           backend_rows.push_back({spec.label(), shape, "-", "-", "-", "-", "-", "-", "failed"});
-          failures.push_back(spec.label() + " (" + shape + "): " + status);
+          failures.push_back(spec.label() + " (" + shape);
+          failures.back() += "): " + status;
           json["backends"].push_back(
               {{"backend", spec.label()}, {"segments", segments}, {"status", status}});
           continue;
