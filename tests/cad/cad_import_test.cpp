@@ -22,9 +22,14 @@ struct Outcome {
   std::string output;  // stdout and stderr
 };
 
+// Runs an OpenCASCADE tool. Under AddressSanitizer its leak check is off in that process only:
+// OpenCASCADE's data exchange keeps session objects alive at exit (about 3 KiB in 159 blocks
+// per run, all allocated inside libTKernel's memory manager), which are not ours to fix; this
+// test's own process keeps the check.
 Outcome runCommand(const std::string& command) {
   Outcome out;
-  std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen((command + " 2>&1").c_str(), "r"), pclose);
+  const std::string line = "ASAN_OPTIONS=\"${ASAN_OPTIONS:-}:detect_leaks=0\" " + command + " 2>&1";
+  std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(line.c_str(), "r"), pclose);
   if (!pipe) return out;
   std::array<char, 4096> buffer{};
   while (std::fgets(buffer.data(), static_cast<int>(buffer.size()), pipe.get()) != nullptr)
