@@ -442,6 +442,23 @@ Result<TriangleMesh> makeChain(const ChainParams& params) {
   return mesh;
 }
 
+Result<TriangleMesh> makeBox(const BoxParams& params) {
+  const std::string where = "box: ";
+  Status status = checkPositive(where, "size x", params.size.x());
+  if (status.ok()) status = checkPositive(where, "size y", params.size.y());
+  if (status.ok()) status = checkPositive(where, "size z", params.size.z());
+  if (!status.ok()) return status;
+  TriangleMesh mesh;
+  mesh.vertices.resize(3, 8);
+  mesh.triangles.resize(3, 12);
+  Eigen::Index vertex_base = 0;
+  Eigen::Index triangle_base = 0;
+  appendBox(-0.5 * params.size, Eigen::Vector3d(params.size.x(), 0, 0),
+            Eigen::Vector3d(0, params.size.y(), 0), Eigen::Vector3d(0, 0, params.size.z()),
+            vertex_base, triangle_base, mesh);
+  return mesh;
+}
+
 Result<TriangleMesh> makeSphere(const SphereParams& params) {
   const std::string where = "sphere: ";
   Status status = checkPositive(where, "radius", params.radius);

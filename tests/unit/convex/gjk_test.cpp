@@ -1007,6 +1007,59 @@ TEST(GjkPeer, CoalCapsuleTriangleAndSpheres) {
   EXPECT_EQ(separated, 4);
 }
 
+// FCL's signed-distance cases: spheres apart and overlapping, and tilted cubes "kissing" face to
+// face at +-1e-15 relative separation (sizes 0.01 to 1000), with the exact signed distance of the
+// listed doubles. The lower bound must never exceed the true distance: 0 for the cubes that
+// overlap by 1e-15 of their size, however close. Where the gap is far above the rounding of the
+// coordinates, the distance must be the gap.
+TEST(GjkPeer, FclSignedDistanceSpheresAndKissingCubes) {
+  const Json file = readJson("tests/data/peer_cases/fcl_signed_distance.json");
+  int cases = 0;
+  for (const Json& c : file["cases"]) {
+    SCOPED_TRACE(c["id"].get<std::string>());
+    std::vector<Eigen::Matrix3Xd> points;
+    std::vector<Pose> poses;
+    std::vector<double> radii;
+    double size = 0.0;
+    for (const Json& s : c["shapes"]) {
+      poses.push_back(poseOf(s["R"], s["t"]));
+      if (s["type"] == "sphere") {
+        points.push_back(Eigen::Matrix3Xd::Zero(3, 1));
+        radii.push_back(s["radius"].get<double>());
+        size = std::max(size, 2.0 * radii.back() + poses.back().translation().norm());
+      } else {
+        ASSERT_EQ(s["type"], "box");
+        const Eigen::Vector3d half = 0.5 * vec(s["size"]);
+        Eigen::Matrix3Xd corners(3, 8);
+        for (int k = 0; k < 8; ++k) {
+          corners.col(k) =
+              Eigen::Vector3d((k & 1) ? half.x() : -half.x(), (k & 2) ? half.y() : -half.y(),
+                              (k & 4) ? half.z() : -half.z());
+        }
+        points.push_back(corners);
+        radii.push_back(0.0);
+        size = std::max(size, 2.0 * half.norm() + poses.back().translation().norm());
+      }
+    }
+    const GjkResult r = gjkDistance(PointSetSupport(points[0], poses[0], radii[0]),
+                                    PointSetSupport(points[1], poses[1], radii[1]));
+    const double truth = c["oracle"]["signed_distance"].get<double>();
+    const double rounding = 64.0 * kUnit * size;  // posing the corners, a few roundings each
+    EXPECT_LE(r.lower_bound, std::max(truth, 0.0)) << "a pruning bound above the distance";
+    EXPECT_GE(r.distance + rounding, std::max(truth, 0.0));
+    if (truth > rounding) {
+      EXPECT_FALSE(r.intersecting);
+      EXPECT_NEAR(r.distance, truth, 1e-12 * truth + rounding);
+    }
+    if (truth < -rounding) {
+      EXPECT_TRUE(r.intersecting);
+      EXPECT_EQ(r.distance, 0.0);
+    }
+    ++cases;
+  }
+  EXPECT_EQ(cases, 13);
+}
+
 TEST(GjkPeer, LibccdIntersectionSweeps) {
   // libccd boxbox.c / spheresphere.c: one object stepped past (or spun beside) the other; the
   // oracle's exact answer per step (touching steps were left out of the file). Intersection as

@@ -165,6 +165,33 @@ TEST(MeshDistance, MatchesTheExactDistancesOfTheFortyEnvRobPoses) {
   EXPECT_EQ(separated, 23);
 }
 
+// FCL's tilted cubes "kissing" face to face at +-1e-15 of their size (0.01 to 1000), with the
+// exact signed distance of the listed doubles (60-digit arithmetic): the exact mesh distance is
+// that distance where they are apart, and 0 where they overlap (their surfaces cross).
+TEST(MeshDistance, MatchesFclsKissingCubesAtOneEMinus15) {
+  std::ifstream in(test::sourcePath("tests/data/peer_cases/fcl_signed_distance.json"));
+  const Json cases = Json::parse(in)["cases"];
+  int boxes = 0;
+  for (const Json& c : cases) {
+    if (c["shapes"][0]["type"] != "box") continue;
+    SCOPED_TRACE(c["id"].get<std::string>());
+    Result<TriangleMesh> a = makeBox(BoxParams{vec(c["shapes"][0]["size"])});
+    Result<TriangleMesh> b = makeBox(BoxParams{vec(c["shapes"][1]["size"])});
+    ASSERT_TRUE(a.ok() && b.ok());
+    const Pose pose_a = test::peerCasePose(c["shapes"][0]);
+    const Pose pose_b = test::peerCasePose(c["shapes"][1]);
+    const double truth = c["oracle"]["signed_distance"].get<double>();
+    const MeshDistance d = exactMeshDistance(a.value(), pose_a, b.value(), pose_b);
+    if (truth < 0.0) {
+      EXPECT_EQ(d.distance, 0.0);
+    } else {
+      EXPECT_NEAR(d.distance, truth, 4e-16 * truth);
+    }
+    ++boxes;
+  }
+  EXPECT_EQ(boxes, 10);
+}
+
 // A thin gap far from the origin: the search must find the one pair 1e-7 apart among many
 // pairs a little further.
 TEST(MeshDistance, FindsTheClosestPairOfParallelSheetsFarFromTheOrigin) {

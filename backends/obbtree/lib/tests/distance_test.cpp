@@ -1,10 +1,12 @@
 // The OBB tree's distance against the exact reference distance: random poses, near contact far
 // from the origin, touching exactly, tolerances honoured, float boxes, and the certified bound.
 #include <cmath>
+#include <fstream>
 #include <random>
 #include <string>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <collido/mesh/procedural.h>
 #include <collido/obbtree/distance.h>
@@ -92,6 +94,42 @@ TEST(Distance, TolerancesTradeAccuracyForWork) {
     expectAnswer(torus, pose_a, torus, pose_b, request, loose, "tolerance");
     EXPECT_LE(loose.triangle_tests, exact.triangle_tests);
   }
+}
+
+// FCL's tilted cubes "kissing" face to face at +-1e-15 of their size (0.01 to 1000;
+// tests/data/peer_cases/fcl_signed_distance.json): 0 exactly where they overlap, a positive
+// distance where they are apart, every answer against the exact reference.
+TEST(Distance, FclsKissingCubes) {
+  std::ifstream in("tests/data/peer_cases/fcl_signed_distance.json");
+  ASSERT_TRUE(in) << "run from the repository root";
+  const nlohmann::json cases = nlohmann::json::parse(in)["cases"];
+  int boxes = 0;
+  for (const nlohmann::json& c : cases) {
+    if (c["shapes"][0]["type"] != "box") continue;
+    Pose poses[2];
+    TriangleMesh meshes[2];
+    for (int k = 0; k < 2; ++k) {
+      const nlohmann::json& s = c["shapes"][k];
+      poses[k] = Pose::Identity();
+      for (int r = 0; r < 3; ++r) {
+        for (int q = 0; q < 3; ++q)
+          poses[k].linear()(r, q) = s["R"][r][q].get<double>();
+        poses[k].translation()[r] = s["t"][r].get<double>();
+      }
+      const Eigen::Vector3d size(s["size"][0].get<double>(), s["size"][1].get<double>(),
+                                 s["size"][2].get<double>());
+      meshes[k] = unwrap(makeBox(BoxParams{size}), "box");
+    }
+    const ObbTree tree_a = ObbTree::build(meshes[0].vertices, meshes[0].triangles);
+    const ObbTree tree_b = ObbTree::build(meshes[1].vertices, meshes[1].triangles);
+    DistanceAnswer answer;
+    distance(tree_a, poses[0], tree_b, poses[1], DistanceRequest{}, answer);
+    const std::string id = c["id"];
+    expectAnswer(meshes[0], poses[0], meshes[1], poses[1], DistanceRequest{}, answer, id);
+    EXPECT_EQ(answer.distance == 0.0, c["oracle"]["signed_distance"].get<double>() < 0.0) << id;
+    ++boxes;
+  }
+  EXPECT_EQ(boxes, 10);
 }
 
 // Two links of a chain at clearance 0 touch at a coincident vertex; under a shared exact pose

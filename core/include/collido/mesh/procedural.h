@@ -128,10 +128,17 @@ struct StationModuleParams {
   double panel_width = 1.0;  ///< width of each solar panel along z, > 0
 };
 
+/// An axis-aligned box about the origin: 8 vertices (corner (i, j, k) at column i + 2 j + 4 k,
+/// coordinates +-size / 2), 12 outward triangles.
+struct BoxParams {
+  Eigen::Vector3d size = Eigen::Vector3d::Ones();  ///< full side lengths, each > 0
+};
+
 /// Generators. Each checks its parameters and returns kInvalidArgument naming the bad one.
 Result<TriangleMesh> makeTorus(const TorusParams& params);
 Result<TriangleMesh> makeChain(const ChainParams& params);
 Result<TriangleMesh> makeSphere(const SphereParams& params);
+Result<TriangleMesh> makeBox(const BoxParams& params);
 Result<TriangleMesh> makeGridSheet(const GridSheetParams& params);
 Result<TriangleMesh> makeGear(const GearParams& params);
 Result<TriangleMesh> makeStationModule(const StationModuleParams& params);
