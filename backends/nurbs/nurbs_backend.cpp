@@ -41,7 +41,7 @@ struct SeedSettings {
   double default_tolerance = 1e-10;  // of the model's size, when the request names none
 };
 
-class SeedBackend final : public Backend {
+class SeedBackend final : public SurfaceBackend {
  public:
   explicit SeedBackend(SeedSettings settings) : settings_(settings) {}
 
@@ -59,21 +59,11 @@ class SeedBackend final : public Backend {
     return caps;
   }
 
-  Result<std::unique_ptr<BackendModel>> build(const MeshView& /*mesh*/, const BuildNeeds& /*needs*/,
-                                              const StateSibling& /*sibling*/) override {
-    return Status(StatusCode::kUnsupported, "nurbs: builds NURBS surfaces, not triangle meshes");
-  }
-
   Result<std::unique_ptr<BackendModel>> buildSurface(const SurfaceView& view,
                                                      const BuildNeeds& /*needs*/) override {
     NurbsSurface surface = fromView(view);
     if (Status s = validate(surface); !s.ok()) return s;
     return std::unique_ptr<BackendModel>(std::make_unique<SurfaceModel>(std::move(surface)));
-  }
-
-  Status update(BackendModel& /*model*/, const Eigen::Ref<const Eigen::Matrix3Xd>& /*positions*/,
-                UpdateCounters& /*counters*/) override {
-    return {StatusCode::kUnsupported, "nurbs: surfaces do not deform"};
   }
 
   Status query(BackendModel& a, const Pose& pose_a, BackendModel& b, const Pose& pose_b,

@@ -106,7 +106,7 @@ class OcctModel final : public BackendModel {
 
 enum class Method { kBRepExtrema, kExtremaSurface };
 
-class OcctBackend final : public Backend {
+class OcctBackend final : public SurfaceBackend {
  public:
   explicit OcctBackend(Method method) : method_(method) {}
 
@@ -125,11 +125,6 @@ class OcctBackend final : public Backend {
     return caps;
   }
 
-  Result<std::unique_ptr<BackendModel>> build(const MeshView& /*mesh*/, const BuildNeeds& /*needs*/,
-                                              const StateSibling& /*sibling*/) override {
-    return Status(StatusCode::kUnsupported, "occt: builds NURBS surfaces, not triangle meshes");
-  }
-
   Result<std::unique_ptr<BackendModel>> buildSurface(const SurfaceView& view,
                                                      const BuildNeeds& /*needs*/) override {
     try {
@@ -143,11 +138,6 @@ class OcctBackend final : public Backend {
           StatusCode::kEngineFailure,
           std::string("occt: build: ") + e.DynamicType()->Name() + ": " + e.GetMessageString());
     }
-  }
-
-  Status update(BackendModel& /*model*/, const Eigen::Ref<const Eigen::Matrix3Xd>& /*positions*/,
-                UpdateCounters& /*counters*/) override {
-    return {StatusCode::kUnsupported, "occt: surfaces do not deform"};
   }
 
   Status query(BackendModel& a, const Pose& pose_a, BackendModel& b, const Pose& pose_b,

@@ -86,6 +86,28 @@ Result<ModelHandle> buildSample(BackendInstance& backend, const BuildNeeds& need
 class Interface : public ::testing::TestWithParam<std::size_t> {
  protected:
   const Target& target() const { return targets()[GetParam()]; }
+
+  // Holds a measurement to the variant's recorded expectations (recording it when the kit is
+  // asked to): a changed count fails, naming the file; `context` is added to the report.
+  void expectAsRecorded(const std::string& key, const Disagreement& measured,
+                        const std::string& context = "") {
+    Result<Expectations> expectations =
+        loadExpectations(settings().expectations_dir, target().variant);
+    ASSERT_TRUE(expectations.ok()) << expectations.status().message();
+    if (!settings().write_expectations_dir.empty()) {
+      ASSERT_TRUE(
+          recordMeasurement(settings().write_expectations_dir, target().variant, key, measured)
+              .ok());
+    }
+    const Disagreement expected = expectations.value().expectedFor(key);
+    if (!expected.none()) RecordProperty("detail", "as recorded: " + expected.toString() + context);
+    if (!(measured == expected))
+      ADD_FAILURE() << key << ": measured " << measured.toString() << "; expected "
+                    << expected.toString() << " ("
+                    << (expectations.value().file.empty() ? "no expectations file: must be exact"
+                                                          : expectations.value().file)
+                    << ")" << context;
+  }
 };
 
 TEST_P(Interface, TableAndCapabilitiesAreSane) {
@@ -309,17 +331,7 @@ TEST_P(Interface, DistanceAnswersTheGapBetweenTwoSpheres) {
       sum.invalid_pairs += d.invalid_pairs;
     }
   }
-  const std::string key = "distance/spheres";
-  Result<Expectations> expectations =
-      loadExpectations(settings().expectations_dir, target().variant);
-  ASSERT_TRUE(expectations.ok()) << expectations.status().message();
-  if (!settings().write_expectations_dir.empty()) {
-    ASSERT_TRUE(
-        recordMeasurement(settings().write_expectations_dir, target().variant, key, sum).ok());
-  }
-  const Disagreement expected = expectations.value().expectedFor(key);
-  if (!(sum == expected))
-    ADD_FAILURE() << key << ": measured " << sum.toString() << "; expected " << expected.toString();
+  expectAsRecorded("distance/spheres", sum);
 }
 
 // Two zones of unit spheres facing each other along x (A about the origin, B about (2 + gap, 0,
@@ -373,19 +385,7 @@ TEST_P(Interface, SurfaceDistanceAnswersTheGapBetweenTwoSphereZones) {
       }
     }
   }
-  const std::string key = "surface_distance/sphere_zones";
-  Result<Expectations> expectations =
-      loadExpectations(settings().expectations_dir, target().variant);
-  ASSERT_TRUE(expectations.ok()) << expectations.status().message();
-  if (!settings().write_expectations_dir.empty()) {
-    ASSERT_TRUE(
-        recordMeasurement(settings().write_expectations_dir, target().variant, key, sum).ok());
-  }
-  const Disagreement expected = expectations.value().expectedFor(key);
-  if (!expected.none()) RecordProperty("detail", "as recorded: " + expected.toString() + failures);
-  if (!(sum == expected))
-    ADD_FAILURE() << key << ": measured " << sum.toString() << "; expected " << expected.toString()
-                  << failures;
+  expectAsRecorded("surface_distance/sphere_zones", sum, failures);
 }
 
 // --- deformation -----------------------------------------------------------------------------
@@ -432,23 +432,7 @@ TEST_P(Interface, UpdateThenQueryAnswersForTheNewShape) {
   FrameRecord record;
   compareWithOracle(grown, Pose::Identity(), other, pose_b, request, result, truth, record);
   const Disagreement d = disagreementOf(record, kind);
-  const std::string key = std::string("update/") + queryKindName(kind);
-  Result<Expectations> expectations =
-      loadExpectations(settings().expectations_dir, target().variant);
-  ASSERT_TRUE(expectations.ok()) << expectations.status().message();
-  if (!settings().write_expectations_dir.empty()) {
-    ASSERT_TRUE(
-        recordMeasurement(settings().write_expectations_dir, target().variant, key, d).ok());
-  }
-  if (!expectations.value().expectedFor(key).none()) {
-    RecordProperty("detail", "as recorded: " + expectations.value().expectedFor(key).toString());
-  }
-  if (!(d == expectations.value().expectedFor(key)))
-    ADD_FAILURE() << key << ": measured " << d.toString() << "; expected "
-                  << expectations.value().expectedFor(key).toString() << " ("
-                  << (expectations.value().file.empty() ? "no expectations file: must be exact"
-                                                        : expectations.value().file)
-                  << ")";
+  expectAsRecorded(std::string("update/") + queryKindName(kind), d);
 }
 
 // --- answers against the oracle --------------------------------------------------------------

@@ -28,6 +28,7 @@
 #include <TopoDS.hxx>
 #include <TopoDS_Face.hxx>
 #include <TopoDS_Shape.hxx>
+#include <XSControl_Reader.hxx>
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -47,39 +48,32 @@ std::string lowerExtension(const std::string& path) {
   return ext;
 }
 
-// Reads the file's shape; the error names the file and what went wrong.
+// Reads the file's shape with STEP's or IGES's reader (both XSControl_Reader); the error names
+// the file and what went wrong.
 bool readShape(const std::string& path, TopoDS_Shape& shape, std::string& error) {
   const std::string ext = lowerExtension(path);
   if (!std::filesystem::exists(path)) {
     error = path + ": file not found";
     return false;
   }
-  if (ext == ".step" || ext == ".stp") {
-    STEPControl_Reader reader;
-    if (reader.ReadFile(path.c_str()) != IFSelect_RetDone) {
-      error = path + ": not a readable STEP file";
-      return false;
-    }
-    if (reader.TransferRoots() == 0) {
-      error = path + ": STEP file has no transferable shape";
-      return false;
-    }
-    shape = reader.OneShape();
-  } else if (ext == ".iges" || ext == ".igs") {
-    IGESControl_Reader reader;
-    if (reader.ReadFile(path.c_str()) != IFSelect_RetDone) {
-      error = path + ": not a readable IGES file";
-      return false;
-    }
-    if (reader.TransferRoots() == 0) {
-      error = path + ": IGES file has no transferable shape";
-      return false;
-    }
-    shape = reader.OneShape();
-  } else {
+  const bool step = ext == ".step" || ext == ".stp";
+  if (!step && ext != ".iges" && ext != ".igs") {
     error = path + ": extension '" + ext + "' is not .step, .stp, .iges or .igs";
     return false;
   }
+  STEPControl_Reader step_reader;
+  IGESControl_Reader iges_reader;
+  XSControl_Reader& reader = step ? static_cast<XSControl_Reader&>(step_reader) : iges_reader;
+  const std::string format = step ? "STEP" : "IGES";
+  if (reader.ReadFile(path.c_str()) != IFSelect_RetDone) {
+    error = path + ": not a readable " + format + " file";
+    return false;
+  }
+  if (reader.TransferRoots() == 0) {
+    error = path + ": " + format + " file has no transferable shape";
+    return false;
+  }
+  shape = reader.OneShape();
   if (shape.IsNull()) {
     error = path + ": no shape in the file";
     return false;

@@ -55,6 +55,16 @@ class Backend {
                        const QueryRequest& request, QueryResult& result) = 0;
 };
 
+/// A backend that builds NURBS surfaces only (capabilities list ShapeKind::kNurbsSurface alone):
+/// triangle meshes and updates are refused with the reason.
+class SurfaceBackend : public Backend {
+ public:
+  Result<std::unique_ptr<BackendModel>> build(const MeshView& mesh, const BuildNeeds& needs,
+                                              const StateSibling& sibling) override;
+  Status update(BackendModel& model, const Eigen::Ref<const Eigen::Matrix3Xd>& positions,
+                UpdateCounters& counters) override;
+};
+
 /// One variant a plugin offers ("fcl:obb").
 struct VariantInfo {
   std::string name;     ///< unique among all plugins

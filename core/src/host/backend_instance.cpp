@@ -81,6 +81,11 @@ Result<ModelHandle> BackendInstance::build(const MeshView& mesh, const BuildNeed
   CollidoShapeView shape{};
   shape.kind = COLLIDO_SHAPE_TRIANGLE_MESH;
   shape.mesh = &c_mesh;
+  return buildShape(shape, needs, state_of);
+}
+
+Result<ModelHandle> BackendInstance::buildShape(const CollidoShapeView& shape,
+                                                const BuildNeeds& needs, ModelHandle state_of) {
   CollidoBuildNeeds c_needs{};
   c_needs.query_kinds = needs.queries.bits();
   c_needs.flags = needs.deforms ? std::uint32_t{COLLIDO_NEED_DEFORMS} : 0u;
@@ -107,17 +112,7 @@ Result<ModelHandle> BackendInstance::build(const SurfaceView& surface, const Bui
   CollidoShapeView shape{};
   shape.kind = COLLIDO_SHAPE_NURBS_SURFACE;
   shape.surface = &c_surface;
-  CollidoBuildNeeds c_needs{};
-  c_needs.query_kinds = needs.queries.bits();
-  c_needs.flags = needs.deforms ? std::uint32_t{COLLIDO_NEED_DEFORMS} : 0u;
-  CollidoMessage message{};
-  ModelHandle handle = 0;
-  if (Status s = fromCode(library_->table().build(instance_, &shape, &c_needs, &handle, &message),
-                          message, variant_);
-      !s.ok()) {
-    return s;
-  }
-  return handle;
+  return buildShape(shape, needs, 0);
 }
 
 Status BackendInstance::update(ModelHandle model,

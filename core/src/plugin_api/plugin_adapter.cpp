@@ -43,6 +43,19 @@ Result<std::unique_ptr<BackendModel>> Backend::buildSurface(const SurfaceView& /
   return Status{StatusCode::kUnsupported, "this backend does not build NURBS surfaces"};
 }
 
+Result<std::unique_ptr<BackendModel>> SurfaceBackend::build(const MeshView& /*mesh*/,
+                                                            const BuildNeeds& /*needs*/,
+                                                            const StateSibling& /*sibling*/) {
+  return Status{StatusCode::kUnsupported,
+                "this backend builds NURBS surfaces, not triangle meshes"};
+}
+
+Status SurfaceBackend::update(BackendModel& /*model*/,
+                              const Eigen::Ref<const Eigen::Matrix3Xd>& /*positions*/,
+                              UpdateCounters& /*counters*/) {
+  return {StatusCode::kUnsupported, "NURBS surfaces do not deform"};
+}
+
 }  // namespace collido
 
 namespace collido::detail {

@@ -51,6 +51,9 @@ class BackendInstance {
   Status release(ModelHandle model);
 
  private:
+  Result<ModelHandle> buildShape(const CollidoShapeView& shape, const BuildNeeds& needs,
+                                 ModelHandle state_of);
+
   BackendInstance(std::shared_ptr<PluginLibrary> library, std::string variant,
                   CollidoInstance* instance)
       : library_(std::move(library)), variant_(std::move(variant)), instance_(instance) {}
