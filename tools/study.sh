@@ -41,7 +41,8 @@ touch "$out/.complete"
 # the surfaces and by mesh backends on tessellations, against the certified distance; one
 # process per file, so a crashing engine loses only that file's comparison.
 surface_backends=nurbs:hull,nurbs:box,obbtree,obbtree[max_leaf_triangles=4],fcl:rss,fcl:obbrss
-if build/release/collido backends | grep -q '^  occt:brep_extrema'; then
+# (grep reads everything: with -q it would stop early and pipefail would see collido's SIGPIPE)
+if build/release/collido backends | grep '^  occt:brep_extrema' > /dev/null; then
   surface_backends+=,occt:brep_extrema,occt:extrema_surface
 fi
 mkdir -p "$out/surfaces"

@@ -188,6 +188,9 @@
     if (comparisons.length === 0) empty(s, 'No surface comparison given (collido ' +
       'surface-distance FILE --backends ... --json F, then collido report DIR ' +
       '--surface-distance F).');
+    // One colour per backend across every chart.
+    const surfaceBackends = [...new Set(comparisons.flatMap((c) => c.backends.map((b) => b.backend)))]
+      .sort();
     for (const c of comparisons) {
       const name = (c.name || c.file) + ': ' + c.a + ' · ' + c.b;
       const box = el('div', { class: 'charts' });
@@ -203,10 +206,11 @@
           mark: { type: 'point', filled: true, size: 80 },
           encoding: {
             x: { field: 'median_us', type: 'quantitative', scale: { type: 'log' },
-              title: 'median time per query (µs)' },
+              title: 'median time per query (µs)', axis: { format: '~s', labelOverlap: 'greedy' } },
             y: { field: 'relative_error', type: 'quantitative', scale: { type: 'log' },
               title: '|error| / model size' },
-            color: { field: 'backend', type: 'nominal', title: 'backend' },
+            color: { field: 'backend', type: 'nominal', title: 'backend',
+              scale: { domain: surfaceBackends } },
             shape: { field: 'shape', type: 'nominal', title: 'answers on' },
             tooltip: [{ field: 'label', title: 'backend' }, { field: 'distance', format: '.12g' },
               { field: 'error', format: '.3g' }, { field: 'median_us', format: '.1f' },
