@@ -257,6 +257,8 @@ const char* gjkStatusName(GjkStatus status) {
       return "degenerate";
     case GjkStatus::kInvalidInput:
       return "invalid_input";
+    case GjkStatus::kLowerBoundReached:
+      return "lower_bound_reached";
   }
   return "unknown";
 }
@@ -367,6 +369,10 @@ class Iteration {
         return finish(true);
       }
       if (boundsMet()) return finish(false);
+      if (inflatedLower() >= options_.stop_when_lower_reaches) {
+        result_.status = GjkStatus::kLowerBoundReached;
+        return finish(false);
+      }
       if (result_.iterations >= max_iterations_) {
         result_.status = GjkStatus::kMaxIterations;
         return finish(false);
@@ -375,6 +381,10 @@ class Iteration {
       if (!query(unitAlong(closest_.direction), added)) return invalid();
       points_size_ = std::max(points_size_, added.w.cwiseAbs().sum());
       if (boundsMet()) return finish(false);
+      if (inflatedLower() >= options_.stop_when_lower_reaches) {
+        result_.status = GjkStatus::kLowerBoundReached;
+        return finish(false);
+      }
       bool repeated = false;
       for (int i = 0; i < size_; ++i)
         repeated = repeated || at(i).w == added.w;

@@ -197,6 +197,12 @@ SurfaceDistance minimumDistance(const NurbsSurface& a, const NurbsSurface& b,
       const convex::PointSetSupport support_b(pb.points);
       convex::GjkOptions gjk;
       gjk.abs_tolerance = 0.25 * options.tolerance;
+      // From B's box centre towards A's: the first support pair starts near the closest one.
+      gjk.initial_direction = (pa.lo + pa.hi) - (pb.lo + pb.hi);
+      // A bound that reaches the pruning cutoff drops the pair: no need to tighten it further
+      // (the cutoff only falls later, so the pair stays dropped and its bound stays valid).
+      gjk.stop_when_lower_reaches =
+          best.distance + slack(0) - options.tolerance + slack(std::max(pa.depth, pb.depth));
       const convex::GjkResult hull = convex::gjkDistance(support_a, support_b, gjk);
       lower = std::max(lower, hull.lower_bound);
     }

@@ -460,6 +460,41 @@ TEST(Gjk, MaxIterationsExitKeepsBothBounds) {
   EXPECT_GT(stopped, 150);
 }
 
+TEST(Gjk, StopsOnceTheLowerBoundReachesTheCutoff) {
+  // A caller pruning above a cutoff: below the distance, GJK may stop early with a lower bound
+  // at or above the cutoff and still below the distance; above it, the answer is the usual one.
+  PortableRandom random(11);
+  int stopped_early = 0;
+  long saved = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    const Eigen::Matrix3Xd a = randomSet(random, 16, 2.0);
+    const Eigen::Matrix3Xd b =
+        separateAlong(a, randomSet(random, 16, 2.0), random.direction(), random.uniform(0.1, 2.0));
+    const Real reference = bruteForce(a, b).distance;
+    const double size = extent(a, b) + static_cast<double>(reference);
+    const GjkResult full = distanceOf(a, b, GjkOptions{});
+    for (const double fraction : {0.5, 0.9, 1.5}) {
+      GjkOptions options;
+      options.stop_when_lower_reaches = fraction * static_cast<double>(reference);
+      const GjkResult r = distanceOf(a, b, options);
+      EXPECT_LE(Real(r.lower_bound), reference) << "trial " << trial;
+      EXPECT_LE(static_cast<double>(reference), r.distance + 64 * kUnit * size);
+      if (r.status == GjkStatus::kLowerBoundReached) {
+        EXPECT_LT(fraction, 1.0) << "trial " << trial << ": above the distance it cannot stop";
+        EXPECT_GE(r.lower_bound, options.stop_when_lower_reaches);
+        EXPECT_LE(r.iterations, full.iterations);
+        saved += full.iterations - r.iterations;
+        ++stopped_early;
+      } else {
+        EXPECT_EQ(r.status, GjkStatus::kConverged) << "trial " << trial;
+      }
+    }
+  }
+  EXPECT_GT(stopped_early, 300);  // of the 600 cases with a cutoff below the distance
+  EXPECT_GT(saved, 0);
+  EXPECT_STREQ(gjkStatusName(GjkStatus::kLowerBoundReached), "lower_bound_reached");
+}
+
 // ---------------------------------------------------------------------------------------------
 // Degenerate inputs, each on its own.
 

@@ -2,6 +2,8 @@
 
 #include <type_traits>
 
+#include <limits>
+
 #include <Eigen/Core>
 
 #include <collido/geometry.h>
@@ -77,20 +79,24 @@ struct GjkOptions {
   /// The first search direction, from B towards A (e.g. the previous answer's
   /// point_a - point_b for coherent queries); zero or not finite: +x.
   Eigen::Vector3d initial_direction = Eigen::Vector3d::UnitX();
+  /// Stop as soon as the certified lower bound reaches this (status kLowerBoundReached): a
+  /// caller that drops the pair above a cutoff needs no tighter bounds. Infinity: never.
+  double stop_when_lower_reaches = std::numeric_limits<double>::infinity();
 };
 
 /// Why the iteration stopped. Whatever the reason, lower_bound never exceeds the true distance.
 enum class GjkStatus {
-  kConverged,      ///< the bounds met the tolerance, or the sets intersect
-  kMaxIterations,  ///< the limit stopped it before the bounds met
-  kDegenerate,     ///< rounding stalled the simplex (no closer point) and no other direction
-                   ///< tried certified the rest: only near touching, at gaps of a few
-                   ///< hundred ulps of the sets' size or coordinates
-  kInvalidInput,   ///< a support point or slack was not finite (an empty set, NaN or infinite
-                   ///< coordinates) or an inflation was negative or not finite
+  kConverged,          ///< the bounds met the tolerance, or the sets intersect
+  kMaxIterations,      ///< the limit stopped it before the bounds met
+  kDegenerate,         ///< rounding stalled the simplex (no closer point) and no other direction
+                       ///< tried certified the rest: only near touching, at gaps of a few
+                       ///< hundred ulps of the sets' size or coordinates
+  kInvalidInput,       ///< a support point or slack was not finite (an empty set, NaN or infinite
+                       ///< coordinates) or an inflation was negative or not finite
+  kLowerBoundReached,  ///< the lower bound reached GjkOptions::stop_when_lower_reaches
 };
 
-/// "converged", "max_iterations", "degenerate", "invalid_input".
+/// "converged", "max_iterations", "degenerate", "invalid_input", "lower_bound_reached".
 const char* gjkStatusName(GjkStatus status);
 
 /// The distance between two convex sets, bracketed: lower_bound <= true distance <= distance
