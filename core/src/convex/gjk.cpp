@@ -369,10 +369,7 @@ class Iteration {
         return finish(true);
       }
       if (boundsMet()) return finish(false);
-      if (inflatedLower() >= options_.stop_when_lower_reaches) {
-        result_.status = GjkStatus::kLowerBoundReached;
-        return finish(false);
-      }
+      if (lowerBoundReached()) return finish(false);
       if (result_.iterations >= max_iterations_) {
         result_.status = GjkStatus::kMaxIterations;
         return finish(false);
@@ -381,10 +378,7 @@ class Iteration {
       if (!query(unitAlong(closest_.direction), added)) return invalid();
       points_size_ = std::max(points_size_, added.w.cwiseAbs().sum());
       if (boundsMet()) return finish(false);
-      if (inflatedLower() >= options_.stop_when_lower_reaches) {
-        result_.status = GjkStatus::kLowerBoundReached;
-        return finish(false);
-      }
+      if (lowerBoundReached()) return finish(false);
       bool repeated = false;
       for (int i = 0; i < size_; ++i)
         repeated = repeated || at(i).w == added.w;
@@ -435,6 +429,13 @@ class Iteration {
   // The lower bound of the inflated sets: the radii rounded up, the difference rounded down.
   double inflatedLower() const {
     return std::max(0.0, roundedDown(lower_ - radii_ * (1.0 + 2.0 * kUnit)));
+  }
+
+  // The caller's cutoff: its lower bound is all it needs (GjkOptions::stop_when_lower_reaches).
+  bool lowerBoundReached() {
+    if (!(inflatedLower() >= options_.stop_when_lower_reaches)) return false;
+    result_.status = GjkStatus::kLowerBoundReached;
+    return true;
   }
 
   bool boundsMet() const {

@@ -184,6 +184,7 @@ SurfaceDistance minimumDistance(const NurbsSurface& a, const NurbsSurface& b,
       out.levels.resize(static_cast<std::size_t>(depth) + 1);
     return out.levels[static_cast<std::size_t>(depth)];
   };
+  const auto upper = [&] { return best.distance + slack(0); };
   const auto bound = [&](int ia, int ib) {
     const Patch& pa = tree_a.at(ia);
     const Patch& pb = tree_b.at(ib);
@@ -202,7 +203,7 @@ SurfaceDistance minimumDistance(const NurbsSurface& a, const NurbsSurface& b,
       // A bound that reaches the pruning cutoff drops the pair: no need to tighten it further
       // (the cutoff only falls later, so the pair stays dropped and its bound stays valid).
       gjk.stop_when_lower_reaches =
-          best.distance + slack(0) - options.tolerance + slack(std::max(pa.depth, pb.depth));
+          upper() - options.tolerance + slack(std::max(pa.depth, pb.depth));
       const convex::GjkResult hull = convex::gjkDistance(support_a, support_b, gjk);
       lower = std::max(lower, hull.lower_bound);
     }
@@ -216,7 +217,6 @@ SurfaceDistance minimumDistance(const NurbsSurface& a, const NurbsSurface& b,
   // tolerance.
   double unresolved = std::numeric_limits<double>::infinity();
   int refined_depth = 0;
-  const auto upper = [&] { return best.distance + slack(0); };
   while (!queue.empty()) {
     const Pending next = queue.top();
     if (next.bound >= upper() - options.tolerance) break;
