@@ -14,7 +14,7 @@ packages=(
   libassimp-dev nlohmann-json3-dev libcli11-dev libfccp-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libfcl-dev libbullet-dev libode-dev libtbb-dev
-  libocct-modeling-algorithms-dev libocct-data-exchange-dev
+  libocct-modeling-algorithms-dev libocct-data-exchange-dev libopenvdb-dev
   chromium
 )
 if ! command -v node >/dev/null 2>&1 || ! command -v npm >/dev/null 2>&1; then

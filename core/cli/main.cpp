@@ -22,6 +22,7 @@ int main(int argc, char** argv) {
   collido::cli::addPoseErrorCommand(app, exit_code);
   collido::cli::addTracksCommand(app, exit_code);
   collido::cli::addSurfaceDistanceCommand(app, plugins, exit_code);
+  collido::cli::addFrepCommand(app, plugins, exit_code);
   collido::cli::addRunCommand(app, plugins, exit_code);
   collido::cli::addConformanceCommand(app, exit_code);
   collido::cli::addStudyCommands(app, plugins, exit_code);

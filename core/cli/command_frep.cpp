@@ -1,0 +1,314 @@
+// collido frep: the guaranteed collision test between FRep solids (the seed method's octree
+// with interval bounds) frame by frame, and the usual alternative measured against it:
+// polygonize each solid at several resolutions, then ask mesh backends.
+#include <chrono>
+#include <filesystem>
+#include <iostream>
+#include <map>
+#include <optional>
+
+#include <nlohmann/json.hpp>
+
+#include <collido/frep/collision.h>
+#include <collido/frep/polygonize.h>
+#include <collido/host/backend_instance.h>
+#include <collido/runner/runner.h>
+#include <collido/runner/statistics.h>
+#include <collido/runner/text_table.h>
+#include <collido/scene/frep_file.h>
+#include <collido/study/result_store.h>
+
+#include "commands.h"
+
+namespace collido::cli {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+using Json = nlohmann::json;
+
+struct FrepArguments {
+  std::string file;
+  double precision = 0.0;  // 0: the file's
+  int repetitions = 3;
+  std::vector<std::string> backends;
+  std::vector<int> resolutions{16, 32, 64};
+  std::string json_path;
+};
+
+double millisecondsSince(Clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+std::string pairName(const FrepFile& file, std::size_t pair) {
+  return file.solids[file.pairs[pair].first].name + " / " +
+         file.solids[file.pairs[pair].second].name;
+}
+
+// The guaranteed answer of one pair at one frame.
+struct Reference {
+  frep::CollisionVerdict verdict;
+};
+
+// How a mesh backend's boolean answer compares with the guaranteed one.
+std::string outcomeOf(frep::CollisionVerdict truth, bool intersecting) {
+  switch (truth) {
+    case frep::CollisionVerdict::kColliding:
+      return intersecting ? "agrees" : "missed overlap";
+    case frep::CollisionVerdict::kSeparated:
+      return intersecting ? "false contact" : "agrees";
+    case frep::CollisionVerdict::kTouching:
+      return "within precision";
+    case frep::CollisionVerdict::kUndecided:
+      break;
+  }
+  return "no reference";
+}
+
+// A polygonized solid: its mesh (or why there is none) and what it cost.
+struct Polygonized {
+  std::optional<TriangleMesh> mesh;
+  std::string error;
+  double ms = 0.0;
+};
+
+int runFrep(const FrepArguments& args, const PluginOptions& plugin_options) {
+  Result<FrepFile> loaded = loadFrepFile(args.file);
+  if (!loaded.ok()) {
+    std::cerr << "error: " << loaded.status().message() << "\n";
+    return 2;
+  }
+  const FrepFile& file = loaded.value();
+  frep::CollisionOptions options;
+  options.precision = args.precision > 0 ? args.precision : file.precision;
+
+  Json json = {{"collidoscope_frep", 1}, {"file", args.file},
+               {"name", file.name},      {"precision", options.precision},
+               {"seed", Json::array()},  {"comparators", Json::array()}};
+
+  // The seed method, per frame and pair.
+  std::vector<std::vector<Reference>> truth(file.times.size());
+  std::vector<std::vector<std::string>> rows;
+  int unexpected = 0;
+  for (std::size_t f = 0; f < file.times.size(); ++f) {
+    const double time = file.times[f];
+    for (std::size_t p = 0; p < file.pairs.size(); ++p) {
+      const frep::SolidPtr a = file.solids[file.pairs[p].first].at(time);
+      const frep::SolidPtr b = file.solids[file.pairs[p].second].at(time);
+      std::vector<double> ms;
+      frep::CollisionResult result;
+      try {
+        for (int rep = 0; rep < args.repetitions; ++rep) {
+          const Clock::time_point start = Clock::now();
+          result = frep::collide(*a, *b, options);
+          ms.push_back(millisecondsSince(start));
+        }
+      } catch (const std::invalid_argument& error) {
+        std::cerr << "error: " << args.file << ": " << pairName(file, p) << ": " << error.what()
+                  << "\n";
+        return 2;
+      }
+      truth[f].push_back({result.verdict});
+      const std::string verdict = frep::verdictName(result.verdict);
+      const std::string& expected = file.expected[p];
+      const bool as_expected = expected.empty() || expected == verdict;
+      std::string shown = verdict;
+      if (!as_expected) {
+        ++unexpected;
+        shown += " (expected " + expected + ")";
+      }
+      rows.push_back({formatNumber("%.3g", time), pairName(file, p), shown,
+                      std::to_string(result.cells), std::to_string(result.max_depth),
+                      std::to_string(result.undecided_cells),
+                      formatNumber("%.3f", quantile(ms, 0.5))});
+      Json levels = Json::array();
+      for (const frep::CollisionLevel& level : result.levels)
+        levels.push_back(
+            {{"cells", level.cells}, {"discarded", level.discarded}, {"split", level.split}});
+      Json entry = {{"time", time},
+                    {"pair", pairName(file, p)},
+                    {"verdict", verdict},
+                    {"expected", expected},
+                    {"cells", result.cells},
+                    {"max_depth", result.max_depth},
+                    {"undecided_cells", result.undecided_cells},
+                    {"median_ms", quantile(ms, 0.5)},
+                    {"levels", levels}};
+      if (result.verdict == frep::CollisionVerdict::kColliding)
+        entry["witness"] = {result.witness.x(), result.witness.y(), result.witness.z()};
+      json["seed"].push_back(entry);
+    }
+  }
+  std::cout << file.name << " (" << args.file << "): guaranteed collision at precision "
+            << formatNumber("%.3g", options.precision) << "\n"
+            << formatTextTable(
+                   {"time", "pair", "verdict", "cells", "depth", "undecided cells", "median ms"},
+                   rows, 2);
+
+  if (!args.backends.empty()) {
+    const PluginDiscovery found =
+        discoverPlugins(plugin_options.paths, !plugin_options.no_defaults);
+    Result<std::vector<BackendSpec>> specs = resolveBackends(args.backends, found.plugins);
+    if (!specs.ok()) {
+      std::cerr << "error: " << specs.status().message() << "\n";
+      return 2;
+    }
+    // Meshes per resolution, frame and solid: static solids are polygonized once.
+    std::map<std::tuple<int, std::size_t, std::size_t>, Polygonized> meshes;
+    const auto meshOf = [&](int resolution, std::size_t frame, std::size_t solid) -> Polygonized& {
+      const std::size_t key_frame = file.solids[solid].animated ? frame : 0;
+      auto key = std::make_tuple(resolution, key_frame, solid);
+      auto found_mesh = meshes.find(key);
+      if (found_mesh != meshes.end()) return found_mesh->second;
+      Polygonized& out = meshes[key];
+      const frep::SolidPtr shape = file.solids[solid].at(file.times[key_frame]);
+      const Clock::time_point start = Clock::now();
+      Result<TriangleMesh> mesh = frep::polygonize(*shape, shape->bounds(), resolution);
+      out.ms = millisecondsSince(start);
+      if (mesh.ok())
+        out.mesh = std::move(mesh.value());
+      else
+        out.error = file.solids[solid].name + ": " + mesh.status().message();
+      return out;
+    };
+    std::vector<std::vector<std::string>> summary;
+    for (const BackendSpec& spec : specs.value()) {
+      Result<std::unique_ptr<BackendInstance>> created =
+          BackendInstance::create(spec.library, spec.variant, spec.options);
+      if (!created.ok()) {
+        summary.push_back(
+            {spec.label(), "-", "-", "-", "-", "-", "-", "-", created.status().message()});
+        continue;
+      }
+      BackendInstance& backend = *created.value();
+      for (const int resolution : args.resolutions) {
+        std::map<std::string, int> outcomes;
+        std::vector<double> query_us;
+        double charged_ms = 0.0;  // polygonization and build, each mesh once
+        std::size_t triangles = 0;
+        std::string failure;
+        Json frames = Json::array();
+        for (std::size_t f = 0; f < file.times.size() && failure.empty(); ++f) {
+          for (std::size_t p = 0; p < file.pairs.size() && failure.empty(); ++p) {
+            const std::size_t ids[2] = {file.pairs[p].first, file.pairs[p].second};
+            ModelHandle models[2] = {0, 0};
+            double frame_ms = 0.0;
+            for (int k = 0; k < 2; ++k) {
+              Polygonized& shape = meshOf(resolution, f, ids[k]);
+              if (!shape.mesh) {
+                failure = shape.error;
+                break;
+              }
+              const bool fresh = f == 0 || file.solids[ids[k]].animated;
+              if (fresh) frame_ms += shape.ms;
+              const Clock::time_point start = Clock::now();
+              Result<ModelHandle> built =
+                  backend.build(shape.mesh->view(), BuildNeeds{QueryKindSet(QueryKind::kBoolean)});
+              if (fresh) frame_ms += millisecondsSince(start);
+              if (!built.ok()) {
+                failure = built.status().message();
+                break;
+              }
+              models[k] = built.value();
+              if (f == 0 && p == 0) triangles += shape.mesh->triangleCount();
+            }
+            if (failure.empty()) {
+              QueryRequest request;
+              request.kind = QueryKind::kBoolean;
+              QueryResult answer;
+              std::vector<double> us;
+              for (int rep = 0; rep < args.repetitions && failure.empty(); ++rep) {
+                const Clock::time_point start = Clock::now();
+                const Status s = backend.query(models[0], Pose::Identity(), models[1],
+                                               Pose::Identity(), request, answer);
+                us.push_back(millisecondsSince(start) * 1e3);
+                if (!s.ok()) failure = s.message();
+              }
+              if (failure.empty()) {
+                const std::string outcome = outcomeOf(truth[f][p].verdict, answer.intersecting);
+                ++outcomes[outcome];
+                query_us.push_back(quantile(us, 0.5));
+                charged_ms += frame_ms + quantile(us, 0.5) * 1e-3;
+                frames.push_back({{"time", file.times[f]},
+                                  {"pair", pairName(file, p)},
+                                  {"intersecting", answer.intersecting},
+                                  {"outcome", outcome},
+                                  {"query_us", quantile(us, 0.5)},
+                                  {"ms_with_meshing", frame_ms + quantile(us, 0.5) * 1e-3}});
+              }
+            }
+            for (ModelHandle model : models)
+              if (model != 0) (void)backend.release(model);
+          }
+        }
+        const std::size_t queries = file.times.size() * file.pairs.size();
+        const int wrong = outcomes["missed overlap"] + outcomes["false contact"];
+        summary.push_back(
+            {spec.label(), std::to_string(resolution), std::to_string(triangles),
+             std::to_string(outcomes["agrees"]), std::to_string(outcomes["missed overlap"]),
+             std::to_string(outcomes["false contact"]),
+             std::to_string(outcomes["within precision"]),
+             failure.empty() ? formatNumber("%.3f", charged_ms / static_cast<double>(queries))
+                             : "-",
+             failure.empty() ? "ok" : "failed: " + failure});
+        json["comparators"].push_back(
+            {{"backend", spec.label()},
+             {"resolution", resolution},
+             {"triangles_first_pair", triangles},
+             {"agrees", outcomes["agrees"]},
+             {"missed", outcomes["missed overlap"]},
+             {"false_contacts", outcomes["false contact"]},
+             {"within_precision", outcomes["within precision"]},
+             {"wrong", wrong},
+             {"ms_per_query_with_meshing", charged_ms / static_cast<double>(queries)},
+             {"median_query_us", query_us.empty() ? 0.0 : quantile(query_us, 0.5)},
+             {"status", failure.empty() ? "ok" : failure},
+             {"frames", frames}});
+      }
+    }
+    std::cout << "\nMesh backends on polygonizations (OpenVDB, cells along the longest side), "
+                 "against the guaranteed answers:\n"
+              << formatTextTable({"backend", "resolution", "triangles", "agree", "missed",
+                                  "false contact", "within precision", "ms / query", "status"},
+                                 summary, 2)
+              << "  ms / query: polygonization and build where a mesh changed, plus the query\n";
+  }
+  if (!args.json_path.empty()) {
+    if (Status s = study::writeFileAtomically(args.json_path, json.dump(1) + "\n"); !s.ok()) {
+      std::cerr << "error: " << s.message() << "\n";
+      return 2;
+    }
+  }
+  if (unexpected > 0) {
+    std::cerr << "error: " << unexpected << " answers differ from the file's expected ones\n";
+    return 1;
+  }
+  return 0;
+}
+
+}  // namespace
+
+void addFrepCommand(CLI::App& app, const PluginOptions& plugins, int& exit_code) {
+  auto args = std::make_shared<FrepArguments>();
+  CLI::App* command = app.add_subcommand(
+      "frep",
+      "Guaranteed collision between FRep solids of an FRep file, frame by frame (octree with "
+      "interval bounds: colliding with a witness, separated with a proof, or touching within the "
+      "precision), and mesh backends on polygonizations against it. Exit code 1 when an answer "
+      "differs from the file's expected one.");
+  command->add_option("file", args->file, "FRep file (JSON, see docs/frep.md)")->required();
+  command->add_option("--precision", args->precision, "octree cell size (default: the file's)")
+      ->check(CLI::PositiveNumber);
+  command->add_option("--repetitions", args->repetitions, "timed runs (median reported)")
+      ->check(CLI::Range(1, 1000));
+  command
+      ->add_option("--backends", args->backends,
+                   "mesh backends to run on polygonizations (obbtree, fcl:obb, bullet, ode, ...)")
+      ->delimiter(',');
+  command->add_option("--resolutions", args->resolutions, "grid cells along the longest side")
+      ->delimiter(',')
+      ->check(CLI::Range(2, 1024));
+  command->add_option("--json", args->json_path, "also write the results as JSON");
+  command->callback([args, &plugins, &exit_code] { exit_code = runFrep(*args, plugins); });
+}
+
+}  // namespace collido::cli

@@ -1,0 +1,17 @@
+// Reads an FRep expression from scene JSON at a given time (animated parameters are evaluated
+// there). Errors throw SceneError naming the file and the JSON path.
+#pragma once
+
+#include <collido/frep/solid.h>
+
+#include "scene_reader.h"
+
+namespace collido::scene_reading {
+
+/// The solid described by `node` at `time` (seconds).
+frep::SolidPtr readFrepSolid(const Reader& r, const Node& node, double time);
+
+/// Whether any parameter under `node` changes with time.
+bool frepIsAnimated(const Node& node);
+
+}  // namespace collido::scene_reading
