@@ -10,7 +10,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake ninja-build ccache pkg-config
-  libeigen3-dev libcgal-dev libgmp-dev libmpfr-dev libboost-dev
+  libeigen3-dev libcgal-dev libgmp-dev libmpfr-dev libboost-dev libpng-dev
   libassimp-dev nlohmann-json3-dev libcli11-dev libfccp-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libfcl-dev libbullet-dev libode-dev libtbb-dev

@@ -2,7 +2,8 @@
 # The default study: installs what is missing, builds Release, and runs every backend variant
 # on the bundled scenes and the stress scenes with the default sweep (scenes/sweeps/default.json),
 # each combination in its own worker process, every answer checked against the exact oracle.
-# Then compares the NURBS distance backends on scenes/surfaces/ (collido surface-distance).
+# Then compares the NURBS distance backends on scenes/surfaces/ (collido surface-distance) and
+# the FRep collision test against polygonized meshes on scenes/frep/ (collido frep).
 # Prints the table and writes the dashboard. Results: build/release/study/ (table.txt,
 # records.jsonl, summary.json, robustness.txt, report.html). An interrupted run resumes where it
 # stopped; a finished one is kept as build/release/study.previous and the new report compares
@@ -59,8 +60,26 @@ for file in scenes/surfaces/*.json; do
     fi
   fi
 done
+# FRep solids: each FRep file by the seed's guaranteed octree test, and mesh backends on OpenVDB
+# polygonizations against it, with a ray-cast preview; one process per file.
+mkdir -p "$out/frep"
+frep_files=()
+for file in scenes/frep/*.json; do
+  json="$out/frep/$(basename "$file")"
+  if build/release/collido frep "$file" --backends obbtree,fcl:obb,bullet,ode \
+      --resolutions 16,32,64,128 --repetitions 3 --json "$json" \
+      --preview "${json%.json}.png" > "${json%.json}.txt"; then
+    frep_files+=(--frep "$json")
+  else
+    echo "warning: collido frep $file failed (exit $?): see ${json%.json}.txt" >&2
+    if [[ -f "$json" ]]; then
+      frep_files+=(--frep "$json")
+    fi
+  fi
+done
 baseline=()
 if [[ -f "$previous/.complete" ]]; then
   baseline=(--baseline "$previous")
 fi
-build/release/collido report "$out" "${baseline[@]}" "${surface_files[@]}" -o "$out/report.html"
+build/release/collido report "$out" "${baseline[@]}" "${surface_files[@]}" "${frep_files[@]}" \
+  -o "$out/report.html"

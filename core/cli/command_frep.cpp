@@ -11,6 +11,7 @@
 
 #include <collido/frep/collision.h>
 #include <collido/frep/polygonize.h>
+#include <collido/frep/preview.h>
 #include <collido/host/backend_instance.h>
 #include <collido/runner/runner.h>
 #include <collido/runner/statistics.h>
@@ -33,7 +34,43 @@ struct FrepArguments {
   std::vector<std::string> backends;
   std::vector<int> resolutions{16, 32, 64};
   std::string json_path;
+  std::string preview_path;
+  std::optional<double> preview_time;
+  std::vector<int> preview_size{480, 360};
 };
+
+// The preview: every solid at one frame (the asked time, else the first frame with a collision,
+// else the middle one), with that frame's first witness as a red dot.
+Status writePreview(const FrepArguments& args, const FrepFile& file, const Json& seed) {
+  static const Eigen::Vector3d kPalette[] = {
+      {0.35, 0.55, 0.85}, {0.95, 0.65, 0.25}, {0.45, 0.75, 0.45}, {0.7, 0.5, 0.8}, {0.6, 0.6, 0.6}};
+  double time = file.times[file.times.size() / 2];
+  std::optional<Eigen::Vector3d> witness;
+  for (const Json& entry : seed) {
+    const double t = entry["time"].get<double>();
+    if (args.preview_time && t != *args.preview_time) continue;
+    if (entry.contains("witness")) {
+      time = t;
+      witness =
+          Eigen::Vector3d(entry["witness"][0].get<double>(), entry["witness"][1].get<double>(),
+                          entry["witness"][2].get<double>());
+      break;
+    }
+  }
+  if (args.preview_time) time = *args.preview_time;
+  std::vector<frep::SolidPtr> keep;
+  std::vector<frep::PreviewSolid> solids;
+  for (std::size_t i = 0; i < file.solids.size(); ++i) {
+    keep.push_back(file.solids[i].at(time));
+    solids.push_back({keep.back().get(), kPalette[i % std::size(kPalette)]});
+  }
+  frep::PreviewOptions options;
+  options.width = args.preview_size[0];
+  options.height = args.preview_size[1];
+  Result<frep::Image> image = frep::renderPreview(solids, witness, options);
+  if (!image.ok()) return image.status();
+  return frep::writePng(image.value(), args.preview_path);
+}
 
 double millisecondsSince(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
@@ -272,6 +309,19 @@ int runFrep(const FrepArguments& args, const PluginOptions& plugin_options) {
                                  summary, 2)
               << "  ms / query: polygonization and build where a mesh changed, plus the query\n";
   }
+  if (!args.preview_path.empty()) {
+    if (Status s = writePreview(args, file, json["seed"]); !s.ok()) {
+      std::cerr << "error: " << s.message() << "\n";
+      return 2;
+    }
+    // Relative to the JSON file when both are written (the dashboard finds it there).
+    const std::filesystem::path picture = std::filesystem::absolute(args.preview_path);
+    json["preview"] =
+        args.json_path.empty()
+            ? picture.string()
+            : picture.lexically_relative(std::filesystem::absolute(args.json_path).parent_path())
+                  .string();
+  }
   if (!args.json_path.empty()) {
     if (Status s = study::writeFileAtomically(args.json_path, json.dump(1) + "\n"); !s.ok()) {
       std::cerr << "error: " << s.message() << "\n";
@@ -308,6 +358,15 @@ void addFrepCommand(CLI::App& app, const PluginOptions& plugins, int& exit_code)
       ->delimiter(',')
       ->check(CLI::Range(2, 1024));
   command->add_option("--json", args->json_path, "also write the results as JSON");
+  command->add_option("--preview", args->preview_path,
+                      "write a ray-cast picture of the solids (PNG) at the first frame with a "
+                      "collision (its witness as a red dot), else the middle frame, or at "
+                      "--preview-time");
+  command->add_option("--preview-time", args->preview_time, "frame time of the preview");
+  command->add_option("--preview-size", args->preview_size, "width,height in pixels")
+      ->delimiter(',')
+      ->expected(2)
+      ->check(CLI::Range(16, 4096));
   command->callback([args, &plugins, &exit_code] { exit_code = runFrep(*args, plugins); });
 }
 

@@ -22,6 +22,7 @@ struct ReportArguments {
   std::string title;
   std::vector<std::string> pose_error;        ///< collido pose-error --json files
   std::vector<std::string> surface_distance;  ///< collido surface-distance --json files
+  std::vector<std::string> frep;              ///< collido frep --json files
 };
 
 // A results file written by another command's --json (`marker` is its format key, `array` a
@@ -42,6 +43,24 @@ Result<nlohmann::json> readResultsFile(const std::string& path, const char* mark
   } catch (const nlohmann::json::exception& e) {
     return Status(StatusCode::kInvalidArgument, path + ": not valid JSON: " + e.what());
   }
+}
+
+// The FRep file's preview picture (named relative to the JSON file) inlined as a data URI, so
+// that the dashboard stays one file that opens offline.
+Result<nlohmann::json> withInlinePreview(nlohmann::json comparison, const std::string& json_path) {
+  if (!comparison.contains("preview")) return comparison;
+  if (!comparison["preview"].is_string())
+    return Status(StatusCode::kInvalidArgument, json_path + ": /preview: expected a file name");
+  const std::filesystem::path picture =
+      std::filesystem::path(json_path).parent_path() / comparison["preview"].get<std::string>();
+  std::ifstream in(picture, std::ios::binary);
+  if (!in) {
+    return Status(StatusCode::kInvalidArgument,
+                  json_path + ": /preview: " + picture.string() + " not found");
+  }
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  comparison["preview_png"] = "data:image/png;base64," + study::base64(bytes);
+  return comparison;
 }
 
 Result<std::vector<study::CombinationResult>> readStudy(const std::string& directory) {
@@ -93,6 +112,17 @@ int runReport(const ReportArguments& args) {
     }
     data["surfaces"].push_back(std::move(comparison).value());
   }
+  data["frep"] = nlohmann::json::array();
+  for (const std::string& path : args.frep) {
+    Result<nlohmann::json> comparison =
+        readResultsFile(path, "collidoscope_frep", "comparators", "collido frep --json");
+    if (comparison.ok()) comparison = withInlinePreview(std::move(comparison).value(), path);
+    if (!comparison.ok()) {
+      std::cerr << "error: --frep: " << comparison.status().message() << "\n";
+      return 2;
+    }
+    data["frep"].push_back(std::move(comparison).value());
+  }
   Result<std::string> html = study::renderReport(data, study::webDirectory(args.web));
   if (!html.ok()) {
     std::cerr << "error: " << html.status().message() << "\n";
@@ -132,6 +162,9 @@ void addReportCommand(CLI::App& app, int& exit_code) {
   command->add_option("--surface-distance", args->surface_distance,
                       "NURBS distance comparisons to show (collido surface-distance --json "
                       "files; repeatable)");
+  command->add_option("--frep", args->frep,
+                      "FRep comparisons to show (collido frep --json files, with their --preview "
+                      "pictures; repeatable)");
   command->callback([args, &exit_code] { exit_code = runReport(*args); });
 }
 

@@ -514,7 +514,8 @@ TEST(SceneBadInput, ZeroSphereRadius) {
   EXPECT_TRUE(rejected(parse(scene), {"/objects/0/shape/radius", "> 0"}));
 }
 
-// "bad.json: /objects/0/shape: give exactly one of 'mesh' (a file) or 'generator'"
+// "bad.json: /objects/0/shape: give exactly one of 'mesh' (a file), 'generator' or 'frep' (a
+// solid)"
 TEST(SceneBadInput, ShapeWithBothMeshAndGenerator) {
   Json scene = validScene();
   scene["objects"][0]["shape"]["mesh"] = "meshes/bunny.obj";

@@ -3,7 +3,8 @@
 # two resolutions so the scaling view has curves, and a small stress scene so the robustness
 # matrix has cells, ODE's all-pairs ones unsupported, a deforming scene for the view over
 # time, and a small scene posed from tracked markers; the tori's distance query fills the distance
-# view; a NURBS comparison on the sphere zones fills the surfaces view), writes its report with
+# view; a NURBS comparison on the sphere zones fills the surfaces view; an FRep comparison with
+# its preview picture fills the FRep view), writes its report with
 # itself as the
 # baseline, and opens it in headless Chromium (web/tests/report.test.mjs): every chart drawn,
 # no console error, no network request.
@@ -46,10 +47,13 @@ JSON
 "$collido" surface-distance "$source_dir/scenes/surfaces/sphere_zones.json" --seed-only \
   --backends nurbs:hull,obbtree --tessellations 8,16 --repetitions 1 \
   --json "$work/surfaces.json" > /dev/null
+"$collido" frep "$source_dir/scenes/frep/seed_quadric.json" --repetitions 1 \
+  --backends obbtree --resolutions 8,16 --json "$work/frep.json" \
+  --preview "$work/frep.png" --preview-size 96,72 > /dev/null
 "$collido" report "$work/study" --baseline "$work/study" --pose-error "$work/pose_error.json" \
-  --surface-distance "$work/surfaces.json" -o "$work/report.html"
+  --surface-distance "$work/surfaces.json" --frep "$work/frep.json" -o "$work/report.html"
 COLLIDO_REPORT_HTML="$work/report.html" \
-COLLIDO_EXPECT_VIEWS="time-vs-error,distance-error,surfaces,robustness,time-distribution,deforming,tracking,pose-error,memory,scaling,needs,comparison" \
+COLLIDO_EXPECT_VIEWS="time-vs-error,distance-error,surfaces,frep,robustness,time-distribution,deforming,tracking,pose-error,memory,scaling,needs,comparison" \
 COLLIDO_EXPECT_SECTION_TEXT="robustness=unsupported,robustness=touching" \
 COLLIDO_REPORT_SCREENSHOT="$work/report.png" \
   node --test "$source_dir/web/tests/"

@@ -234,6 +234,73 @@
     }
   }
 
+  // --- FRep solids: guaranteed collision against polygonization (collido frep files) ------------
+  {
+    const s = section('frep', 'FRep solids: run time against error',
+      'From collido frep comparisons (collido report --frep FILE; tools/study.sh runs every ' +
+      'scenes/frep file): per FRep file, the seed method\'s guaranteed octree test (frep:octree, ' +
+      'never wrong: its answers are the reference) against mesh backends on OpenVDB ' +
+      'polygonizations at several grid resolutions. Each point is the time per query (log scale; ' +
+      'for the mesh route it includes polygonizing and building every mesh that changed in that ' +
+      'frame) against the share of wrong answers (missed overlaps and false contacts; frames the ' +
+      'octree calls touching within its precision are not counted). Beside each chart, the ' +
+      'preview (the witness of the first collision as a red dot) and the octree\'s verdicts.');
+    const comparisons = data.frep || [];
+    if (comparisons.length === 0) empty(s, 'No FRep comparison given (collido frep FILE ' +
+      '--backends ... --json F --preview P.png, then collido report DIR --frep F).');
+    const frepBackends = ['frep:octree', ...new Set(comparisons.flatMap(
+      (c) => c.comparators.map((b) => b.backend)))].sort();
+    for (const c of comparisons) {
+      const name = c.name || c.file;
+      const box = el('div', { class: 'charts' });
+      s.appendChild(box);
+      const seedMs = (c.seed || []).map((r) => r.median_ms).sort((a, b) => a - b);
+      const median = seedMs.length ? seedMs[Math.floor((seedMs.length - 1) / 2)] : null;
+      const values = c.comparators.filter((b) => b.status === 'ok').map((b) => {
+        const decided = b.agrees + b.missed + b.false_contacts;
+        return { backend: b.backend, label: b.backend + ' @' + b.resolution,
+          resolution: b.resolution, ms: Math.max(b.ms_per_query_with_meshing, 1e-4),
+          wrong_rate: decided > 0 ? b.wrong / decided : 0, missed: b.missed,
+          false_contacts: b.false_contacts, triangles: b.triangles_first_pair };
+      });
+      if (median !== null) {
+        values.push({ backend: 'frep:octree', label: 'frep:octree (ε ' + c.precision + ')',
+          resolution: null, ms: Math.max(median, 1e-4), wrong_rate: 0, missed: 0,
+          false_contacts: 0, triangles: null });
+      }
+      chart(box, 'frep:' + name, {
+        title: name, width: 420, height: 240, data: { values: values },
+        mark: { type: 'point', filled: true, size: 80 },
+        encoding: {
+          x: { field: 'ms', type: 'quantitative', scale: { type: 'log' },
+            title: 'time per query, ms (mesh route: with polygonization)' },
+          y: { field: 'wrong_rate', type: 'quantitative', title: 'share of wrong answers',
+            scale: { domain: [0, 1] } },
+          color: { field: 'backend', type: 'nominal', title: 'backend',
+            scale: { domain: frepBackends } },
+          tooltip: [{ field: 'label', title: 'backend' }, { field: 'ms', format: '.3f' },
+            { field: 'wrong_rate', format: '.2f' }, { field: 'missed' },
+            { field: 'false_contacts', title: 'false contacts' }, { field: 'triangles' }] } });
+      if (c.preview_png) {
+        box.appendChild(el('img', { class: 'preview', src: c.preview_png,
+          alt: 'ray-cast preview of ' + name, 'data-view': 'frep-preview:' + name }));
+      }
+      const verdicts = {};
+      for (const r of c.seed || []) verdicts[r.verdict] = (verdicts[r.verdict] || 0) + 1;
+      const cells = Math.max(0, ...(c.seed || []).map((r) => r.cells));
+      table(s, ['pair queries', 'verdicts', 'octree median ms', 'max ms', 'max cells', 'precision'],
+        [[String((c.seed || []).length),
+          Object.entries(verdicts).map(([k, v]) => v + ' ' + k).join(', '),
+          fmt(median, 3), fmt(seedMs.length ? seedMs[seedMs.length - 1] : null, 3), String(cells),
+          String(c.precision)]]);
+      const failed = c.comparators.filter((b) => b.status !== 'ok');
+      if (failed.length > 0) {
+        s.appendChild(el('ul', {}, failed.map((b) => el('li', { text: b.backend + ' @' +
+          b.resolution + ': ' + b.status }))));
+      }
+    }
+  }
+
   // --- robustness matrix ----------------------------------------------------------------------
   {
     const s = section('robustness', 'Robustness matrix',

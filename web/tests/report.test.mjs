@@ -63,7 +63,11 @@ test('every chart of the report renders without console errors', async () => {
       assert.ok(charts.some((c) => c.view.startsWith(view)), `no chart for view ${view}`);
     }
     const sections = await page.$$eval('section.view', (nodes) => nodes.map((n) => n.id));
-    for (const id of ['time-vs-error', 'distance-error', 'surfaces', 'robustness', 'time-distributions', 'deforming', 'tracking',
+    // Inlined pictures (the FRep previews) decoded: a broken data URI leaves them 0 wide.
+    const pictures = await page.$$eval('img', (nodes) => nodes.map((n) => ({
+      view: n.getAttribute('data-view'), width: n.naturalWidth })));
+    for (const p of pictures) assert.ok(p.width > 0, `picture ${p.view} did not decode`);
+    for (const id of ['time-vs-error', 'distance-error', 'surfaces', 'frep', 'robustness', 'time-distributions', 'deforming', 'tracking',
       'pose-error', 'memory', 'scaling',
       'failures', 'needs', 'comparison', 'table']) {
       assert.ok(sections.includes(id), `missing section ${id}`);

@@ -19,12 +19,14 @@
 
 #include <nlohmann/json.hpp>
 
+#include <collido/frep/polygonize.h>
 #include <collido/mesh/mesh_io.h>
 #include <collido/mesh/procedural.h>
 #include <collido/scene/scene.h>
 #include <collido/stress/stress_cases.h>
 
 #include "deformation_reader.h"
+#include "frep_solid_reader.h"
 #include "marker_reader.h"
 #include "scene_motion.h"
 #include "scene_reader.h"
@@ -268,11 +270,16 @@ class ShapeLoader {
 
   LoadedShape load(const Node& node) {
     const Reader& r = reader_;
-    if (!node.value.is_object()) r.fail(node, "expected an object with 'mesh' or 'generator'");
-    if (node.has("mesh") == node.has("generator")) {
-      r.fail(node, "give exactly one of 'mesh' (a file) or 'generator'");
+    if (!node.value.is_object())
+      r.fail(node, "expected an object with 'mesh', 'generator' or 'frep'");
+    const int sources = static_cast<int>(node.has("mesh")) +
+                        static_cast<int>(node.has("generator")) +
+                        static_cast<int>(node.has("frep"));
+    if (sources != 1) {
+      r.fail(node, "give exactly one of 'mesh' (a file), 'generator' or 'frep' (a solid)");
     }
     if (node.has("generator")) return generate(node);
+    if (node.has("frep")) return polygonizeSolid(node);
     LoadedShape shape = loadFile(node);
     budget_.charge(node, shape.report.source, static_cast<double>(shape.mesh->triangleCount()));
     return shape;
@@ -318,6 +325,33 @@ class ShapeLoader {
     if (!mesh.ok()) r.fail(node, mesh.status().message());
     // Finite parameters can still overflow in the shape (a radius near the double maximum).
     if (Status s = validateMesh(mesh.value(), text); !s.ok()) r.fail(node, s.message());
+    LoadedShape shape;
+    shape.report.source = text;
+    shape.report.importer = "generator";
+    inspectMesh(mesh.value(), shape.report);
+    shape.mesh = std::make_shared<const TriangleMesh>(std::move(mesh).value());
+    return shape;
+  }
+
+  // An FRep solid (docs/frep.md) polygonized at load with OpenVDB: `cells` grid cells along the
+  // longest side of its bounds (scaled by the load's resolution). Its animated parameters take
+  // their values at time 0; `collido frep` checks animated solids frame by frame.
+  LoadedShape polygonizeSolid(const Node& node) {
+    const Reader& r = reader_;
+    r.expectObject(node, {"frep", "cells"});
+    const int cells = r.resolved(static_cast<int>(r.integer(node, "cells", 64, 2, 512)), 2);
+    const frep::SolidPtr solid = scene_reading::readFrepSolid(r, node.at("frep"), 0.0);
+    const Eigen::AlignedBox3d bounds = solid->bounds();
+    if (bounds.isEmpty()) r.fail(node.at("frep"), "the solid is empty");
+    if (!bounds.min().allFinite() || !bounds.max().allFinite()) {
+      r.fail(node.at("frep"),
+             "the solid is unbounded: intersect it with a bounded one to polygonize it");
+    }
+    Result<TriangleMesh> mesh = frep::polygonize(*solid, bounds, std::min(cells, 1024));
+    if (!mesh.ok()) r.fail(node, mesh.status().message());
+    const std::string text = "FRep solid polygonized at " + std::to_string(cells) + " cells";
+    if (Status s = validateMesh(mesh.value(), text); !s.ok()) r.fail(node, s.message());
+    budget_.charge(node, text, static_cast<double>(mesh.value().triangleCount()));
     LoadedShape shape;
     shape.report.source = text;
     shape.report.importer = "generator";
