@@ -19,7 +19,7 @@ seconds="${1:-60}"
 [[ $# -gt 0 ]] && shift
 targets=("$@")
 if [[ ${#targets[@]} -eq 0 ]]; then
-  targets=(scene_json_fuzz mesh_import_fuzz tree_query_fuzz surface_json_fuzz)
+  targets=(scene_json_fuzz mesh_import_fuzz tree_query_fuzz surface_json_fuzz frep_json_fuzz)
 fi
 if ! [[ "$seconds" =~ ^[0-9]+$ ]] || [[ "$seconds" -eq 0 ]]; then
   echo "usage: tools/fuzz.sh [SECONDS per target] [TARGET...]" >&2

@@ -143,6 +143,11 @@ int runFrep(const FrepArguments& args, const PluginOptions& plugin_options) {
         std::cerr << "error: " << args.file << ": " << pairName(file, p) << ": " << error.what()
                   << "\n";
         return 2;
+      } catch (const std::exception& error) {
+        // Boost.Interval refuses some degenerate operations (an empty interval) by throwing.
+        std::cerr << "error: " << args.file << ": " << pairName(file, p)
+                  << ": the interval evaluation failed: " << error.what() << "\n";
+        return 1;
       }
       truth[f].push_back({result.verdict});
       const std::string verdict = frep::verdictName(result.verdict);

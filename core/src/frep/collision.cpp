@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <queue>
 #include <stdexcept>
 
@@ -27,10 +28,20 @@ bool provedInsideBoth(const Solid& a, const Solid& b, const Eigen::Vector3d& p) 
   return a.range(at).lower() >= 0.0 && b.range(at).lower() >= 0.0;
 }
 
+// Levels until the longest side is at most the precision; capped where doubles would stop
+// halving a cell anyway (2^-1074 of its size).
 int depthFor(const Eigen::AlignedBox3d& domain, double precision) {
   const double longest = domain.sizes().maxCoeff();
   if (!(longest > precision)) return 0;
-  return static_cast<int>(std::ceil(std::log2(longest / precision)));
+  return static_cast<int>(std::min(1100.0, std::ceil(std::log2(longest / precision))));
+}
+
+// A bound that rounding or overflow made NaN says nothing: the whole line.
+Interval knownOrUnbounded(const Interval& range) {
+  if (std::isnan(range.lower()) || std::isnan(range.upper()))
+    return Interval(-std::numeric_limits<double>::infinity(),
+                    std::numeric_limits<double>::infinity());
+  return range;
 }
 
 }  // namespace
@@ -72,12 +83,12 @@ CollisionResult collide(const Solid& a, const Solid& b, const CollisionOptions& 
     ++level.cells;
     ++result.cells;
     const IntervalBox cell = IntervalBox::of(box);
-    const Interval fa = a.range(cell);
+    const Interval fa = knownOrUnbounded(a.range(cell));
     if (fa.upper() < 0.0) {
       ++level.discarded;
       return false;
     }
-    const Interval fb = b.range(cell);
+    const Interval fb = knownOrUnbounded(b.range(cell));
     if (fb.upper() < 0.0) {
       ++level.discarded;
       return false;

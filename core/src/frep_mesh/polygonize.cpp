@@ -24,7 +24,8 @@ Result<TriangleMesh> polygonize(const Solid& solid, const Eigen::AlignedBox3d& r
   std::call_once(initialised, [] { openvdb::initialize(); });
 
   const double cell = region.sizes().maxCoeff() / resolution;
-  if (!(cell > 0)) return Status(StatusCode::kInvalidArgument, "polygonize: the region is flat");
+  if (!(cell > 0) || !std::isfinite(cell) || !region.sizes().allFinite())
+    return Status(StatusCode::kInvalidArgument, "polygonize: the region is flat or too large");
   // One padding cell on each side: the grid's border then lies outside the solid.
   const Eigen::Vector3d origin = region.min() - Eigen::Vector3d::Constant(cell);
   const Eigen::Vector3i counts = (region.sizes() / cell).array().ceil().cast<int>() + 3;

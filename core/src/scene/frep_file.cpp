@@ -61,6 +61,7 @@ Result<FrepFile> parseFrepFile(const std::string& text, const std::string& label
         r.fail(entry.at("name"), "duplicate solid name '" + solid.name + "'");
       const Node description = entry.at("solid");
       solid.animated = scene_reading::frepIsAnimated(description);
+      solid.evaluation_cost = scene_reading::frepEvaluationCost(description.value);
       // Build at every frame time now, so that a bad value at any time fails the load.
       for (double time : file.times)
         scene_reading::readFrepSolid(r, description, time);

@@ -285,6 +285,24 @@ SolidPtr readFrepSolid(const Reader& r, const Node& node, double time) {
   }
 }
 
+double frepEvaluationCost(const Json& node) {
+  if (!node.is_object() && !node.is_array()) return 0.0;
+  double cost = node.is_object() && node.contains("type") ? 1.0 : 0.0;
+  for (const auto& item : node.items())
+    cost += frepEvaluationCost(item.value());
+  if (node.is_object() && node.contains("type") && node["type"].is_string()) {
+    const std::string type = node["type"].get<std::string>();
+    const double pieces = node.contains("pieces") && node["pieces"].is_number()
+                              ? std::max(1.0, node["pieces"].get<double>())
+                              : 16.0;
+    const double segments = node.contains("path") && node["path"].is_array()
+                                ? std::max(1.0, static_cast<double>(node["path"].size()))
+                                : 1.0;
+    if (type == "sweep" || type == "project") cost *= 2.0 * pieces * segments;
+  }
+  return cost;
+}
+
 bool frepIsAnimated(const Node& node) {
   const Json& value = node.value;
   if (value.is_object()) {

@@ -57,6 +57,9 @@ class TriangleBudget {
     reader_.fail(node, text.str());
   }
 
+  /// The scene-wide triangle limit (0: none).
+  std::size_t limit() const { return limit_; }
+
  private:
   const Reader& reader_;
   std::size_t limit_;
@@ -340,6 +343,17 @@ class ShapeLoader {
     const Reader& r = reader_;
     r.expectObject(node, {"frep", "cells"});
     const int cells = r.resolved(static_cast<int>(r.integer(node, "cells", 64, 2, 512)), 2);
+    const std::string text = "FRep solid polygonized at " + std::to_string(cells) + " cells";
+    // Charged before the work: a closed surface over a grid of N cells is about 12 N^2
+    // triangles, and a load with a triangle limit also limits the function evaluations.
+    budget_.charge(node, text, 12.0 * cells * cells);
+    const double evaluations =
+        std::pow(cells + 3.0, 3) * scene_reading::frepEvaluationCost(node.at("frep").value);
+    if (budget_.limit() > 0 && evaluations > 100.0 * static_cast<double>(budget_.limit())) {
+      r.fail(node, text + " takes about " + shortNumber(evaluations) +
+                       " node evaluations, more than this load allows (100 x "
+                       "SceneLoadOptions::max_triangles)");
+    }
     const frep::SolidPtr solid = scene_reading::readFrepSolid(r, node.at("frep"), 0.0);
     const Eigen::AlignedBox3d bounds = solid->bounds();
     if (bounds.isEmpty()) r.fail(node.at("frep"), "the solid is empty");
@@ -349,9 +363,9 @@ class ShapeLoader {
     }
     Result<TriangleMesh> mesh = frep::polygonize(*solid, bounds, std::min(cells, 1024));
     if (!mesh.ok()) r.fail(node, mesh.status().message());
-    const std::string text = "FRep solid polygonized at " + std::to_string(cells) + " cells";
     if (Status s = validateMesh(mesh.value(), text); !s.ok()) r.fail(node, s.message());
-    budget_.charge(node, text, static_cast<double>(mesh.value().triangleCount()));
+    const double surplus = static_cast<double>(mesh.value().triangleCount()) - 12.0 * cells * cells;
+    if (surplus > 0) budget_.charge(node, text, surplus);
     LoadedShape shape;
     shape.report.source = text;
     shape.report.importer = "generator";

@@ -15,6 +15,9 @@ namespace collido {
 struct FrepSolidEntry {
   std::string name;
   bool animated = false;
+  /// About how many node evaluations one evaluation of the solid costs (its nodes; sweeps and
+  /// projections once per piece): what an octree cell or a grid sample costs, relatively.
+  double evaluation_cost = 0.0;
   std::function<frep::SolidPtr(double time)> at;
 };
 
