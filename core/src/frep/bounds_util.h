@@ -7,6 +7,8 @@
 
 #include <Eigen/Geometry>
 
+#include <collido/frep/interval.h>
+
 namespace collido::frep::detail {
 
 inline Eigen::AlignedBox3d emptyBox() {
@@ -22,14 +24,35 @@ inline bool isFinite(const Eigen::AlignedBox3d& box) {
   return box.min().allFinite() && box.max().allFinite();
 }
 
-/// The box grown by a relative 1e-12 of its magnitude: covers the rounding of the few
-/// operations (a square root, a product) that produced its corners.
+/// The box grown by a relative 1e-12 of its finite corners' magnitude (infinite sides stay):
+/// covers the rounding of the few operations (a sum of a centre and a half extent, a product)
+/// that produced its corners.
 inline Eigen::AlignedBox3d padded(const Eigen::AlignedBox3d& box) {
-  if (box.isEmpty() || !isFinite(box)) return box;
-  const double magnitude =
-      std::max(box.min().cwiseAbs().maxCoeff(), box.max().cwiseAbs().maxCoeff());
+  if (box.isEmpty()) return box;
+  double magnitude = 0.0;
+  for (int i = 0; i < 3; ++i) {
+    for (double v : {box.min()[i], box.max()[i]})
+      if (std::isfinite(v)) magnitude = std::max(magnitude, std::abs(v));
+  }
   const double pad = 1e-12 * magnitude + 1e-300;
-  return Eigen::AlignedBox3d(box.min().array() - pad, box.max().array() + pad);
+  Eigen::AlignedBox3d out = box;
+  for (int i = 0; i < 3; ++i) {
+    if (std::isfinite(out.min()[i])) out.min()[i] -= pad;
+    if (std::isfinite(out.max()[i])) out.max()[i] += pad;
+  }
+  return out;
+}
+
+/// sqrt(a - b) rounded upward; negative (an empty set) when a - b < 0 for sure.
+inline double sqrtOfDifferenceUp(const Interval& a, double b) {
+  const double k = (a - b).upper();
+  if (k < 0.0) return -1.0;
+  return OutwardRounding::up(std::sqrt(k));
+}
+
+/// a - b rounded downward: the level a child must reach, passed on conservatively.
+inline double levelDown(double a, double b) {
+  return OutwardRounding::down(a - b);
 }
 
 /// A centred box of the given half extents, padded.

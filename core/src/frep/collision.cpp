@@ -93,9 +93,11 @@ CollisionResult collide(const Solid& a, const Solid& b, const CollisionOptions& 
       ++level.discarded;
       return false;
     }
-    if ((fa.lower() >= 0.0 && fb.lower() >= 0.0) || provedInsideBoth(a, b, box.center())) {
+    const Eigen::Vector3d centre = box.center();  // not finite only for boxes near DBL_MAX
+    if ((fa.lower() >= 0.0 && fb.lower() >= 0.0 && centre.allFinite()) ||
+        (centre.allFinite() && provedInsideBoth(a, b, centre))) {
       result.verdict = CollisionVerdict::kColliding;
-      result.witness = box.center();
+      result.witness = centre;
       return true;
     }
     open.push(Cell{box, depth, std::min(fa.upper(), fb.upper())});

@@ -30,7 +30,7 @@ void requireSolid(const SolidPtr& solid, const char* operation) {
 // ---- perturbation --------------------------------------------------------------------------
 
 double bumpValue(const Bump& bump, const Eigen::Vector3d& p) {
-  const double s = (p - bump.centre).squaredNorm() / (bump.radius * bump.radius);
+  const double s = ((p - bump.centre) / bump.radius).squaredNorm();
   if (s >= 1.0) return 0.0;
   const double t = 1.0 - s;
   return bump.amplitude * t * t * t;
@@ -39,15 +39,15 @@ double bumpValue(const Bump& bump, const Eigen::Vector3d& p) {
 Interval bumpRange(const Bump& bump, const IntervalBox& box) {
   // Zero wherever the box misses the ball's bounding box: skips most bumps of a busy solid.
   for (int i = 0; i < 3; ++i) {
-    if (box.axis[i].lower() >= bump.centre[i] + bump.radius ||
-        box.axis[i].upper() <= bump.centre[i] - bump.radius) {
+    if (box.axis[i].lower() >= OutwardRounding::up(bump.centre[i] + bump.radius) ||
+        box.axis[i].upper() <= OutwardRounding::down(bump.centre[i] - bump.radius)) {
       return Interval(0.0);
     }
   }
   Interval s(0.0);
   for (int i = 0; i < 3; ++i)
-    s += square(box.axis[i] - bump.centre[i]);
-  const Interval t = 1.0 - s / square(point(bump.radius));
+    s += square((box.axis[i] - bump.centre[i]) / bump.radius);
+  const Interval t = 1.0 - s;
   // (1 - s)^3 is 0 for s >= 1: clamp before the cube, which is monotone on t >= 0.
   const Interval clamped(std::max(0.0, t.lower()), std::max(0.0, t.upper()));
   return bump.amplitude * boost::numeric::pow(clamped, 3);
@@ -62,7 +62,7 @@ class Perturbed final : public Solid {
   Perturbed(SolidPtr solid, std::vector<Bump> bumps)
       : solid_(std::move(solid)), bumps_(std::move(bumps)) {
     for (const Bump& bump : bumps_)
-      if (bump.amplitude > 0) raise_ += bump.amplitude;
+      if (bump.amplitude > 0) raise_ = OutwardRounding::up(raise_ + bump.amplitude);
   }
   double value(const Eigen::Vector3d& p) const override {
     double f = solid_->value(p);
@@ -81,7 +81,7 @@ class Perturbed final : public Solid {
     // less the sum of the raising amplitudes (overlapping bumps add up).
     Eigen::AlignedBox3d box = solid_->superlevelBounds(level);
     if (raise_ == 0.0) return box;
-    const Eigen::AlignedBox3d lowered = solid_->superlevelBounds(level - raise_);
+    const Eigen::AlignedBox3d lowered = solid_->superlevelBounds(detail::levelDown(level, raise_));
     for (const Bump& bump : bumps_) {
       if (bump.amplitude > 0)
         box = detail::unionOf(box, detail::intersectionOf(ballBox(bump), lowered));
@@ -168,7 +168,7 @@ class Offset final : public Solid {
   double value(const Eigen::Vector3d& p) const override { return solid_->value(p) + amount_; }
   Interval range(const IntervalBox& box) const override { return solid_->range(box) + amount_; }
   Eigen::AlignedBox3d superlevelBounds(double level) const override {
-    return solid_->superlevelBounds(level - amount_);
+    return solid_->superlevelBounds(detail::levelDown(level, amount_));
   }
 
  private:
@@ -192,13 +192,49 @@ class Transformed final : public Solid {
     return solid_->range(local);
   }
   Eigen::AlignedBox3d superlevelBounds(double level) const override {
+    // The solid is exactly f(M x + t) for the stored (rounded) inverse (M, t); its points are
+    // x = M^-1 (y - t) for y in the child's box. With F ~ M^-1 (the forward map) and
+    // R = I - M F (interval arithmetic, r = |R|_inf < 1/2): M^-1 = F (I - R)^-1, so
+    // |M^-1 - F|_inf <= |F|_inf r / (1 - r). x lies in the interval image F (y - t), widened by
+    // that bound times |y - t|_inf.
     const Eigen::AlignedBox3d local = solid_->superlevelBounds(level);
     if (local.isEmpty()) return emptyBox();
     if (!isFinite(local)) return infiniteBox();
+    const Eigen::Matrix3d& f = forward_.linear();
+    const Eigen::Matrix3d& m = inverse_.linear();
+    const Eigen::Vector3d& t = inverse_.translation();
+    double r = 0.0;
+    double f_norm = 0.0;
+    for (int i = 0; i < 3; ++i) {
+      Interval row(0.0);
+      double f_row = 0.0;
+      for (int j = 0; j < 3; ++j) {
+        Interval entry = point(i == j ? 1.0 : 0.0);
+        for (int k = 0; k < 3; ++k)
+          entry -= point(m(i, k)) * f(k, j);
+        row += abs(entry);
+        f_row = OutwardRounding::up(f_row + std::abs(f(i, j)));
+      }
+      r = std::max(r, row.upper());
+      f_norm = std::max(f_norm, f_row);
+    }
+    if (!(r < 0.5)) return infiniteBox();
+    IntervalBox shifted = IntervalBox::of(local);
+    double reach = 0.0;
+    for (int j = 0; j < 3; ++j) {
+      shifted.axis[j] -= t[j];
+      reach = std::max(reach, norm(shifted.axis[j]));
+    }
+    const double slack = (point(f_norm) * r / (1.0 - point(r)) * reach).upper();
     Eigen::AlignedBox3d box;
-    for (int corner = 0; corner < 8; ++corner)
-      box.extend(forward_ * local.corner(static_cast<Eigen::AlignedBox3d::CornerType>(corner)));
-    return detail::padded(box);
+    for (int i = 0; i < 3; ++i) {
+      Interval x(0.0);
+      for (int j = 0; j < 3; ++j)
+        x += f(i, j) * shifted.axis[j];
+      box.min()[i] = OutwardRounding::down(x.lower() - slack);
+      box.max()[i] = OutwardRounding::up(x.upper() + slack);
+    }
+    return box;
   }
 
  private:
@@ -262,6 +298,22 @@ class Morphed final : public Solid {
 
 // ---- sweep and projection ------------------------------------------------------------------
 
+// The running largest of the pieces' bounds, keeping a NaN (std::max would drop it).
+void raiseTo(double& running, double value) {
+  if (std::isnan(value) || std::isnan(running))
+    running = std::numeric_limits<double>::quiet_NaN();
+  else
+    running = std::max(running, value);
+}
+
+// A NaN among the pieces' bounds says nothing: the whole line.
+Interval guarded(double lower, double upper) {
+  if (std::isnan(lower) || std::isnan(upper))
+    return Interval(-std::numeric_limits<double>::infinity(),
+                    std::numeric_limits<double>::infinity());
+  return Interval(lower, std::max(lower, upper));
+}
+
 IntervalBox shiftedBy(const IntervalBox& box, const IntervalBox& shift) {
   return {{box.axis[0] - shift.axis[0], box.axis[1] - shift.axis[1], box.axis[2] - shift.axis[2]}};
 }
@@ -305,11 +357,11 @@ class Swept final : public Solid {
     // g >= f(x - q) at any path point q; g <= the largest bound over the pieces.
     double lower = -std::numeric_limits<double>::infinity();
     for (const IntervalBox& sample : samples_)
-      lower = std::max(lower, solid_->range(shiftedBy(box, sample)).lower());
+      raiseTo(lower, solid_->range(shiftedBy(box, sample)).lower());
     double upper = -std::numeric_limits<double>::infinity();
     for (const IntervalBox& piece : pieces_)
-      upper = std::max(upper, solid_->range(shiftedBy(box, piece)).upper());
-    return Interval(lower, std::max(lower, upper));
+      raiseTo(upper, solid_->range(shiftedBy(box, piece)).upper());
+    return guarded(lower, upper);
   }
   Eigen::AlignedBox3d superlevelBounds(double level) const override {
     const Eigen::AlignedBox3d local = solid_->superlevelBounds(level);
@@ -355,14 +407,14 @@ class Projected final : public Solid {
     double lower = -std::numeric_limits<double>::infinity();
     for (double s : cuts_) {
       at.axis[axis_] = point(s);
-      lower = std::max(lower, solid_->range(at).lower());
+      raiseTo(lower, solid_->range(at).lower());
     }
     double upper = -std::numeric_limits<double>::infinity();
     for (std::size_t k = 0; k + 1 < cuts_.size(); ++k) {
       at.axis[axis_] = Interval(cuts_[k], cuts_[k + 1]);
-      upper = std::max(upper, solid_->range(at).upper());
+      raiseTo(upper, solid_->range(at).upper());
     }
-    return Interval(lower, std::max(lower, upper));
+    return guarded(lower, upper);
   }
   Eigen::AlignedBox3d superlevelBounds(double level) const override {
     Eigen::AlignedBox3d box = solid_->superlevelBounds(level);

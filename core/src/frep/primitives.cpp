@@ -46,9 +46,9 @@ class Sphere final : public Solid {
                                offsetSquared(box, centre_, 2));
   }
   Eigen::AlignedBox3d superlevelBounds(double level) const override {
-    const double k = radius_ * radius_ - level;
-    if (k < 0.0) return emptyBox();
-    return centredBox(centre_, Eigen::Vector3d::Constant(std::sqrt(k)));
+    const double half = detail::sqrtOfDifferenceUp(squared(radius_), level);
+    if (half < 0.0) return emptyBox();
+    return centredBox(centre_, Eigen::Vector3d::Constant(half));
   }
 
  private:
@@ -70,9 +70,9 @@ class Ellipsoid final : public Solid {
     return 1.0 - sum;
   }
   Eigen::AlignedBox3d superlevelBounds(double level) const override {
-    const double k = 1.0 - level;
-    if (k < 0.0) return emptyBox();
-    return centredBox(centre_, radii_ * std::sqrt(k));
+    const double scale = detail::sqrtOfDifferenceUp(point(1.0), level);
+    if (scale < 0.0) return emptyBox();
+    return centredBox(centre_, radii_ * scale * (1.0 + 1e-15));
   }
 
  private:
@@ -97,18 +97,17 @@ class Cylinder final : public Solid {
     return minOf(side, squared(half_height_) - offsetSquared(box, centre_, 2));
   }
   Eigen::AlignedBox3d superlevelBounds(double level) const override {
-    const double radial = radius_ * radius_ - level;
+    const double radial = detail::sqrtOfDifferenceUp(squared(radius_), level);
     if (radial < 0.0) return emptyBox();
     if (std::isinf(half_height_)) {
-      Eigen::AlignedBox3d box = centredBox(centre_, Eigen::Vector3d::Constant(std::sqrt(radial)));
+      Eigen::AlignedBox3d box = centredBox(centre_, Eigen::Vector3d::Constant(radial));
       box.min().z() = -std::numeric_limits<double>::infinity();
       box.max().z() = std::numeric_limits<double>::infinity();
       return box;
     }
-    const double axial = half_height_ * half_height_ - level;
+    const double axial = detail::sqrtOfDifferenceUp(squared(half_height_), level);
     if (axial < 0.0) return emptyBox();
-    return centredBox(centre_,
-                      Eigen::Vector3d(std::sqrt(radial), std::sqrt(radial), std::sqrt(axial)));
+    return centredBox(centre_, Eigen::Vector3d(radial, radial, axial));
   }
 
  private:
@@ -137,15 +136,14 @@ class Cone final : public Solid {
   Eigen::AlignedBox3d superlevelBounds(double level) const override {
     if (std::isinf(height_)) return infiniteBox();
     // z (height - z) >= level bounds z; the side term then bounds x and y.
-    const double discriminant = height_ * height_ - 4.0 * level;
-    if (discriminant < 0.0) return emptyBox();
-    const double root = std::sqrt(discriminant);
-    const double z_low = (height_ - root) / 2;
-    const double z_high = (height_ + root) / 2;
+    const double root = detail::sqrtOfDifferenceUp(squared(height_), 4.0 * level);
+    if (root < 0.0) return emptyBox();
+    const Interval z_range = (height_ + Interval(-root, root)) / 2.0;
+    const double z_low = z_range.lower();
+    const double z_high = z_range.upper();
     const double z_far = std::max(std::abs(z_low), std::abs(z_high));
-    const double radial = z_far * z_far * slope_ * slope_ - level;
-    if (radial < 0.0) return emptyBox();
-    const double r = std::sqrt(radial);
+    const double r = detail::sqrtOfDifferenceUp(square(point(z_far) * slope_), level);
+    if (r < 0.0) return emptyBox();
     return detail::padded(Eigen::AlignedBox3d(apex_ + Eigen::Vector3d(-r, -r, z_low),
                                               apex_ + Eigen::Vector3d(r, r, z_high)));
   }
@@ -170,10 +168,10 @@ class Torus final : public Solid {
     return squared(minor_) - square(rho - major_) - offsetSquared(box, centre_, 2);
   }
   Eigen::AlignedBox3d superlevelBounds(double level) const override {
-    const double k = minor_ * minor_ - level;
-    if (k < 0.0) return emptyBox();
-    const double tube = std::sqrt(k);
-    return centredBox(centre_, Eigen::Vector3d(major_ + tube, major_ + tube, tube));
+    const double tube = detail::sqrtOfDifferenceUp(squared(minor_), level);
+    if (tube < 0.0) return emptyBox();
+    const double reach = (point(major_) + tube).upper();
+    return centredBox(centre_, Eigen::Vector3d(reach, reach, tube));
   }
 
  private:
@@ -197,19 +195,35 @@ class Quadric final : public Solid {
     return sum;
   }
   Eigen::AlignedBox3d superlevelBounds(double level) const override {
-    // Bounded only for A negative definite: then {f >= level} is the ellipsoid
-    // d^T (-A) d <= f(x0) - level about the maximum x0 = -A^-1 b / 2.
-    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(a_);
-    if (eigen.eigenvalues().maxCoeff() >= 0.0) return infiniteBox();
-    const Eigen::Matrix3d inverse = a_.inverse();
-    const Eigen::Vector3d top = -0.5 * (inverse * b_);
-    const double k = value(top) - level;
-    if (k < 0.0) return emptyBox();
-    Eigen::Vector3d half;
-    for (int i = 0; i < 3; ++i)
-      half[i] = std::sqrt(k * -inverse(i, i));
-    // The eigen-decomposition and inverse carry more rounding than a square root.
-    return detail::padded(detail::padded(centredBox(top, half * (1.0 + 1e-9))));
+    // Bounded only for A negative definite. About a computed near-maximum t, with d = x - t:
+    // f(x) = f(t) + g.d + d^T A d <= F + G |d| - mu |d|^2, where F and G bound f(t) and |grad f(t)|
+    // (interval arithmetic) and mu <= the smallest eigenvalue of -A. So f(x) >= level needs
+    // |d| <= (G + sqrt(G^2 + 4 mu (F - level))) / (2 mu): a ball, rounded outward throughout.
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(-a_);
+    // Weyl: the computed eigenvalues are within a few ulps of |A| of the exact ones; the margin
+    // of 1e-10 |A| is far beyond that, and a matrix closer to singular counts as unbounded.
+    const double norm = a_.norm();
+    const double mu = eigen.eigenvalues().minCoeff() - 1e-10 * norm;
+    if (!(mu > 0.0)) return infiniteBox();
+    const Eigen::Vector3d top =
+        0.5 * (eigen.eigenvectors() * eigen.eigenvalues().cwiseInverse().asDiagonal() *
+               eigen.eigenvectors().transpose() * b_);
+    const IntervalBox at = IntervalBox::ofPoint(top);
+    const double f_top = range(at).upper();
+    Interval g_squared(0.0);
+    for (int i = 0; i < 3; ++i) {
+      Interval g = point(b_[i]);
+      for (int j = 0; j < 3; ++j)
+        g += (2.0 * a_(i, j)) * at.axis[j];
+      g_squared += square(g);
+    }
+    const Interval grad = sqrt(g_squared);
+    const Interval excess = f_top - point(level);
+    const Interval inner = square(grad) + 4.0 * point(mu) * excess;
+    if (inner.upper() < 0.0) return emptyBox();
+    const Interval reach =
+        (grad + sqrt(Interval(std::max(0.0, inner.lower()), inner.upper()))) / (2.0 * point(mu));
+    return centredBox(top, Eigen::Vector3d::Constant(reach.upper()));
   }
 
  private:
@@ -238,9 +252,9 @@ class Superellipsoid final : public Solid {
   }
   Eigen::AlignedBox3d superlevelBounds(double level) const override {
     // The sum is homogeneous of degree 2/e1 and at most 1 only inside the radii's box.
-    const double s = 1.0 - level;
+    const double s = (1.0 - point(level)).upper();
     if (s < 0.0) return emptyBox();
-    return centredBox(centre_, radii_ * std::pow(s, e1_ / 2) * (1.0 + 1e-12));
+    return centredBox(centre_, radii_ * powNonNegative(point(s), e1_ / 2).upper() * (1.0 + 1e-12));
   }
 
  private:
@@ -267,9 +281,8 @@ class Block final : public Solid {
   Eigen::AlignedBox3d superlevelBounds(double level) const override {
     Eigen::Vector3d half;
     for (int i = 0; i < 3; ++i) {
-      const double k = half_[i] * half_[i] - level;
-      if (k < 0.0) return emptyBox();
-      half[i] = std::sqrt(k);
+      half[i] = detail::sqrtOfDifferenceUp(squared(half_[i]), level);
+      if (half[i] < 0.0) return emptyBox();
     }
     return centredBox(centre_, half);
   }
@@ -288,16 +301,14 @@ class HalfSpace final : public Solid {
            (normal_[0] * box.axis[0] + normal_[1] * box.axis[1] + normal_[2] * box.axis[2]);
   }
   Eigen::AlignedBox3d superlevelBounds(double level) const override {
-    // Finite on one side only where the normal is a coordinate axis.
+    // Finite on one side only where the normal is exactly a coordinate axis.
     Eigen::AlignedBox3d box = infiniteBox();
     for (int i = 0; i < 3; ++i) {
-      if (std::abs(normal_[i]) != 1.0) continue;
-      const double limit = (offset_ - level) * normal_[i];
-      const double pad = 1e-12 * std::abs(limit) + 1e-300;
+      if (normal_[(i + 1) % 3] != 0.0 || normal_[(i + 2) % 3] != 0.0) continue;
       if (normal_[i] > 0)
-        box.max()[i] = limit + pad;
+        box.max()[i] = OutwardRounding::up(offset_ - level);
       else
-        box.min()[i] = limit - pad;
+        box.min()[i] = OutwardRounding::down(level - offset_);
     }
     return box;
   }

@@ -203,3 +203,55 @@ TEST(SolidBuilders, RefuseBadParameters) {
 
 }  // namespace
 }  // namespace collido::frep
+
+namespace collido::frep {
+namespace {
+
+// Edge cases where a bound computed in plain double precision was too small (found in review).
+TEST(SuperlevelBounds, NearlyAxisNormalKeepsTheHalfSpaceUnbounded) {
+  const SolidPtr tilted = halfSpace({1e-9, 0, 1}, 0);
+  const Eigen::Vector3d inside(-1e6, 0, 5e-4);  // z <= -1e-9 x
+  ASSERT_GE(tilted->value(inside), 0.0);
+  EXPECT_TRUE(tilted->bounds().contains(inside));
+  // An exact axis normal bounds its side, outward-rounded.
+  const SolidPtr floor = halfSpace({0, 0, 1}, 0.1);
+  EXPECT_GE(floor->bounds().max().z(), 0.1);
+  EXPECT_TRUE(std::isinf(floor->bounds().min().z()));
+}
+
+TEST(SuperlevelBounds, TransformOfAFarChildBackToTheOrigin) {
+  // A thin block far from its frame's origin, moved back next to the world origin and turned.
+  const SolidPtr far = block({1e3, -2e3, 5e2}, {1e-6, 2e-6, 3e-6});
+  Eigen::Affine3d back = Eigen::Affine3d::Identity();
+  back.rotate(Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()));
+  back.translate(-Eigen::Vector3d(1e3, -2e3, 5e2));
+  const SolidPtr near = transformed(far, back);
+  const Eigen::AlignedBox3d bounds = near->bounds();
+  std::mt19937_64 random(3);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  int inside = 0;
+  for (int trial = 0; trial < 200000; ++trial) {
+    const Eigen::Vector3d p = 5e-6 * Eigen::Vector3d(unit(random), unit(random), unit(random));
+    if (near->value(p) >= 0.0) {
+      ++inside;
+      ASSERT_TRUE(bounds.contains(p)) << p.transpose();
+    }
+  }
+  EXPECT_GT(inside, 100);
+}
+
+TEST(SuperlevelBounds, NearlySingularQuadricIsUnbounded) {
+  const Eigen::Matrix3d a = Eigen::Vector3d(-1.0, -1.0, -1e-17).asDiagonal();
+  const SolidPtr slab = quadric(a, Eigen::Vector3d::Zero(), 1.0);
+  EXPECT_FALSE(slab->bounds().max().allFinite());
+}
+
+TEST(SuperlevelBounds, OffsetByTheRoundedSquareKeepsTheCentre) {
+  // 0.1 * 0.1 rounds to 0.010000000000000002: the solid is a tiny ball about the centre.
+  const SolidPtr speck = offset(sphere({0.3, 0.2, 0.1}, 0.1), -0.01);
+  ASSERT_GE(speck->value({0.3, 0.2, 0.1}), 0.0);
+  EXPECT_TRUE(speck->bounds().contains(Eigen::Vector3d(0.3, 0.2, 0.1)));
+}
+
+}  // namespace
+}  // namespace collido::frep

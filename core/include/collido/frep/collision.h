@@ -62,7 +62,8 @@ struct CollisionResult {
 /// discarded when the interval of f1 or of f2 over it is negative, a cell whose centre has both
 /// lower bounds >= 0 gives the witness, and cells stop splitting at the precision. An overlap
 /// holding a ball of radius sqrt(3) * precision is never missed (some finest cell lies inside
-/// it and its centre is a witness). Throws std::invalid_argument when the common bounds are
+/// it and its centre is a witness), unless max_cells ends the search first (kUndecided). Throws
+/// std::invalid_argument when the common bounds are
 /// unbounded or the precision is not positive.
 CollisionResult collide(const Solid& a, const Solid& b, const CollisionOptions& options);
 

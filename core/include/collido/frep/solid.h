@@ -99,9 +99,10 @@ SolidPtr morphed(SolidPtr a, SolidPtr b, double t);
 /// least two points. Bounds over a box split each segment into `pieces` parts; the double
 /// precision value samples the path at the pieces' ends.
 SolidPtr swept(SolidPtr solid, std::vector<Eigen::Vector3d> path, int pieces);
-/// max over s of f(x with coordinate `axis` set to s): the solid's shadow on the plane normal
-/// to the axis (0, 1, 2), extruded along it; unbounded along the axis. Bounds split the solid's
-/// extent along the axis into `pieces` parts.
+/// max over s of f(x with coordinate `axis` set to s), s over the solid's extent along the axis
+/// (its bounds; outside them f < 0, so the set f >= 0 is the same as for every s): the solid's
+/// shadow on the plane normal to the axis (0, 1, 2), extruded along it; unbounded along the
+/// axis. Bounds split that extent into `pieces` parts.
 SolidPtr projected(SolidPtr solid, int axis, int pieces);
 
 }  // namespace collido::frep
