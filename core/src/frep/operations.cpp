@@ -36,13 +36,21 @@ double bumpValue(const Bump& bump, const Eigen::Vector3d& p) {
   return bump.amplitude * t * t * t;
 }
 
-Interval bumpRange(const Bump& bump, const IntervalBox& box) {
+// The bump's ball's bounding box, rounded outward: outside it the bump is exactly 0.
+Eigen::AlignedBox3d reachOf(const Bump& bump) {
+  Eigen::AlignedBox3d box;
+  for (int i = 0; i < 3; ++i) {
+    box.min()[i] = OutwardRounding::down(bump.centre[i] - bump.radius);
+    box.max()[i] = OutwardRounding::up(bump.centre[i] + bump.radius);
+  }
+  return box;
+}
+
+Interval bumpRange(const Bump& bump, const Eigen::AlignedBox3d& reach, const IntervalBox& box) {
   // Zero wherever the box misses the ball's bounding box: skips most bumps of a busy solid.
   for (int i = 0; i < 3; ++i) {
-    if (box.axis[i].lower() >= OutwardRounding::up(bump.centre[i] + bump.radius) ||
-        box.axis[i].upper() <= OutwardRounding::down(bump.centre[i] - bump.radius)) {
+    if (box.axis[i].lower() >= reach.max()[i] || box.axis[i].upper() <= reach.min()[i])
       return Interval(0.0);
-    }
   }
   Interval s(0.0);
   for (int i = 0; i < 3; ++i)
@@ -61,8 +69,10 @@ class Perturbed final : public Solid {
  public:
   Perturbed(SolidPtr solid, std::vector<Bump> bumps)
       : solid_(std::move(solid)), bumps_(std::move(bumps)) {
-    for (const Bump& bump : bumps_)
+    for (const Bump& bump : bumps_) {
       if (bump.amplitude > 0) raise_ = OutwardRounding::up(raise_ + bump.amplitude);
+      reaches_.push_back(reachOf(bump));
+    }
   }
   double value(const Eigen::Vector3d& p) const override {
     double f = solid_->value(p);
@@ -72,8 +82,8 @@ class Perturbed final : public Solid {
   }
   Interval range(const IntervalBox& box) const override {
     Interval f = solid_->range(box);
-    for (const Bump& bump : bumps_)
-      f += bumpRange(bump, box);
+    for (std::size_t i = 0; i < bumps_.size(); ++i)
+      f += bumpRange(bumps_[i], reaches_[i], box);
     return f;
   }
   Eigen::AlignedBox3d superlevelBounds(double level) const override {
@@ -92,6 +102,7 @@ class Perturbed final : public Solid {
  private:
   SolidPtr solid_;
   std::vector<Bump> bumps_;
+  std::vector<Eigen::AlignedBox3d> reaches_;
   double raise_ = 0.0;
 };
 
