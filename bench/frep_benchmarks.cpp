@@ -8,6 +8,7 @@
 // per evaluation (a blob with 300 bumps evaluates 300 bumps per cell).
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <random>
 #include <string>
 #include <vector>
@@ -73,7 +74,7 @@ SolidPair makePair(int which) {
 
 double quantileOf(std::vector<double> values, double q) {
   std::sort(values.begin(), values.end());
-  return values[static_cast<std::size_t>(q * static_cast<double>(values.size() - 1) + 0.5)];
+  return values[static_cast<std::size_t>(std::lround(q * static_cast<double>(values.size() - 1)))];
 }
 
 void collisionBenchmark(benchmark::State& state, int which, double precision) {
