@@ -4,12 +4,19 @@
 
 #include <cmath>
 #include <limits>
+#include <stdexcept>
+#include <string>
 
 #include <Eigen/Geometry>
 
 #include <collido/frep/interval.h>
 
 namespace collido::frep::detail {
+
+/// The builders' parameter check: a bad parameter is std::invalid_argument with the reason.
+inline void require(bool condition, const std::string& message) {
+  if (!condition) throw std::invalid_argument(message);
+}
 
 inline Eigen::AlignedBox3d emptyBox() {
   return Eigen::AlignedBox3d();  // Eigen's default box is empty

@@ -19,9 +19,7 @@ using detail::emptyBox;
 using detail::infiniteBox;
 using detail::isFinite;
 
-void require(bool condition, const std::string& message) {
-  if (!condition) throw std::invalid_argument(message);
-}
+using detail::require;
 
 void requireSolid(const SolidPtr& solid, const char* operation) {
   require(solid != nullptr, std::string(operation) + " needs a solid");

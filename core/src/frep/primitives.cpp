@@ -19,9 +19,7 @@ using detail::centredBox;
 using detail::emptyBox;
 using detail::infiniteBox;
 
-void require(bool condition, const std::string& message) {
-  if (!condition) throw std::invalid_argument(message);
-}
+using detail::require;
 
 void requireFinite(const Eigen::Vector3d& v, const char* what) {
   require(v.allFinite(), std::string(what) + " must be finite");

@@ -328,11 +328,16 @@ class ShapeLoader {
     if (!mesh.ok()) r.fail(node, mesh.status().message());
     // Finite parameters can still overflow in the shape (a radius near the double maximum).
     if (Status s = validateMesh(mesh.value(), text); !s.ok()) r.fail(node, s.message());
+    return generatedShape(std::move(mesh).value(), text);
+  }
+
+  // A mesh made by the loader (a generator, a polygonization), described by `text`.
+  static LoadedShape generatedShape(TriangleMesh mesh, const std::string& text) {
     LoadedShape shape;
     shape.report.source = text;
     shape.report.importer = "generator";
-    inspectMesh(mesh.value(), shape.report);
-    shape.mesh = std::make_shared<const TriangleMesh>(std::move(mesh).value());
+    inspectMesh(mesh, shape.report);
+    shape.mesh = std::make_shared<const TriangleMesh>(std::move(mesh));
     return shape;
   }
 
@@ -366,12 +371,7 @@ class ShapeLoader {
     if (Status s = validateMesh(mesh.value(), text); !s.ok()) r.fail(node, s.message());
     const double surplus = static_cast<double>(mesh.value().triangleCount()) - 12.0 * cells * cells;
     if (surplus > 0) budget_.charge(node, text, surplus);
-    LoadedShape shape;
-    shape.report.source = text;
-    shape.report.importer = "generator";
-    inspectMesh(mesh.value(), shape.report);
-    shape.mesh = std::make_shared<const TriangleMesh>(std::move(mesh).value());
-    return shape;
+    return generatedShape(std::move(mesh).value(), text);
   }
 
   const Reader& reader_;
