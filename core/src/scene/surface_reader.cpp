@@ -55,10 +55,11 @@ nurbs::NurbsSurface readExplicit(const Reader& r, const Node& node) {
       }
       const double w = point.value.size() == 4 ? r.number(point.at(3)) : 1.0;
       if (!(w > 0.0)) r.fail(point.at(3), "weight must be > 0");
-      Eigen::Vector4d homogeneous;
-      homogeneous << w * r.number(point.at(0)), w * r.number(point.at(1)),
-          w * r.number(point.at(2)), w;
-      s.control.push_back(homogeneous);
+      // Read before building: a throw inside Eigen's comma initializer trips its assertion.
+      const double x = r.number(point.at(0));
+      const double y = r.number(point.at(1));
+      const double z = r.number(point.at(2));
+      s.control.emplace_back(w * x, w * y, w * z, w);
     }
   }
   if (const Status valid = nurbs::validate(s); !valid.ok()) r.fail(node, valid.message());
