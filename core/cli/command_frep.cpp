@@ -81,11 +81,6 @@ std::string pairName(const FrepFile& file, std::size_t pair) {
          file.solids[file.pairs[pair].second].name;
 }
 
-// The guaranteed answer of one pair at one frame.
-struct Reference {
-  frep::CollisionVerdict verdict;
-};
-
 // How a mesh backend's boolean answer compares with the guaranteed one.
 std::string outcomeOf(frep::CollisionVerdict truth, bool intersecting) {
   switch (truth) {
@@ -123,7 +118,7 @@ int runFrep(const FrepArguments& args, const PluginOptions& plugin_options) {
                {"seed", Json::array()},  {"comparators", Json::array()}};
 
   // The seed method, per frame and pair.
-  std::vector<std::vector<Reference>> truth(file.times.size());
+  std::vector<std::vector<frep::CollisionVerdict>> truth(file.times.size());  // per frame, pair
   std::vector<std::vector<std::string>> rows;
   int unexpected = 0;
   for (std::size_t f = 0; f < file.times.size(); ++f) {
@@ -149,7 +144,7 @@ int runFrep(const FrepArguments& args, const PluginOptions& plugin_options) {
                   << ": the interval evaluation failed: " << error.what() << "\n";
         return 1;
       }
-      truth[f].push_back({result.verdict});
+      truth[f].push_back(result.verdict);
       const std::string verdict = frep::verdictName(result.verdict);
       const std::string& expected = file.expected[p];
       const bool as_expected = expected.empty() || expected == verdict;
@@ -266,7 +261,7 @@ int runFrep(const FrepArguments& args, const PluginOptions& plugin_options) {
                 if (!s.ok()) failure = s.message();
               }
               if (failure.empty()) {
-                const std::string outcome = outcomeOf(truth[f][p].verdict, answer.intersecting);
+                const std::string outcome = outcomeOf(truth[f][p], answer.intersecting);
                 ++outcomes[outcome];
                 query_us.push_back(quantile(us, 0.5));
                 charged_ms += frame_ms + quantile(us, 0.5) * 1e-3;

@@ -59,10 +59,6 @@ Interval bumpRange(const Bump& bump, const Eigen::AlignedBox3d& reach, const Int
   return bump.amplitude * boost::numeric::pow(clamped, 3);
 }
 
-Eigen::AlignedBox3d ballBox(const Bump& bump) {
-  return detail::centredBox(bump.centre, Eigen::Vector3d::Constant(bump.radius));
-}
-
 class Perturbed final : public Solid {
  public:
   Perturbed(SolidPtr solid, std::vector<Bump> bumps)
@@ -90,9 +86,9 @@ class Perturbed final : public Solid {
     Eigen::AlignedBox3d box = solid_->superlevelBounds(level);
     if (raise_ == 0.0) return box;
     const Eigen::AlignedBox3d lowered = solid_->superlevelBounds(detail::levelDown(level, raise_));
-    for (const Bump& bump : bumps_) {
-      if (bump.amplitude > 0)
-        box = detail::unionOf(box, detail::intersectionOf(ballBox(bump), lowered));
+    for (std::size_t i = 0; i < bumps_.size(); ++i) {
+      if (bumps_[i].amplitude > 0)
+        box = detail::unionOf(box, detail::intersectionOf(reaches_[i], lowered));
     }
     return box;
   }

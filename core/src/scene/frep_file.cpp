@@ -1,10 +1,8 @@
 // FRep case files: named solids (possibly animated), the pairs to test, frames and precision.
 #include <collido/scene/frep_file.h>
 
-#include <fstream>
 #include <map>
 #include <memory>
-#include <sstream>
 
 #include "frep_solid_reader.h"
 #include "scene_reader.h"
@@ -114,11 +112,9 @@ Result<FrepFile> parseFrepFile(const std::string& text, const std::string& label
 }
 
 Result<FrepFile> loadFrepFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return Status(StatusCode::kInvalidArgument, path + ": cannot open the FRep file");
-  std::stringstream text;
-  text << in.rdbuf();
-  return parseFrepFile(text.str(), path);
+  Result<std::string> text = scene_reading::readTextFile(path, "FRep file");
+  if (!text.ok()) return text.status();
+  return parseFrepFile(text.value(), path);
 }
 
 }  // namespace collido

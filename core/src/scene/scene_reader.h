@@ -5,8 +5,10 @@
 
 #include <cmath>
 #include <cstdint>
+#include <fstream>
 #include <limits>
 #include <set>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -44,6 +46,15 @@ Json::parser_callback_t duplicateKeyCheck(const std::string& label);
 /// The JSON text of a scene or surface file, parsed with duplicateKeyCheck; an error names the
 /// file and, for a syntax error, the byte.
 Result<Json> parseDocument(const std::string& text, const std::string& label);
+
+/// The whole of a text file; an unreadable one is an error "PATH: cannot open the WHAT".
+inline Result<std::string> readTextFile(const std::string& path, const std::string& what) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return Status(StatusCode::kInvalidArgument, path + ": cannot open the " + what);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
 
 inline const char* typeName(const Json& v) {
   return v.type_name();

@@ -1,9 +1,7 @@
 // Surface files: NURBS surfaces for the distance seed method, explicit or generated.
 #include <collido/scene/surface_file.h>
 
-#include <fstream>
 #include <set>
-#include <sstream>
 
 #include <collido/nurbs/surface_generators.h>
 
@@ -136,11 +134,9 @@ Result<std::vector<NamedSurface>> parseSurfaces(const std::string& text, const s
 }
 
 Result<std::vector<NamedSurface>> loadSurfaces(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return Status(StatusCode::kInvalidArgument, path + ": cannot open the surface file");
-  std::stringstream text;
-  text << in.rdbuf();
-  return parseSurfaces(text.str(), path);
+  Result<std::string> text = scene_reading::readTextFile(path, "surface file");
+  if (!text.ok()) return text.status();
+  return parseSurfaces(text.value(), path);
 }
 
 }  // namespace collido
