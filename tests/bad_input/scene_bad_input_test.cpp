@@ -522,6 +522,17 @@ TEST(SceneBadInput, ShapeWithBothMeshAndGenerator) {
   EXPECT_TRUE(rejected(parse(scene), {"/objects/0/shape", "exactly one of 'mesh'"}));
 }
 
+// FRep shapes: an unbounded solid cannot be polygonized; a bad solid or cell count names its path.
+TEST(SceneBadInput, FrepShapeErrorsNameTheirPath) {
+  Json scene = validScene();
+  scene["objects"][0]["shape"] = Json{{"frep", {{"type", "half_space"}, {"normal", {0, 0, 1}}}}};
+  EXPECT_TRUE(rejected(parse(scene), {"/objects/0/shape/frep", "unbounded"}));
+  scene["objects"][0]["shape"] = Json{{"frep", {{"type", "sphere"}, {"radius", -1}}}};
+  EXPECT_TRUE(rejected(parse(scene), {"/objects/0/shape/frep", "radius must be > 0"}));
+  scene["objects"][0]["shape"] = Json{{"frep", {{"type", "sphere"}, {"radius", 1}}}, {"cells", 1}};
+  EXPECT_TRUE(rejected(parse(scene), {"/objects/0/shape/cells", "[2, 512]"}));
+}
+
 // "bad.json: /objects/0/shape/mesh: <scenes>/meshes/absent.obj: file not found"
 TEST(SceneBadInput, MeshFileMissing) {
   Json scene = validScene();
