@@ -1,0 +1,268 @@
+#include "equations.h"
+
+#include <cmath>
+
+#include "rotation.h"
+
+namespace collido::constraints::detail {
+namespace {
+
+using Gradient = Eigen::Matrix<double, 1, 6>;
+
+/// Two unit vectors across a unit direction, fixed in the direction's frame: the residuals of
+/// "on this line" and "parallel to this" are components along them.
+Eigen::Vector3d across(const Eigen::Vector3d& direction, int which) {
+  const Eigen::Vector3d helper =
+      std::abs(direction.x()) < 0.6 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY();
+  const Eigen::Vector3d first = direction.cross(helper).normalized();
+  return which == 0 ? first : direction.cross(first);
+}
+
+}  // namespace
+
+ParameterLayout::ParameterLayout(const Problem& problem)
+    : body_count(static_cast<int>(problem.bodies().size())),
+      size(6 * body_count + static_cast<int>(problem.variables().size())),
+      scale(size),
+      free(size, true) {
+  const double length = problem.lengthScale();
+  for (int b = 0; b < body_count; ++b) {
+    const Body& body = problem.bodies()[b];
+    for (int k = 0; k < 6; ++k) {
+      scale[6 * b + k] = k < 3 ? length : length / body.radius;
+      free[6 * b + k] = !body.fixed;
+    }
+  }
+  for (int v = 0; v < static_cast<int>(problem.variables().size()); ++v) {
+    scale[variableColumn(v)] = problem.variables()[v].scale;
+    free[variableColumn(v)] = !problem.variables()[v].fixed;
+  }
+}
+
+Eigen::VectorXd startParameters(const Problem& problem, const ParameterLayout& layout) {
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(layout.size);
+  for (int b = 0; b < layout.body_count; ++b) {
+    x.segment<3>(layout.bodyColumn(b)) = problem.bodies()[b].pose.translation();
+  }
+  for (int v = 0; v < static_cast<int>(problem.variables().size()); ++v) {
+    x[layout.variableColumn(v)] = problem.variables()[v].value;
+  }
+  return x;
+}
+
+/// A world vector and its derivative with respect to one body's raw parameters [t, ω].
+struct ConstraintEvaluator::Tracked {
+  Eigen::Vector3d value;
+  int body = kWorld;
+  Eigen::Matrix<double, 3, 6> jacobian = Eigen::Matrix<double, 3, 6>::Zero();
+};
+
+/// Collects one normalised equation's derivatives as triplets.
+class ConstraintEvaluator::RowWriter {
+ public:
+  RowWriter(const ParameterLayout& layout, std::vector<Eigen::Triplet<double>>* out, int row,
+            double row_scale)
+      : layout_(layout), out_(out), row_(row), row_scale_(row_scale) {}
+
+  /// Adds gradientᵀ · (the tracked vector's Jacobian).
+  void add(const Eigen::Vector3d& gradient, const Tracked& tracked) {
+    if (out_ == nullptr || tracked.body == kWorld) return;
+    const Gradient row = gradient.transpose() * tracked.jacobian;
+    const int column0 = layout_.bodyColumn(tracked.body);
+    for (int k = 0; k < 6; ++k) {
+      if (row[k] != 0.0) {
+        out_->emplace_back(row_, column0 + k, row[k] * layout_.scale[column0 + k] / row_scale_);
+      }
+    }
+  }
+
+  void addVariable(int variable, double gradient) {
+    if (out_ == nullptr || variable < 0) return;
+    const int column = layout_.variableColumn(variable);
+    out_->emplace_back(row_, column, gradient * layout_.scale[column] / row_scale_);
+  }
+
+ private:
+  const ParameterLayout& layout_;
+  std::vector<Eigen::Triplet<double>>* out_;
+  int row_;
+  double row_scale_;
+};
+
+ConstraintEvaluator::ConstraintEvaluator(const Problem& problem, const ParameterLayout& layout)
+    : problem_(problem), layout_(layout) {
+  for (const Body& body : problem.bodies())
+    start_rotations_.push_back(body.pose.linear());
+  setParameters(startParameters(problem, layout));
+}
+
+void ConstraintEvaluator::setParameters(const Eigen::VectorXd& x) {
+  const int bodies = layout_.body_count;
+  rotations_.resize(bodies);
+  translations_.resize(bodies);
+  right_jacobians_.resize(bodies);
+  for (int b = 0; b < bodies; ++b)
+    setBody(b, x);
+  variables_ = x.tail(x.size() - 6 * bodies);
+}
+
+void ConstraintEvaluator::setBody(int body, const Eigen::VectorXd& x) {
+  const Eigen::Vector3d omega = x.segment<3>(layout_.bodyColumn(body) + 3);
+  rotations_[body] = start_rotations_[body] * expMap(omega);
+  translations_[body] = x.segment<3>(layout_.bodyColumn(body));
+  right_jacobians_[body] = rightJacobian(omega);
+}
+
+void ConstraintEvaluator::setVariable(int variable, const Eigen::VectorXd& x) {
+  variables_[variable] = x[layout_.variableColumn(variable)];
+}
+
+Pose ConstraintEvaluator::pose(int body) const {
+  Pose pose = Pose::Identity();
+  pose.linear() = rotations_[body];
+  pose.translation() = translations_[body];
+  return pose;
+}
+
+ConstraintEvaluator::Tracked ConstraintEvaluator::point(const PointRef& ref) const {
+  Tracked tracked;
+  tracked.body = ref.body;
+  if (ref.body == kWorld) {
+    tracked.value = ref.local;
+    return tracked;
+  }
+  const Eigen::Matrix3d& r = rotations_[ref.body];
+  tracked.value = r * ref.local + translations_[ref.body];
+  tracked.jacobian.leftCols<3>().setIdentity();
+  tracked.jacobian.rightCols<3>() = -r * skew(ref.local) * right_jacobians_[ref.body];
+  return tracked;
+}
+
+ConstraintEvaluator::Tracked ConstraintEvaluator::direction(const DirectionRef& ref) const {
+  Tracked tracked;
+  tracked.body = ref.body;
+  if (ref.body == kWorld) {
+    tracked.value = ref.local;
+    return tracked;
+  }
+  const Eigen::Matrix3d& r = rotations_[ref.body];
+  tracked.value = r * ref.local;
+  tracked.jacobian.rightCols<3>() = -r * skew(ref.local) * right_jacobians_[ref.body];
+  return tracked;
+}
+
+ConstraintEvaluator::Tracked ConstraintEvaluator::acrossDirection(const DirectionRef& ref,
+                                                                  int which) const {
+  return direction(DirectionRef{ref.body, across(ref.local, which)});
+}
+
+int ConstraintEvaluator::equationCount(ConstraintKind kind) {
+  switch (kind) {
+    case ConstraintKind::kCoincident:
+      return 3;
+    case ConstraintKind::kPointOnPlane:
+      return 1;
+    case ConstraintKind::kPointOnLine:
+      return 2;
+    case ConstraintKind::kDistance:
+      return 1;
+    case ConstraintKind::kAngle:
+      return 1;
+    case ConstraintKind::kParallel:
+      return 2;
+    case ConstraintKind::kPerpendicular:
+      return 1;
+    case ConstraintKind::kCoaxial:
+      return 4;
+  }
+  return 0;
+}
+
+void ConstraintEvaluator::evaluate(const Constraint& c, int row0, Eigen::VectorXd& residuals,
+                                   std::vector<Eigen::Triplet<double>>* jacobian) const {
+  const double length = problem_.lengthScale();
+  const auto target = [&] {
+    return c.target.variable >= 0 ? variables_[c.target.variable] : c.target.value;
+  };
+  // Residual (p − q)·u, in lengths, with u a tracked direction.
+  const auto offsetAlong = [&](int row, const Tracked& p, const Tracked& q, const Tracked& u) {
+    const Eigen::Vector3d offset = p.value - q.value;
+    residuals[row] = offset.dot(u.value) / length;
+    RowWriter writer(layout_, jacobian, row, length);
+    writer.add(u.value, p);
+    writer.add(-u.value, q);
+    writer.add(offset, u);
+  };
+  // Residual d·e − value, unitless.
+  const auto dotProduct = [&](int row, const Tracked& d, const Tracked& e, double value) {
+    residuals[row] = d.value.dot(e.value) - value;
+    RowWriter writer(layout_, jacobian, row, 1.0);
+    writer.add(e.value, d);
+    writer.add(d.value, e);
+  };
+  switch (c.kind) {
+    case ConstraintKind::kCoincident: {
+      const Tracked p = point(c.p);
+      const Tracked q = point(c.q);
+      for (int k = 0; k < 3; ++k) {
+        Tracked axis;
+        axis.value = Eigen::Vector3d::Unit(k);
+        offsetAlong(row0 + k, p, q, axis);
+      }
+      return;
+    }
+    case ConstraintKind::kPointOnPlane:
+      offsetAlong(row0, point(c.p), point(c.q), direction(c.e));
+      return;
+    case ConstraintKind::kPointOnLine: {
+      const Tracked p = point(c.p);
+      const Tracked q = point(c.q);
+      for (int k = 0; k < 2; ++k)
+        offsetAlong(row0 + k, p, q, acrossDirection(c.e, k));
+      return;
+    }
+    case ConstraintKind::kDistance: {
+      const Tracked p = point(c.p);
+      const Tracked q = point(c.q);
+      const Eigen::Vector3d offset = p.value - q.value;
+      const double distance = offset.norm();
+      residuals[row0] = (distance - target()) / length;
+      // At p = q the distance has no gradient; a zero row lets the rank analysis name it.
+      const Eigen::Vector3d unit =
+          distance > 0.0 ? Eigen::Vector3d(offset / distance) : Eigen::Vector3d::Zero();
+      RowWriter writer(layout_, jacobian, row0, length);
+      writer.add(unit, p);
+      writer.add(-unit, q);
+      writer.addVariable(c.target.variable, -1.0);
+      return;
+    }
+    case ConstraintKind::kAngle: {
+      const double angle = target();
+      dotProduct(row0, direction(c.d), direction(c.e), std::cos(angle));
+      RowWriter(layout_, jacobian, row0, 1.0).addVariable(c.target.variable, std::sin(angle));
+      return;
+    }
+    case ConstraintKind::kParallel: {
+      const Tracked d = direction(c.d);
+      for (int k = 0; k < 2; ++k)
+        dotProduct(row0 + k, d, acrossDirection(c.e, k), 0.0);
+      return;
+    }
+    case ConstraintKind::kPerpendicular:
+      dotProduct(row0, direction(c.d), direction(c.e), 0.0);
+      return;
+    case ConstraintKind::kCoaxial: {
+      const Tracked d = direction(c.d);
+      const Tracked p = point(c.p);
+      const Tracked q = point(c.q);
+      for (int k = 0; k < 2; ++k) {
+        const Tracked across_k = acrossDirection(c.e, k);
+        dotProduct(row0 + k, d, across_k, 0.0);
+        offsetAlong(row0 + 2 + k, p, q, across_k);
+      }
+      return;
+    }
+  }
+}
+
+}  // namespace collido::constraints::detail

@@ -1,0 +1,69 @@
+#pragma once
+
+#include <vector>
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+
+#include <collido/constraints/problem.h>
+
+namespace collido::constraints::detail {
+
+/// Where each parameter sits in the solver's vector x: a body's 6 parameters (translation, then
+/// the rotation vector relative to its starting rotation) at 6·body, the variables after them.
+struct ParameterLayout {
+  explicit ParameterLayout(const Problem& problem);
+
+  int bodyColumn(int body) const { return 6 * body; }
+  int variableColumn(int variable) const { return 6 * body_count + variable; }
+
+  int body_count = 0;
+  int size = 0;
+  Eigen::VectorXd scale;   ///< the change of each parameter that counts as one unit
+  std::vector<bool> free;  ///< false where the parameter is fixed
+};
+
+/// The problem's parameters as the vector x (translations absolute, rotation vectors zero).
+Eigen::VectorXd startParameters(const Problem& problem, const ParameterLayout& layout);
+
+/// Evaluates constraint residuals and their Jacobian at a parameter vector. Residuals are
+/// normalised (lengths over the length scale, angles as they are) and the Jacobian is taken with
+/// respect to the normalised parameters z = (x − x_start) / scale.
+class ConstraintEvaluator {
+ public:
+  ConstraintEvaluator(const Problem& problem, const ParameterLayout& layout);
+
+  /// Poses from x (the starting rotations captured at construction).
+  void setParameters(const Eigen::VectorXd& x);
+  /// Only one body's pose, or one variable, from x: a component's solve touches only its own.
+  void setBody(int body, const Eigen::VectorXd& x);
+  void setVariable(int variable, const Eigen::VectorXd& x);
+
+  /// Number of scalar equations of a constraint kind.
+  static int equationCount(ConstraintKind kind);
+
+  /// Writes the constraint's residuals at rows [row0, row0 + equationCount) of `residuals` and,
+  /// when `jacobian` is given, its non-zero derivatives as (row, global column, value).
+  void evaluate(const Constraint& constraint, int row0, Eigen::VectorXd& residuals,
+                std::vector<Eigen::Triplet<double>>* jacobian) const;
+
+  /// The pose of a body at the last setParameters.
+  Pose pose(int body) const;
+
+ private:
+  struct Tracked;
+  class RowWriter;
+  Tracked point(const PointRef& ref) const;
+  Tracked direction(const DirectionRef& ref) const;
+  Tracked acrossDirection(const DirectionRef& ref, int which) const;
+
+  const Problem& problem_;
+  const ParameterLayout& layout_;
+  std::vector<Eigen::Matrix3d> start_rotations_;
+  std::vector<Eigen::Matrix3d> rotations_;
+  std::vector<Eigen::Vector3d> translations_;
+  std::vector<Eigen::Matrix3d> right_jacobians_;
+  Eigen::VectorXd variables_;
+};
+
+}  // namespace collido::constraints::detail

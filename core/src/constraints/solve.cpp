@@ -1,0 +1,79 @@
+#include <collido/constraints/solve.h>
+
+#include <cmath>
+#include <memory>
+
+#include "component_solver.h"
+#include "components.h"
+#include "equations.h"
+#include "rotation.h"
+
+namespace collido::constraints {
+namespace {
+
+Status checkOptions(const SolveOptions& options) {
+  if (!(options.tolerance > 0.0) || !std::isfinite(options.tolerance)) {
+    return Status(StatusCode::kInvalidArgument, "solve: the tolerance must be positive");
+  }
+  if (options.max_iterations < 1 || options.max_step_halvings < 0) {
+    return Status(StatusCode::kInvalidArgument,
+                  "solve: max_iterations must be at least 1 and max_step_halvings not negative");
+  }
+  return {};
+}
+
+/// Constraints on fixed objects only: nothing can move, so they hold already or they conflict.
+Status checkFrozen(const Problem& problem, const std::vector<int>& frozen,
+                   const detail::ConstraintEvaluator& evaluator, double tolerance) {
+  for (int c : frozen) {
+    const Constraint& constraint = problem.constraints()[c];
+    Eigen::VectorXd residuals(detail::ConstraintEvaluator::equationCount(constraint.kind));
+    evaluator.evaluate(constraint, 0, residuals, nullptr);
+    if (residuals.cwiseAbs().maxCoeff() > tolerance) {
+      return Status(StatusCode::kInvalidArgument,
+                    "constraint '" + constraint.name +
+                        "' involves only fixed objects and values, and does not hold "
+                        "(residual " +
+                        std::to_string(residuals.cwiseAbs().maxCoeff()) + ")");
+    }
+  }
+  return {};
+}
+
+}  // namespace
+
+Result<SolveReport> solve(Problem& problem, const SolveOptions& options) {
+  if (Status status = checkOptions(options); !status.ok()) return status;
+  const detail::ParameterLayout layout(problem);
+  detail::ConstraintEvaluator evaluator(problem, layout);
+  Eigen::VectorXd x = detail::startParameters(problem, layout);
+  std::vector<int> frozen;
+  const std::vector<detail::Component> components = detail::findComponents(problem, layout, frozen);
+  if (Status status = checkFrozen(problem, frozen, evaluator, options.tolerance); !status.ok()) {
+    return status;
+  }
+  SolveReport report;
+  report.components = static_cast<int>(components.size());
+  double change_squared = 0.0;
+  for (const detail::Component& component : components) {
+    detail::ComponentSolver solver(problem, layout, evaluator, component, x, options);
+    // The problem is written only when every component solved: a failure leaves it untouched.
+    if (Status status = solver.solve(report); !status.ok()) return status;
+    change_squared += solver.change().squaredNorm();
+  }
+  report.change = std::sqrt(change_squared);
+  for (int b = 0; b < layout.body_count; ++b) {
+    Body& body = problem.mutableBodies()[b];
+    const Eigen::Matrix3d rotation =
+        body.pose.linear() * detail::expMap(x.segment<3>(layout.bodyColumn(b) + 3));
+    // Re-orthonormalise: products of rotations drift by an ulp per solve.
+    body.pose.linear() = Eigen::Quaterniond(rotation).normalized().toRotationMatrix();
+    body.pose.translation() = x.segment<3>(layout.bodyColumn(b));
+  }
+  for (int v = 0; v < static_cast<int>(problem.variables().size()); ++v) {
+    problem.mutableVariables()[v].value = x[layout.variableColumn(v)];
+  }
+  return report;
+}
+
+}  // namespace collido::constraints
