@@ -12,8 +12,9 @@
 namespace collido::constraints::detail {
 namespace {
 
-/// Pivots of J Jᵀ below this fraction of the largest mean J's rows are dependent to about 1e-9.
-constexpr double kPivotRatio = 1e-24;
+/// Pivots of J Jᵀ below this fraction of the largest: J's rows are dependent to about 3e-7, where
+/// rounding alone leaves pivots near 1e-16 of the largest.
+constexpr double kPivotRatio = 1e-13;
 /// Below this residual Newton's full step is taken without a line search.
 constexpr double kNewtonRegion = 1e-8;
 /// A Newton step that turns a body by more than this (radians) has left the region where the
@@ -246,9 +247,13 @@ Status ComponentSolver::solve(SolveReport& report) {
   // equations are g(z) = (1 − t) g_start, which z = 0 meets at t = 0.
   double reached = 0.0;
   double step = 1.0;
-  int halvings = 0;
+  const double smallest_step = std::ldexp(1.0, -options_.max_step_halvings);
   int steps = 0;
-  while (reached < 1.0) {
+  // Every attempt either advances by at least smallest_step or halves the step, so this bounds
+  // the work even where successes and failures alternate.
+  const int max_attempts = 4 * (options_.max_step_halvings + 1) * (1 << 10);
+  for (int attempt = 0; reached < 1.0; ++attempt) {
+    if (attempt == max_attempts) return explainFailure(z, reached);
     const double next = std::min(1.0, reached + step);
     Eigen::VectorXd trial = z;
     const Outcome outcome = newton(trial, 1.0 - next, report.iterations);
@@ -256,8 +261,7 @@ Status ComponentSolver::solve(SolveReport& report) {
       z = trial;
       reached = next;
       ++steps;
-      halvings = 0;
-      step *= 2.0;
+      step = std::min(1.0, 2.0 * step);
       continue;
     }
     if (outcome == Outcome::kRankDeficient) {
@@ -268,8 +272,27 @@ Status ComponentSolver::solve(SolveReport& report) {
       evaluate(Eigen::VectorXd::Zero(z.size()), start_residuals_, nullptr);
       continue;
     }
-    if (++halvings > options_.max_step_halvings) return explainFailure(trial, 1.0 - next);
     step *= 0.5;
+    if (step < smallest_step) return explainFailure(z, reached);
+  }
+  // Dropped redundant rows were judged at one configuration: they must hold at the answer too.
+  if (active_rows_.size() != row_constraint_.size()) {
+    const std::vector<int> kept = active_rows_;
+    active_rows_.resize(row_constraint_.size());
+    for (int row = 0; row < static_cast<int>(row_constraint_.size()); ++row)
+      active_rows_[row] = row;
+    Eigen::VectorXd all;
+    evaluate(z, all, nullptr);
+    for (int row = 0; row < all.size(); ++row) {
+      if (std::abs(all[row]) > 1e3 * options_.tolerance) {
+        return Status(StatusCode::kInvalidArgument,
+                      "the redundant constraint " + constraintName(row) +
+                          ", dropped where it repeated others, does not hold at the answer "
+                          "(off by " +
+                          formatNumber(std::abs(all[row])) + ")");
+      }
+    }
+    active_rows_ = kept;
   }
   report.edit_steps = std::max(report.edit_steps, steps);
   z_ = z;
@@ -307,14 +330,20 @@ Status ComponentSolver::explainRankDeficiency(const Eigen::VectorXd& z, double s
   }
   const auto describe = [&](const DependentRow& row) {
     std::vector<std::string> names;
+    const std::string own = constraintName(active_rows_[row.row]);
     for (int combined : row.combined_rows) {
       const std::string name = constraintName(active_rows_[combined]);
-      if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+      if (name != own && std::find(names.begin(), names.end(), name) == names.end()) {
+        names.push_back(name);
+      }
     }
-    std::string text = constraintName(active_rows_[row.row]);
-    text += " with ";
-    for (std::size_t i = 0; i < names.size(); ++i)
+    std::string text = constraintName(active_rows_[row.row]) + " with ";
+    // A long chain of dependencies is named by its first few links and a count.
+    constexpr std::size_t kNamed = 8;
+    for (std::size_t i = 0; i < std::min(names.size(), kNamed); ++i) {
       text += (i > 0 ? ", " : "") + names[i];
+    }
+    if (names.size() > kNamed) text += " and " + std::to_string(names.size() - kNamed) + " more";
     return text;
   };
   // A row with no gradient at all: the configuration is singular for it (an angle between
@@ -365,7 +394,7 @@ Status ComponentSolver::explainRankDeficiency(const Eigen::VectorXd& z, double s
   return {};
 }
 
-Status ComponentSolver::explainFailure(const Eigen::VectorXd& z, double shift) {
+Status ComponentSolver::explainFailure(const Eigen::VectorXd& z, double reached) {
   // Named by how far each equation still is from the full edit.
   Eigen::VectorXd residuals;
   evaluate(z, residuals, nullptr);
@@ -383,9 +412,15 @@ Status ComponentSolver::explainFailure(const Eigen::VectorXd& z, double shift) {
     named.push_back(name);
     worst += (worst.empty() ? "" : ", ") + name + " off by " + formatNumber(std::abs(residuals[i]));
   }
+  if (worst.empty()) {
+    worst =
+        "no equation is off by more than the tolerance, but Newton's steps did not settle "
+        "(the answer is not isolated here, or the tolerance is below the rounding of the "
+        "coordinates)";
+  }
   return Status(StatusCode::kInvalidArgument,
-                "the constraints could not all be met (Newton stalled " +
-                    formatNumber(1.0 - shift) + " of the way through the edit): " + worst);
+                "the constraints could not all be met (the solve got " + formatNumber(reached) +
+                    " of the way through the edit): " + worst);
 }
 
 }  // namespace collido::constraints::detail

@@ -40,7 +40,8 @@ class ComponentSolver {
   /// Names the dependent equations at z: a conflict error, a redundancy error, or (with
   /// allow_redundant) drops the redundant rows and returns ok.
   Status explainRankDeficiency(const Eigen::VectorXd& z, double shift, SolveReport& report);
-  Status explainFailure(const Eigen::VectorXd& z, double shift);
+  /// Names the equations furthest from the full edit at z, the last point reached.
+  Status explainFailure(const Eigen::VectorXd& z, double reached);
   std::string constraintName(int row) const;
 
   const Problem& problem_;

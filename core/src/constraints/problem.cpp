@@ -97,10 +97,10 @@ Status Problem::fixVariable(int variable) {
 }
 
 Status Problem::setVariable(int variable, double value) {
-  if (Status status = fixVariable(variable); !status.ok()) return status;
-  if (!std::isfinite(value)) {
+  if (variable >= 0 && variable < static_cast<int>(variables_.size()) && !std::isfinite(value)) {
     return invalid("variable '" + variables_[variable].name + "': the value is not finite");
   }
+  if (Status status = fixVariable(variable); !status.ok()) return status;
   variables_[variable].value = value;
   return {};
 }

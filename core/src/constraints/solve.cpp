@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <memory>
+#include <sstream>
 
 #include "component_solver.h"
 #include "components.h"
@@ -55,14 +56,19 @@ Result<SolveReport> solve(Problem& problem, const SolveOptions& options) {
   SolveReport report;
   report.components = static_cast<int>(components.size());
   double change_squared = 0.0;
+  std::vector<bool> moved_body(problem.bodies().size(), false);
   for (const detail::Component& component : components) {
+    for (int body : component.bodies)
+      moved_body[body] = true;
     detail::ComponentSolver solver(problem, layout, evaluator, component, x, options);
     // The problem is written only when every component solved: a failure leaves it untouched.
     if (Status status = solver.solve(report); !status.ok()) return status;
     change_squared += solver.change().squaredNorm();
   }
   report.change = std::sqrt(change_squared);
+  // Only what a component solved is written: fixed and unconstrained poses stay bit for bit.
   for (int b = 0; b < layout.body_count; ++b) {
+    if (!moved_body[b]) continue;
     Body& body = problem.mutableBodies()[b];
     const Eigen::Matrix3d rotation =
         body.pose.linear() * detail::expMap(x.segment<3>(layout.bodyColumn(b) + 3));
@@ -71,6 +77,7 @@ Result<SolveReport> solve(Problem& problem, const SolveOptions& options) {
     body.pose.translation() = x.segment<3>(layout.bodyColumn(b));
   }
   for (int v = 0; v < static_cast<int>(problem.variables().size()); ++v) {
+    if (problem.variables()[v].fixed) continue;
     problem.mutableVariables()[v].value = x[layout.variableColumn(v)];
   }
   return report;

@@ -241,6 +241,27 @@ TEST(Solve, RedundantConstraintsAreNamedOrDroppedWhenAllowed) {
   EXPECT_TRUE(problem.bodies()[b].pose.translation().isApprox(Eigen::Vector3d(1, 0, 0), 1e-14));
 }
 
+TEST(Solve, ACycleOfCoincidencesInRotatedFramesIsRedundant) {
+  // a = b, b = c, c = a on points of three turned bodies: the third repeats the first two up to
+  // rounding, which the rank analysis must still see.
+  std::mt19937_64 random(11);
+  Problem problem(1.0);
+  int bodies[3];
+  for (int i = 0; i < 3; ++i) {
+    bodies[i] =
+        problem.addBody("body " + std::to_string(i), testing::randomPose(random, 1.0), 1.0).value();
+  }
+  const Eigen::Vector3d p(0.3, -0.2, 0.1);
+  ASSERT_TRUE(problem.addCoincident("ab", PointRef{bodies[0], p}, PointRef{bodies[1], p}).ok());
+  ASSERT_TRUE(problem.addCoincident("bc", PointRef{bodies[1], p}, PointRef{bodies[2], p}).ok());
+  ASSERT_TRUE(problem.addCoincident("ca", PointRef{bodies[2], p}, PointRef{bodies[0], p}).ok());
+  const auto report = solve(problem);
+  ASSERT_FALSE(report.ok());
+  EXPECT_NE(report.status().message().find("redundant constraints: 'ca' with 'ab', 'bc'"),
+            std::string::npos)
+      << report.status().message();
+}
+
 TEST(Solve, UnreachableDistancesConflictNonlinearly) {
   // A point 1 from each of two fixed points 5 apart: no solution exists.
   Problem problem(1.0);
@@ -327,6 +348,9 @@ TEST(ProblemBuilding, RefusesBadReferencesAndValuesNamingTheConstraint) {
   EXPECT_NE(message(problem.addBody("r", at(0, 0, 0), 0.0)).find("radius"), std::string::npos);
   EXPECT_NE(message(problem.addVariable("q", 1.0, -1.0)).find("scale"), std::string::npos);
   EXPECT_FALSE(problem.fixBody(3).ok());
+  const int v = problem.addVariable("v", 1.0, 1.0).value();
+  EXPECT_FALSE(problem.setVariable(v, std::nan("")).ok());
+  EXPECT_FALSE(problem.variables()[v].fixed);  // a refused edit changes nothing
   EXPECT_TRUE(problem.constraints().empty());
 }
 
