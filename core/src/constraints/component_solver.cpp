@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include <Eigen/SparseCholesky>
@@ -59,6 +60,12 @@ ComponentSolver::ComponentSolver(const Problem& problem, const ParameterLayout& 
   for (int row = 0; row < rows; ++row)
     active_rows_.push_back(row);
   z_ = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(component.columns.size()));
+  // Residuals cannot fall below the rounding of the coordinates they are computed from.
+  double largest = 0.0;
+  for (int column : component.columns)
+    largest = std::max(largest, std::abs(x[column]));
+  options_.tolerance = std::max(options_.tolerance, 16.0 * std::numeric_limits<double>::epsilon() *
+                                                        largest / problem.lengthScale());
 }
 
 std::string ComponentSolver::constraintName(int row) const {

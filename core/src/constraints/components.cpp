@@ -34,20 +34,25 @@ void addBody(std::vector<int>& bodies, int body) {
 
 ConstraintSupport supportOf(const Constraint& c) {
   ConstraintSupport support;
-  for (int body : {c.p.body, c.q.body})
-    addBody(support.bodies, body);
-  // Directions only matter for the kinds that read them.
-  const bool uses_d = c.kind == ConstraintKind::kAngle || c.kind == ConstraintKind::kParallel ||
-                      c.kind == ConstraintKind::kPerpendicular ||
-                      c.kind == ConstraintKind::kCoaxial;
-  const bool uses_e =
-      uses_d || c.kind == ConstraintKind::kPointOnPlane || c.kind == ConstraintKind::kPointOnLine;
+  // Each kind reads its own references; the others keep their defaults and do not count.
   const bool uses_points =
       !(c.kind == ConstraintKind::kAngle || c.kind == ConstraintKind::kParallel ||
         c.kind == ConstraintKind::kPerpendicular);
-  if (!uses_points) support.bodies.clear();
-  if (uses_d) addBody(support.bodies, c.d.body);
-  if (uses_e) addBody(support.bodies, c.e.body);
+  const bool uses_d = c.kind == ConstraintKind::kAngle || c.kind == ConstraintKind::kParallel ||
+                      c.kind == ConstraintKind::kPerpendicular ||
+                      c.kind == ConstraintKind::kCoaxial;
+  const bool uses_e = c.kind != ConstraintKind::kCoincident && c.kind != ConstraintKind::kDistance;
+  std::vector<int> used;
+  if (uses_points) used.insert(used.end(), {c.p.body, c.q.body});
+  if (uses_d) used.push_back(c.d.body);
+  if (uses_e) used.push_back(c.e.body);
+  for (int body : used) {
+    if (body == kWorld) {
+      support.world = true;
+    } else {
+      addBody(support.bodies, body);
+    }
+  }
   if (c.target.variable >= 0) support.variables.push_back(c.target.variable);
   return support;
 }
@@ -64,6 +69,9 @@ std::vector<Component> findComponents(const Problem& problem, const ParameterLay
   std::vector<std::vector<int>> free_owners(problem.constraints().size());
   for (int c = 0; c < static_cast<int>(problem.constraints().size()); ++c) {
     const ConstraintSupport support = supportOf(problem.constraints()[c]);
+    // References all on one body: moving it moves them together, so the constraint holds or
+    // fails whatever the solve does, like one on fixed objects.
+    if (support.bodies.size() == 1 && !support.world && support.variables.empty()) continue;
     for (int body : support.bodies) {
       if (ownerFree(body)) free_owners[c].push_back(body);
     }

@@ -19,11 +19,13 @@ struct Component {
 struct ConstraintSupport {
   std::vector<int> bodies;
   std::vector<int> variables;
+  bool world = false;  ///< some reference is on the world frame
 };
 ConstraintSupport supportOf(const Constraint& constraint);
 
 /// Splits the constraint graph into connected components over free parameters. Constraints that
-/// touch no free parameter are returned in `frozen` (they hold or they do not; nothing moves).
+/// no change can affect (on fixed objects only, or on one body alone) are returned in `frozen`:
+/// they hold or they do not.
 std::vector<Component> findComponents(const Problem& problem, const ParameterLayout& layout,
                                       std::vector<int>& frozen);
 

@@ -160,16 +160,12 @@ int ConstraintEvaluator::equationCount(ConstraintKind kind) {
   switch (kind) {
     case ConstraintKind::kCoincident:
       return 3;
-    case ConstraintKind::kPointOnPlane:
-      return 1;
     case ConstraintKind::kPointOnLine:
-      return 2;
-    case ConstraintKind::kDistance:
-      return 1;
-    case ConstraintKind::kAngle:
-      return 1;
     case ConstraintKind::kParallel:
       return 2;
+    case ConstraintKind::kPointOnPlane:
+    case ConstraintKind::kDistance:
+    case ConstraintKind::kAngle:
     case ConstraintKind::kPerpendicular:
       return 1;
     case ConstraintKind::kCoaxial:

@@ -33,9 +33,30 @@ Status checkFrozen(const Problem& problem, const std::vector<int>& frozen,
     if (residuals.cwiseAbs().maxCoeff() > tolerance) {
       return Status(StatusCode::kInvalidArgument,
                     "constraint '" + constraint.name +
-                        "' involves only fixed objects and values, and does not hold "
-                        "(residual " +
+                        "' involves only fixed objects and values (or one body alone), and "
+                        "does not hold (residual " +
                         std::to_string(residuals.cwiseAbs().maxCoeff()) + ")");
+    }
+  }
+  return {};
+}
+
+/// A variable that sets an angle must stay inside (0, π), one that sets a distance above 0: at
+/// the edges the equations lose their meaning (cos is even; a zero distance has no direction).
+Status checkVariableTargets(const Problem& problem, const char* when) {
+  constexpr double kPi = 3.14159265358979323846;
+  for (const Constraint& c : problem.constraints()) {
+    if (c.target.variable < 0) continue;
+    const Variable& variable = problem.variables()[c.target.variable];
+    const bool angle = c.kind == ConstraintKind::kAngle;
+    const bool in_range =
+        angle ? variable.value > 1e-6 && variable.value < kPi - 1e-6 : variable.value > 0.0;
+    if (!in_range) {
+      std::ostringstream out;
+      out << "constraint '" << c.name << "': its variable '" << variable.name << "' is "
+          << variable.value << " " << when << ", outside "
+          << (angle ? "(0, pi) radians" : "the positive distances");
+      return Status(StatusCode::kInvalidArgument, out.str());
     }
   }
   return {};
@@ -45,6 +66,9 @@ Status checkFrozen(const Problem& problem, const std::vector<int>& frozen,
 
 Result<SolveReport> solve(Problem& problem, const SolveOptions& options) {
   if (Status status = checkOptions(options); !status.ok()) return status;
+  if (Status status = checkVariableTargets(problem, "before the solve"); !status.ok()) {
+    return status;
+  }
   const detail::ParameterLayout layout(problem);
   detail::ConstraintEvaluator evaluator(problem, layout);
   Eigen::VectorXd x = detail::startParameters(problem, layout);
@@ -66,6 +90,16 @@ Result<SolveReport> solve(Problem& problem, const SolveOptions& options) {
     change_squared += solver.change().squaredNorm();
   }
   report.change = std::sqrt(change_squared);
+  // The answer must keep every variable target meaningful; else the problem stays as it was.
+  {
+    Problem solved = problem;
+    for (int v = 0; v < static_cast<int>(solved.variables().size()); ++v) {
+      solved.mutableVariables()[v].value = x[layout.variableColumn(v)];
+    }
+    if (Status status = checkVariableTargets(solved, "at the answer"); !status.ok()) {
+      return status;
+    }
+  }
   // Only what a component solved is written: fixed and unconstrained poses stay bit for bit.
   for (int b = 0; b < layout.body_count; ++b) {
     if (!moved_body[b]) continue;

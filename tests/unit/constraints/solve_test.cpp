@@ -310,6 +310,40 @@ TEST(Solve, AConstraintOnFixedObjectsOnlyMustAlreadyHold) {
       << report.status().message();
 }
 
+TEST(Solve, AConstraintWithinOneBodyIsCheckedNotSolved) {
+  // Two points of one body: no rigid motion changes their distance.
+  Problem problem(1.0);
+  const int body = problem.addBody("b", at(0, 0, 0), 1.0).value();
+  ASSERT_TRUE(
+      problem.addDistance("inside", PointRef{body, kOrigin}, PointRef{body, {1, 0, 0}}, Target{2.0})
+          .ok());
+  const auto report = solve(problem);
+  ASSERT_FALSE(report.ok());
+  EXPECT_NE(report.status().message().find(
+                "'inside' involves only fixed objects and values (or one body alone)"),
+            std::string::npos)
+      << report.status().message();
+}
+
+TEST(Solve, AVariableAngleOutsideItsRangeIsRefusedNamingBoth) {
+  Problem problem(1.0);
+  Pose start = Pose::Identity();
+  start.linear() = Eigen::AngleAxisd(0.5, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  const int body = problem.addBody("b", start, 1.0).value();
+  const int opening = problem.addVariable("opening", 0.5, 1.0).value();
+  ASSERT_TRUE(problem
+                  .addAngle("open", DirectionRef{kWorld, {1, 0, 0}}, DirectionRef{body, {1, 0, 0}},
+                            Target{0.0, opening})
+                  .ok());
+  ASSERT_TRUE(problem.setVariable(opening, -0.5).ok());
+  const auto report = solve(problem);
+  ASSERT_FALSE(report.ok());
+  EXPECT_NE(report.status().message().find(
+                "constraint 'open': its variable 'opening' is -0.5 before the solve"),
+            std::string::npos)
+      << report.status().message();
+}
+
 TEST(ProblemBuilding, RefusesBadReferencesAndValuesNamingTheConstraint) {
   Problem problem(1.0);
   const int a = problem.addBody("a", at(0, 0, 0), 1.0).value();
