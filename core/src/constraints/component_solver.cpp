@@ -154,19 +154,8 @@ ComponentSolver::Outcome ComponentSolver::newton(Eigen::VectorXd& z, double shif
     evaluate(z, residuals, &jacobian);
     const int m = static_cast<int>(residuals.size());
     const Eigen::VectorXd target_residuals = residuals - shift * start_residuals_;
-    // J Jᵀ: its pivots tell whether the equations are independent here, and it gives the step
-    // with the identity Hessian of ½|z|²: (J Jᵀ) λ = g − J z, new point −Jᵀ λ.
-    const Eigen::SparseMatrix<double> normal = jacobian * jacobian.transpose();
-    normal_factorization.compute(normal);
-    if (normal_factorization.info() != Eigen::Success) return Outcome::kRankDeficient;
-    const Eigen::VectorXd pivots = normal_factorization.vectorD();
-    if (pivots.size() > 0 && pivots.minCoeff() <= kPivotRatio * pivots.cwiseAbs().maxCoeff()) {
-      // Dependent at the attempt's start: the equations themselves. Later: the iteration ran
-      // into a singular configuration, and a shorter step of the edit may avoid it.
-      return iteration == 0 ? Outcome::kRankDeficient : Outcome::kNoProgress;
-    }
-    Eigen::VectorXd next_multipliers = normal_factorization.solve(target_residuals - jacobian * z);
-    Eigen::VectorXd step = -(jacobian.transpose() * next_multipliers) - z;
+    Eigen::VectorXd step;
+    Eigen::VectorXd next_multipliers;
     // Newton on the KKT conditions once multipliers are known: [H Jᵀ; J 0][Δz; λ] = −[z; g]
     // with H = I + Σ λ_j ∇²g_j. Kept only where it is a descent direction of the merit below.
     if (multipliers.size() == m && !multipliers.isZero(0.0)) {
@@ -202,6 +191,23 @@ ComponentSolver::Outcome ComponentSolver::newton(Eigen::VectorXd& z, double shif
           next_multipliers = newton_multipliers;
         }
       }
+    }
+    if (step.size() == 0) {
+      // J Jᵀ: its pivots tell whether the equations are independent here (always checked on
+      // an attempt's first iteration, which has no multipliers yet), and it gives the step with
+      // the identity Hessian of ½|z|²: (J Jᵀ) λ = g − J z, new point −Jᵀ λ.
+      const Eigen::SparseMatrix<double> normal = jacobian * jacobian.transpose();
+      normal_factorization.compute(normal);
+      const Eigen::VectorXd pivots = normal_factorization.info() == Eigen::Success
+                                         ? Eigen::VectorXd(normal_factorization.vectorD())
+                                         : Eigen::VectorXd::Zero(std::max(m, 1));
+      if (pivots.size() > 0 && !(pivots.minCoeff() > kPivotRatio * pivots.cwiseAbs().maxCoeff())) {
+        // Dependent at the attempt's start: the equations themselves. Later: the iteration ran
+        // into a singular configuration, and a shorter step of the edit may avoid it.
+        return iteration == 0 ? Outcome::kRankDeficient : Outcome::kNoProgress;
+      }
+      next_multipliers = normal_factorization.solve(target_residuals - jacobian * z);
+      step = -(jacobian.transpose() * next_multipliers) - z;
     }
     const double residual_norm = target_residuals.cwiseAbs().maxCoeff();
     const double step_norm = step.cwiseAbs().maxCoeff();

@@ -107,10 +107,23 @@ void ConstraintEvaluator::setParameters(const Eigen::VectorXd& x) {
 }
 
 void ConstraintEvaluator::setBody(int body, const Eigen::VectorXd& x) {
-  const Eigen::Vector3d omega = x.segment<3>(layout_.bodyColumn(body) + 3);
+  setBodyState(body, x.segment<3>(layout_.bodyColumn(body)),
+               x.segment<3>(layout_.bodyColumn(body) + 3));
+}
+
+void ConstraintEvaluator::setBodyState(int body, const Eigen::Vector3d& translation,
+                                       const Eigen::Vector3d& omega) {
   rotations_[body] = start_rotations_[body] * expMap(omega);
-  translations_[body] = x.segment<3>(layout_.bodyColumn(body));
+  translations_[body] = translation;
   right_jacobians_[body] = rightJacobian(omega);
+}
+
+void ConstraintEvaluator::setBodyTranslation(int body, const Eigen::Vector3d& translation) {
+  translations_[body] = translation;
+}
+
+void ConstraintEvaluator::setVariableValue(int variable, double value) {
+  variables_[variable] = value;
 }
 
 void ConstraintEvaluator::setVariable(int variable, const Eigen::VectorXd& x) {

@@ -38,6 +38,10 @@ class ConstraintEvaluator {
   /// Only one body's pose, or one variable, from x: a component's solve touches only its own.
   void setBody(int body, const Eigen::VectorXd& x);
   void setVariable(int variable, const Eigen::VectorXd& x);
+  /// The same from the values themselves (no full parameter vector needed).
+  void setBodyState(int body, const Eigen::Vector3d& translation, const Eigen::Vector3d& omega);
+  void setBodyTranslation(int body, const Eigen::Vector3d& translation);
+  void setVariableValue(int variable, double value);
 
   /// Number of scalar equations of a constraint kind.
   static int equationCount(ConstraintKind kind);

@@ -7,9 +7,10 @@
 namespace collido::constraints::detail {
 namespace {
 
-/// Step of the central differences, in normalised parameters (gradient error ~h², rounding
-/// ~1e-16/h: both near 1e-10 of the Hessian, which only steers the iteration).
-constexpr double kStep = 1e-5;
+/// Step of the forward differences, in normalised parameters (truncation ~h, rounding
+/// ~1e-16/h: both near 1e-8 of the Hessian, which only steers the iteration; central
+/// differences cost twice the evaluations and saved no iteration on the bench's chains).
+constexpr double kStep = 1e-8;
 
 }  // namespace
 
@@ -39,27 +40,32 @@ void addWeightedHessian(ConstraintEvaluator& evaluator, const ParameterLayout& l
     }
     return g;
   };
-  const auto apply = [&](int column, const Eigen::VectorXd& at) {
-    if (column < 6 * layout.body_count) {
-      evaluator.setBody(column / 6, at);
+  // Moves one parameter by `delta` from x (delta 0 puts it back). Only the moved body's state
+  // is recomputed, and a translation leaves its rotation as it is.
+  const auto move = [&](int column, double delta) {
+    if (column >= 6 * layout.body_count) {
+      evaluator.setVariableValue(column - 6 * layout.body_count, x[column] + delta);
+      return;
+    }
+    const int first = column - column % 6;
+    Eigen::Vector3d translation = x.segment<3>(first);
+    Eigen::Vector3d omega = x.segment<3>(first + 3);
+    if (column % 6 < 3) {
+      translation[column % 6] += delta;
+      evaluator.setBodyTranslation(column / 6, translation);
     } else {
-      evaluator.setVariable(column - 6 * layout.body_count, at);
+      omega[column % 6 - 3] += delta;
+      evaluator.setBodyState(column / 6, translation, omega);
     }
   };
   Eigen::MatrixXd hessian(size, size);
-  Eigen::VectorXd moved = x;
+  const Eigen::VectorXd here = gradient();
   for (int i = 0; i < size; ++i) {
     const int column = columns[i];
-    const double delta = kStep * layout.scale[column];
-    moved[column] = x[column] + delta;
-    apply(column, moved);
+    move(column, kStep * layout.scale[column]);
     const Eigen::VectorXd up = gradient();
-    moved[column] = x[column] - delta;
-    apply(column, moved);
-    const Eigen::VectorXd down = gradient();
-    moved[column] = x[column];
-    apply(column, moved);
-    hessian.col(i) = (up - down) / (2.0 * kStep);
+    move(column, 0.0);
+    hessian.col(i) = (up - here) / kStep;
   }
   for (int i = 0; i < size; ++i) {
     for (int j = 0; j < size; ++j) {
