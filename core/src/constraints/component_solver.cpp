@@ -3,11 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <sstream>
 
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseLU>
 
+#include "format_number.h"
 #include "hessian.h"
 
 namespace collido::constraints::detail {
@@ -23,13 +23,6 @@ constexpr double kNewtonRegion = 1e-8;
 /// the solve follows the start continuously (a door opened from 0.2 to 3 rad turns 2.8 rad,
 /// not −3.2 through an overshoot).
 constexpr double kMaxTurnPerStep = 0.5;
-
-std::string formatNumber(double value) {
-  std::ostringstream out;
-  out.precision(3);
-  out << value;
-  return out.str();
-}
 
 }  // namespace
 

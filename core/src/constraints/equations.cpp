@@ -137,20 +137,6 @@ Pose ConstraintEvaluator::pose(int body) const {
   return pose;
 }
 
-ConstraintEvaluator::Tracked ConstraintEvaluator::point(const PointRef& ref) const {
-  Tracked tracked;
-  tracked.body = ref.body;
-  if (ref.body == kWorld) {
-    tracked.value = ref.local;
-    return tracked;
-  }
-  const Eigen::Matrix3d& r = rotations_[ref.body];
-  tracked.value = r * ref.local + translations_[ref.body];
-  tracked.jacobian.leftCols<3>().setIdentity();
-  tracked.jacobian.rightCols<3>() = -r * skew(ref.local) * right_jacobians_[ref.body];
-  return tracked;
-}
-
 ConstraintEvaluator::Tracked ConstraintEvaluator::direction(const DirectionRef& ref) const {
   Tracked tracked;
   tracked.body = ref.body;
@@ -161,6 +147,15 @@ ConstraintEvaluator::Tracked ConstraintEvaluator::direction(const DirectionRef& 
   const Eigen::Matrix3d& r = rotations_[ref.body];
   tracked.value = r * ref.local;
   tracked.jacobian.rightCols<3>() = -r * skew(ref.local) * right_jacobians_[ref.body];
+  return tracked;
+}
+
+ConstraintEvaluator::Tracked ConstraintEvaluator::point(const PointRef& ref) const {
+  // A point turns like the direction to it from the body's origin, and moves with the origin.
+  Tracked tracked = direction(DirectionRef{ref.body, ref.local});
+  if (ref.body == kWorld) return tracked;
+  tracked.value += translations_[ref.body];
+  tracked.jacobian.leftCols<3>().setIdentity();
   return tracked;
 }
 

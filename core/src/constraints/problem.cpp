@@ -3,14 +3,14 @@
 #include <cmath>
 #include <utility>
 
+#include "angle_range.h"
+
 namespace collido::constraints {
 namespace {
 
 Status invalid(std::string message) {
   return Status(StatusCode::kInvalidArgument, std::move(message));
 }
-
-constexpr double kPi = 3.14159265358979323846;
 
 }  // namespace
 
@@ -159,32 +159,17 @@ Result<int> Problem::add(Constraint constraint) {
 }
 
 Result<int> Problem::addCoincident(std::string name, const PointRef& p, const PointRef& q) {
-  Constraint c;
-  c.kind = ConstraintKind::kCoincident;
-  c.name = std::move(name);
-  c.p = p;
-  c.q = q;
-  return add(std::move(c));
+  return add({ConstraintKind::kCoincident, std::move(name), p, q, {}, {}, {}});
 }
 
 Result<int> Problem::addPointOnPlane(std::string name, const PointRef& p, const Plane& plane) {
-  Constraint c;
-  c.kind = ConstraintKind::kPointOnPlane;
-  c.name = std::move(name);
-  c.p = p;
-  c.q = plane.point;
-  c.e = plane.normal;
-  return add(std::move(c));
+  return add(
+      {ConstraintKind::kPointOnPlane, std::move(name), p, plane.point, {}, plane.normal, {}});
 }
 
 Result<int> Problem::addPointOnLine(std::string name, const PointRef& p, const Axis& line) {
-  Constraint c;
-  c.kind = ConstraintKind::kPointOnLine;
-  c.name = std::move(name);
-  c.p = p;
-  c.q = line.point;
-  c.e = line.direction;
-  return add(std::move(c));
+  return add(
+      {ConstraintKind::kPointOnLine, std::move(name), p, line.point, {}, line.direction, {}});
 }
 
 Result<int> Problem::addDistance(std::string name, const PointRef& p, const PointRef& q,
@@ -193,59 +178,31 @@ Result<int> Problem::addDistance(std::string name, const PointRef& p, const Poin
     return invalid("constraint '" + name +
                    "': a distance must be positive (a distance of 0 is 'coincident')");
   }
-  Constraint c;
-  c.kind = ConstraintKind::kDistance;
-  c.name = std::move(name);
-  c.p = p;
-  c.q = q;
-  c.target = distance;
-  return add(std::move(c));
+  return add({ConstraintKind::kDistance, std::move(name), p, q, {}, {}, distance});
 }
 
 Result<int> Problem::addAngle(std::string name, const DirectionRef& d, const DirectionRef& e,
                               Target radians) {
-  if (radians.variable == -1 && !(radians.value > 1e-6 && radians.value < kPi - 1e-6)) {
+  if (radians.variable == -1 && !detail::angleTargetInRange(radians.value)) {
     return invalid("constraint '" + name +
                    "': an angle must lie strictly between 0 and pi radians (0 and pi are "
                    "'parallel', pi/2 is 'perpendicular')");
   }
-  Constraint c;
-  c.kind = ConstraintKind::kAngle;
-  c.name = std::move(name);
-  c.d = d;
-  c.e = e;
-  c.target = radians;
-  return add(std::move(c));
+  return add({ConstraintKind::kAngle, std::move(name), {}, {}, d, e, radians});
 }
 
 Result<int> Problem::addParallel(std::string name, const DirectionRef& d, const DirectionRef& e) {
-  Constraint c;
-  c.kind = ConstraintKind::kParallel;
-  c.name = std::move(name);
-  c.d = d;
-  c.e = e;
-  return add(std::move(c));
+  return add({ConstraintKind::kParallel, std::move(name), {}, {}, d, e, {}});
 }
 
 Result<int> Problem::addPerpendicular(std::string name, const DirectionRef& d,
                                       const DirectionRef& e) {
-  Constraint c;
-  c.kind = ConstraintKind::kPerpendicular;
-  c.name = std::move(name);
-  c.d = d;
-  c.e = e;
-  return add(std::move(c));
+  return add({ConstraintKind::kPerpendicular, std::move(name), {}, {}, d, e, {}});
 }
 
 Result<int> Problem::addCoaxial(std::string name, const Axis& a, const Axis& b) {
-  Constraint c;
-  c.kind = ConstraintKind::kCoaxial;
-  c.name = std::move(name);
-  c.p = a.point;
-  c.d = a.direction;
-  c.q = b.point;
-  c.e = b.direction;
-  return add(std::move(c));
+  return add(
+      {ConstraintKind::kCoaxial, std::move(name), a.point, b.point, a.direction, b.direction, {}});
 }
 
 }  // namespace collido::constraints

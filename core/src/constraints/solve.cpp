@@ -1,12 +1,13 @@
 #include <collido/constraints/solve.h>
 
 #include <cmath>
-#include <memory>
-#include <sstream>
+#include <vector>
 
+#include "angle_range.h"
 #include "component_solver.h"
 #include "components.h"
 #include "equations.h"
+#include "format_number.h"
 #include "rotation.h"
 
 namespace collido::constraints {
@@ -43,20 +44,19 @@ Status checkFrozen(const Problem& problem, const std::vector<int>& frozen,
 
 /// A variable that sets an angle must stay inside (0, π), one that sets a distance above 0: at
 /// the edges the equations lose their meaning (cos is even; a zero distance has no direction).
-Status checkVariableTargets(const Problem& problem, const char* when) {
-  constexpr double kPi = 3.14159265358979323846;
+/// `values` holds each variable's value, before the solve or at its answer.
+Status checkVariableTargets(const Problem& problem, const std::vector<double>& values,
+                            const char* when) {
   for (const Constraint& c : problem.constraints()) {
     if (c.target.variable < 0) continue;
-    const Variable& variable = problem.variables()[c.target.variable];
+    const double value = values[c.target.variable];
     const bool angle = c.kind == ConstraintKind::kAngle;
-    const bool in_range =
-        angle ? variable.value > 1e-6 && variable.value < kPi - 1e-6 : variable.value > 0.0;
-    if (!in_range) {
-      std::ostringstream out;
-      out << "constraint '" << c.name << "': its variable '" << variable.name << "' is "
-          << variable.value << " " << when << ", outside "
-          << (angle ? "(0, pi) radians" : "the positive distances");
-      return Status(StatusCode::kInvalidArgument, out.str());
+    if (angle ? !detail::angleTargetInRange(value) : !(value > 0.0)) {
+      return Status(StatusCode::kInvalidArgument,
+                    "constraint '" + c.name + "': its variable '" +
+                        problem.variables()[c.target.variable].name + "' is " +
+                        detail::formatNumber(value) + " " + when + ", outside " +
+                        (angle ? "(0, pi) radians" : "the positive distances"));
     }
   }
   return {};
@@ -66,7 +66,10 @@ Status checkVariableTargets(const Problem& problem, const char* when) {
 
 Result<SolveReport> solve(Problem& problem, const SolveOptions& options) {
   if (Status status = checkOptions(options); !status.ok()) return status;
-  if (Status status = checkVariableTargets(problem, "before the solve"); !status.ok()) {
+  std::vector<double> values;
+  for (const Variable& variable : problem.variables())
+    values.push_back(variable.value);
+  if (Status status = checkVariableTargets(problem, values, "before the solve"); !status.ok()) {
     return status;
   }
   const detail::ParameterLayout layout(problem);
@@ -91,14 +94,10 @@ Result<SolveReport> solve(Problem& problem, const SolveOptions& options) {
   }
   report.change = std::sqrt(change_squared);
   // The answer must keep every variable target meaningful; else the problem stays as it was.
-  {
-    Problem solved = problem;
-    for (int v = 0; v < static_cast<int>(solved.variables().size()); ++v) {
-      solved.mutableVariables()[v].value = x[layout.variableColumn(v)];
-    }
-    if (Status status = checkVariableTargets(solved, "at the answer"); !status.ok()) {
-      return status;
-    }
+  for (int v = 0; v < static_cast<int>(values.size()); ++v)
+    values[v] = x[layout.variableColumn(v)];
+  if (Status status = checkVariableTargets(problem, values, "at the answer"); !status.ok()) {
+    return status;
   }
   // Only what a component solved is written: fixed and unconstrained poses stay bit for bit.
   for (int b = 0; b < layout.body_count; ++b) {
