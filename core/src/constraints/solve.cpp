@@ -36,7 +36,7 @@ Status checkFrozen(const Problem& problem, const std::vector<int>& frozen,
                     "constraint '" + constraint.name +
                         "' involves only fixed objects and values (or one body alone), and "
                         "does not hold (residual " +
-                        std::to_string(residuals.cwiseAbs().maxCoeff()) + ")");
+                        detail::formatNumber(residuals.cwiseAbs().maxCoeff()) + ")");
     }
   }
   return {};

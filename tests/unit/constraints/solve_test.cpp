@@ -310,6 +310,21 @@ TEST(Solve, AConstraintOnFixedObjectsOnlyMustAlreadyHold) {
       << report.status().message();
 }
 
+TEST(Solve, AFrozenConstraintOffByLittleShowsHowLittle) {
+  // Off by 1e-9: fixed six decimals would print "residual 0.000000".
+  Problem problem(1.0);
+  const int a = problem.addBody("a", at(0, 0, 0), 1.0).value();
+  ASSERT_TRUE(problem.fixBody(a).ok());
+  ASSERT_TRUE(problem
+                  .addDistance("frozen", PointRef{a, kOrigin}, PointRef{kWorld, {1, 0, 0}},
+                               Target{1.0 + 1e-9})
+                  .ok());
+  const auto report = solve(problem);
+  ASSERT_FALSE(report.ok());
+  EXPECT_NE(report.status().message().find("(residual 1e-09)"), std::string::npos)
+      << report.status().message();
+}
+
 TEST(Solve, AConstraintWithinOneBodyIsCheckedNotSolved) {
   // Two points of one body: no rigid motion changes their distance.
   Problem problem(1.0);
