@@ -364,11 +364,13 @@ Status ComponentSolver::explainRankDeficiency(const Eigen::VectorXd& z, double s
     }
   }
   if (!singular.empty()) {
-    return Status(StatusCode::kInvalidArgument,
-                  singular + (singular.find(',') == std::string::npos ? " has" : " have") +
-                      " no gradient in this configuration, so no small change can satisfy it "
-                      "(e.g. an angle between parallel directions, a distance between "
-                      "coincident points): start from a configuration off the singularity");
+    return Status(
+        StatusCode::kInvalidArgument,
+        singular + (singular.find(',') == std::string::npos ? " has" : " have") +
+            " no gradient in this configuration, so no small change can satisfy it "
+            "(e.g. an angle between parallel directions, a distance between "
+            "coincident points, a clearance between shapes that already share a point): start "
+            "from a configuration off the singularity");
   }
   std::string conflicts;
   std::string redundancies;

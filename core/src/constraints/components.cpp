@@ -41,7 +41,8 @@ ConstraintSupport supportOf(const Constraint& c) {
   const bool uses_d = c.kind == ConstraintKind::kAngle || c.kind == ConstraintKind::kParallel ||
                       c.kind == ConstraintKind::kPerpendicular ||
                       c.kind == ConstraintKind::kCoaxial;
-  const bool uses_e = c.kind != ConstraintKind::kCoincident && c.kind != ConstraintKind::kDistance;
+  const bool uses_e = c.kind != ConstraintKind::kCoincident &&
+                      c.kind != ConstraintKind::kDistance && c.kind != ConstraintKind::kClearance;
   std::vector<int> used;
   if (uses_points) used.insert(used.end(), {c.p.body, c.q.body});
   if (uses_d) used.push_back(c.d.body);

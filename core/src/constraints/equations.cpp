@@ -1,6 +1,7 @@
 #include "equations.h"
 
 #include <cmath>
+#include <limits>
 
 #include "rotation.h"
 
@@ -90,7 +91,9 @@ class ConstraintEvaluator::RowWriter {
 };
 
 ConstraintEvaluator::ConstraintEvaluator(const Problem& problem, const ParameterLayout& layout)
-    : problem_(problem), layout_(layout) {
+    : problem_(problem),
+      layout_(layout),
+      last_direction_(problem.constraints().size(), Eigen::Vector3d::Zero()) {
   for (const Body& body : problem.bodies())
     start_rotations_.push_back(body.pose.linear());
   setParameters(startParameters(problem, layout));
@@ -173,6 +176,7 @@ int ConstraintEvaluator::equationCount(ConstraintKind kind) {
       return 2;
     case ConstraintKind::kPointOnPlane:
     case ConstraintKind::kDistance:
+    case ConstraintKind::kClearance:
     case ConstraintKind::kAngle:
     case ConstraintKind::kPerpendicular:
       return 1;
@@ -266,7 +270,64 @@ void ConstraintEvaluator::evaluate(const Constraint& c, int row0, Eigen::VectorX
       }
       return;
     }
+    case ConstraintKind::kClearance:
+      evaluateClearance(c, row0, target(), residuals, jacobian);
+      return;
   }
+}
+
+void ConstraintEvaluator::evaluateClearance(const Constraint& c, int row, double target,
+                                            Eigen::VectorXd& residuals,
+                                            std::vector<Eigen::Triplet<double>>* jacobian) const {
+  const int a = c.p.body;
+  const int b = c.q.body;
+  const Pose pose_a = pose(a);
+  const Pose pose_b = pose(b);
+  Result<Separation> measured = problem_.separationQuery()->measure(a, pose_a, b, pose_b);
+  if (!measured.ok()) {
+    if (query_failure_.ok()) {
+      query_failure_ = Status(
+          measured.status().code(),
+          "constraint '" + c.name + "': the distance query failed: " + measured.status().message());
+    }
+    residuals[row] = std::numeric_limits<double>::quiet_NaN();
+    return;
+  }
+  const Separation& s = measured.value();
+  // The signed separation and the direction B leaves A along, from which the gradient follows
+  // (the closest points held in their bodies: the derivative of a minimum distance is that of
+  // the distance between its minimisers).
+  double separation = 0.0;
+  Eigen::Vector3d on_a = s.point_a;
+  Eigen::Vector3d on_b = s.point_b;
+  Eigen::Vector3d direction = on_b - on_a;
+  Eigen::Vector3d& last = last_direction_[&c - problem_.constraints().data()];
+  // The direction from the closest points is good to about ulp(coordinate) / distance; nearer
+  // contact than that, the last direction seen is the better guess.
+  const double trusted = 1e-8 * (problem_.lengthScale() + on_a.cwiseAbs().maxCoeff());
+  if (s.distance > 0.0 && direction.norm() > 0.0) {
+    separation = s.distance;
+    direction.normalize();
+    if (s.distance < trusted && last.squaredNorm() > 0.0) direction = last;
+  } else if (s.depth && *s.depth > 0.0) {
+    separation = -*s.depth;
+    direction = s.normal.normalized();
+    on_a = s.contact;
+    on_b = s.contact - *s.depth * direction;
+  } else {
+    direction = last;  // touching: the way they parted last, or no gradient at all
+    on_b = on_a;
+  }
+  if (direction.squaredNorm() > 0.0) last = direction;
+  const double length = problem_.lengthScale();
+  residuals[row] = (separation - target) / length;
+  RowWriter writer(layout_, jacobian, row, length);
+  const auto local = [&](int body, const Pose& body_pose, const Eigen::Vector3d& world) {
+    return PointRef{body, body_pose.linear().transpose() * (world - body_pose.translation())};
+  };
+  writer.add(direction, point(local(b, pose_b, on_b)));
+  writer.add(-direction, point(local(a, pose_a, on_a)));
+  writer.addVariable(c.target.variable, -1.0);
 }
 
 }  // namespace collido::constraints::detail

@@ -6,6 +6,7 @@
 #include <Eigen/SparseCore>
 
 #include <collido/constraints/problem.h>
+#include <collido/status.h>
 
 namespace collido::constraints::detail {
 
@@ -54,12 +55,18 @@ class ConstraintEvaluator {
   /// The pose of a body at the last setParameters.
   Pose pose(int body) const;
 
+  /// The first failure of the separation query (clearance constraints), ok when none: the
+  /// residuals it left are NaN, so no step that needed it is taken.
+  const Status& queryFailure() const { return query_failure_; }
+
  private:
   struct Tracked;
   class RowWriter;
   Tracked point(const PointRef& ref) const;
   Tracked direction(const DirectionRef& ref) const;
   Tracked acrossDirection(const DirectionRef& ref, int which) const;
+  void evaluateClearance(const Constraint& c, int row, double target, Eigen::VectorXd& residuals,
+                         std::vector<Eigen::Triplet<double>>* jacobian) const;
 
   const Problem& problem_;
   const ParameterLayout& layout_;
@@ -68,6 +75,10 @@ class ConstraintEvaluator {
   std::vector<Eigen::Vector3d> translations_;
   std::vector<Eigen::Matrix3d> right_jacobians_;
   Eigen::VectorXd variables_;
+  /// Per constraint, the last direction from A to B a clearance saw (zero: none yet): the
+  /// gradient where the shapes touch and the query cannot say which way they part.
+  mutable std::vector<Eigen::Vector3d> last_direction_;
+  mutable Status query_failure_;
 };
 
 }  // namespace collido::constraints::detail

@@ -8,6 +8,8 @@
 namespace collido::constraints {
 namespace {
 
+const Eigen::Vector3d kOrigin = Eigen::Vector3d::Zero();
+
 Status invalid(std::string message) {
   return Status(StatusCode::kInvalidArgument, std::move(message));
 }
@@ -32,6 +34,8 @@ const char* constraintKindName(ConstraintKind kind) {
       return "perpendicular";
     case ConstraintKind::kCoaxial:
       return "coaxial";
+    case ConstraintKind::kClearance:
+      return "clearance";
   }
   return "unknown";
 }
@@ -203,6 +207,29 @@ Result<int> Problem::addPerpendicular(std::string name, const DirectionRef& d,
 Result<int> Problem::addCoaxial(std::string name, const Axis& a, const Axis& b) {
   return add(
       {ConstraintKind::kCoaxial, std::move(name), a.point, b.point, a.direction, b.direction, {}});
+}
+
+Result<int> Problem::addClearance(std::string name, int body_a, int body_b, Target clearance) {
+  for (const auto& [body, field] :
+       {std::pair{body_a, "the first body"}, std::pair{body_b, "the second body"}}) {
+    if (body < 0 || body >= static_cast<int>(bodies_.size())) {
+      return invalid("constraint '" + name + "': " + field + " names no body (" +
+                     std::to_string(body) + "; a clearance is between two bodies' shapes)");
+    }
+  }
+  if (body_a == body_b) {
+    return invalid("constraint '" + name + "': a clearance needs two different bodies");
+  }
+  if (clearance.variable == -1 && !(clearance.value >= 0.0)) {
+    return invalid("constraint '" + name + "': a clearance must be >= 0 (0 is contact)");
+  }
+  return add({ConstraintKind::kClearance,
+              std::move(name),
+              PointRef{body_a, kOrigin},
+              PointRef{body_b, kOrigin},
+              {},
+              {},
+              clearance});
 }
 
 }  // namespace collido::constraints

@@ -51,12 +51,31 @@ Status checkVariableTargets(const Problem& problem, const std::vector<double>& v
     if (c.target.variable < 0) continue;
     const double value = values[c.target.variable];
     const bool angle = c.kind == ConstraintKind::kAngle;
-    if (angle ? !detail::angleTargetInRange(value) : !(value > 0.0)) {
+    const bool clearance = c.kind == ConstraintKind::kClearance;
+    const bool in_range = angle       ? detail::angleTargetInRange(value)
+                          : clearance ? value >= 0.0
+                                      : value > 0.0;
+    if (!in_range) {
+      return Status(StatusCode::kInvalidArgument, "constraint '" + c.name + "': its variable '" +
+                                                      problem.variables()[c.target.variable].name +
+                                                      "' is " + detail::formatNumber(value) + " " +
+                                                      when + ", outside " +
+                                                      (angle       ? "(0, pi) radians"
+                                                       : clearance ? "the clearances >= 0"
+                                                                   : "the positive distances"));
+    }
+  }
+  return {};
+}
+
+/// Clearance constraints measure through the problem's separation query.
+Status checkSeparationQuery(const Problem& problem) {
+  if (problem.separationQuery() != nullptr) return {};
+  for (const Constraint& c : problem.constraints()) {
+    if (c.kind == ConstraintKind::kClearance) {
       return Status(StatusCode::kInvalidArgument,
-                    "constraint '" + c.name + "': its variable '" +
-                        problem.variables()[c.target.variable].name + "' is " +
-                        detail::formatNumber(value) + " " + when + ", outside " +
-                        (angle ? "(0, pi) radians" : "the positive distances"));
+                    "constraint '" + c.name +
+                        "': a clearance needs a distance query (Problem::setSeparationQuery)");
     }
   }
   return {};
@@ -66,6 +85,7 @@ Status checkVariableTargets(const Problem& problem, const std::vector<double>& v
 
 Result<SolveReport> solve(Problem& problem, const SolveOptions& options) {
   if (Status status = checkOptions(options); !status.ok()) return status;
+  if (Status status = checkSeparationQuery(problem); !status.ok()) return status;
   std::vector<double> values;
   for (const Variable& variable : problem.variables())
     values.push_back(variable.value);
@@ -78,7 +98,7 @@ Result<SolveReport> solve(Problem& problem, const SolveOptions& options) {
   std::vector<int> frozen;
   const std::vector<detail::Component> components = detail::findComponents(problem, layout, frozen);
   if (Status status = checkFrozen(problem, frozen, evaluator, options.tolerance); !status.ok()) {
-    return status;
+    return evaluator.queryFailure().ok() ? status : evaluator.queryFailure();
   }
   SolveReport report;
   report.components = static_cast<int>(components.size());
@@ -89,7 +109,10 @@ Result<SolveReport> solve(Problem& problem, const SolveOptions& options) {
       moved_body[body] = true;
     detail::ComponentSolver solver(problem, layout, evaluator, component, x, options);
     // The problem is written only when every component solved: a failure leaves it untouched.
-    if (Status status = solver.solve(report); !status.ok()) return status;
+    Status status = solver.solve(report);
+    // A failed distance query is the cause of whatever the iteration concluded after it.
+    if (!evaluator.queryFailure().ok()) return evaluator.queryFailure();
+    if (!status.ok()) return status;
     change_squared += solver.change().squaredNorm();
   }
   report.change = std::sqrt(change_squared);

@@ -1,5 +1,6 @@
 // Each constraint kind's residuals and derivatives: the Jacobian the solver uses against
 // central differences of the residuals, at random poses away from the start (ω ≠ 0).
+#include <memory>
 #include <random>
 #include <string>
 
@@ -46,6 +47,11 @@ Result<int> addOfKind(Problem& problem, ConstraintKind kind, std::mt19937_64& ra
       return problem.addPerpendicular("c", d, e);
     case ConstraintKind::kCoaxial:
       return problem.addCoaxial("c", Axis{p, d}, Axis{q, e});
+    case ConstraintKind::kClearance:
+      // Balls off their bodies' origins, so that turning a body moves its ball.
+      problem.setSeparationQuery(std::make_shared<testing::BallSeparation>(
+          std::vector<testing::BallSeparation::Ball>{{p.local, 0.3}, {q.local, 0.5}}));
+      return problem.addClearance("c", 0, 1, Target{0.0, variable});
   }
   return Status(StatusCode::kInternal, "unknown kind");
 }
@@ -110,7 +116,8 @@ INSTANTIATE_TEST_SUITE_P(
                       KindCase{"angle", ConstraintKind::kAngle},
                       KindCase{"parallel", ConstraintKind::kParallel},
                       KindCase{"perpendicular", ConstraintKind::kPerpendicular},
-                      KindCase{"coaxial", ConstraintKind::kCoaxial}),
+                      KindCase{"coaxial", ConstraintKind::kCoaxial},
+                      KindCase{"clearance", ConstraintKind::kClearance}),
     [](const ::testing::TestParamInfo<KindCase>& param) { return std::string(param.param.name); });
 
 TEST(EquationResiduals, VanishWhereEachConstraintHolds) {
@@ -151,6 +158,9 @@ TEST(EquationResiduals, VanishWhereEachConstraintHolds) {
                               Axis{PointRef{0, {7.0, 0.0, 0.0}}, DirectionRef{0, {1, 0, 0}}},
                               Axis{PointRef{kWorld, kOrigin}, DirectionRef{kWorld, {-2, 0, 0}}})
                   .ok());
+  problem.setSeparationQuery(std::make_shared<testing::BallSeparation>(
+      std::vector<testing::BallSeparation::Ball>{{kOrigin, 0.8}, {kOrigin, 0.7}}));
+  ASSERT_TRUE(problem.addClearance("clearance", 0, 1, Target{0.5}).ok());
   const ParameterLayout layout(problem);
   const ConstraintEvaluator evaluator(problem, layout);
   for (const Constraint& constraint : problem.constraints()) {

@@ -1,6 +1,7 @@
 // The least-change property: the solver's answer against an independent dense reference solve
 // (full Newton on the KKT conditions, the Lagrangian's Hessian by central differences, dense
 // LU), and the second-order condition that makes it a minimum and not a saddle.
+#include <memory>
 #include <random>
 
 #include <gtest/gtest.h>
@@ -313,6 +314,48 @@ TEST(LeastChange, NoOtherFeasiblePointNearbyChangesLess) {
     system.evaluate(moved, g, jacobian);
     ASSERT_LT(g.cwiseAbs().maxCoeff(), 1e-13);
     EXPECT_GT(moved.norm(), z.norm());
+  }
+}
+
+TEST(LeastChange, ClearanceThroughADistanceQueryEqualsTheDenseReferenceSolve) {
+  // Balls off their bodies' origins, so the least change turns as well as moves them; a plane
+  // holds one body's point, the clearance is set against a fixed base and between the two.
+  // (Not contact: at a clearance of 0 the direction between the closest points is rounding,
+  // and the least change is defined only to that precision.)
+  std::mt19937_64 random(20261125);
+  for (int trial = 0; trial < 6; ++trial) {
+    Problem problem(1.0);
+    const int base = problem.addBody("base", Pose::Identity(), 1.0).value();
+    Pose first = testing::randomPose(random, 0.2);
+    first.translation() += Eigen::Vector3d(1.6, 0.0, 0.0);
+    Pose second = testing::randomPose(random, 0.2);
+    second.translation() += Eigen::Vector3d(0.0, 1.7, 0.0);
+    const int a = problem.addBody("a", first, 0.6).value();
+    const int b = problem.addBody("b", second, 0.8).value();
+    ASSERT_TRUE(problem.fixBody(base).ok());
+    problem.setSeparationQuery(std::make_shared<testing::BallSeparation>(
+        std::vector<testing::BallSeparation::Ball>{{testing::kOrigin, 0.5},
+                                                   {Eigen::Vector3d(0.4, 0.1, 0.0), 0.3},
+                                                   {Eigen::Vector3d(0.0, 0.3, 0.5), 0.4}}));
+    ASSERT_TRUE(problem.addClearance("a to base", base, a, Target{0.05 + 0.02 * trial}).ok());
+    ASSERT_TRUE(problem.addClearance("b to base", base, b, Target{0.01}).ok());
+    ASSERT_TRUE(problem.addClearance("a to b", a, b, Target{0.3}).ok());
+    ASSERT_TRUE(problem
+                    .addPointOnPlane("a level", PointRef{a, Eigen::Vector3d(0.0, 0.0, 0.2)},
+                                     Plane{PointRef{kWorld, testing::kOrigin},
+                                           DirectionRef{kWorld, Eigen::Vector3d::UnitZ()}})
+                    .ok());
+    const Problem start = problem;
+    DenseSystem reference(start);
+    const Eigen::VectorXd expected =
+        reference.referenceSolve(Eigen::VectorXd::Zero(reference.parameters()));
+    ASSERT_LT(reference.kkt(expected).cwiseAbs().maxCoeff(), 1e-12) << "trial " << trial;
+    ASSERT_GT(reference.reducedHessianMinimum(expected), 0.0) << "trial " << trial;
+    const auto report = solve(problem);
+    ASSERT_TRUE(report.ok()) << "trial " << trial << ": " << report.status().message();
+    const Eigen::VectorXd z = reference.changeOf(problem);
+    const Eigen::VectorXd expected_z = expected.head(reference.parameters());
+    EXPECT_LE((z - expected_z).norm(), 1e-9 * expected_z.norm()) << "trial " << trial;
   }
 }
 

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -54,6 +56,7 @@ enum class ConstraintKind {
   kParallel,       ///< two directions parallel or opposite (2)
   kPerpendicular,  ///< two directions at a right angle (1)
   kCoaxial,        ///< two axes on one line: parallel, and a point of one on the other (4)
+  kClearance,      ///< the distance between two bodies' shapes = target >= 0, 0 for contact (1)
 };
 
 /// "coincident", "point_on_plane", ...
@@ -68,6 +71,30 @@ struct Constraint {
   DirectionRef d;
   DirectionRef e;  ///< the second direction, or the plane's normal / line's direction
   Target target;
+};
+
+/// How far apart two bodies' shapes are, in the world frame, as a distance query answers it.
+struct Separation {
+  double distance = 0.0;  ///< >= 0; 0 when the shapes share a point
+  /// Closest points of A and of B; their difference gives the direction when distance > 0.
+  Eigen::Vector3d point_a = Eigen::Vector3d::Zero();
+  Eigen::Vector3d point_b = Eigen::Vector3d::Zero();
+  /// Where the shapes overlap and the query can tell: how deep (> 0), along `normal` (unit, from
+  /// A towards B: moving B along it reduces the overlap), at `contact` (a point of A in the
+  /// overlap). Empty when they are apart, or the query measures distances only.
+  std::optional<double> depth;
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();
+  Eigen::Vector3d contact = Eigen::Vector3d::Zero();
+};
+
+/// The distance query a clearance constraint goes through (a backend's, or the exact oracle's):
+/// the separation of two bodies' shapes at the given poses. The solver calls it many times per
+/// iteration; a failure ends the solve with its status.
+class SeparationQuery {
+ public:
+  virtual ~SeparationQuery() = default;
+  virtual Result<Separation> measure(int body_a, const Pose& pose_a, int body_b,
+                                     const Pose& pose_b) = 0;
 };
 
 /// A movable object: its pose is 6 parameters, a translation and a rotation vector ω relative to
@@ -116,6 +143,15 @@ class Problem {
   Result<int> addParallel(std::string name, const DirectionRef& d, const DirectionRef& e);
   Result<int> addPerpendicular(std::string name, const DirectionRef& d, const DirectionRef& e);
   Result<int> addCoaxial(std::string name, const Axis& a, const Axis& b);
+  /// The distance between the shapes of bodies a and b (world excluded) held at `clearance`
+  /// (>= 0; 0: touching) through the problem's separation query. The gradient comes from the
+  /// closest points; where the shapes touch or overlap it comes from the query's depth and
+  /// normal, or else from the last direction seen apart.
+  Result<int> addClearance(std::string name, int body_a, int body_b, Target clearance);
+
+  /// The query clearance constraints measure with; solve() refuses them without one.
+  void setSeparationQuery(std::shared_ptr<SeparationQuery> query) { query_ = std::move(query); }
+  SeparationQuery* separationQuery() const { return query_.get(); }
 
   double lengthScale() const { return length_scale_; }
   const std::vector<Body>& bodies() const { return bodies_; }
@@ -137,6 +173,7 @@ class Problem {
   std::vector<Body> bodies_;
   std::vector<Variable> variables_;
   std::vector<Constraint> constraints_;
+  std::shared_ptr<SeparationQuery> query_;
 };
 
 }  // namespace collido::constraints
