@@ -1,5 +1,7 @@
 #include <iostream>
 
+#include <Eigen/Geometry>
+
 #include <collido/scene/scene.h>
 #include <collido/scene/tracking_summary.h>
 
@@ -7,6 +9,25 @@
 
 namespace collido::cli {
 namespace {
+
+void printPlacement(const Scene& scene) {
+  const ScenePlacement& p = *scene.placement;
+  std::cout << "  constraints: " << p.constraints << " solved at load (" << p.equations
+            << " equations over " << p.parameters << " free parameters, " << p.iterations
+            << " Newton iterations, normalised change " << p.change << ")";
+  for (std::size_t k = 0; k < p.moved.size(); ++k) {
+    const Pose& c = p.corrections[k];
+    std::cout << (k == 0 ? "; moved " : ", ") << scene.objects[p.moved[k]].name << " by "
+              << c.translation().norm() << " and "
+              << Eigen::AngleAxisd(c.linear()).angle() * 180.0 / 3.14159265358979323846
+              << " degrees";
+  }
+  std::cout << "\n";
+  for (const auto& [name, value] : p.variables)
+    std::cout << "    variable " << name << " = " << value << "\n";
+  for (const auto& [name, distance] : p.clearances)
+    std::cout << "    clearance " << name << ": exact distance " << distance << "\n";
+}
 
 int checkScenes(const std::vector<std::string>& paths) {
   int failures = 0;
@@ -37,6 +58,7 @@ int checkScenes(const std::vector<std::string>& paths) {
         std::cout << "    poses from " << summarizeTracking(o).text(*o.tracking) << "\n";
       }
     }
+    if (scene.placement) printPlacement(scene);
     for (const SceneQuery& q : scene.queries) {
       std::cout << "  query " << q.name << ": " << queryKindName(q.request.kind) << " ";
       if (q.isGroup()) {

@@ -16,6 +16,7 @@ struct PluginOptions {
 /// Each add*Command registers a subcommand whose callback runs it and stores its exit code.
 void addBackendsCommand(CLI::App& app, const PluginOptions& plugins, int& exit_code);
 void addCheckCommand(CLI::App& app, int& exit_code);
+void addPlaceCommand(CLI::App& app, int& exit_code);
 void addPoseErrorCommand(CLI::App& app, int& exit_code);
 void addTracksCommand(CLI::App& app, int& exit_code);
 void addSurfaceDistanceCommand(CLI::App& app, const PluginOptions& plugins, int& exit_code);

@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
   int exit_code = 0;
   collido::cli::addBackendsCommand(app, plugins, exit_code);
   collido::cli::addCheckCommand(app, exit_code);
+  collido::cli::addPlaceCommand(app, exit_code);
   collido::cli::addPoseErrorCommand(app, exit_code);
   collido::cli::addTracksCommand(app, exit_code);
   collido::cli::addSurfaceDistanceCommand(app, plugins, exit_code);

@@ -53,8 +53,12 @@ Status Problem::checkName(const std::string& what, const std::string& name) cons
     }
     return false;
   };
-  if (taken(bodies_) || taken(variables_) || taken(constraints_)) {
-    return invalid(what + " '" + name + "': the name is already used");
+  const char* owner = taken(bodies_)        ? "a body"
+                      : taken(variables_)   ? "a variable"
+                      : taken(constraints_) ? "a constraint"
+                                            : nullptr;
+  if (owner != nullptr) {
+    return invalid(what + " '" + name + "': the name is already used by " + owner);
   }
   return {};
 }

@@ -25,6 +25,7 @@
 #include <collido/scene/scene.h>
 #include <collido/stress/stress_cases.h>
 
+#include "constraint_reader.h"
 #include "deformation_reader.h"
 #include "frep_solid_reader.h"
 #include "marker_reader.h"
@@ -202,6 +203,20 @@ Result<TriangleMesh> generateSphere(const Reader& r, const Node& n, std::string&
   return makeSphere(p);
 }
 
+Result<TriangleMesh> generateBox(const Reader& r, const Node& n, std::string& text,
+                                 TriangleBudget& budget) {
+  r.expectObject(n, {"generator", "size"});
+  BoxParams p;
+  if (n.has("size")) p.size = r.vector3(n.at("size"));
+  for (int k = 0; k < 3; ++k) {
+    if (!(p.size[k] > 0.0)) r.fail(n.at("size"), "every side of a box must be > 0");
+  }
+  text = "box " + shortNumber(p.size.x()) + "x" + shortNumber(p.size.y()) + "x" +
+         shortNumber(p.size.z());
+  budget.charge(n, text, 12.0);
+  return makeBox(p);
+}
+
 Result<TriangleMesh> generateGridSheet(const Reader& r, const Node& n, std::string& text,
                                        TriangleBudget& budget) {
   r.expectObject(n, {"generator", "width", "depth", "cells_x", "cells_y", "amplitude", "waves"});
@@ -262,7 +277,8 @@ const std::map<std::string, Generator>& generators() {
   static const std::map<std::string, Generator> table = {
       {"torus", &generateTorus},   {"chain", &generateChain},
       {"sphere", &generateSphere}, {"grid_sheet", &generateGridSheet},
-      {"gear", &generateGear},     {"station_module", &generateStationModule}};
+      {"gear", &generateGear},     {"station_module", &generateStationModule},
+      {"box", &generateBox}};
   return table;
 }
 
@@ -599,7 +615,8 @@ void readDeform(const Reader& r, const Node& node, const std::string& base_direc
 Scene readScene(const Reader& r, const Json& document, const std::string& base_directory,
                 const SceneLoadOptions& options) {
   const Node root{document, ""};
-  r.expectObject(root, {"name", "description", "frames", "objects", "queries", "stress"});
+  r.expectObject(root,
+                 {"name", "description", "frames", "objects", "constraints", "queries", "stress"});
   Scene scene;
   scene.name = root.has("name") ? r.string(root.at("name")) : "";
   scene.description = root.has("description") ? r.string(root.at("description")) : "";
@@ -637,6 +654,7 @@ Scene readScene(const Reader& r, const Json& document, const std::string& base_d
 
   ShapeLoader shapes(r, base_directory, options.max_triangles);
   std::map<std::string, std::size_t> index_of;
+  std::vector<scene_reading::ObjectMotionSource> sources(objects.value.size());
   for (std::size_t i = 0; i < objects.value.size(); ++i) {
     const Node node = objects.at(i);
     r.expectObject(node,
@@ -658,6 +676,7 @@ Scene readScene(const Reader& r, const Json& document, const std::string& base_d
         r.fail(motion, "give exactly one of poses, random, jitter, linear");
       }
       if (motion.has("poses")) {
+        sources[i].kind = "poses";
         if (node.has("pose"))
           r.fail(node.at("pose"), "'pose' and motion 'poses' exclude each other");
         const Node list = motion.at("poses");
@@ -694,10 +713,13 @@ Scene readScene(const Reader& r, const Json& document, const std::string& base_d
               spec.overlap_high <= 1.0)) {
           r.fail(overlap, "overlap must satisfy 0 <= low <= high <= 1");
         }
+        sources[i].kind = "random";
+        sources[found->second].referenced = true;
         const SceneObject& reference = scene.objects[found->second];
         object.poses = randomOverlapPoses(spec, *reference.mesh, reference.poses, *object.mesh,
                                           base, scene.frames);
       } else if (motion.has("linear")) {
+        sources[i].kind = "linear";
         if (node.has("pose"))
           r.fail(node.at("pose"), "'pose' and motion 'linear' exclude each other");
         const Node linear = motion.at("linear");
@@ -710,6 +732,7 @@ Scene readScene(const Reader& r, const Json& document, const std::string& base_d
         spec.to = readPose(r, linear.at("to"));
         object.poses = linearPoses(spec, scene.frames);
       } else {
+        sources[i].kind = "jitter";
         const Node jitter = motion.at("jitter");
         r.expectObject(jitter, {"seed", "translation", "rotation_deg"});
         JitterMotion spec;
@@ -740,11 +763,16 @@ Scene readScene(const Reader& r, const Json& document, const std::string& base_d
         }
       }
     }
+    sources[i].tracked = node.has("markers");
     if (node.has("markers"))
       scene_reading::readMarkers(r, node.at("markers"), base_directory, scene.frames, object);
     readDeform(r, node, base_directory, scene, index_of, object);
     index_of.emplace(object.name, scene.objects.size());
     scene.objects.push_back(std::move(object));
+  }
+
+  if (root.has("constraints")) {
+    scene_reading::solveSceneConstraints(r, root.at("constraints"), sources, scene);
   }
 
   if (!root.has("queries")) r.fail(root, "missing 'queries'");

@@ -2,7 +2,9 @@
 
 #include <cstddef>
 #include <memory>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <collido/capabilities.h>
@@ -81,6 +83,24 @@ struct SceneQuery {
   std::vector<std::size_t> objects() const;
 };
 
+/// What a scene's `constraints` block did at load (scenes/README.md, "Constraints"): the
+/// least-change solve's figures and what it moved.
+struct ScenePlacement {
+  /// Objects the solve moved, and the world correction each got: every frame's pose P became
+  /// correction · P (the whole motion moved rigidly so that frame 0 meets the constraints).
+  std::vector<std::size_t> moved;
+  std::vector<Pose> corrections;
+  /// Every variable of the block with its value after the solve.
+  std::vector<std::pair<std::string, double>> variables;
+  /// Every clearance constraint with the exact oracle's distance after the solve.
+  std::vector<std::pair<std::string, double>> clearances;
+  int constraints = 0;
+  int equations = 0;
+  int parameters = 0;
+  int iterations = 0;
+  double change = 0.0;  ///< the normalised change the solve minimised
+};
+
 /// A loaded, fully validated scene: nothing in it can fail later for a reason the file holds.
 struct Scene {
   std::string path;  ///< the file it was read from ("" for scenes built in code)
@@ -94,6 +114,8 @@ struct Scene {
   /// "near_touching"), by which the study's robustness matrix groups answers; empty for ordinary
   /// scenes.
   std::string category;
+  /// Set when the scene has a `constraints` block: what solving it at load did.
+  std::optional<ScenePlacement> placement;
 
   /// Whether some object comes from a generator (whose resolution a load option can change).
   bool hasGeneratedShapes() const;
