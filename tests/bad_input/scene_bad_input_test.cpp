@@ -117,12 +117,14 @@ TEST(SceneBadInput, EqualKeysInDifferentObjectsAreFine) {
 
 // ---- unknown keys ----------------------------------------------------------------------------
 
-// "bad.json: /: unknown key 'object' (allowed: description, frames, name, objects, queries)"
+// "bad.json: /: unknown key 'object' (allowed: constraints, description, frames, name, objects,
+//  queries, stress)"
 TEST(SceneBadInput, UnknownTopLevelKey) {
   Json scene = validScene();
   scene["object"] = Json::array();
-  EXPECT_TRUE(rejected(parse(scene), {kLabel, ": /:", "unknown key 'object'",
-                                      "allowed: description, frames, name, objects, queries"}));
+  EXPECT_TRUE(rejected(parse(scene),
+                       {kLabel, ": /:", "unknown key 'object'",
+                        "allowed: constraints, description, frames, name, objects, queries"}));
 }
 
 // "bad.json: /objects/0: unknown key 'shpe' (allowed: deform, motion, name, pose, schedule,
