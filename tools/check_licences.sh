@@ -16,4 +16,9 @@ if [[ -n "$gpl" ]]; then
   echo "$gpl" >&2
   exit 1
 fi
-echo "licences: $(echo "$headers" | wc -l) CGAL headers compiled, none GPL"
+# libslvs (GPL-3) is for the optional constraint-solver comparator only (COLLIDO_WITH_SLVS).
+if ninja -C "$build" -t deps | grep -q '/usr/include/slvs.h'; then
+  echo "the default build compiled slvs.h (GPL-3): COLLIDO_WITH_SLVS must stay off" >&2
+  exit 1
+fi
+echo "licences: $(echo "$headers" | wc -l) CGAL headers compiled, none GPL; no libslvs"

@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # Installs the Debian packages Collidoscope builds and tests with, when any is missing.
-# Run as root on Debian 12 (bookworm). Usage: tools/install_deps.sh [--ci]  (--ci adds the
-# linters CI runs: clang-format, clang-tidy; and clang with its runtime libraries for the fuzz
+# Run as root on Debian 12 (bookworm). Usage: tools/install_deps.sh [--ci] [--slvs]  (--ci adds
+# the linters CI runs: clang-format, clang-tidy; and clang with its runtime libraries for the fuzz
 # targets: libclang-rt-14-dev holds libFuzzer and clang's sanitizer runtimes, which clang only
-# recommends). Chromium is for the dashboard's browser test;
+# recommends; --slvs adds SolveSpace's libslvs, GPL-3, for the optional constraint-solver
+# comparator only, tools/slvs_comparison.sh). Chromium is for the dashboard's browser test;
 # Node.js and npm (when the machine has none) fetch the dashboard's front-end from the npm
 # registry (tools/web_deps.sh).
 set -euo pipefail
@@ -20,9 +21,13 @@ packages=(
 if ! command -v node >/dev/null 2>&1 || ! command -v npm >/dev/null 2>&1; then
   packages+=(nodejs npm)
 fi
-if [[ "${1:-}" == "--ci" ]]; then
-  packages+=(clang libclang-rt-14-dev clang-format clang-tidy)
-fi
+for option in "$@"; do
+  case "$option" in
+    --ci) packages+=(clang libclang-rt-14-dev clang-format clang-tidy) ;;
+    --slvs) packages+=(libslvs1-dev) ;;
+    *) echo "usage: tools/install_deps.sh [--ci] [--slvs]" >&2; exit 2 ;;
+  esac
+done
 
 missing=()
 for p in "${packages[@]}"; do

@@ -139,6 +139,8 @@ ComponentSolver::Outcome ComponentSolver::newton(Eigen::VectorXd& z, double shif
   Eigen::SparseMatrix<double> jacobian;
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> normal_factorization;
   Eigen::SparseLU<Eigen::SparseMatrix<double>> kkt_factorization;
+  std::vector<int> kkt_outer;  // the pattern kkt_factorization was analysed for
+  std::vector<int> kkt_inner;
   Eigen::VectorXd multipliers;  // λ of the last accepted step; empty until there is one
   double penalty = 1.0;
   const int n = static_cast<int>(z.size());
@@ -169,7 +171,19 @@ ComponentSolver::Outcome ComponentSolver::newton(Eigen::VectorXd& z, double shif
       }
       Eigen::SparseMatrix<double> kkt(n + m, n + m);
       kkt.setFromTriplets(entries.begin(), entries.end());
-      kkt_factorization.compute(kkt);
+      // The ordering depends only on where the entries are, which rarely changes between
+      // iterations: it is computed again only when the pattern did.
+      const bool same_pattern =
+          static_cast<std::size_t>(kkt.outerSize()) + 1 == kkt_outer.size() &&
+          kkt.nonZeros() == static_cast<Eigen::Index>(kkt_inner.size()) &&
+          std::equal(kkt_outer.begin(), kkt_outer.end(), kkt.outerIndexPtr()) &&
+          std::equal(kkt_inner.begin(), kkt_inner.end(), kkt.innerIndexPtr());
+      if (!same_pattern) {
+        kkt_outer.assign(kkt.outerIndexPtr(), kkt.outerIndexPtr() + kkt.outerSize() + 1);
+        kkt_inner.assign(kkt.innerIndexPtr(), kkt.innerIndexPtr() + kkt.nonZeros());
+        kkt_factorization.analyzePattern(kkt);
+      }
+      kkt_factorization.factorize(kkt);
       if (kkt_factorization.info() == Eigen::Success) {
         Eigen::VectorXd right(n + m);
         right << -z, -target_residuals;

@@ -101,8 +101,10 @@ std::vector<Component> findComponents(const Problem& problem, const ParameterLay
       owner_listed[owner] = true;
       if (owner < body_count) {
         component.bodies.push_back(owner);
-        for (int k = 0; k < 6; ++k)
-          component.columns.push_back(layout.bodyColumn(owner) + k);
+        for (int k = 0; k < 6; ++k) {
+          if (layout.free[layout.bodyColumn(owner) + k])
+            component.columns.push_back(layout.bodyColumn(owner) + k);
+        }
       } else {
         component.columns.push_back(layout.variableColumn(owner - body_count));
       }

@@ -31,7 +31,7 @@ ParameterLayout::ParameterLayout(const Problem& problem)
     const Body& body = problem.bodies()[b];
     for (int k = 0; k < 6; ++k) {
       scale[6 * b + k] = k < 3 ? length : length / body.radius;
-      free[6 * b + k] = !body.fixed;
+      free[6 * b + k] = !body.fixed && (k < 3 || !body.rotation_fixed);
     }
   }
   for (int v = 0; v < static_cast<int>(problem.variables().size()); ++v) {
@@ -116,8 +116,13 @@ void ConstraintEvaluator::setBody(int body, const Eigen::VectorXd& x) {
 
 void ConstraintEvaluator::setBodyState(int body, const Eigen::Vector3d& translation,
                                        const Eigen::Vector3d& omega) {
-  rotations_[body] = start_rotations_[body] * expMap(omega);
   translations_[body] = translation;
+  if (omega.isZero(0.0)) {  // exp(0) = I and J_r(0) = I, exactly (bodies that do not turn)
+    rotations_[body] = start_rotations_[body];
+    right_jacobians_[body].setIdentity();
+    return;
+  }
+  rotations_[body] = start_rotations_[body] * expMap(omega);
   right_jacobians_[body] = rightJacobian(omega);
 }
 

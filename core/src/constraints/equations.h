@@ -54,6 +54,7 @@ class ConstraintEvaluator {
 
   /// The pose of a body at the last setParameters.
   Pose pose(int body) const;
+  double lengthScale() const { return problem_.lengthScale(); }
 
   /// The first failure of the separation query (clearance constraints), ok when none: the
   /// residuals it left are NaN, so no step that needed it is taken.

@@ -12,6 +12,62 @@ namespace {
 /// differences cost twice the evaluations and saved no iteration on the bench's chains).
 constexpr double kStep = 1e-8;
 
+/// Where every free parameter of the constraint is a translation (its bodies' rotations fixed
+/// or not involved), most kinds are linear in them and the distance's Hessian is known: these
+/// are written exactly, without differencing. Returns false for the other cases.
+bool addTranslationHessian(const ConstraintEvaluator& evaluator, const ParameterLayout& layout,
+                           const Constraint& constraint, double weight,
+                           const std::vector<int>& columns,
+                           std::vector<Eigen::Triplet<double>>& out) {
+  for (int column : columns) {
+    if (column >= 6 * layout.body_count || column % 6 >= 3) return false;
+  }
+  switch (constraint.kind) {
+    case ConstraintKind::kCoincident:
+    case ConstraintKind::kPointOnPlane:
+    case ConstraintKind::kPointOnLine:
+    case ConstraintKind::kCoaxial:
+    case ConstraintKind::kParallel:
+    case ConstraintKind::kPerpendicular:
+    case ConstraintKind::kAngle:
+      return true;  // linear in translations, or independent of them
+    case ConstraintKind::kDistance:
+      break;
+    case ConstraintKind::kClearance:
+      return false;
+  }
+  const int a = constraint.p.body;
+  const int b = constraint.q.body;
+  if (a == b) return true;  // both points on one body: the distance does not change
+  const auto world = [&](const PointRef& ref) {
+    return ref.body == kWorld ? ref.local : Eigen::Vector3d(evaluator.pose(ref.body) * ref.local);
+  };
+  const Eigen::Vector3d offset = world(constraint.p) - world(constraint.q);
+  const double distance = offset.norm();
+  if (!(distance > 0.0)) return false;
+  const Eigen::Vector3d u = offset / distance;
+  // ∇²|p − q| over p's translation is (I − u uᵀ) / |p − q|, over q's the same, across −that.
+  const Eigen::Matrix3d block = weight * (Eigen::Matrix3d::Identity() - u * u.transpose()) /
+                                (distance * evaluator.lengthScale());
+  const auto write = [&](int body_i, int body_j, double sign) {
+    if (body_i == kWorld || body_j == kWorld) return;
+    const int ci = layout.bodyColumn(body_i);
+    const int cj = layout.bodyColumn(body_j);
+    if (!layout.free[ci] || !layout.free[cj]) return;
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 3; ++j) {
+        out.emplace_back(ci + i, cj + j,
+                         sign * block(i, j) * layout.scale[ci + i] * layout.scale[cj + j]);
+      }
+    }
+  };
+  write(a, a, 1.0);
+  write(b, b, 1.0);
+  write(a, b, -1.0);
+  write(b, a, -1.0);
+  return true;
+}
+
 }  // namespace
 
 void addWeightedHessian(ConstraintEvaluator& evaluator, const ParameterLayout& layout,
@@ -19,12 +75,17 @@ void addWeightedHessian(ConstraintEvaluator& evaluator, const ParameterLayout& l
                         const Eigen::VectorXd& x, std::vector<Eigen::Triplet<double>>& out) {
   const ConstraintSupport support = supportOf(constraint);
   std::vector<int> columns;
+  // Only free parameters: the solve drops every other column of the Hessian.
   for (int body : support.bodies) {
-    for (int k = 0; k < 6; ++k)
-      columns.push_back(layout.bodyColumn(body) + k);
+    for (int k = 0; k < 6; ++k) {
+      if (layout.free[layout.bodyColumn(body) + k]) columns.push_back(layout.bodyColumn(body) + k);
+    }
   }
-  for (int variable : support.variables)
-    columns.push_back(layout.variableColumn(variable));
+  for (int variable : support.variables) {
+    if (layout.free[layout.variableColumn(variable)])
+      columns.push_back(layout.variableColumn(variable));
+  }
+  if (addTranslationHessian(evaluator, layout, constraint, weights[0], columns, out)) return;
   const int size = static_cast<int>(columns.size());
   const int rows = ConstraintEvaluator::equationCount(constraint.kind);
   Eigen::VectorXd residuals(rows);

@@ -10,8 +10,10 @@
 namespace collido::constraints::detail {
 
 /// Adds Σ_k weights[k] ∇²g_k (the constraint's equations, with respect to the normalised
-/// parameters of the bodies and variable it refers to) as triplets over global columns. Taken by
-/// forward differences of the analytic gradient, per constraint over its own ≤ 13 parameters:
+/// free parameters of the bodies and variable it refers to) as triplets over global columns.
+/// Exact where those are translations only (most kinds are linear in them; the distance's is
+/// known); otherwise by forward differences of the analytic gradient, per constraint over its
+/// own ≤ 13 parameters:
 /// Newton on the KKT conditions needs it (the identity Hessian alone converges linearly at
 /// best, and not at all once the multipliers are large), and it only sets the convergence rate,
 /// never the answer. The evaluator is left at `x`.

@@ -47,18 +47,9 @@ Problem::Problem(double length_scale) : length_scale_(length_scale) {
 
 Status Problem::checkName(const std::string& what, const std::string& name) const {
   if (name.empty()) return invalid(what + " needs a name");
-  const auto taken = [&](const auto& items) {
-    for (const auto& item : items) {
-      if (item.name == name) return true;
-    }
-    return false;
-  };
-  const char* owner = taken(bodies_)        ? "a body"
-                      : taken(variables_)   ? "a variable"
-                      : taken(constraints_) ? "a constraint"
-                                            : nullptr;
-  if (owner != nullptr) {
-    return invalid(what + " '" + name + "': the name is already used by " + owner);
+  const auto taken = names_.find(name);
+  if (taken != names_.end()) {
+    return invalid(what + " '" + name + "': the name is already used by " + taken->second);
   }
   return {};
 }
@@ -74,7 +65,8 @@ Result<int> Problem::addBody(std::string name, const Pose& pose, double radius) 
   if (!std::isfinite(radius) || radius <= 0.0) {
     return invalid("body '" + name + "': the radius must be finite and positive");
   }
-  bodies_.push_back(Body{std::move(name), pose, radius, false});
+  names_.emplace(name, "a body");
+  bodies_.push_back(Body{std::move(name), pose, radius, false, false});
   return static_cast<int>(bodies_.size()) - 1;
 }
 
@@ -84,6 +76,7 @@ Result<int> Problem::addVariable(std::string name, double value, double scale) {
   if (!std::isfinite(scale) || scale <= 0.0) {
     return invalid("variable '" + name + "': the scale must be finite and positive");
   }
+  names_.emplace(name, "a variable");
   variables_.push_back(Variable{std::move(name), value, scale, false});
   return static_cast<int>(variables_.size()) - 1;
 }
@@ -93,6 +86,14 @@ Status Problem::fixBody(int body) {
     return invalid("fixed: no body " + std::to_string(body));
   }
   bodies_[body].fixed = true;
+  return {};
+}
+
+Status Problem::fixRotation(int body) {
+  if (body < 0 || body >= static_cast<int>(bodies_.size())) {
+    return invalid("fixed rotation: no body " + std::to_string(body));
+  }
+  bodies_[body].rotation_fixed = true;
   return {};
 }
 
@@ -162,6 +163,7 @@ Result<int> Problem::add(Constraint constraint) {
     if (Status status = checkDirection(name, field, *direction); !status.ok()) return status;
   }
   if (Status status = checkTarget(name, constraint.target); !status.ok()) return status;
+  names_.emplace(name, "a constraint");
   constraints_.push_back(std::move(constraint));
   return static_cast<int>(constraints_.size()) - 1;
 }

@@ -62,6 +62,28 @@ TEST(Solve, FixedBodyStaysAndTheOtherMovesAllTheWay) {
   EXPECT_TRUE(problem.bodies()[b].pose.translation().isZero(1e-14));
 }
 
+TEST(Solve, ABodyWithItsRotationFixedOnlySlides) {
+  // A point off the body's origin on a plane: turning would be cheaper, but the body may only
+  // slide, so it moves straight across and keeps its rotation bit for bit.
+  Problem problem(1.0);
+  Pose start = at(0.3, -0.2, 0.7);
+  start.linear() = Eigen::AngleAxisd(0.4, Eigen::Vector3d::UnitX()).toRotationMatrix();
+  const int body = problem.addBody("slider", start, 5.0).value();
+  ASSERT_TRUE(problem.fixRotation(body).ok());
+  ASSERT_TRUE(
+      problem
+          .addPointOnPlane("on floor", PointRef{body, Eigen::Vector3d(1.0, 0.0, 0.0)},
+                           Plane{PointRef{kWorld, kOrigin}, DirectionRef{kWorld, {0, 0, 1}}})
+          .ok());
+  const auto report = solve(problem);
+  ASSERT_TRUE(report.ok()) << report.status().message();
+  EXPECT_EQ(report.value().parameters, 3);
+  EXPECT_EQ(problem.bodies()[body].pose.linear(), start.linear());
+  EXPECT_TRUE(
+      problem.bodies()[body].pose.translation().isApprox(Eigen::Vector3d(0.3, -0.2, 0.0), 1e-14));
+  EXPECT_FALSE(problem.fixRotation(7).ok());
+}
+
 TEST(Solve, DistanceSplitsTheChangeByTheParametersWeights) {
   // Body moves a along x, the free variable changes by c: minimise (a/L)² + (c/s)² with
   // 2 + a − (1 + c) = 0 → a = −L²/(L² + s²), c = s²/(L² + s²).

@@ -3,6 +3,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include <Eigen/Core>
@@ -106,6 +107,8 @@ struct Body {
   /// counts as a move of θ·radius (use the object's bounding radius).
   double radius = 1.0;
   bool fixed = false;
+  /// Its rotation is kept (a point, or a part that only slides): 3 parameters instead of 6.
+  bool rotation_fixed = false;
 };
 
 /// A named scalar the constraints may refer to (a dimension: a length, an angle).
@@ -131,6 +134,8 @@ class Problem {
   /// parameters drop out of the solve.
   Status fixBody(int body);
   Status fixVariable(int variable);
+  /// The body may move but not turn: its rotation parameters drop out of the solve.
+  Status fixRotation(int body);
   /// A changed dimension: sets the variable and fixes it (the solve then follows it in steps).
   Status setVariable(int variable, double value);
 
@@ -174,6 +179,8 @@ class Problem {
   std::vector<Variable> variables_;
   std::vector<Constraint> constraints_;
   std::shared_ptr<SeparationQuery> query_;
+  /// Every name in use, with what holds it: names are unique among all three.
+  std::unordered_map<std::string, const char*> names_;
 };
 
 }  // namespace collido::constraints
