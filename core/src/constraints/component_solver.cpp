@@ -103,7 +103,8 @@ void ComponentSolver::evaluate(const Eigen::VectorXd& z, Eigen::VectorXd& residu
   jacobian->setFromTriplets(kept.begin(), kept.end());
 }
 
-Eigen::SparseMatrix<double> ComponentSolver::lagrangianHessian(const Eigen::VectorXd& multipliers) {
+void ComponentSolver::addLagrangianHessian(const Eigen::VectorXd& multipliers,
+                                           std::vector<Eigen::Triplet<double>>& local) {
   const int rows = static_cast<int>(row_constraint_.size());
   Eigen::VectorXd weights = Eigen::VectorXd::Zero(rows);
   for (int i = 0; i < static_cast<int>(active_rows_.size()); ++i) {
@@ -119,8 +120,7 @@ Eigen::SparseMatrix<double> ComponentSolver::lagrangianHessian(const Eigen::Vect
                        x_, global);
   }
   const int n = static_cast<int>(component_.columns.size());
-  std::vector<Eigen::Triplet<double>> local;
-  local.reserve(global.size() + static_cast<std::size_t>(n));
+  local.reserve(local.size() + global.size() + static_cast<std::size_t>(n));
   for (int i = 0; i < n; ++i)
     local.emplace_back(i, i, 1.0);  // ½|z|²
   for (const auto& t : global) {
@@ -128,9 +128,6 @@ Eigen::SparseMatrix<double> ComponentSolver::lagrangianHessian(const Eigen::Vect
     const int column = global_to_local_[t.col()];
     if (row >= 0 && column >= 0) local.emplace_back(row, column, t.value());
   }
-  Eigen::SparseMatrix<double> hessian(n, n);
-  hessian.setFromTriplets(local.begin(), local.end());
-  return hessian;
 }
 
 ComponentSolver::Outcome ComponentSolver::newton(Eigen::VectorXd& z, double shift,
@@ -154,13 +151,8 @@ ComponentSolver::Outcome ComponentSolver::newton(Eigen::VectorXd& z, double shif
     // Newton on the KKT conditions once multipliers are known: [H Jᵀ; J 0][Δz; λ] = −[z; g]
     // with H = I + Σ λ_j ∇²g_j. Kept only where it is a descent direction of the merit below.
     if (multipliers.size() == m && !multipliers.isZero(0.0)) {
-      const Eigen::SparseMatrix<double> hessian = lagrangianHessian(multipliers);
       std::vector<Eigen::Triplet<double>> entries;
-      for (int k = 0; k < hessian.outerSize(); ++k) {
-        for (Eigen::SparseMatrix<double>::InnerIterator it(hessian, k); it; ++it) {
-          entries.emplace_back(static_cast<int>(it.row()), static_cast<int>(it.col()), it.value());
-        }
-      }
+      addLagrangianHessian(multipliers, entries);
       for (int k = 0; k < jacobian.outerSize(); ++k) {
         for (Eigen::SparseMatrix<double>::InnerIterator it(jacobian, k); it; ++it) {
           entries.emplace_back(n + static_cast<int>(it.row()), static_cast<int>(it.col()),

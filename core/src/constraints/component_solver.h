@@ -33,8 +33,10 @@ class ComponentSolver {
  private:
   /// Newton iterations on g(z) − shift·g_start = 0 from z (updated in place).
   Outcome newton(Eigen::VectorXd& z, double shift, int& iterations);
-  /// I + Σ λ_j ∇²g_j over the component's columns, at the current x.
-  Eigen::SparseMatrix<double> lagrangianHessian(const Eigen::VectorXd& multipliers);
+  /// Appends I + Σ λ_j ∇²g_j over the component's columns, at the current x, as triplets
+  /// (repeated entries add up).
+  void addLagrangianHessian(const Eigen::VectorXd& multipliers,
+                            std::vector<Eigen::Triplet<double>>& local);
   void evaluate(const Eigen::VectorXd& z, Eigen::VectorXd& residuals,
                 Eigen::SparseMatrix<double>* jacobian);
   /// Names the dependent equations at z: a conflict error, a redundancy error, or (with

@@ -36,9 +36,9 @@ Eigen::Matrix3d rightJacobian(const Eigen::Vector3d& omega) {
   if (angle_squared < 1e-16) return Eigen::Matrix3d::Identity() - 0.5 * k + k * k / 6.0;
   const double angle = std::sqrt(angle_squared);
   // (θ − sin θ) / θ³ cancels like 1 − cos θ; below 1e-2 its series is exact to rounding.
-  const double third = angle < 1e-2 ? 1.0 / 6.0 - angle_squared / 120.0 +
-                                          angle_squared * angle_squared / 5040.0
-                                    : (angle - std::sin(angle)) / (angle_squared * angle);
+  const double third =
+      angle < 1e-2 ? 1.0 / 6.0 - angle_squared / 120.0 + angle_squared * angle_squared / 5040.0
+                   : (angle - std::sin(angle)) / (angle_squared * angle);
   return Eigen::Matrix3d::Identity() - oneMinusCosOverSquare(angle) * k + third * k * k;
 }
 
