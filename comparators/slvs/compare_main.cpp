@@ -139,6 +139,7 @@ int main(int argc, char** argv) {
     rows.push_back({{"parameters", 3 * n},
                     {"instances", row.instances},
                     {"ours_met", row.ours_met},
+                    {"ours_missed", row.ours_missed},
                     {"slvs_met", row.slvs_met},
                     {"slvs_okay", row.slvs_okay},
                     {"slvs_okay_worst_error", row.slvs_okay_error},

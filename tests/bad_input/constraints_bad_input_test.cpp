@@ -141,9 +141,11 @@ TEST(ConstraintsBadInput, ConflictNamesTheConstraints) {
 }
 
 // "bad.json: /constraints/list: the constraints cannot be met: 'gap held' has no gradient ..."
-TEST(ConstraintsBadInput, OverlappingShapesHaveNoDirection) {
+// (the spheres overlap by 0.5; 16 length scales of 0.01 do not part them)
+TEST(ConstraintsBadInput, OverlapNothingNearbyPartsHasNoDirection) {
   Json scene = validScene();
   scene["objects"][1]["pose"]["translation"] = Json::array({1.5, 0.1, 0});
+  scene["constraints"]["length_scale"] = 0.01;
   EXPECT_TRUE(rejected(
       parse(scene), {"/constraints/list:", "'gap held' has no gradient", "already share a point"}));
 }
@@ -167,6 +169,24 @@ TEST(ConstraintsBadInput, AReferenceOfARandomMotionCannotMove) {
      "motion": {"random": {"seed": 1, "relative_to": "a", "overlap": 0.5}}})"));
   EXPECT_TRUE(
       rejected(parse(scene), {"/constraints/list/1/a", "would move object 'a'", "relative to it"}));
+}
+
+// "bad.json: /constraints/list/0/p/object: the constraints would move object 'b', but another
+//  object drapes onto it, ..."
+TEST(ConstraintsBadInput, ADrapeTargetCannotMove) {
+  Json scene = validScene();
+  scene["objects"].push_back(Json::parse(R"(
+    {"name": "sheet", "shape": {"generator": "grid_sheet", "cells_x": 2, "cells_y": 2},
+     "pose": {"translation": [3, 0, 3]},
+     "deform": {"rules": [{"drape": {"onto": "b", "direction": [0, 0, -1], "drop": 3}}]}})"));
+  EXPECT_TRUE(rejected(
+      parse(scene), {"/constraints/list/0/p/object", "would move object 'b'", "drapes onto it"}));
+}
+
+// "bad.json: /constraints: 'constraints' is not allowed beside 'stress', ..."
+TEST(ConstraintsBadInput, NotBesideAStressBlock) {
+  const Json scene = Json::parse(R"({"stress": {"category": "touching"}, "constraints": {}})");
+  EXPECT_TRUE(rejected(parse(scene), {"/constraints:", "not allowed beside 'stress'"}));
 }
 
 // "bad.json: /constraints/list: the list holds no constraint"

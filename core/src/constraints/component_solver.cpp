@@ -349,7 +349,8 @@ Status ComponentSolver::explainRankDeficiency(const Eigen::VectorXd& z, double s
         names.push_back(name);
       }
     }
-    std::string text = constraintName(active_rows_[row.row]) + " with ";
+    if (names.empty()) return own + " (its equation has no gradient here)";
+    std::string text = own + " with ";
     // A long chain of dependencies is named by its first few links and a count.
     constexpr std::size_t kNamed = 8;
     for (std::size_t i = 0; i < std::min(names.size(), kNamed); ++i) {

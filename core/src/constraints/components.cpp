@@ -73,8 +73,15 @@ std::vector<Component> findComponents(const Problem& problem, const ParameterLay
     // References all on one body: moving it moves them together, so the constraint holds or
     // fails whatever the solve does, like one on fixed objects.
     if (support.bodies.size() == 1 && !support.world && support.variables.empty()) continue;
+    // A body that may not turn takes no part in a constraint on directions alone.
+    const ConstraintKind kind = problem.constraints()[c].kind;
+    const bool directions_only = kind == ConstraintKind::kAngle ||
+                                 kind == ConstraintKind::kParallel ||
+                                 kind == ConstraintKind::kPerpendicular;
     for (int body : support.bodies) {
-      if (ownerFree(body)) free_owners[c].push_back(body);
+      if (ownerFree(body) && !(directions_only && problem.bodies()[body].rotation_fixed)) {
+        free_owners[c].push_back(body);
+      }
     }
     for (int variable : support.variables) {
       if (ownerFree(body_count + variable)) free_owners[c].push_back(body_count + variable);

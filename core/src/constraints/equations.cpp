@@ -1,7 +1,12 @@
 #include "equations.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <limits>
+#include <optional>
+
+#include <collido/assert.h>
 
 #include "rotation.h"
 
@@ -93,7 +98,8 @@ class ConstraintEvaluator::RowWriter {
 ConstraintEvaluator::ConstraintEvaluator(const Problem& problem, const ParameterLayout& layout)
     : problem_(problem),
       layout_(layout),
-      last_direction_(problem.constraints().size(), Eigen::Vector3d::Zero()) {
+      last_direction_(problem.constraints().size(), Eigen::Vector3d::Zero()),
+      last_apart_(problem.constraints().size(), false) {
   for (const Body& body : problem.bodies())
     start_rotations_.push_back(body.pose.linear());
   setParameters(startParameters(problem, layout));
@@ -281,6 +287,69 @@ void ConstraintEvaluator::evaluate(const Constraint& c, int row0, Eigen::VectorX
   }
 }
 
+Result<Separation> ConstraintEvaluator::measure(const Constraint& c, const Pose& pose_a,
+                                                const Pose& pose_b) const {
+  Result<Separation> measured =
+      problem_.separationQuery()->measure(c.p.body, pose_a, c.q.body, pose_b);
+  if (!measured.ok() && query_failure_.ok()) {
+    query_failure_ = Status(
+        measured.status().code(),
+        "constraint '" + c.name + "': the distance query failed: " + measured.status().message());
+  }
+  return measured;
+}
+
+Eigen::Vector3d ConstraintEvaluator::originLine(const Pose& pose_a, const Pose& pose_b) {
+  const Eigen::Vector3d along = pose_b.translation() - pose_a.translation();
+  return along.squaredNorm() > 0.0 ? Eigen::Vector3d(along.normalized()) : Eigen::Vector3d::UnitZ();
+}
+
+double ConstraintEvaluator::partingDistance(const Constraint& c, const Pose& pose_a,
+                                            const Pose& pose_b, const Eigen::Vector3d& direction,
+                                            double step) const {
+  // The least s >= 0 with B moved by s · direction apart from A. A move that parts them is found
+  // by growing a rounding-size step (up to 16 length scales); from there the distance falls
+  // along the direction at the rate direction · n (n from the closest points), which gives s.
+  // Where that rate is small (the direction nearly along the contact), bisection to rounding.
+  const auto probe = [&](double s) -> std::optional<Separation> {
+    Pose moved = pose_b;
+    moved.translation() += s * direction;
+    Result<Separation> measured = measure(c, pose_a, moved);
+    if (!measured.ok()) return std::nullopt;
+    return measured.value();
+  };
+  double low = 0.0;
+  double high = step;
+  std::optional<Separation> parted;
+  for (;;) {
+    parted = probe(high);
+    if (!parted) return std::numeric_limits<double>::quiet_NaN();
+    if (parted->distance > 0.0) break;
+    low = high;
+    high *= 4.0;
+    if (high > 16.0 * problem_.lengthScale()) return std::numeric_limits<double>::infinity();
+  }
+  const Eigen::Vector3d between = parted->point_b - parted->point_a;
+  const double rate =
+      between.norm() > 0.0 ? direction.dot(between.normalized()) : 0.0;  // d distance / d s
+  if (rate > 0.2) return std::clamp(high - parted->distance / rate, low, high);
+  const double resolution = 1e-6 * step;  // about the rounding of the coordinates
+  while (high - low > resolution) {
+    const double middle = 0.5 * (low + high);
+    const std::optional<Separation> at = probe(middle);
+    if (!at) return std::numeric_limits<double>::quiet_NaN();
+    (at->distance > 0.0 ? high : low) = middle;
+  }
+  return low == 0.0 ? 0.0 : high;
+}
+
+std::size_t ConstraintEvaluator::indexOf(const Constraint& c) const {
+  const std::ptrdiff_t index = &c - problem_.constraints().data();
+  COLLIDO_ASSERT(index >= 0 && index < static_cast<std::ptrdiff_t>(last_direction_.size()),
+                 "a clearance is evaluated as one of its problem's constraints");
+  return static_cast<std::size_t>(index);
+}
+
 void ConstraintEvaluator::evaluateClearance(const Constraint& c, int row, double target,
                                             Eigen::VectorXd& residuals,
                                             std::vector<Eigen::Triplet<double>>* jacobian) const {
@@ -288,13 +357,8 @@ void ConstraintEvaluator::evaluateClearance(const Constraint& c, int row, double
   const int b = c.q.body;
   const Pose pose_a = pose(a);
   const Pose pose_b = pose(b);
-  Result<Separation> measured = problem_.separationQuery()->measure(a, pose_a, b, pose_b);
+  Result<Separation> measured = measure(c, pose_a, pose_b);
   if (!measured.ok()) {
-    if (query_failure_.ok()) {
-      query_failure_ = Status(
-          measured.status().code(),
-          "constraint '" + c.name + "': the distance query failed: " + measured.status().message());
-    }
     residuals[row] = std::numeric_limits<double>::quiet_NaN();
     return;
   }
@@ -306,11 +370,12 @@ void ConstraintEvaluator::evaluateClearance(const Constraint& c, int row, double
   Eigen::Vector3d on_a = s.point_a;
   Eigen::Vector3d on_b = s.point_b;
   Eigen::Vector3d direction = on_b - on_a;
-  Eigen::Vector3d& last = last_direction_[&c - problem_.constraints().data()];
+  Eigen::Vector3d& last = last_direction_[indexOf(c)];
   // The direction from the closest points is good to about ulp(coordinate) / distance; nearer
   // contact than that, the last direction seen is the better guess.
   const double trusted = 1e-8 * (problem_.lengthScale() + on_a.cwiseAbs().maxCoeff());
-  if (s.distance > 0.0 && direction.norm() > 0.0) {
+  last_apart_[indexOf(c)] = s.distance > 0.0 && direction.norm() > 0.0;
+  if (last_apart_[indexOf(c)]) {
     separation = s.distance;
     direction.normalize();
     if (s.distance < trusted && last.squaredNorm() > 0.0) direction = last;
@@ -320,8 +385,19 @@ void ConstraintEvaluator::evaluateClearance(const Constraint& c, int row, double
     on_a = s.contact;
     on_b = s.contact - *s.depth * direction;
   } else {
-    direction = last;  // touching: the way they parted last, or no gradient at all
-    on_b = on_a;
+    // Touching, or overlapping by a depth the query does not give: the overlap is measured
+    // along the way they parted last (else the line of their origins) as the least move of B
+    // that parts them, so the separation stays continuous through contact.
+    if (last.squaredNorm() == 0.0) last = originLine(pose_a, pose_b);
+    direction = last;
+    const double depth = partingDistance(c, pose_a, pose_b, direction, trusted);
+    if (std::isnan(depth)) {
+      residuals[row] = std::numeric_limits<double>::quiet_NaN();
+      return;
+    }
+    if (std::isinf(depth)) direction.setZero();  // nothing parts them: no gradient here
+    separation = std::isinf(depth) ? 0.0 : -depth;
+    on_b = on_a + separation * direction;
   }
   if (direction.squaredNorm() > 0.0) last = direction;
   const double length = problem_.lengthScale();

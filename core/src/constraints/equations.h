@@ -59,6 +59,12 @@ class ConstraintEvaluator {
   /// The first failure of the separation query (clearance constraints), ok when none: the
   /// residuals it left are NaN, so no step that needed it is taken.
   const Status& queryFailure() const { return query_failure_; }
+  /// The constraint's target value: its constant, or its variable's current value.
+  double target(const Constraint& c) const {
+    return c.target.variable >= 0 ? variables_[c.target.variable] : c.target.value;
+  }
+  /// Whether the clearance's shapes were apart at its last evaluation.
+  bool clearanceWasApart(const Constraint& c) const { return last_apart_[indexOf(c)]; }
 
  private:
   struct Tracked;
@@ -66,8 +72,19 @@ class ConstraintEvaluator {
   Tracked point(const PointRef& ref) const;
   Tracked direction(const DirectionRef& ref) const;
   Tracked acrossDirection(const DirectionRef& ref, int which) const;
+  /// The constraint's index in its problem (it must be one of the problem's own).
+  std::size_t indexOf(const Constraint& c) const;
   void evaluateClearance(const Constraint& c, int row, double target, Eigen::VectorXd& residuals,
                          std::vector<Eigen::Triplet<double>>* jacobian) const;
+  /// The separation query's answer, its first failure recorded.
+  Result<Separation> measure(const Constraint& c, const Pose& pose_a, const Pose& pose_b) const;
+  /// The unit direction from A's origin to B's (+z where they coincide).
+  static Eigen::Vector3d originLine(const Pose& pose_a, const Pose& pose_b);
+  /// How far B must move along `direction` to part from A (0 when they only touch; `step` is a
+  /// rounding-size move); infinity when 16 length scales do not part them, NaN when the query
+  /// failed.
+  double partingDistance(const Constraint& c, const Pose& pose_a, const Pose& pose_b,
+                         const Eigen::Vector3d& direction, double step) const;
 
   const Problem& problem_;
   const ParameterLayout& layout_;
@@ -79,6 +96,7 @@ class ConstraintEvaluator {
   /// Per constraint, the last direction from A to B a clearance saw (zero: none yet): the
   /// gradient where the shapes touch and the query cannot say which way they part.
   mutable std::vector<Eigen::Vector3d> last_direction_;
+  mutable std::vector<bool> last_apart_;  ///< per constraint: a clearance's shapes were apart
   mutable Status query_failure_;
 };
 

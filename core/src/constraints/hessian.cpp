@@ -121,6 +121,14 @@ void addWeightedHessian(ConstraintEvaluator& evaluator, const ParameterLayout& l
   };
   Eigen::MatrixXd hessian(size, size);
   const Eigen::VectorXd here = gradient();
+  // A contact, or a clearance whose shapes touch or overlap, changes closest features with
+  // every step (a rim on a face, a corner on a face): differences across them are noise that
+  // misleads Newton, and in overlap each costs a search for the parting distance. There its
+  // Hessian is left out (Gauss–Newton for that equation).
+  if (constraint.kind == ConstraintKind::kClearance &&
+      (!evaluator.clearanceWasApart(constraint) || evaluator.target(constraint) == 0.0)) {
+    return;
+  }
   for (int i = 0; i < size; ++i) {
     const int column = columns[i];
     move(column, kStep * layout.scale[column]);

@@ -31,7 +31,7 @@ Status checkFrozen(const Problem& problem, const std::vector<int>& frozen,
     const Constraint& constraint = problem.constraints()[c];
     Eigen::VectorXd residuals(detail::ConstraintEvaluator::equationCount(constraint.kind));
     evaluator.evaluate(constraint, 0, residuals, nullptr);
-    if (residuals.cwiseAbs().maxCoeff() > tolerance) {
+    if (!(residuals.cwiseAbs().maxCoeff() <= tolerance)) {  // NaN: a failed distance query
       return Status(StatusCode::kInvalidArgument,
                     "constraint '" + constraint.name +
                         "' involves only fixed objects and values (or one body alone), and "
@@ -97,9 +97,9 @@ Result<SolveReport> solve(Problem& problem, const SolveOptions& options) {
   Eigen::VectorXd x = detail::startParameters(problem, layout);
   std::vector<int> frozen;
   const std::vector<detail::Component> components = detail::findComponents(problem, layout, frozen);
-  if (Status status = checkFrozen(problem, frozen, evaluator, options.tolerance); !status.ok()) {
-    return evaluator.queryFailure().ok() ? status : evaluator.queryFailure();
-  }
+  const Status frozen_status = checkFrozen(problem, frozen, evaluator, options.tolerance);
+  if (!evaluator.queryFailure().ok()) return evaluator.queryFailure();
+  if (!frozen_status.ok()) return frozen_status;
   SolveReport report;
   report.components = static_cast<int>(components.size());
   double change_squared = 0.0;

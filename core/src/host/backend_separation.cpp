@@ -31,6 +31,10 @@ BackendSeparation::~BackendSeparation() {
 
 Result<constraints::Separation> BackendSeparation::measure(int body_a, const Pose& pose_a,
                                                            int body_b, const Pose& pose_b) {
+  const auto count = static_cast<int>(models_.size());
+  if (body_a < 0 || body_a >= count || body_b < 0 || body_b >= count) {
+    return Status(StatusCode::kInvalidArgument, "a clearance names a body beyond the meshes given");
+  }
   const ModelHandle a = models_[body_a];
   const ModelHandle b = models_[body_b];
   if (a == 0 || b == 0) {

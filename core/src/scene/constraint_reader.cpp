@@ -26,8 +26,8 @@ constexpr double kRadiansPerDegree = 3.14159265358979323846 / 180.0;
 /// The largest distance of a vertex of the object's frame-0 shape from its origin: how far a
 /// turn of one radian moves its points.
 double boundingRadius(const SceneObject& object) {
-  const Eigen::Matrix3Xd& vertices = object.shapeAt(0)->vertices;
-  return vertices.cols() == 0 ? 0.0 : vertices.colwise().norm().maxCoeff();
+  const std::shared_ptr<const TriangleMesh> shape = object.shapeAt(0);  // may be made here
+  return shape->vertices.cols() == 0 ? 0.0 : shape->vertices.colwise().norm().maxCoeff();
 }
 
 /// Reads the block into a Problem, creating a body for each object the first time a constraint
@@ -127,6 +127,10 @@ class BlockReader {
         why = "its poses are recovered from markers";
       } else if (source.referenced) {
         why = "another object's random motion is placed relative to it";
+      } else if (source.draped) {
+        why = "it drapes onto another object, its stops cast against the poses before the solve";
+      } else if (source.drape_target) {
+        why = "another object drapes onto it, its stops cast against the poses before the solve";
       } else if (source.kind == "random" || source.kind == "jitter") {
         why = "its motion is " + source.kind + " about a base pose";
       }

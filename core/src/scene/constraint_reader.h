@@ -18,6 +18,8 @@ struct ObjectMotionSource {
   std::string kind = "pose";  ///< "pose", "poses", "linear", "jitter", "random"
   bool tracked = false;       ///< poses recovered from markers
   bool referenced = false;    ///< another object's random motion is placed relative to it
+  bool draped = false;        ///< it drapes onto another object (stops cast at load)
+  bool drape_target = false;  ///< another object drapes onto it
 };
 
 /// Reads `block` (the scene's /constraints), solves it with the exact oracle's distances for

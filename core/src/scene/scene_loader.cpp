@@ -438,11 +438,11 @@ std::vector<std::size_t> readGroup(const Reader& r, const Node& node, const Inde
 // generateStressCases gives, so a study and the stress tests see the same cases.
 void readStress(const Reader& r, const Node& root, const std::string& base_directory,
                 const SceneLoadOptions& options, Scene& scene) {
-  for (const char* key : {"objects", "queries", "frames"}) {
+  for (const char* key : {"objects", "queries", "frames", "constraints"}) {
     if (root.has(key)) {
       r.fail(root.at(key), std::string("'") + key +
                                "' is not allowed beside 'stress', which makes a stress scene's "
-                               "objects, queries and its one frame");
+                               "objects, queries and its one frame, placed as its cases say");
     }
   }
   const Node node = root.at("stress");
@@ -612,6 +612,22 @@ void readDeform(const Reader& r, const Node& node, const std::string& base_direc
   }
 }
 
+/// A drape casts its stop distances against both objects' frame-0 poses when it is read: a
+/// constraint solve may then move neither (the sheet would float or cut in).
+void markDrapes(const Node& node, const std::map<std::string, std::size_t>& index_of,
+                std::vector<scene_reading::ObjectMotionSource>& sources, std::size_t object) {
+  if (!node.has("deform") || !node.value["deform"].is_object()) return;
+  const Json& rules = node.value["deform"].value("rules", Json::array());
+  for (const Json& rule : rules) {
+    if (!rule.is_object() || !rule.contains("drape")) continue;
+    sources[object].draped = true;
+    const Json& onto = rule["drape"].value("onto", Json());
+    if (!onto.is_string()) continue;
+    const auto found = index_of.find(onto.get<std::string>());
+    if (found != index_of.end()) sources[found->second].drape_target = true;
+  }
+}
+
 Scene readScene(const Reader& r, const Json& document, const std::string& base_directory,
                 const SceneLoadOptions& options) {
   const Node root{document, ""};
@@ -767,6 +783,7 @@ Scene readScene(const Reader& r, const Json& document, const std::string& base_d
     if (node.has("markers"))
       scene_reading::readMarkers(r, node.at("markers"), base_directory, scene.frames, object);
     readDeform(r, node, base_directory, scene, index_of, object);
+    markDrapes(node, index_of, sources, i);
     index_of.emplace(object.name, scene.objects.size());
     scene.objects.push_back(std::move(object));
   }

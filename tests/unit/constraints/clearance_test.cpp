@@ -77,8 +77,21 @@ TEST(Clearance, AnOverlapTheQueryMeasuresIsPushedApart) {
   EXPECT_NEAR(balls.gap(), 0.05, 1e-14);
 }
 
-TEST(Clearance, AnOverlapTheQueryCannotMeasureIsRefusedByName) {
-  TwoBalls balls(0.7);
+TEST(Clearance, AnOverlapTheQueryCannotMeasureIsMeasuredByHowFarItTakesToPart) {
+  // A distance-only query: the overlap's depth is the least move of B along the line of the
+  // origins that parts them, found by bisection on the distance, so the solve pushes B out.
+  TwoBalls balls(0.7);  // 0.3 deep
+  balls.query->reports_depth = false;
+  ASSERT_TRUE(balls.problem.fixBody(balls.a).ok());
+  ASSERT_TRUE(balls.problem.addClearance("apart", balls.a, balls.b, Target{0.05}).ok());
+  const auto report = solve(balls.problem);
+  ASSERT_TRUE(report.ok()) << report.status().message();
+  EXPECT_NEAR(balls.gap(), 0.05, 1e-14);
+}
+
+TEST(Clearance, AnOverlapNothingNearbyPartsIsRefusedByName) {
+  // Balls of radius 20 overlapping by 39.3: 16 length scales of travel do not part them.
+  TwoBalls balls(0.7, 20.0);
   balls.query->reports_depth = false;
   ASSERT_TRUE(balls.problem.fixBody(balls.a).ok());
   ASSERT_TRUE(balls.problem.addClearance("apart", balls.a, balls.b, Target{0.05}).ok());
@@ -97,6 +110,40 @@ TEST(Clearance, ContactWithoutDepthIsReachedFromApart) {
   ASSERT_TRUE(balls.problem.addClearance("touch", balls.a, balls.b, Target{0.0}).ok());
   ASSERT_TRUE(solve(balls.problem).ok());
   EXPECT_NEAR(balls.gap(), 0.0, 1e-14);
+}
+
+TEST(Clearance, ShapesThatOnlyTouchAtTheStartArePartedAlongTheirOrigins) {
+  // Distance 0 and no depth, no direction seen yet: a rounding-size step along the line of the
+  // origins parts them, so they touch (depth 0) and that line is the way out.
+  TwoBalls balls(1.0);
+  balls.query->reports_depth = false;
+  ASSERT_TRUE(balls.problem.fixBody(balls.a).ok());
+  ASSERT_TRUE(balls.problem.addClearance("apart", balls.a, balls.b, Target{0.05}).ok());
+  ASSERT_TRUE(solve(balls.problem).ok());
+  EXPECT_NEAR(balls.gap(), 0.05, 1e-14);
+}
+
+TEST(Clearance, ContactThatHoldsAtTheStartIsMetWithoutAChange) {
+  TwoBalls balls(1.0);
+  balls.query->reports_depth = false;
+  ASSERT_TRUE(balls.problem.fixBody(balls.a).ok());
+  ASSERT_TRUE(balls.problem.addClearance("touch", balls.a, balls.b, Target{0.0}).ok());
+  const auto report = solve(balls.problem);
+  ASSERT_TRUE(report.ok()) << report.status().message();
+  EXPECT_EQ(report.value().change, 0.0);
+  EXPECT_EQ(balls.problem.bodies()[balls.b].pose.translation().x(), 1.0);
+}
+
+TEST(Clearance, AFailingQueryOnFixedBodiesIsReported) {
+  TwoBalls balls(1.5);
+  balls.query->fail_from_call = 1;
+  ASSERT_TRUE(balls.problem.fixBody(balls.a).ok());
+  ASSERT_TRUE(balls.problem.fixBody(balls.b).ok());
+  ASSERT_TRUE(balls.problem.addClearance("held", balls.a, balls.b, Target{0.5}).ok());
+  const auto report = solve(balls.problem);
+  ASSERT_FALSE(report.ok());
+  EXPECT_EQ(report.status().message(),
+            "constraint 'held': the distance query failed: the engine crashed");
 }
 
 TEST(Clearance, FollowsAVariable) {

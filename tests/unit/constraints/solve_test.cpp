@@ -84,6 +84,25 @@ TEST(Solve, ABodyWithItsRotationFixedOnlySlides) {
   EXPECT_FALSE(problem.fixRotation(7).ok());
 }
 
+TEST(Solve, ADirectionConstraintOnBodiesThatCannotTurnIsCheckedAsFrozen) {
+  Problem problem(1.0);
+  const int body = problem.addBody("slider", at(0, 0, 0), 1.0).value();
+  ASSERT_TRUE(problem.fixRotation(body).ok());
+  ASSERT_TRUE(
+      problem.addParallel("level", DirectionRef{body, {0, 0, 1}}, DirectionRef{kWorld, {0, 0, 1}})
+          .ok());
+  ASSERT_TRUE(solve(problem).ok());  // holds already
+  ASSERT_TRUE(problem
+                  .addPerpendicular("tilted", DirectionRef{body, {0, 0, 1}},
+                                    DirectionRef{kWorld, {0, 0, 1}})
+                  .ok());
+  const auto report = solve(problem);
+  ASSERT_FALSE(report.ok());
+  EXPECT_NE(report.status().message().find("'tilted' involves only fixed objects"),
+            std::string::npos)
+      << report.status().message();
+}
+
 TEST(Solve, DistanceSplitsTheChangeByTheParametersWeights) {
   // Body moves a along x, the free variable changes by c: minimise (a/L)² + (c/s)² with
   // 2 + a − (1 + c) = 0 → a = −L²/(L² + s²), c = s²/(L² + s²).

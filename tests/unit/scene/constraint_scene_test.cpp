@@ -103,6 +103,20 @@ TEST(ConstraintScene, TheWrittenBackSceneIsAlreadySolved) {
   EXPECT_TRUE(written["objects"][1]["motion"]["poses"][0]["rotation"].contains("matrix"));
 }
 
+TEST(ConstraintScene, APlacedContactSceneReloadsWithoutAChange) {
+  // The stacked parts touch (clearance 0): reloaded, each contact is found to touch (a rounding
+  // step parts it) and nothing moves.
+  const std::string directory = test::makeTempDirectory("placed_contact");
+  const Result<std::string> placed =
+      placedSceneText(test::sourcePath("scenes") + "/stacked_parts.json");
+  ASSERT_TRUE(placed.ok()) << placed.status().toString();
+  const Result<Scene> again = parseScene(placed.value(), "placed.json", test::sourcePath("scenes"));
+  ASSERT_TRUE(again.ok()) << again.status().toString();
+  EXPECT_LT(again.value().placement->change, 1e-9);
+  for (const auto& [name, distance] : again.value().placement->clearances)
+    EXPECT_EQ(distance, 0.0) << name;
+}
+
 TEST(ConstraintScene, ASceneWithoutConstraintsHasNothingToWriteBack) {
   const std::string path = test::sourcePath("scenes") + "/bunny_vs_bunny.json";
   const Result<std::string> placed = placedSceneText(path);
