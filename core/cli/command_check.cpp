@@ -46,6 +46,7 @@ int checkScenes(const std::vector<std::string>& paths) {
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
       const SceneObject& o = scene.objects[i];
       std::cout << "  object " << o.name << ": " << o.report.summary()
+                << (o.parent ? ", on " + scene.objects[*o.parent].name : std::string())
                 << (o.poses.size() == 1 ? ", fixed pose" : ", moving");
       if (o.states.size() > 1) std::cout << ", " << o.states.size() << " active states";
       if (o.deformation) {
@@ -62,7 +63,12 @@ int checkScenes(const std::vector<std::string>& paths) {
     for (const SceneQuery& q : scene.queries) {
       std::cout << "  query " << q.name << ": " << queryKindName(q.request.kind) << " ";
       if (q.isGroup()) {
-        std::cout << "among " << q.among.size() << " objects, after a shared broad phase";
+        if (q.side_b.empty()) {
+          std::cout << "among " << q.among.size() << " objects, after a shared broad phase";
+        } else {
+          std::cout << (q.among.size() - q.side_b.size()) << " objects against " << q.side_b.size()
+                    << ", after a shared broad phase";
+        }
       } else {
         std::cout << scene.objects[q.a].name << " vs " << scene.objects[q.b].name;
       }

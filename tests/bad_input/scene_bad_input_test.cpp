@@ -127,14 +127,15 @@ TEST(SceneBadInput, UnknownTopLevelKey) {
                         "allowed: constraints, description, frames, name, objects, queries"}));
 }
 
-// "bad.json: /objects/0: unknown key 'shpe' (allowed: deform, motion, name, pose, schedule,
-//  shape, states)"
+// "bad.json: /objects/0: unknown key 'shpe' (allowed: deform, markers, motion, name, parent, pose,
+//  schedule, shape, states)"
 TEST(SceneBadInput, UnknownKeyInObject) {
   Json scene = validScene();
   scene["objects"][0]["shpe"] = 1;
-  EXPECT_TRUE(rejected(parse(scene),
-                       {"/objects/0:", "unknown key 'shpe'",
-                        "allowed: deform, markers, motion, name, pose, schedule, shape, states"}));
+  EXPECT_TRUE(
+      rejected(parse(scene),
+               {"/objects/0:", "unknown key 'shpe'",
+                "allowed: deform, markers, motion, name, parent, pose, schedule, shape, states"}));
 }
 
 // "bad.json: /objects/1/shape: unknown key 'minor_raduis' (allowed: generator, major_radius,
@@ -252,10 +253,10 @@ TEST(SceneBadInput, GroupNamesAnUnknownObject) {
                        {"/queries/0/among/1:", "no object named 'c'"}));
 }
 
-// "bad.json: /queries/0/among/2: object named twice"
+// "bad.json: /queries/0/among/2: object 'a' named twice"
 TEST(SceneBadInput, GroupNamesAnObjectTwice) {
   EXPECT_TRUE(rejected(parse(groupScene(Json::array({"a", "b", "a"}))),
-                       {"/queries/0/among/2:", "object named twice"}));
+                       {"/queries/0/among/2:", "object 'a' named twice"}));
 }
 
 // "bad.json: /queries/0/among: 'among' is "*" or an array of object names"

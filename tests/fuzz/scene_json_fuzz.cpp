@@ -18,6 +18,7 @@
 // tracks file (tracks.csv, object "m", markers 1 to 4, frames 0 to 2); the bundled
 // meshes are not used, since reading a 70,000-triangle scan per input would slow fuzzing a
 // hundredfold. The folder is removed at exit.
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -159,12 +160,22 @@ void checkScene(const collido::Scene& scene, const collido::SceneLoadOptions& op
   }
   if (triangles > options.max_triangles) broken("more triangles than max_triangles");
   const std::size_t n = scene.objects.size();
+  for (const collido::SceneObject& object : scene.objects) {
+    if (object.parent && *object.parent >= n) broken("object '" + object.name + "' has no parent");
+  }
   for (const collido::SceneQuery& query : scene.queries) {
     if (query.isGroup()) {
       if (query.among.size() < 2) broken("group query '" + query.name + "' of fewer than two");
       for (std::size_t i = 0; i < query.among.size(); ++i) {
         if (query.among[i] >= n || (i > 0 && query.among[i - 1] >= query.among[i]))
           broken("group query '" + query.name + "' is not a sorted list of objects");
+      }
+      // Two sides: the second a sorted proper subset of the group, so both sides hold objects.
+      if (!query.side_b.empty() && (query.side_b.size() >= query.among.size() ||
+                                    !std::is_sorted(query.side_b.begin(), query.side_b.end()) ||
+                                    !std::includes(query.among.begin(), query.among.end(),
+                                                   query.side_b.begin(), query.side_b.end()))) {
+        broken("group query '" + query.name + "' has a second side outside its objects");
       }
     } else if (query.a >= n || query.b >= n || query.a == query.b) {
       broken("query '" + query.name + "' does not name two different objects");

@@ -50,7 +50,7 @@ const OracleAnswer& OracleCache::get(std::size_t ia, std::size_t ib, std::size_t
         std::any_of(scene_.queries.begin(), scene_.queries.end(), [&](const SceneQuery& q) {
           const QueryKind k = q.request.kind;
           return (k == QueryKind::kAllPairs || k == QueryKind::kContacts) &&
-                 (q.isGroup() ? q.names(ia) && q.names(ib) : q.a == ia && q.b == ib);
+                 (q.isGroup() ? q.asksPair(ia, ib) : q.a == ia && q.b == ib);
         });
     found = answers_
                 .emplace(key,
@@ -98,6 +98,9 @@ std::string OracleCache::fingerprint() const {
     d.value(q.b);
     d.value(q.among.size());
     for (std::size_t index : q.among)
+      d.value(index);
+    d.value(q.side_b.size());
+    for (std::size_t index : q.side_b)
       d.value(index);
   }
   return d.hex();

@@ -18,7 +18,7 @@ struct WorldBox {
 
 }  // namespace
 
-BroadPhase::BroadPhase(const Scene& scene, const SceneQuery& query) : scene_(scene) {
+BroadPhase::BroadPhase(const Scene& scene, const SceneQuery& query) : scene_(scene), query_(query) {
   for (std::size_t index : query.among) {
     const SceneObject& object = scene.objects[index];
     LocalBox box;
@@ -66,7 +66,7 @@ std::vector<std::pair<std::size_t, std::size_t>> BroadPhase::pairsAt(std::size_t
       const WorldBox& p = world[i];
       const WorldBox& q = world[j];
       if (p.low.y() <= q.high.y() && q.low.y() <= p.high.y() && p.low.z() <= q.high.z() &&
-          q.low.z() <= p.high.z()) {
+          q.low.z() <= p.high.z() && query_.asksPair(p.object, q.object)) {
         pairs.emplace_back(std::min(p.object, q.object), std::max(p.object, q.object));
       }
     }

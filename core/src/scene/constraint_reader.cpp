@@ -123,7 +123,14 @@ class BlockReader {
       if (problem_.bodies()[body].fixed) continue;
       const ObjectMotionSource& source = sources_[object_of_body_[body]];
       std::string why;
-      if (source.tracked) {
+      std::string remedy = "list it under 'fixed', or give it a pose, keyframes or a linear motion";
+      if (source.has_parent || source.has_children) {
+        // A correction of one object of a hierarchy would have to be carried through the
+        // relative poses of the others, which the solve does not model.
+        why = source.has_parent ? "it is mounted on a parent, whose motion it follows"
+                                : "objects are mounted on it, which would have to move with it";
+        remedy = "list it under 'fixed' (the solve moves objects outside hierarchies only)";
+      } else if (source.tracked) {
         why = "its poses are recovered from markers";
       } else if (source.referenced) {
         why = "another object's random motion is placed relative to it";
@@ -135,10 +142,11 @@ class BlockReader {
         why = "its motion is " + source.kind + " about a base pose";
       }
       if (!why.empty()) {
-        r_.fail(node, "the constraints would move object '" + problem_.bodies()[body].name +
-                          "', but " + why +
-                          ": list it under 'fixed', or give it a pose, keyframes or a linear "
-                          "motion");
+        std::string message = "the constraints would move object '";
+        message += problem_.bodies()[body].name;
+        message += "', but " + why;
+        message += ": " + remedy;
+        r_.fail(node, message);
       }
     }
   }

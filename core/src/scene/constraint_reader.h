@@ -15,7 +15,10 @@ namespace collido::scene_reading {
 /// applied to every frame keeps fixed, keyframed and linear motions what they were, not random
 /// placements drawn against another object, jitter about a base pose or tracked poses.
 struct ObjectMotionSource {
-  std::string kind = "pose";  ///< "pose", "poses", "linear", "jitter", "random"
+  /// "pose", or the motion: "poses", "keyframes", "joint", "linear", "jitter", "random"
+  std::string kind = "pose";
+  bool has_parent = false;    ///< mounted on another object (its poses follow the parent's)
+  bool has_children = false;  ///< other objects are mounted on it
   bool tracked = false;       ///< poses recovered from markers
   bool referenced = false;    ///< another object's random motion is placed relative to it
   bool draped = false;        ///< it drapes onto another object (stops cast at load)

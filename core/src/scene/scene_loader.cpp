@@ -28,8 +28,9 @@
 #include "constraint_reader.h"
 #include "deformation_reader.h"
 #include "frep_solid_reader.h"
+#include "hierarchy_reader.h"
 #include "marker_reader.h"
-#include "scene_motion.h"
+#include "motion_reader.h"
 #include "scene_reader.h"
 
 namespace collido {
@@ -66,74 +67,6 @@ class TriangleBudget {
   std::size_t limit_;
   double used_ = 0.0;
 };
-
-// --- poses -----------------------------------------------------------------------------------
-
-constexpr double kRotationTolerance = 1e-9;
-
-Eigen::Matrix3d readRotation(const Reader& r, const Node& node) {
-  r.expectObject(node, {"matrix", "quaternion", "axis", "degrees"});
-  const bool has_matrix = node.has("matrix");
-  const bool has_quaternion = node.has("quaternion");
-  const bool has_axis = node.has("axis") || node.has("degrees");
-  if (int(has_matrix) + int(has_quaternion) + int(has_axis) != 1) {
-    r.fail(node, "give exactly one of matrix, quaternion, or axis + degrees");
-  }
-  if (has_matrix) {
-    const Node m = node.at("matrix");
-    r.expectArray(m);
-    if (m.value.size() != 3) r.fail(m, "expected 3 rows");
-    Eigen::Matrix3d rotation;
-    for (int row = 0; row < 3; ++row) {
-      rotation.row(row) = r.vector3(m.at(static_cast<std::size_t>(row))).transpose();
-    }
-    const double drift =
-        (rotation.transpose() * rotation - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff();
-    if (drift > kRotationTolerance || rotation.determinant() <= 0.0) {
-      std::ostringstream text;
-      text << "not a rotation: max |R^T R - I| = " << drift << ", det = " << rotation.determinant()
-           << " (a pose must be rigid: orthonormal rows, determinant +1, within "
-           << kRotationTolerance << ")";
-      r.fail(m, text.str());
-    }
-    return rotation;
-  }
-  if (has_quaternion) {
-    const Node q = node.at("quaternion");
-    r.expectArray(q);
-    if (q.value.size() != 4) r.fail(q, "expected [w, x, y, z]");
-    const Eigen::Quaterniond quaternion(r.number(q.at(0)), r.number(q.at(1)), r.number(q.at(2)),
-                                        r.number(q.at(3)));
-    if (std::abs(quaternion.norm() - 1.0) > 1e-6) {
-      r.fail(q, "not a unit quaternion (norm " + std::to_string(quaternion.norm()) + ")");
-    }
-    return quaternion.normalized().toRotationMatrix();
-  }
-  if (!node.has("axis") || !node.has("degrees")) r.fail(node, "axis and degrees go together");
-  const Eigen::Vector3d axis = r.vector3(node.at("axis"));
-  if (!(axis.norm() > 0.0)) r.fail(node.at("axis"), "the axis must not be zero");
-  const double degrees = r.number(node.at("degrees"));
-  return Eigen::AngleAxisd(degrees * M_PI / 180.0, axis.normalized()).toRotationMatrix();
-}
-
-Pose readPose(const Reader& r, const Node& node) {
-  r.expectObject(node, {"translation", "rotation"});
-  Pose pose = Pose::Identity();
-  if (node.has("translation")) {
-    pose.translation() = r.vector3(node.at("translation"));
-    // The coordinate limit of mesh vertices holds for where a pose puts them, too.
-    for (int k = 0; k < 3; ++k) {
-      if (std::abs(pose.translation()[k]) > kMaxCoordinate) {
-        std::ostringstream text;
-        text << pose.translation()[k] << " is beyond the coordinate limit |t| <= " << kMaxCoordinate
-             << " (scenes/README.md)";
-        r.fail(node.at("translation").at(static_cast<std::size_t>(k)), text.str());
-      }
-    }
-  }
-  if (node.has("rotation")) pose.linear() = readRotation(r, node.at("rotation"));
-  return pose;
-}
 
 // --- shapes ----------------------------------------------------------------------------------
 
@@ -404,28 +337,90 @@ QueryKind readQueryKind(const Reader& r, const Node& node) {
   r.fail(node, "unknown query kind '" + text + "' (known: boolean, all_pairs, contacts, distance)");
 }
 
-// "among": "*" (every object) or an array of at least two different object names.
-template <typename IndexOf>
-std::vector<std::size_t> readGroup(const Reader& r, const Node& node, const IndexOf& index_of,
-                                   std::size_t object_count) {
+// The objects a query entry names: "name" (that object) or {"subtree": "name"} (it and every
+// object mounted on it), with a label for the query's default name.
+struct Selection {
+  std::vector<std::size_t> objects;  // ascending
+  std::string label;
+};
+
+Selection readSelection(const Reader& r, const Node& node, const Scene& scene,
+                        const std::map<std::string, std::size_t>& index_of) {
+  const auto index = [&](const Node& name_node) {
+    const std::string name = r.string(name_node);
+    const auto found = index_of.find(name);
+    if (found == index_of.end()) r.fail(name_node, "no object named '" + name + "'");
+    return found->second;
+  };
+  if (node.value.is_object()) {
+    r.expectObject(node, {"subtree"});
+    if (!node.has("subtree")) r.fail(node, "expected {\"subtree\": an object's name}");
+    const std::size_t root = index(node.at("subtree"));
+    return Selection{scene.subtree(root), scene.objects[root].name + "/*"};
+  }
+  if (!node.value.is_string()) {
+    r.fail(node, std::string("expected an object's name or {\"subtree\": name}, got ") +
+                     scene_reading::typeName(node.value));
+  }
+  const std::size_t object = index(node);
+  return Selection{{object}, scene.objects[object].name};
+}
+
+// "among": "*" (every object) or an array of object names and subtrees, at least two objects,
+// none named twice.
+std::vector<std::size_t> readGroup(const Reader& r, const Node& node, const Scene& scene,
+                                   const std::map<std::string, std::size_t>& index_of) {
   std::vector<std::size_t> group;
   if (node.value.is_string()) {
-    if (r.string(node) != "*") r.fail(node, "'among' is \"*\" or an array of object names");
-    for (std::size_t i = 0; i < object_count; ++i)
+    if (r.string(node) != "*") {
+      r.fail(node, "'among' is \"*\" or an array of object names and {\"subtree\": name}");
+    }
+    for (std::size_t i = 0; i < scene.objects.size(); ++i)
       group.push_back(i);
   } else {
     r.expectArray(node);
     for (std::size_t i = 0; i < node.value.size(); ++i) {
-      const std::size_t index = index_of(node.at(i));
-      if (std::find(group.begin(), group.end(), index) != group.end()) {
-        r.fail(node.at(i), "object named twice");
+      for (const std::size_t index : readSelection(r, node.at(i), scene, index_of).objects) {
+        if (std::find(group.begin(), group.end(), index) != group.end()) {
+          r.fail(node.at(i), "object '" + scene.objects[index].name + "' named twice");
+        }
+        group.push_back(index);
       }
-      group.push_back(index);
     }
     std::sort(group.begin(), group.end());
   }
   if (group.size() < 2) r.fail(node, "a group query needs at least two objects");
   return group;
+}
+
+// "a" and "b": two objects, or sets (subtrees) of them, asked against each other: a query of
+// two objects, or a group query of every pair across the two sets.
+void readSides(const Reader& r, const Node& node, const Scene& scene,
+               const std::map<std::string, std::size_t>& index_of, SceneQuery& query,
+               std::string& label) {
+  Selection sides[2];
+  for (int k = 0; k < 2; ++k) {
+    const char* side = k == 0 ? "a" : "b";
+    if (!node.has(side)) r.fail(node, std::string("missing '") + side + "' (or 'among')");
+    sides[k] = readSelection(r, node.at(side), scene, index_of);
+  }
+  label = sides[0].label + "-" + sides[1].label;
+  const std::vector<std::size_t>& a = sides[0].objects;
+  const std::vector<std::size_t>& b = sides[1].objects;
+  if (a.size() == 1 && b.size() == 1) {
+    if (a[0] == b[0]) r.fail(node, "a query needs two different objects");
+    query.a = a[0];
+    query.b = b[0];
+    return;
+  }
+  std::vector<std::size_t> shared;
+  std::set_intersection(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(shared));
+  if (!shared.empty()) {
+    r.fail(node.at("b"), "object '" + scene.objects[shared.front()].name +
+                             "' is on both sides: 'a' and 'b' must not share objects");
+  }
+  std::set_union(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(query.among));
+  query.side_b = b;
 }
 
 // --- the document ----------------------------------------------------------------------------
@@ -669,123 +664,34 @@ Scene readScene(const Reader& r, const Json& document, const std::string& base_d
   }
 
   ShapeLoader shapes(r, base_directory, options.max_triangles);
+  const scene_reading::Hierarchy hierarchy = scene_reading::readHierarchy(
+      r, objects,
+      {"name", "parent", "shape", "states", "schedule", "deform", "pose", "motion", "markers"});
+  // Objects are read parents first (a child's poses compose with its parent's) but keep their
+  // file order in the scene; `index_of` holds the objects read so far.
   std::map<std::string, std::size_t> index_of;
   std::vector<scene_reading::ObjectMotionSource> sources(objects.value.size());
-  for (std::size_t i = 0; i < objects.value.size(); ++i) {
+  scene.objects.resize(objects.value.size());
+  for (std::size_t i = 0; i < scene.objects.size(); ++i)
+    scene.objects[i].name = hierarchy.names[i];
+  for (const std::size_t i : hierarchy.order) {
     const Node node = objects.at(i);
-    r.expectObject(node,
-                   {"name", "shape", "states", "schedule", "deform", "pose", "motion", "markers"});
-    SceneObject object;
-    if (!node.has("name")) r.fail(node, "missing 'name'");
-    object.name = r.string(node.at("name"));
-    if (object.name.empty()) r.fail(node.at("name"), "the name must not be empty");
-    if (index_of.count(object.name) != 0) {
-      r.fail(node.at("name"), "duplicate object name '" + object.name + "'");
-    }
+    SceneObject& object = scene.objects[i];
     readShapes(r, node, scene.frames, shapes, object);
-    const Pose base = node.has("pose") ? readPose(r, node.at("pose")) : Pose::Identity();
-    object.poses = {base};
-    if (node.has("motion")) {
-      const Node motion = node.at("motion");
-      r.expectObject(motion, {"poses", "random", "jitter", "linear"});
-      if (motion.value.size() - (motion.has("comment") ? 1 : 0) != 1) {
-        r.fail(motion, "give exactly one of poses, random, jitter, linear");
-      }
-      if (motion.has("poses")) {
-        sources[i].kind = "poses";
-        if (node.has("pose"))
-          r.fail(node.at("pose"), "'pose' and motion 'poses' exclude each other");
-        const Node list = motion.at("poses");
-        r.expectArray(list);
-        if (list.value.size() != scene.frames) {
-          r.fail(list, "has " + std::to_string(list.value.size()) + " poses but the scene has " +
-                           std::to_string(scene.frames) + " frames");
-        }
-        object.poses.clear();
-        for (std::size_t f = 0; f < list.value.size(); ++f)
-          object.poses.push_back(readPose(r, list.at(f)));
-      } else if (motion.has("random")) {
-        const Node random = motion.at("random");
-        r.expectObject(random, {"seed", "relative_to", "overlap"});
-        RandomOverlapMotion spec;
-        spec.seed = static_cast<std::uint64_t>(r.integer(random, "seed", 1, 0, INT64_MAX));
-        if (!random.has("relative_to")) r.fail(random, "missing 'relative_to'");
-        const std::string other = r.string(random.at("relative_to"));
-        const auto found = index_of.find(other);
-        if (found == index_of.end()) {
-          r.fail(random.at("relative_to"),
-                 "'" + other + "' is not an object defined before this one");
-        }
-        if (!random.has("overlap")) r.fail(random, "missing 'overlap'");
-        const Node overlap = random.at("overlap");
-        if (overlap.value.is_array()) {
-          if (overlap.value.size() != 2) r.fail(overlap, "expected [low, high] or a number");
-          spec.overlap_low = r.number(overlap.at(0));
-          spec.overlap_high = r.number(overlap.at(1));
-        } else {
-          spec.overlap_low = spec.overlap_high = r.number(overlap);
-        }
-        if (!(spec.overlap_low >= 0.0 && spec.overlap_low <= spec.overlap_high &&
-              spec.overlap_high <= 1.0)) {
-          r.fail(overlap, "overlap must satisfy 0 <= low <= high <= 1");
-        }
-        sources[i].kind = "random";
-        sources[found->second].referenced = true;
-        const SceneObject& reference = scene.objects[found->second];
-        object.poses = randomOverlapPoses(spec, *reference.mesh, reference.poses, *object.mesh,
-                                          base, scene.frames);
-      } else if (motion.has("linear")) {
-        sources[i].kind = "linear";
-        if (node.has("pose"))
-          r.fail(node.at("pose"), "'pose' and motion 'linear' exclude each other");
-        const Node linear = motion.at("linear");
-        r.expectObject(linear, {"from", "to"});
-        LinearMotion spec;
-        for (const char* end : {"from", "to"}) {
-          if (!linear.has(end)) r.fail(linear, std::string("missing '") + end + "'");
-        }
-        spec.from = readPose(r, linear.at("from"));
-        spec.to = readPose(r, linear.at("to"));
-        object.poses = linearPoses(spec, scene.frames);
-      } else {
-        sources[i].kind = "jitter";
-        const Node jitter = motion.at("jitter");
-        r.expectObject(jitter, {"seed", "translation", "rotation_deg"});
-        JitterMotion spec;
-        spec.seed = static_cast<std::uint64_t>(r.integer(jitter, "seed", 1, 0, INT64_MAX));
-        spec.translation = r.number(jitter, "translation", 0.0);
-        spec.rotation_deg = r.number(jitter, "rotation_deg", 0.0);
-        if (spec.translation < 0.0 || spec.rotation_deg < 0.0 || spec.rotation_deg > 180.0) {
-          r.fail(jitter, "translation must be >= 0 and rotation_deg in [0, 180]");
-        }
-        object.poses = jitterPoses(spec, base, scene.frames);
-      }
-      // Finite inputs can still overflow in a motion (ends near the double maximum, a jitter
-      // added to a huge translation): a scene that loads must hold finite poses only, and like
-      // its fixed poses, translations within the coordinate limit.
-      for (std::size_t f = 0; f < object.poses.size(); ++f) {
-        if (!object.poses[f].matrix().allFinite()) {
-          r.fail(motion, "frame " + std::to_string(f) +
-                             ": the pose is not finite (the motion overflows the double range)");
-        }
-        if (object.poses[f].translation().cwiseAbs().maxCoeff() > kMaxCoordinate) {
-          std::ostringstream text;
-          text << "frame " << f << ": the translation (" << object.poses[f].translation().x()
-               << ", " << object.poses[f].translation().y() << ", "
-               << object.poses[f].translation().z()
-               << ") is beyond the coordinate limit |t| <= " << kMaxCoordinate
-               << " (scenes/README.md)";
-          r.fail(motion, text.str());
-        }
-      }
-    }
+    scene_reading::readMotion(r, node, scene, index_of, sources, i, object);
     sources[i].tracked = node.has("markers");
+    if (const std::optional<std::size_t> parent = hierarchy.parents[i]) {
+      object.parent = parent;
+      sources[i].has_parent = true;
+      sources[*parent].has_children = true;
+      scene_reading::composeWithParent(r, node.at("parent"), scene.objects[*parent], scene.frames,
+                                       sources[i].tracked, object);
+    }
     if (node.has("markers"))
       scene_reading::readMarkers(r, node.at("markers"), base_directory, scene.frames, object);
     readDeform(r, node, base_directory, scene, index_of, object);
     markDrapes(node, index_of, sources, i);
-    index_of.emplace(object.name, scene.objects.size());
-    scene.objects.push_back(std::move(object));
+    index_of.emplace(object.name, i);
   }
 
   if (root.has("constraints")) {
@@ -802,29 +708,22 @@ Scene readScene(const Reader& r, const Json& document, const std::string& base_d
     r.expectObject(node, {"name", "a", "b", "among", "kind", "max_pairs", "max_contacts",
                           "abs_tolerance", "rel_tolerance"});
     SceneQuery query;
-    const auto object_index = [&](const Node& name_node) {
-      const std::string name = r.string(name_node);
-      const auto found = index_of.find(name);
-      if (found == index_of.end()) r.fail(name_node, "no object named '" + name + "'");
-      return found->second;
-    };
+    std::string label;
     if (node.has("among")) {
       if (node.has("a") || node.has("b")) {
         r.fail(node, "a query names either 'a' and 'b' or 'among', not both");
       }
-      query.among = readGroup(r, node.at("among"), object_index, scene.objects.size());
+      query.among = readGroup(r, node.at("among"), scene, index_of);
     } else {
-      for (const char* side : {"a", "b"}) {
-        if (!node.has(side)) r.fail(node, std::string("missing '") + side + "' (or 'among')");
-        (side[0] == 'a' ? query.a : query.b) = object_index(node.at(side));
-      }
-      if (query.a == query.b) r.fail(node, "a query needs two different objects");
+      readSides(r, node, scene, index_of, query, label);
     }
     if (!node.has("kind")) r.fail(node, "missing 'kind'");
     query.request.kind = readQueryKind(r, node.at("kind"));
     if (query.isGroup() && query.request.kind != QueryKind::kAllPairs) {
-      r.fail(node.at("kind"), "a group query ('among') asks all_pairs only, not " +
-                                  std::string(queryKindName(query.request.kind)));
+      r.fail(node.at("kind"),
+             "a group query ('among', or a subtree of more than one object) asks "
+             "all_pairs only, not " +
+                 std::string(queryKindName(query.request.kind)));
     }
     query.request.max_pairs =
         static_cast<std::uint64_t>(r.integer(node, "max_pairs", 0, 0, INT64_MAX));
@@ -841,12 +740,11 @@ Scene readScene(const Reader& r, const Json& document, const std::string& base_d
     }
     if (node.has("name")) {
       query.name = r.string(node.at("name"));
-    } else if (query.isGroup()) {
+    } else if (label.empty()) {
       query.name =
           std::to_string(query.among.size()) + " objects " + queryKindName(query.request.kind);
     } else {
-      query.name = scene.objects[query.a].name + "-" + scene.objects[query.b].name + " " +
-                   queryKindName(query.request.kind);
+      query.name = label + " " + queryKindName(query.request.kind);
     }
     if (!query_names.insert(query.name).second) {
       r.fail(node, "duplicate query name '" + query.name + "'");
@@ -857,6 +755,27 @@ Scene readScene(const Reader& r, const Json& document, const std::string& base_d
 }
 
 }  // namespace
+
+bool SceneQuery::asksPair(std::size_t i, std::size_t j) const {
+  if (!isGroup()) return (i == a && j == b) || (i == b && j == a);
+  if (i == j || !names(i) || !names(j)) return false;
+  return side_b.empty() || std::binary_search(side_b.begin(), side_b.end(), i) !=
+                               std::binary_search(side_b.begin(), side_b.end(), j);
+}
+
+std::vector<std::size_t> Scene::subtree(std::size_t root) const {
+  // Parents may come after their children in the file: follow each object up to a root.
+  std::vector<std::size_t> out;
+  for (std::size_t i = 0; i < objects.size(); ++i) {
+    for (std::optional<std::size_t> at = i; at; at = objects[*at].parent) {
+      if (*at == root) {
+        out.push_back(i);
+        break;
+      }
+    }
+  }
+  return out;
+}
 
 bool SceneQuery::names(std::size_t object) const {
   if (isGroup()) return std::binary_search(among.begin(), among.end(), object);
@@ -915,9 +834,13 @@ bool Scene::hasTrackedObjects() const {
 Scene Scene::withTruePoses() const {
   Scene truth = *this;
   for (SceneObject& object : truth.objects) {
-    if (!object.tracking) continue;
-    object.poses = object.tracking->true_poses;
-    object.tracking.reset();
+    if (object.tracking) {
+      object.poses = object.tracking->true_poses;
+      object.tracking.reset();
+    } else if (!object.inherited_true_poses.empty()) {
+      object.poses = std::move(object.inherited_true_poses);
+      object.inherited_true_poses.clear();
+    }
   }
   return truth;
 }

@@ -1,5 +1,6 @@
 #include "scene_motion.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <collido/random/portable_random.h>
@@ -100,6 +101,40 @@ std::vector<Pose> linearPoses(const LinearMotion& spec, std::size_t frames) {
                         ? Eigen::Matrix3d(spec.from.linear())
                         : from_rotation.slerp(s, to_rotation).normalized().toRotationMatrix();
     poses.push_back(pose);
+  }
+  return poses;
+}
+
+std::vector<Pose> keyframePoses(const std::vector<Keyframe>& keys, std::size_t frames) {
+  std::vector<Pose> poses(frames, keys.front().pose);
+  for (std::size_t k = 0; k + 1 < keys.size(); ++k) {
+    const std::size_t first = keys[k].frame;
+    const std::vector<Pose> span =
+        linearPoses(LinearMotion{keys[k].pose, keys[k + 1].pose}, keys[k + 1].frame - first + 1);
+    std::copy(span.begin(), span.end(), poses.begin() + static_cast<std::ptrdiff_t>(first));
+  }
+  std::fill(poses.begin() + static_cast<std::ptrdiff_t>(keys.back().frame), poses.end(),
+            keys.back().pose);
+  return poses;
+}
+
+std::vector<Pose> jointPoses(const JointMotion& spec, std::size_t frames) {
+  std::vector<Pose> poses;
+  poses.reserve(frames);
+  std::size_t key = 0;
+  for (std::size_t f = 0; f < frames; ++f) {
+    while (key + 1 < spec.keys.size() && spec.keys[key + 1].first <= f)
+      ++key;
+    double degrees = spec.keys[key].second;
+    if (key + 1 < spec.keys.size() && f > spec.keys[key].first) {
+      const auto [f0, d0] = spec.keys[key];
+      const auto [f1, d1] = spec.keys[key + 1];
+      degrees = d0 + (d1 - d0) * static_cast<double>(f - f0) / static_cast<double>(f1 - f0);
+    }
+    Pose turn = Pose::Identity();
+    turn.linear() = Eigen::AngleAxisd(degrees * M_PI / 180.0, spec.axis).toRotationMatrix();
+    turn.translation() = spec.origin - turn.linear() * spec.origin;
+    poses.push_back(spec.base * turn);
   }
   return poses;
 }

@@ -2,6 +2,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include <collido/geometry.h>
@@ -39,6 +40,22 @@ struct LinearMotion {
   Pose to = Pose::Identity();
 };
 
+/// A pose at a frame of a keyframed motion.
+struct Keyframe {
+  std::size_t frame = 0;
+  Pose pose = Pose::Identity();
+};
+
+/// A revolute joint (a manipulator link on its parent): the pose is
+/// base * T(origin) * R(axis, angle) * T(-origin), about `axis` through `origin` (both in the
+/// object's own frame), the angle piecewise linear between keys of (frame, degrees).
+struct JointMotion {
+  Pose base = Pose::Identity();
+  Eigen::Vector3d axis = Eigen::Vector3d::UnitZ();  ///< unit length
+  Eigen::Vector3d origin = Eigen::Vector3d::Zero();
+  std::vector<std::pair<std::size_t, double>> keys;  ///< (frame, degrees), frames increasing
+};
+
 /// One pose per frame. The reference's poses have one entry per frame or one for all; the
 /// object's `base` rotation is composed with the random one (so a shape's own orientation is
 /// kept in the mix). Deterministic for a seed on every platform (own sampling on mt19937_64).
@@ -53,5 +70,13 @@ std::vector<Pose> jitterPoses(const JitterMotion& spec, const Pose& base, std::s
 
 /// One pose per frame from `spec.from` to `spec.to`.
 std::vector<Pose> linearPoses(const LinearMotion& spec, std::size_t frames);
+
+/// One pose per frame through `keys` (at least one, frames increasing and below `frames`):
+/// between two consecutive keys as LinearMotion between them (each key exactly as given), held
+/// before the first key and after the last.
+std::vector<Pose> keyframePoses(const std::vector<Keyframe>& keys, std::size_t frames);
+
+/// One pose per frame of the joint (keys as for keyframePoses; the angle held at the ends).
+std::vector<Pose> jointPoses(const JointMotion& spec, std::size_t frames);
 
 }  // namespace collido

@@ -24,7 +24,8 @@ class BroadPhase {
   /// `query` must be a group query of `scene`; both must outlive this object.
   BroadPhase(const Scene& scene, const SceneQuery& query);
 
-  /// Candidate pairs in `frame`: object indices (into Scene::objects) with first < second,
+  /// Candidate pairs in `frame` (those the query asks: across its two sets, for a query of
+  /// two subtrees): object indices (into Scene::objects) with first < second,
   /// in ascending order.
   std::vector<std::pair<std::size_t, std::size_t>> pairsAt(std::size_t frame) const;
 
@@ -35,6 +36,7 @@ class BroadPhase {
     Eigen::Vector3d half = Eigen::Vector3d::Zero();
   };
   const Scene& scene_;
+  const SceneQuery& query_;
   std::vector<LocalBox> boxes_;
 };
 

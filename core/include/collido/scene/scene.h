@@ -42,6 +42,13 @@ struct SceneObject {
   /// Tracked markers: `poses` are then the poses recovered from them, and the tracking holds
   /// the true ones. Null for an object whose poses are given.
   std::shared_ptr<const MarkerTracking> tracking;
+  /// The object it is mounted on (scene key "parent"), an index into Scene::objects; empty for
+  /// a root. `poses` are world poses all the same: the parent's composed with the object's own
+  /// motion relative to it, so a child follows its parent (scenes/README.md, "Hierarchy").
+  std::optional<std::size_t> parent;
+  /// Set when an ancestor is tracked and this object is not: the world poses the true motions
+  /// give (`poses` follow the ancestors' recovered poses, as a tracker's world would).
+  std::vector<Pose> inherited_true_poses;
 
   /// The object's world pose in `frame`: what every query uses (recovered, when tracked).
   const Pose& poseAt(std::size_t frame) const {
@@ -49,7 +56,12 @@ struct SceneObject {
   }
   /// The pose the scene's motion gives in `frame`: poseAt() unless the object is tracked.
   const Pose& truePoseAt(std::size_t frame) const {
-    return tracking ? tracking->true_poses[frame] : poseAt(frame);
+    if (tracking) return tracking->true_poses[frame];
+    if (!inherited_true_poses.empty()) {
+      return inherited_true_poses.size() == 1 ? inherited_true_poses[0]
+                                              : inherited_true_poses[frame];
+    }
+    return poseAt(frame);
   }
   /// Whether its shape changes between frames (states or movable nodes).
   bool changesShape() const { return deformation != nullptr || states.size() > 1; }
@@ -74,11 +86,18 @@ struct SceneQuery {
   /// Non-empty: a group query over these objects (at least two, ascending); `a` and `b` are
   /// then unused. Only all-pairs questions are asked of groups.
   std::vector<std::size_t> among;
+  /// Non-empty only for a group query of one set against another (subtree against subtree):
+  /// the second set (ascending, within `among`); only pairs with one object in it and the other
+  /// not are asked. Empty: every pair of `among` is.
+  std::vector<std::size_t> side_b;
   QueryRequest request;
 
   bool isGroup() const { return !among.empty(); }
   /// Whether the query asks anything of `object`.
   bool names(std::size_t object) const;
+  /// Whether the query asks about the object pair (i, j), i != j: both named and, for a query
+  /// of two sets, on different sides.
+  bool asksPair(std::size_t i, std::size_t j) const;
   /// The objects it asks about: `among`, or {a, b}.
   std::vector<std::size_t> objects() const;
 };
@@ -128,6 +147,8 @@ struct Scene {
   BuildNeeds needsOf(std::size_t object) const;
   /// Indices of the objects that some query names, in order.
   std::vector<std::size_t> queriedObjects() const;
+  /// `root` and every object mounted on it, directly or further down, ascending.
+  std::vector<std::size_t> subtree(std::size_t root) const;
 };
 
 /// How a scene is loaded.
