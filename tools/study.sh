@@ -4,8 +4,9 @@
 # each combination in its own worker process, every answer checked against the exact oracle.
 # Then compares the NURBS distance backends on scenes/surfaces/ (collido surface-distance) and
 # the FRep collision test against polygonized meshes on scenes/frep/ (collido frep).
-# Prints the table and writes the dashboard. Results: build/release/study/ (table.txt,
-# records.jsonl, summary.json, robustness.txt, report.html). An interrupted run resumes where it
+# Writes each bundled scene's 3D view with the backends the study ran on it (views/), prints the
+# table and writes the dashboard. Results: build/release/study/ (table.txt, records.jsonl,
+# summary.json, robustness.txt, views/, report.html). An interrupted run resumes where it
 # stopped; a finished one is kept as build/release/study.previous and the new report compares
 # against it.
 # Extra arguments go to `collido study` (e.g. --repetitions 5).
@@ -75,6 +76,16 @@ for file in scenes/frep/*.json; do
     if [[ -f "$json" ]]; then
       frep_files+=(--frep "$json")
     fi
+  fi
+done
+# The scenes' 3D views (collido view), each with the backends the study ran on it, linked from
+# the dashboard; one view at a time, each backend in its own process.
+mkdir -p "$out/views"
+for file in scenes/*.json; do
+  name=$(basename "$file" .json)
+  if ! build/release/collido view "$file" --results "$out" -o "$out/views/$name.html" --quiet \
+      2> "$out/views/$name.txt"; then
+    echo "warning: collido view $file failed: see $out/views/$name.txt" >&2
   fi
 done
 baseline=()

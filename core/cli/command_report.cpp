@@ -1,4 +1,5 @@
 // collido report: the dashboard of a study folder as one self-contained HTML page.
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -72,6 +73,29 @@ Result<std::vector<study::CombinationResult>> readStudy(const std::string& direc
   return study::ResultStore(directory).readAll();
 }
 
+// The scenes' 3D views beside the study (<study>/views/<scene>.html, made by collido view; see
+// tools/study.sh), linked relative to the report so the pair can be moved together.
+nlohmann::json sceneViews(const std::string& directory, const std::string& output) {
+  nlohmann::json views = nlohmann::json::array();
+  const std::filesystem::path folder = std::filesystem::path(directory) / "views";
+  std::error_code ec;
+  if (!std::filesystem::is_directory(folder, ec)) return views;
+  std::vector<std::filesystem::path> pages;
+  for (const auto& entry : std::filesystem::directory_iterator(folder, ec)) {
+    if (entry.path().extension() == ".html") pages.push_back(entry.path());
+  }
+  std::sort(pages.begin(), pages.end());
+  const std::filesystem::path from =
+      std::filesystem::absolute(std::filesystem::path(output)).parent_path();
+  for (const std::filesystem::path& page : pages) {
+    views.push_back(
+        {{"scene", page.stem().string()},
+         {"href",
+          std::filesystem::relative(std::filesystem::absolute(page), from, ec).generic_string()}});
+  }
+  return views;
+}
+
 int runReport(const ReportArguments& args) {
   Result<std::vector<study::CombinationResult>> results = readStudy(args.directory);
   if (!results.ok()) {
@@ -91,6 +115,9 @@ int runReport(const ReportArguments& args) {
       args.title.empty()
           ? std::filesystem::absolute(args.directory).lexically_normal().filename().string()
           : args.title;
+  const std::string output = args.output.empty()
+                                 ? (std::filesystem::path(args.directory) / "report.html").string()
+                                 : args.output;
   nlohmann::json data = study::reportData(results.value(), baseline, title);
   data["pose_error"] = nlohmann::json::array();
   for (const std::string& path : args.pose_error) {
@@ -123,14 +150,12 @@ int runReport(const ReportArguments& args) {
     }
     data["frep"].push_back(std::move(comparison).value());
   }
+  data["views"] = sceneViews(args.directory, output);
   Result<std::string> html = study::renderReport(data, study::webDirectory(args.web));
   if (!html.ok()) {
     std::cerr << "error: " << html.status().message() << "\n";
     return 2;
   }
-  const std::string output = args.output.empty()
-                                 ? (std::filesystem::path(args.directory) / "report.html").string()
-                                 : args.output;
   if (Status s = study::writeFileAtomically(output, html.value()); !s.ok()) {
     std::cerr << "error: " << s.message() << "\n";
     return 2;

@@ -48,12 +48,6 @@ struct StudyArguments {
   bool quiet = false;
 };
 
-std::string thisExecutable() {
-  std::error_code ec;
-  const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
-  return ec ? std::string() : self.string();
-}
-
 // LD_PRELOAD for the allocation hooks, when they were built beside this executable.
 std::vector<std::string> workerEnvironment() {
 #ifdef COLLIDO_HEAP_HOOKS_FILE
@@ -67,16 +61,6 @@ std::vector<std::string> workerEnvironment() {
   }
 #endif
   return {};
-}
-
-std::vector<std::string> pluginArguments(const PluginOptions& plugins) {
-  std::vector<std::string> args;
-  for (const std::string& path : plugins.paths) {
-    args.push_back("--plugin");
-    args.push_back(std::filesystem::absolute(path).string());
-  }
-  if (plugins.no_defaults) args.push_back("--no-default-plugins");
-  return args;
 }
 
 // The backend settings to run: the sweep's (restricted to the variants --backends names, plus

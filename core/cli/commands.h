@@ -13,6 +13,12 @@ struct PluginOptions {
   bool no_defaults = false;        ///< --no-default-plugins
 };
 
+/// This executable's path (to start child processes of it), "" when it cannot be found.
+std::string thisExecutable();
+
+/// The plugin options as arguments for a child process of this executable (paths absolute).
+std::vector<std::string> pluginArguments(const PluginOptions& plugins);
+
 /// Each add*Command registers a subcommand whose callback runs it and stores its exit code.
 void addBackendsCommand(CLI::App& app, const PluginOptions& plugins, int& exit_code);
 void addCheckCommand(CLI::App& app, int& exit_code);
@@ -25,6 +31,7 @@ void addRunCommand(CLI::App& app, const PluginOptions& plugins, int& exit_code);
 void addConformanceCommand(CLI::App& app, int& exit_code);
 /// study, merge, and the internal worker mode the study starts.
 void addReportCommand(CLI::App& app, int& exit_code);
+void addViewCommands(CLI::App& app, const PluginOptions& plugins, int& exit_code);
 void addStudyCommands(CLI::App& app, const PluginOptions& plugins, int& exit_code);
 
 }  // namespace collido::cli

@@ -28,6 +28,7 @@ int main(int argc, char** argv) {
   collido::cli::addConformanceCommand(app, exit_code);
   collido::cli::addStudyCommands(app, plugins, exit_code);
   collido::cli::addReportCommand(app, exit_code);
+  collido::cli::addViewCommands(app, plugins, exit_code);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

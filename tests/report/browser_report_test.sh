@@ -50,10 +50,14 @@ JSON
 "$collido" frep "$source_dir/scenes/frep/seed_quadric.json" --repetitions 1 \
   --backends obbtree --resolutions 8,16 --json "$work/frep.json" \
   --preview "$work/frep.png" --preview-size 96,72 > /dev/null
+# A scene's 3D view beside the study: the dashboard links it ("Scenes in 3D").
+mkdir -p "$work/study/views"
+"$collido" view "$work/tracked.json" --results "$work/study" -o "$work/study/views/tracked_small.html" \
+  --quiet
 "$collido" report "$work/study" --baseline "$work/study" --pose-error "$work/pose_error.json" \
   --surface-distance "$work/surfaces.json" --frep "$work/frep.json" -o "$work/report.html"
 COLLIDO_REPORT_HTML="$work/report.html" \
 COLLIDO_EXPECT_VIEWS="time-vs-error,distance-error,surfaces,frep,robustness,time-distribution,deforming,tracking,pose-error,memory,scaling,needs,comparison" \
-COLLIDO_EXPECT_SECTION_TEXT="robustness=unsupported,robustness=touching" \
+COLLIDO_EXPECT_SECTION_TEXT="robustness=unsupported,robustness=touching,scene-views=tracked_small" \
 COLLIDO_REPORT_SCREENSHOT="$work/report.png" \
-  node --test "$source_dir/web/tests/"
+  node --test "$source_dir/web/tests/report.test.mjs"

@@ -69,8 +69,13 @@ test('every chart of the report renders without console errors', async () => {
     for (const p of pictures) assert.ok(p.width > 0, `picture ${p.view} did not decode`);
     for (const id of ['time-vs-error', 'distance-error', 'surfaces', 'frep', 'robustness', 'time-distributions', 'deforming', 'tracking',
       'pose-error', 'memory', 'scaling',
-      'failures', 'needs', 'comparison', 'table']) {
+      'failures', 'scene-views', 'needs', 'comparison', 'table']) {
       assert.ok(sections.includes(id), `missing section ${id}`);
+    }
+    // Links to scene views lead to files beside the report.
+    const links = await page.$$eval('#scene-views a', (nodes) => nodes.map((n) => n.href));
+    for (const link of links) {
+      assert.ok(link.startsWith('file:') && existsSync(new URL(link)), `view link ${link} is broken`);
     }
     for (const [id, text] of expectedTexts) {
       const shown = await page.$eval('#' + id, (n) => n.textContent);

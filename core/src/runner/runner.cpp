@@ -399,6 +399,19 @@ void runSceneOnBackend(const Scene& scene, const BackendSpec& spec, OracleCache&
           appendWorldPairs(shape_a, a.poseAt(frame), shape_b, b.poseAt(frame), truth.pairs,
                            true_pairs);
         addAnswer(one, record);
+        if (options.keep_answers) {
+          PairAnswers kept{ia, ib, result, truth.intersecting, truth.pairs, std::nullopt};
+          if (truth.distance) {
+            DistanceResult exact;
+            exact.distance = truth.distance->distance;
+            exact.point_a = truth.distance->point_a;
+            exact.point_b = truth.distance->point_b;
+            exact.triangle_a = truth.distance->pair.a;
+            exact.triangle_b = truth.distance->pair.b;
+            kept.oracle_distance = exact;
+          }
+          record.answers.push_back(std::move(kept));
+        }
         record.bv_tests += result.counters.bv_tests;
         record.primitive_tests += result.counters.primitive_tests;
         m.counts_bv_tests = result.counters.counts_bv_tests;

@@ -49,6 +49,19 @@ struct RunOptions {
   /// Objects posed from tracked markers: the margin of the "possible contact" answer is this
   /// many times the sum of the objects' predicted spreads (TrackedFrame::sigma) in the frame.
   double tracking_sigmas = 3.0;
+  /// Keep every frame's answers, the backend's and the oracle's, per object pair asked
+  /// (FrameRecord::answers): what `collido view` shows triangle by triangle.
+  bool keep_answers = false;
+};
+
+/// One object pair's answers in a frame, kept with RunOptions::keep_answers.
+struct PairAnswers {
+  std::size_t a = 0;  ///< object index (Scene::objects)
+  std::size_t b = 0;
+  QueryResult reported;  ///< the backend's answer (timing counters included)
+  bool oracle_intersecting = false;
+  std::vector<TrianglePair> oracle_pairs;  ///< all pairs, or one witness (boolean queries)
+  std::optional<DistanceResult> oracle_distance;
 };
 
 /// The comparison of one frame's answer with the oracle's.
@@ -98,6 +111,8 @@ struct FrameRecord {
   /// Object pairs asked: 1 for a two-object query; for a group query, the candidates the shared
   /// broad phase passed (every count above is summed over them).
   std::size_t object_pairs = 1;
+  /// With RunOptions::keep_answers: the answers of every object pair asked, in order.
+  std::vector<PairAnswers> answers;
 
   /// Whether the answer differs from the oracle's in any way this query asks about.
   bool disagrees(QueryKind kind) const;

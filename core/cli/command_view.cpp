@@ -1,0 +1,254 @@
+// collido view: a scene's 3D view with every backend's answers, triangle by triangle. Each
+// backend answers in a child process of its own (collido view-answers), so an engine that
+// crashes or hangs loses its own answers only; the exact oracle's answers are kept on disk
+// between them and computed once.
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <set>
+#include <sstream>
+
+#include <collido/runner/runner.h>
+#include <collido/runner/view_answers.h>
+#include <collido/study/oracle_store.h>
+#include <collido/study/plan.h>
+#include <collido/study/report_html.h>
+#include <collido/study/result_store.h>
+#include <collido/study/worker_process.h>
+#include <collido/view/view_page.h>
+
+#include "commands.h"
+
+namespace collido::cli {
+namespace {
+
+struct ViewArguments {
+  std::string scene;
+  std::string out;
+  std::vector<std::string> backends;
+  std::string results;
+  std::string web;
+  double timeout_s = 600.0;
+  double resolution = 1.0;
+  bool quiet = false;
+};
+
+// A number that reads back to the same double.
+std::string exactText(double value) {
+  std::ostringstream text;
+  text.precision(17);
+  text << value;
+  return text.str();
+}
+
+// The variants a study ran on this scene (as declared, at `resolution`), in its plan's order.
+Result<std::vector<std::string>> studyBackends(const std::string& directory,
+                                               const std::string& scene_name, double resolution) {
+  Result<std::vector<study::Combination>> plan = study::ResultStore(directory).readPlan();
+  if (!plan.ok()) return plan.status();
+  std::vector<std::string> backends;
+  std::set<std::string> seen;
+  for (const study::Combination& c : plan.value()) {
+    if (c.scene_name != scene_name || c.resolution != resolution || c.limit != 0 ||
+        c.needs != study::NeedsMode::kDeclared) {
+      continue;
+    }
+    if (seen.insert(c.backend).second) backends.push_back(c.backend);
+  }
+  if (backends.empty()) {
+    return Status(StatusCode::kInvalidArgument, directory + ": the study ran nothing on scene '" +
+                                                    scene_name + "' at resolution " +
+                                                    exactText(resolution) + " as declared");
+  }
+  return backends;
+}
+
+std::vector<std::string> everyVariant(const PluginOptions& plugins) {
+  const PluginDiscovery found = discoverPlugins(plugins.paths, !plugins.no_defaults);
+  std::vector<std::string> names;
+  for (const auto& plugin : found.plugins) {
+    for (const VariantInfo& v : plugin->variants())
+      names.push_back(v.name);
+  }
+  return names;
+}
+
+std::string readFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// One backend's answers, from a child process.
+view::ViewBackend answersOf(const ViewArguments& args, const PluginOptions& plugins,
+                            const std::string& backend, const std::string& work,
+                            std::size_t index) {
+  view::ViewBackend result;
+  result.label = backend;
+  const std::string out = work + "/answers_" + std::to_string(index) + ".json";
+  study::WorkerLaunch launch;
+  launch.executable = thisExecutable();
+  launch.arguments = pluginArguments(plugins);
+  for (const std::string& a :
+       {std::string("view-answers"), std::string("--scene"), args.scene, std::string("--backend"),
+        backend, std::string("--out"), out, std::string("--oracle-cache"), work + "/oracle",
+        std::string("--resolution"), exactText(args.resolution)}) {
+    launch.arguments.push_back(a);
+  }
+  launch.log_path = work + "/log_" + std::to_string(index) + ".txt";
+  launch.timeout_s = args.timeout_s;
+  const study::WorkerOutcome outcome = study::runWorkerProcess(launch);
+  if (!outcome.ok()) {
+    result.problem =
+        outcome.status + (outcome.signal_name.empty() ? "" : " (" + outcome.signal_name + ")") +
+        (outcome.exit_code != 0 ? " (exit " + std::to_string(outcome.exit_code) + ")" : "") + ": " +
+        outcome.log_tail;
+    return result;
+  }
+  result.answers_json = readFile(out);
+  if (result.answers_json.empty()) result.problem = "the backend's process wrote no answers";
+  return result;
+}
+
+int view(const ViewArguments& args, const PluginOptions& plugins) {
+  SceneLoadOptions load;
+  load.resolution = args.resolution;
+  Result<Scene> scene = loadScene(args.scene, load);
+  if (!scene.ok()) {
+    std::cerr << "error: " << scene.status().message() << "\n";
+    return 2;
+  }
+  std::vector<std::string> backends = args.backends;
+  if (backends.empty() && !args.results.empty()) {
+    Result<std::vector<std::string>> ran =
+        studyBackends(args.results, scene.value().name, args.resolution);
+    if (!ran.ok()) {
+      std::cerr << "error: " << ran.status().message() << "\n";
+      return 2;
+    }
+    backends = std::move(ran).value();
+  }
+  if (backends.empty()) backends = everyVariant(plugins);
+  if (backends.empty()) {
+    std::cerr << "error: no backends to show (build the plugins, pass --plugin or --backends)\n";
+    return 2;
+  }
+  std::error_code ec;
+  const std::filesystem::path work =
+      std::filesystem::path(args.out).parent_path() /
+      (std::filesystem::path(args.out).filename().string() + ".work");
+  std::filesystem::create_directories(work / "oracle", ec);
+  if (ec) {
+    std::cerr << "error: " << work.string() << ": " << ec.message() << "\n";
+    return 2;
+  }
+  std::vector<view::ViewBackend> answers;
+  for (std::size_t i = 0; i < backends.size(); ++i) {
+    if (!args.quiet) std::cerr << "view: " << backends[i] << "\n";
+    answers.push_back(answersOf(args, plugins, backends[i], work.string(), i));
+    if (!answers.back().problem.empty()) {
+      std::cerr << "warning: " << backends[i] << ": " << answers.back().problem << "\n";
+    }
+  }
+  Result<std::string> page =
+      view::renderViewPage(scene.value(), answers, study::webDirectory(args.web));
+  if (!page.ok()) {
+    std::cerr << "error: " << page.status().message() << "\n";
+    return 2;
+  }
+  if (Status s = study::writeFileAtomically(args.out, page.value()); !s.ok()) {
+    std::cerr << "error: " << s.message() << "\n";
+    return 2;
+  }
+  std::filesystem::remove_all(work, ec);
+  if (!args.quiet) std::cerr << "view: wrote " << args.out << "\n";
+  return 0;
+}
+
+struct AnswersArguments {
+  std::string scene;
+  std::string backend;
+  std::string out;
+  std::string oracle_directory;
+  double resolution = 1.0;
+};
+
+// The child: one backend's answers on the scene, the oracle's shared through the store.
+int viewAnswers(const AnswersArguments& args, const PluginOptions& plugins) {
+  SceneLoadOptions load;
+  load.resolution = args.resolution;
+  Result<Scene> scene = loadScene(args.scene, load);
+  if (!scene.ok()) {
+    std::cerr << "error: " << scene.status().message() << "\n";
+    return 2;
+  }
+  const PluginDiscovery found = discoverPlugins(plugins.paths, !plugins.no_defaults);
+  Result<std::vector<BackendSpec>> specs = resolveBackends({args.backend}, found.plugins);
+  if (!specs.ok()) {
+    std::cerr << "error: " << specs.status().message() << "\n";
+    return 2;
+  }
+  OracleCache oracle(scene.value());
+  std::string stored;
+  if (!args.oracle_directory.empty()) {
+    stored = study::oracleStorePath(args.oracle_directory, oracle);
+    if (Status s = study::loadOracleAnswers(stored, oracle); !s.ok())
+      std::cerr << "note: " << s.message() << "; computing the answers afresh\n";
+  }
+  const std::size_t known = oracle.computed();
+  RunOptions options;
+  options.repetitions = 1;
+  options.keep_answers = true;
+  const RunReport report = runScene(scene.value(), specs.value().front(), options, oracle);
+  if (!stored.empty() && oracle.computed() != known) {
+    if (Status s = study::saveOracleAnswers(stored, oracle); !s.ok())
+      std::cerr << "note: " << s.message() << "\n";
+  }
+  const std::string json = viewAnswersJson(scene.value(), report, specs.value().front().label());
+  if (Status s = study::writeFileAtomically(args.out, json); !s.ok()) {
+    std::cerr << "error: " << s.message() << "\n";
+    return 2;
+  }
+  return 0;
+}
+
+}  // namespace
+
+void addViewCommands(CLI::App& app, const PluginOptions& plugins, int& exit_code) {
+  CLI::App* command = app.add_subcommand(
+      "view",
+      "Write a scene's 3D view: one HTML page that opens offline, showing the meshes frame by "
+      "frame and, per backend and query, the triangles it reports as intersecting, the exact "
+      "oracle's and the difference (docs/VIEW.md)");
+  auto args = std::make_shared<ViewArguments>();
+  command->add_option("scene", args->scene, "scene file (JSON)")->required();
+  command->add_option("-o,--out", args->out, "the page to write (HTML)")->required();
+  command->add_option("--backends", args->backends,
+                      "backends to show, NAME or NAME[key=value;...] (default: those the study "
+                      "of --results ran on the scene, else every variant found)");
+  command->add_option("--results", args->results,
+                      "a study folder (collido study --out): show the backends it ran here");
+  command->add_option("--timeout", args->timeout_s,
+                      "seconds a backend may take for all its answers (default 600)");
+  command
+      ->add_option("--resolution", args->resolution,
+                   "scales the generated shapes' sample counts (as collido study's sweeps do)")
+      ->check(CLI::PositiveNumber);
+  command->add_option("--web", args->web, "the front-end folder (default: the source tree's web/)");
+  command->add_flag("--quiet", args->quiet, "no progress on stderr");
+  command->callback([args, &plugins, &exit_code] { exit_code = view(*args, plugins); });
+
+  CLI::App* child = app.add_subcommand("view-answers", "");  // the view's child process
+  child->group("");
+  auto answers = std::make_shared<AnswersArguments>();
+  child->add_option("--scene", answers->scene)->required();
+  child->add_option("--backend", answers->backend)->required();
+  child->add_option("--out", answers->out)->required();
+  child->add_option("--oracle-cache", answers->oracle_directory);
+  child->add_option("--resolution", answers->resolution);
+  child->callback([answers, &plugins, &exit_code] { exit_code = viewAnswers(*answers, plugins); });
+}
+
+}  // namespace collido::cli

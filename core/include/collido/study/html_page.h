@@ -1,0 +1,26 @@
+#pragma once
+
+#include <filesystem>
+#include <map>
+#include <string>
+
+#include <collido/status.h>
+
+namespace collido::study {
+
+/// The text of a file the page inlines; a missing file is an error naming it and `hint` (how to
+/// get it).
+Result<std::string> readText(const std::filesystem::path& path, const std::string& hint);
+
+/// A script made safe to inline in a <script> element ("</script" cannot close it early).
+std::string scriptSafe(const std::string& text);
+
+/// JSON made safe to inline in a <script> element (no "</" nor "<!--" survives).
+std::string dataSafe(const std::string& json);
+
+/// Fills "@NAME@" markers of a page template in one pass over the template only (inserted text
+/// is never taken for a marker); every value must have its marker.
+Result<std::string> fillTemplate(const std::string& page,
+                                 const std::map<std::string, std::string>& values);
+
+}  // namespace collido::study

@@ -1,0 +1,89 @@
+#include <collido/study/html_page.h>
+
+#include <algorithm>
+#include <cctype>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+namespace collido::study {
+
+Result<std::string> readText(const std::filesystem::path& path, const std::string& hint) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    return Status(StatusCode::kInvalidArgument,
+                  path.string() + " not found" + (hint.empty() ? "" : ": " + hint));
+  }
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  return buffer.str();
+}
+
+// A script inlined in the page must not close its <script> element early: only "</script"
+// (any case) does, and "<\/script" means the same inside the strings and regular expressions
+// where it can occur in code.
+std::string scriptSafe(const std::string& text) {
+  std::string out;
+  out.reserve(text.size());
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (text[i] == '<' && i + 1 < text.size() && text[i + 1] == '/' && i + 8 <= text.size()) {
+      std::string word = text.substr(i + 2, 6);
+      for (char& c : word)
+        c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+      if (word == "script") {
+        out += "<\\/";
+        ++i;
+        continue;
+      }
+    }
+    out += text[i];
+  }
+  return out;
+}
+
+// JSON inlined as data: "<\/" is an escape JSON allows, so no "</" (nor "<!--") survives.
+std::string dataSafe(const std::string& json) {
+  std::string out;
+  out.reserve(json.size());
+  for (std::size_t i = 0; i < json.size(); ++i) {
+    if (json[i] == '<' && i + 1 < json.size() && (json[i + 1] == '/' || json[i + 1] == '!')) {
+      out += "\\u003c";
+      continue;
+    }
+    out += json[i];
+  }
+  return out;
+}
+
+// Fills "@NAME@" markers in one left-to-right pass over the template only, so text inside the
+// inserted libraries is never taken for a marker.
+Result<std::string> fillTemplate(const std::string& page,
+                                 const std::map<std::string, std::string>& values) {
+  std::string out;
+  std::size_t at = 0;
+  std::set<std::string> used;
+  while (at < page.size()) {
+    const std::size_t open = page.find('@', at);
+    const std::size_t close = open == std::string::npos ? open : page.find('@', open + 1);
+    if (close == std::string::npos) break;
+    const std::string marker = page.substr(open, close - open + 1);
+    const auto found = values.find(marker);
+    if (found == values.end()) {
+      out += page.substr(at, close - at);
+      at = close;
+      continue;
+    }
+    out += page.substr(at, open - at) + found->second;
+    used.insert(marker);
+    at = close + 1;
+  }
+  out += page.substr(std::min(at, page.size()));
+  for (const auto& [marker, value] : values) {
+    if (used.count(marker) == 0) {
+      return Status(StatusCode::kInvalidArgument, "the page template has no " + marker);
+    }
+  }
+  return out;
+}
+
+}  // namespace collido::study

@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+# The 3D viewer in a real browser: writes the view of the bundled station_assembly scene for four
+# backends (our OBB tree, FCL's OBB, Bullet, which disagrees with the oracle at the docking
+# contact, and ODE, which answers no all-pairs queries), runs the same backends with
+# `collido run --json`, and opens the view in headless Chromium (web/tests/view.test.mjs): no
+# console error, no network request, a drawn canvas that changes from frame to frame, and at the
+# docking contact (frame 28) each backend's highlighted pairs equal to the result file's.
+# Usage: browser_view_test.sh COLLIDO_EXECUTABLE SOURCE_DIR WORK_DIR
+set -euo pipefail
+collido="$1"
+source_dir="$2"
+work="$3"
+rm -rf "$work"
+mkdir -p "$work"
+scene="$source_dir/scenes/station_assembly.json"
+backends=(obbtree fcl:obb bullet ode)
+"$collido" view "$scene" --backends "${backends[@]}" -o "$work/station_assembly.html" --quiet
+"$collido" run "$scene" --backends "${backends[@]}" --repetitions 1 --quiet \
+  --json "$work/run.json" > "$work/table.txt"
+COLLIDO_VIEW_HTML="$work/station_assembly.html" \
+COLLIDO_VIEW_RESULTS="$work/run.json" \
+COLLIDO_VIEW_QUERY=docking \
+COLLIDO_VIEW_FRAME=28 \
+COLLIDO_VIEW_SCREENSHOT="$work/station_assembly.png" \
+COLLIDO_VIEW_SCREENSHOT_BACKEND=bullet \
+  node --test "$source_dir/web/tests/view.test.mjs"
