@@ -34,6 +34,15 @@ struct ViewArguments {
   bool quiet = false;
 };
 
+// The scene at `resolution`; a bad one is reported on stderr.
+Result<Scene> loadReporting(const std::string& path, double resolution) {
+  SceneLoadOptions load;
+  load.resolution = resolution;
+  Result<Scene> scene = loadScene(path, load);
+  if (!scene.ok()) std::cerr << "error: " << scene.status().message() << "\n";
+  return scene;
+}
+
 // A number that reads back to the same double.
 std::string exactText(double value) {
   std::ostringstream text;
@@ -113,13 +122,8 @@ view::ViewBackend answersOf(const ViewArguments& args, const PluginOptions& plug
 }
 
 int view(const ViewArguments& args, const PluginOptions& plugins) {
-  SceneLoadOptions load;
-  load.resolution = args.resolution;
-  Result<Scene> scene = loadScene(args.scene, load);
-  if (!scene.ok()) {
-    std::cerr << "error: " << scene.status().message() << "\n";
-    return 2;
-  }
+  const Result<Scene> scene = loadReporting(args.scene, args.resolution);
+  if (!scene.ok()) return 2;
   std::vector<std::string> backends = args.backends;
   if (backends.empty() && !args.results.empty()) {
     Result<std::vector<std::string>> ran =
@@ -177,13 +181,8 @@ struct AnswersArguments {
 
 // The child: one backend's answers on the scene, the oracle's shared through the store.
 int viewAnswers(const AnswersArguments& args, const PluginOptions& plugins) {
-  SceneLoadOptions load;
-  load.resolution = args.resolution;
-  Result<Scene> scene = loadScene(args.scene, load);
-  if (!scene.ok()) {
-    std::cerr << "error: " << scene.status().message() << "\n";
-    return 2;
-  }
+  const Result<Scene> scene = loadReporting(args.scene, args.resolution);
+  if (!scene.ok()) return 2;
   const PluginDiscovery found = discoverPlugins(plugins.paths, !plugins.no_defaults);
   Result<std::vector<BackendSpec>> specs = resolveBackends({args.backend}, found.plugins);
   if (!specs.ok()) {

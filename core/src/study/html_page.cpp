@@ -86,4 +86,26 @@ Result<std::string> fillTemplate(const std::string& page,
   return out;
 }
 
+std::string htmlText(std::string text) {
+  for (const auto& [from, to] :
+       {std::pair<std::string, std::string>{"&", "&amp;"}, {"<", "&lt;"}}) {
+    for (std::size_t at = 0; (at = text.find(from, at)) != std::string::npos; at += to.size())
+      text.replace(at, from.size(), to);
+  }
+  return text;
+}
+
+Status readPageParts(const std::filesystem::path& web, const std::vector<PagePart>& parts,
+                     std::map<std::string, std::string>& values) {
+  const std::string npm_hint = "install the front-end with `npm ci --prefix " + web.string() +
+                               "` (tools/study.sh does), or point --web / COLLIDO_WEB_DIR at it";
+  for (const PagePart& part : parts) {
+    Result<std::string> text = readText(
+        part.file, part.file.string().find("node_modules") != std::string::npos ? npm_hint : "");
+    if (!text.ok()) return text.status();
+    values[part.marker] = part.script ? scriptSafe(text.value()) : std::move(text).value();
+  }
+  return Status();
+}
+
 }  // namespace collido::study

@@ -237,35 +237,20 @@ std::string webDirectory(const std::string& explicit_directory) {
 
 Result<std::string> renderReport(const Json& data, const std::string& web_directory) {
   const std::filesystem::path web(web_directory);
-  const std::string npm_hint = "install the front-end with `npm ci --prefix " + web.string() +
-                               "` (tools/study.sh does), or point --web / COLLIDO_WEB_DIR at it";
-  struct Part {
-    const char* marker;
-    std::filesystem::path file;
-    bool script;
-  };
-  const Part parts[] = {
-      {"@CSS@", web / "report" / "report.css", false},
-      {"@VEGA@", web / "node_modules" / "vega" / "build" / "vega.min.js", true},
-      {"@VEGA_LITE@", web / "node_modules" / "vega-lite" / "build" / "vega-lite.min.js", true},
-      {"@VEGA_EMBED@", web / "node_modules" / "vega-embed" / "build" / "vega-embed.min.js", true},
-      {"@REPORT_JS@", web / "report" / "report.js", true},
-  };
   Result<std::string> page = readText(web / "report" / "template.html", "");
   if (!page.ok()) return page.status();
-  std::string title = data.value("title", std::string("study"));
-  for (const auto& [from, to] :
-       {std::pair<std::string, std::string>{"&", "&amp;"}, {"<", "&lt;"}}) {
-    for (std::size_t at = 0; (at = title.find(from, at)) != std::string::npos; at += to.size())
-      title.replace(at, from.size(), to);
-  }
-  std::map<std::string, std::string> values{{"@TITLE@", title}, {"@DATA@", dataSafe(data.dump())}};
-  for (const Part& part : parts) {
-    Result<std::string> text = readText(
-        part.file, part.file.string().find("node_modules") != std::string::npos ? npm_hint : "");
-    if (!text.ok()) return text.status();
-    values[part.marker] = part.script ? scriptSafe(text.value()) : text.value();
-  }
+  std::map<std::string, std::string> values{
+      {"@TITLE@", htmlText(data.value("title", std::string("study")))},
+      {"@DATA@", dataSafe(data.dump())}};
+  const Status read = readPageParts(
+      web,
+      {{"@CSS@", web / "report" / "report.css", false},
+       {"@VEGA@", web / "node_modules" / "vega" / "build" / "vega.min.js"},
+       {"@VEGA_LITE@", web / "node_modules" / "vega-lite" / "build" / "vega-lite.min.js"},
+       {"@VEGA_EMBED@", web / "node_modules" / "vega-embed" / "build" / "vega-embed.min.js"},
+       {"@REPORT_JS@", web / "report" / "report.js"}},
+      values);
+  if (!read.ok()) return read;
   return fillTemplate(page.value(), values);
 }
 

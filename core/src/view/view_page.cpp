@@ -162,38 +162,21 @@ Result<std::string> renderViewPage(const Scene& scene, const std::vector<ViewBac
                      {"backends", std::move(answers)}};
 
   const std::filesystem::path web(web_directory);
-  const std::string npm_hint = "install the front-end with `npm ci --prefix " + web.string() +
-                               "` (tools/study.sh does), or point --web / COLLIDO_WEB_DIR at it";
-  struct Part {
-    const char* marker;
-    std::filesystem::path file;
-  };
-  const Part parts[] = {
-      {"@CSS@", web / "view" / "view.css"},
-      {"@THREE_CORE@", web / "node_modules" / "three" / "build" / "three.core.js"},
-      {"@THREE_MODULE@", web / "node_modules" / "three" / "build" / "three.module.js"},
-      {"@ORBIT_CONTROLS@",
-       web / "node_modules" / "three" / "examples" / "jsm" / "controls" / "OrbitControls.js"},
-      {"@VIEW_JS@", web / "view" / "view.js"},
-  };
   Result<std::string> page = study::readText(web / "view" / "template.html", "");
   if (!page.ok()) return page.status();
-  std::string title = scene.name;
-  for (const auto& [from, to] :
-       {std::pair<std::string, std::string>{"&", "&amp;"}, {"<", "&lt;"}}) {
-    for (std::size_t at = 0; (at = title.find(from, at)) != std::string::npos; at += to.size())
-      title.replace(at, from.size(), to);
-  }
-  std::map<std::string, std::string> values{{"@TITLE@", title},
+  std::map<std::string, std::string> values{{"@TITLE@", study::htmlText(scene.name)},
                                             {"@DATA@", study::dataSafe(data.dump())},
                                             {"@GEOMETRY@", study::base64(buffer.bytes())}};
-  for (const Part& part : parts) {
-    Result<std::string> text = study::readText(
-        part.file, part.file.string().find("node_modules") != std::string::npos ? npm_hint : "");
-    if (!text.ok()) return text.status();
-    values[part.marker] =
-        part.marker == std::string("@CSS@") ? text.value() : study::scriptSafe(text.value());
-  }
+  const std::filesystem::path three = web / "node_modules" / "three";
+  const Status read = study::readPageParts(
+      web,
+      {{"@CSS@", web / "view" / "view.css", false},
+       {"@THREE_CORE@", three / "build" / "three.core.js"},
+       {"@THREE_MODULE@", three / "build" / "three.module.js"},
+       {"@ORBIT_CONTROLS@", three / "examples" / "jsm" / "controls" / "OrbitControls.js"},
+       {"@VIEW_JS@", web / "view" / "view.js"}},
+      values);
+  if (!read.ok()) return read;
   return study::fillTemplate(page.value(), values);
 }
 
