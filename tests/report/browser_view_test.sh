@@ -14,7 +14,12 @@ rm -rf "$work"
 mkdir -p "$work"
 scene="$source_dir/scenes/station_assembly.json"
 backends=(obbtree fcl:obb bullet ode)
-"$collido" view "$scene" --backends "${backends[@]}" -o "$work/station_assembly.html" --quiet
+# Under AddressSanitizer the leak check is off for the view's processes only: LeakSanitizer's
+# exit-time tracer has crashed in a backend's child process on a loaded CI machine ("Tracer
+# caught signal 11", not reproducible alone), which the view rightly reports as a crash. The
+# view's code is leak-checked in process by tests/unit/view.
+no_leak_check="${ASAN_OPTIONS:-}:detect_leaks=0"
+ASAN_OPTIONS="$no_leak_check" "$collido" view "$scene" --backends "${backends[@]}" -o "$work/station_assembly.html" --quiet
 "$collido" run "$scene" --backends "${backends[@]}" --repetitions 1 --quiet \
   --json "$work/run.json" > "$work/table.txt"
 COLLIDO_VIEW_HTML="$work/station_assembly.html" \
