@@ -50,14 +50,17 @@ Hierarchy readHierarchy(const Reader& r, const Node& objects,
     if (found->second == i) r.fail(node.at("parent"), "an object cannot be its own parent");
     h.parents[i] = found->second;
   }
-  // A walk up from each object meets a root within `count` steps unless it enters a cycle; the
-  // cycle is reported at the first of its objects in file order, listing it.
+  // Each object is walked up once: a walk stops at a root or at an object already known to
+  // lead to one, so the check is linear in the objects. Meeting the walk's own path is a
+  // cycle, reported at the first of its objects in file order, listing it.
+  enum class Mark { kUnseen, kOnPath, kLeadsToRoot };
+  std::vector<Mark> marks(count, Mark::kUnseen);
   for (std::size_t i = 0; i < count; ++i) {
     std::vector<std::size_t> path;
     std::optional<std::size_t> at = i;
-    while (at && path.size() <= count) {
-      const auto seen = std::find(path.begin(), path.end(), *at);
-      if (seen != path.end()) {
+    while (at && marks[*at] != Mark::kLeadsToRoot) {
+      if (marks[*at] == Mark::kOnPath) {
+        const auto seen = std::find(path.begin(), path.end(), *at);
         const std::size_t first = *std::min_element(seen, path.end());
         std::ostringstream text;
         text << "the parents form a cycle: ";
@@ -69,9 +72,12 @@ Hierarchy readHierarchy(const Reader& r, const Node& objects,
         text << "'" << h.names[first] << "'";
         r.fail(objects.at(first).at("parent"), text.str());
       }
+      marks[*at] = Mark::kOnPath;
       path.push_back(*at);
       at = h.parents[*at];
     }
+    for (const std::size_t object : path)
+      marks[object] = Mark::kLeadsToRoot;
   }
   std::vector<bool> placed(count, false);
   for (std::size_t i = 0; i < count; ++i)
