@@ -54,6 +54,11 @@ std::string exactText(double value) {
 // The variants a study ran on this scene (as declared, at `resolution`), in its plan's order.
 Result<std::vector<std::string>> studyBackends(const std::string& directory,
                                                const std::string& scene_name, double resolution) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(std::filesystem::path(directory) / "plan.json", ec)) {
+    return Status(StatusCode::kInvalidArgument,
+                  directory + ": not a study folder (no plan.json; make one with collido study)");
+  }
   Result<std::vector<study::Combination>> plan = study::ResultStore(directory).readPlan();
   if (!plan.ok()) return plan.status();
   std::vector<std::string> backends;
@@ -137,6 +142,13 @@ int view(const ViewArguments& args, const PluginOptions& plugins) {
   if (backends.empty()) backends = everyVariant(plugins);
   if (backends.empty()) {
     std::cerr << "error: no backends to show (build the plugins, pass --plugin or --backends)\n";
+    return 2;
+  }
+  // A misspelt backend is bad input, said before any work; an engine failing is not.
+  const PluginDiscovery found = discoverPlugins(plugins.paths, !plugins.no_defaults);
+  if (Result<std::vector<BackendSpec>> specs = resolveBackends(backends, found.plugins);
+      !specs.ok()) {
+    std::cerr << "error: " << specs.status().message() << "\n";
     return 2;
   }
   std::error_code ec;
