@@ -185,8 +185,9 @@ bool otherIntersecting(OracleCache& other, const SceneQuery& query,
 }
 
 // The "possible contact within tracking error" answer: whether some candidate object pair
-// comes within `sigmas` times the sum of its tracked objects' predicted spreads. Left unset
-// when a tracked object's spread is unknown (no redundant marker, or a lost frame).
+// comes within `sigmas` times the sum of its objects' predicted spreads (tracked objects and
+// those mounted on them). Left unset when a spread is unknown (no redundant marker, or a lost
+// frame).
 void possibleContact(const Scene& scene,
                      const std::vector<std::pair<std::size_t, std::size_t>>& candidates,
                      const std::map<std::size_t, std::shared_ptr<const TriangleMesh>>& shapes,
@@ -196,9 +197,7 @@ void possibleContact(const Scene& scene,
   for (const auto& [ia, ib] : candidates) {
     double margin = 0.0;
     for (std::size_t i : {ia, ib}) {
-      const SceneObject& o = scene.objects[i];
-      if (!o.tracking) continue;
-      const double sigma = o.tracking->frames[frame].sigma;
+      const double sigma = scene.trackingSpreadAt(i, *shapes.at(i), frame);
       if (std::isnan(sigma)) return;
       margin += sigmas * sigma;
     }

@@ -54,6 +54,7 @@ Result<std::vector<Pose>> recoverPoses(MarkerTracking& tracking,
       if (std::isnan(sigma)) break;
     }
     poses.push_back(estimate.pose);
+    frame.estimate = estimate;
   }
   return poses;
 }

@@ -686,6 +686,9 @@ Scene readScene(const Reader& r, const Json& document, const std::string& base_d
       sources[*parent].has_children = true;
       scene_reading::composeWithParent(r, node.at("parent"), scene.objects[*parent], scene.frames,
                                        sources[i].tracked, object);
+      const SceneObject& mount = scene.objects[*parent];
+      if (!sources[i].tracked)
+        object.tracked_ancestor = mount.tracking ? parent : mount.tracked_ancestor;
     }
     if (node.has("markers"))
       scene_reading::readMarkers(r, node.at("markers"), base_directory, scene.frames, object);
@@ -841,6 +844,7 @@ Scene Scene::withTruePoses() const {
       object.poses = std::move(object.inherited_true_poses);
       object.inherited_true_poses.clear();
     }
+    object.tracked_ancestor.reset();
   }
   return truth;
 }

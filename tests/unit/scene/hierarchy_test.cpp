@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -149,6 +150,62 @@ TEST(SceneHierarchy, AChildOfATrackedObjectFollowsItsRecoveredAndTruePoses) {
   const Scene truth = scene.withTruePoses();
   for (std::size_t f = 0; f < scene.frames; ++f)
     expectNear(truth.objects[1].poseAt(f), carrier.truePoseAt(f) * local, "truth scene");
+}
+
+// An object mounted on a tracked one moves with the fit's error: its spread is the fit's
+// covariance carried to its own corners (J C Jᵀ, J = [-[R p]x, I] for a corner p in the tracked
+// object's frame), larger than the carrier's own since it lies further from the markers; a
+// grandchild inherits it too, and at the true poses no tracking moves anything.
+TEST(SceneHierarchy, ObjectsOnATrackedObjectSpreadWithItsFit) {
+  const Result<Scene> loaded = parse(R"({"frames": 3, "objects": [
+    {"name": "carrier", "shape": {"generator": "sphere", "radius": 0.3, "slices": 8, "stacks": 4},
+     "motion": {"linear": {"from": {"translation": [-1, 0, 0]}, "to": {"translation": [1, 0, 0]}}},
+     "markers": {"layout": {"1": [0.2, 0.2, 0.2], "2": [-0.2, 0.2, -0.2], "3": [0.2, -0.2, -0.2],
+                            "4": [-0.2, -0.2, 0.2]},
+                 "generate": {"noise": 0.01, "seed": 5}}},
+    {"name": "boom", "parent": "carrier", "shape": {"generator": "box", "size": [0.2, 0.2, 2]},
+     "pose": {"translation": [0, 0, 1.3]}},
+    {"name": "tip", "parent": "boom", "shape": {"generator": "box", "size": [0.1, 0.1, 0.1]},
+     "pose": {"translation": [0, 0, 1.1], "rotation": {"axis": [0, 1, 0], "degrees": 25}}}],
+    "queries": [{"a": "carrier", "b": "tip", "kind": "boolean"}]})");
+  ASSERT_TRUE(loaded.ok()) << loaded.status().toString();
+  const Scene& scene = loaded.value();
+  EXPECT_EQ(scene.objects[1].tracked_ancestor, std::optional<std::size_t>(0));
+  EXPECT_EQ(scene.objects[2].tracked_ancestor, std::optional<std::size_t>(0));
+  const auto by_hand = [&](std::size_t object, std::size_t frame) {
+    const SceneObject& carrier = scene.objects[0];
+    const pose::PoseEstimate& fit = carrier.tracking->frames[frame].estimate;
+    const Pose to_carrier = carrier.poseAt(frame).inverse() * scene.objects[object].poseAt(frame);
+    const Eigen::Vector3d low = scene.objects[object].mesh->vertices.rowwise().minCoeff();
+    const Eigen::Vector3d high = scene.objects[object].mesh->vertices.rowwise().maxCoeff();
+    double widest = 0.0;
+    for (int k = 0; k < 8; ++k) {
+      const Eigen::Vector3d p =
+          to_carrier * Eigen::Vector3d((k & 1) ? high.x() : low.x(), (k & 2) ? high.y() : low.y(),
+                                       (k & 4) ? high.z() : low.z());
+      const Eigen::Vector3d r = fit.pose.linear() * p;
+      Eigen::Matrix<double, 3, 6> j;
+      j << 0, r.z(), -r.y(), 1, 0, 0,  //
+          -r.z(), 0, r.x(), 0, 1, 0,   //
+          r.y(), -r.x(), 0, 0, 0, 1;
+      widest = std::max(widest, std::sqrt((j * fit.covariance * j.transpose()).trace() / 3.0));
+    }
+    return widest;
+  };
+  for (std::size_t f = 0; f < scene.frames; ++f) {
+    ASSERT_EQ(scene.objects[0].tracking->frames[f].estimate.covariance.rows(), 6) << f;
+    const double own = scene.trackingSpreadAt(0, *scene.objects[0].mesh, f);
+    const double boom = scene.trackingSpreadAt(1, *scene.objects[1].mesh, f);
+    const double tip = scene.trackingSpreadAt(2, *scene.objects[2].mesh, f);
+    EXPECT_EQ(own, scene.objects[0].tracking->frames[f].sigma);
+    EXPECT_NEAR(boom, by_hand(1, f), 1e-12 * boom);
+    EXPECT_NEAR(tip, by_hand(2, f), 1e-12 * tip);
+    EXPECT_GT(boom, own) << "frame " << f << ": the boom reaches further from the markers";
+    EXPECT_GT(tip, own) << "frame " << f;
+  }
+  const Scene truth = scene.withTruePoses();
+  for (std::size_t object = 0; object < 3; ++object)
+    EXPECT_EQ(truth.trackingSpreadAt(object, *truth.objects[object].mesh, 1), 0.0) << object;
 }
 
 // Module A with a panel against module B with an arm: the subtree query asks exactly the pairs

@@ -25,6 +25,9 @@ struct TrackedFrame {
   /// corners, an upper bound over its vertices: how far tracking noise may move the mesh.
   /// NaN when unknown (no redundancy and no given noise) or lost.
   double sigma = std::numeric_limits<double>::quiet_NaN();
+  /// The fit itself (no covariance when lost): the spread of points other than the corners,
+  /// such as those of objects mounted on this one, comes from its covariance.
+  pose::PoseEstimate estimate;
 };
 
 /// Where a tracked object's poses come from (scene key "markers"): its marker layout, the

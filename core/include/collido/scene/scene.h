@@ -49,6 +49,9 @@ struct SceneObject {
   /// Set when an ancestor is tracked and this object is not: the world poses the true motions
   /// give (`poses` follow the ancestors' recovered poses, as a tracker's world would).
   std::vector<Pose> inherited_true_poses;
+  /// Set when an ancestor is tracked and this object is not: the nearest tracked ancestor,
+  /// whose fitting noise moves this object with it (Scene::trackingSpreadAt).
+  std::optional<std::size_t> tracked_ancestor;
 
   /// The object's world pose in `frame`: what every query uses (recovered, when tracked).
   const Pose& poseAt(std::size_t frame) const {
@@ -142,6 +145,11 @@ struct Scene {
   bool hasTrackedObjects() const;
   /// The scene as the world is: every tracked object at its true poses (a copy).
   Scene withTruePoses() const;
+  /// How far tracking noise may move object `object` with shape `shape` (its shape in `frame`)
+  /// in `frame`: the largest predicted spread over the shape's bounding-box corners, from its
+  /// own markers' fit or its nearest tracked ancestor's; 0 for an object no tracking moves,
+  /// NaN when the fit's spread is unknown (no redundant marker, or a lost frame).
+  double trackingSpreadAt(std::size_t object, const TriangleMesh& shape, std::size_t frame) const;
 
   /// What the scene will ask of an object: the kinds of every query naming it.
   BuildNeeds needsOf(std::size_t object) const;
