@@ -26,6 +26,7 @@ COLLIDO_VIEW_HTML="$work/station_assembly.html" \
 COLLIDO_VIEW_RESULTS="$work/run.json" \
 COLLIDO_VIEW_QUERY=docking \
 COLLIDO_VIEW_FRAME=28 \
+COLLIDO_VIEW_BOOLEAN_QUERY=docking_ports \
 COLLIDO_VIEW_SCREENSHOT="$work/station_assembly.png" \
 COLLIDO_VIEW_SCREENSHOT_BACKEND=bullet \
   node --test "$source_dir/web/tests/view.test.mjs"

@@ -35,14 +35,23 @@ const uints = (buffer, [offset, count]) => new Uint32Array(buffer, offset, count
 // Colours of the highlight classes, and the neutral palette of the objects.
 const CLASS_COLOURS = {
   matched: [243, 156, 18], missed: [224, 24, 60], extra: [31, 111, 255],
-  reported: [243, 156, 18], oracle: [24, 165, 88],
+  reported: [243, 156, 18], oracle: [24, 165, 88], agreed: [24, 165, 88],
 };
 const CLASS_TEXT = {
   matched: 'reported and exact (matched pairs)', missed: 'missed: exact pairs not reported',
   extra: 'extra: reported pairs that do not intersect', reported: 'reported by the backend',
   oracle: 'intersecting (exact oracle)',
 };
-const PRIORITY = { missed: 3, extra: 2, matched: 1, reported: 1, oracle: 1 };
+// Boolean and contact queries name a witness or a few pairs, not every pair, so their
+// difference is of verdicts: a named pair that really intersects, one that does not, and the
+// oracle's witness where the backend says apart.
+const WITNESS_TEXT = {
+  matched: 'named by the backend and intersecting', missed: 'missed: the oracle\'s witness (backend says apart)',
+  extra: 'extra: named pairs that do not intersect', reported: 'named by the backend (witness or contacts)',
+  oracle: 'intersecting (the exact oracle\'s witness or pairs)',
+  agreed: 'the oracle\'s pairs, where the backend agrees but names none',
+};
+const PRIORITY = { missed: 3, extra: 2, matched: 1, reported: 1, oracle: 1, agreed: 0 };
 const PALETTE = [[176, 186, 200], [205, 190, 170], [170, 200, 185], [200, 178, 200],
   [185, 196, 214], [214, 205, 170], [170, 190, 210], [210, 180, 170]];
 
@@ -59,7 +68,7 @@ function frameAnswers(backend, queryName, frame) {
 // Per object: triangle -> class, and the pair counts, for one query, backend, frame and mode.
 function classify(backend, queryName, frame, mode) {
   const triangles = new Map();
-  const counts = { matched: 0, missed: 0, extra: 0, reported: 0, oracle: 0 };
+  const counts = { matched: 0, missed: 0, extra: 0, reported: 0, oracle: 0, agreed: 0 };
   const found = frameAnswers(backend, queryName, frame);
   if (!found || !found.record) return { triangles, counts, status: found ? found.query.status : 'no answers' };
   const mark = (object, triangle, cls) => {
@@ -68,6 +77,7 @@ function classify(backend, queryName, frame, mode) {
     const old = map.get(triangle);
     if (!old || PRIORITY[cls] > PRIORITY[old]) map.set(triangle, cls);
   };
+  const everyPair = found.query.kind === 'all_pairs';
   for (const pair of found.record.pairs) {
     const reported = new Set();
     for (let i = 0; i < pair.reported.length; i += 2) reported.add(pairKey(pair.reported[i], pair.reported[i + 1]));
@@ -82,7 +92,20 @@ function classify(backend, queryName, frame, mode) {
     };
     if (mode === 'reported') for (const key of reported) markPair(key, 'reported');
     if (mode === 'oracle') for (const key of exact) markPair(key, 'oracle');
-    if (mode === 'difference') {
+    if (mode === 'difference' && !everyPair) {
+      const named = [...reported];
+      named.forEach((key, k) => {
+        const cls = pair.reported_exact && pair.reported_exact[k] ? 'matched' : 'extra';
+        counts[cls] += 1;
+        markPair(key, cls);
+      });
+      if (pair.oracle_intersecting && !pair.intersecting) {
+        for (const key of exact) { counts.missed += 1; markPair(key, 'missed'); }
+      } else if (pair.oracle_intersecting && named.length === 0) {
+        for (const key of exact) { counts.agreed += 1; markPair(key, 'agreed'); }
+      }
+    }
+    if (mode === 'difference' && everyPair) {
       for (const key of reported) {
         const cls = exact.has(key) ? 'matched' : 'extra';
         counts[cls] += 1;
@@ -182,6 +205,7 @@ async function main() {
   // The view starts framing the whole scene in frame 0.
   const box = new THREE.Box3();
   const fit = () => {
+    scene.updateMatrixWorld();  // the groups' poses, before anything has been drawn
     box.makeEmpty();
     for (const o of objects) for (const s of o.states) if (s.mesh.visible) box.expandByObject(s.mesh);
     const sphere = box.getBoundingSphere(new THREE.Sphere());
@@ -318,6 +342,7 @@ async function main() {
   }
 
   function drawSegments(backend, query) {
+    for (const line of segments.children) { line.geometry.dispose(); line.material.dispose(); }
     segments.clear();
     if (query.kind !== 'distance') return;
     const found = frameAnswers(backend, query.name, state.frame);
@@ -334,11 +359,14 @@ async function main() {
   }
 
   function drawLegend(result) {
-    const classes = state.mode === 'difference' ? ['matched', 'missed', 'extra'] : [state.mode];
+    const everyPair = data.queries[state.query].kind === 'all_pairs';
+    const classes = state.mode !== 'difference' ? [state.mode]
+      : everyPair || !result.counts.agreed ? ['matched', 'missed', 'extra'] : ['matched', 'missed', 'extra', 'agreed'];
+    const text = everyPair ? CLASS_TEXT : WITNESS_TEXT;
     const rows = classes.map((cls) => {
       const count = result.counts[cls];
       return `<div><span class="swatch" style="background: rgb(${CLASS_COLOURS[cls].join(',')})"></span>` +
-        `${CLASS_TEXT[cls]}: <b data-class="${cls}">${count}</b> pairs</div>`;
+        `${text[cls]}: <b data-class="${cls}">${count}</b> pairs</div>`;
     });
     const backend = data.backends[state.backend];
     ui.legend.innerHTML = `<div><b>${escapeHtml(backend.label)}</b>&nbsp;· frame ${state.frame}</div>` +
@@ -357,11 +385,12 @@ async function main() {
       }
       const r = found.record;
       let verdict = '';
-      let wrong = false;
+      // The runner's own judgement (tolerances, false witnesses, truncation) when given.
+      let wrong = Boolean(r.disagrees);
       if (query.kind === 'all_pairs') {
         const missed = r.oracle_pairs - r.matched_pairs;
         const extra = r.reported_pairs - r.matched_pairs;
-        wrong = missed > 0 || extra > 0;
+        if (r.disagrees === undefined) wrong = missed > 0 || extra > 0;
         verdict = `${r.reported_pairs} of ${r.oracle_pairs} exact; ${missed} missed, ${extra} extra`;
       } else if (query.kind === 'distance') {
         const d = r.pairs.map((p) => (p.distance ? p.distance.value : NaN));
@@ -370,8 +399,10 @@ async function main() {
       } else {
         const said = r.pairs.some((p) => p.intersecting);
         const exact = r.pairs.some((p) => p.oracle_intersecting);
-        wrong = said !== exact;
-        verdict = `${said ? 'intersecting' : 'apart'} (exact: ${exact ? 'intersecting' : 'apart'})`;
+        if (r.disagrees === undefined) wrong = said !== exact;
+        const falseWitnesses = r.pairs.reduce((n, p) => n + (p.reported_exact || []).filter((e) => !e).length, 0);
+        verdict = `${said ? 'intersecting' : 'apart'} (exact: ${exact ? 'intersecting' : 'apart'})` +
+          (falseWitnesses ? `; ${falseWitnesses} named pair(s) do not intersect` : '');
       }
       return `<tr><td>${escapeHtml(backend.label)}</td><td class="${wrong ? 'bad' : 'good'}">${escapeHtml(verdict)}</td>` +
         `<td class="num" title="object pairs asked">${r.object_pairs}</td>` +
@@ -389,6 +420,7 @@ async function main() {
     if (!state.picked) return;
     const { object, triangle } = state.picked;
     const query = data.queries[state.query];
+    const everyPair = query.kind === 'all_pairs';
     const pairs = new Map();  // "other object:triangle" -> {oracle, backends: {label: bool}}
     for (const backend of data.backends) {
       const found = frameAnswers(backend, query.name, state.frame);
@@ -403,7 +435,11 @@ async function main() {
             const key = other.join(':');
             if (!pairs.has(key)) pairs.set(key, { other, oracle: false, backends: {} });
             if (what === 'oracle') pairs.get(key).oracle = true;
-            else pairs.get(key).backends[backend.label] = true;
+            else {
+              pairs.get(key).backends[backend.label] = true;
+              // A witness is checked exactly even where the oracle kept only its own witness.
+              if (pair.reported_exact && pair.reported_exact[i / 2]) pairs.get(key).oracle = true;
+            }
           }
         };
         visit(pair.oracle, 'oracle');
@@ -420,6 +456,8 @@ async function main() {
       for (const entry of pairs.values()) {
         const cells = labels.map((l) => {
           const said = Boolean(entry.backends[l]);
+          // Boolean and contact answers name some pairs, not all: leaving one out is no error.
+          if (!everyPair && !said) return '<td>&ndash;</td>';
           return `<td class="${said === entry.oracle ? 'good' : 'bad'}">${said ? '&#10003;' : '&#10007;'}</td>`;
         });
         html += `<tr><td>${escapeHtml(data.objects[entry.other[0]].name)} #${entry.other[1]}</td>` +
@@ -468,8 +506,12 @@ async function main() {
   ui.focus.addEventListener('click', () => { focus(); render(); });
   ui.whole.addEventListener('click', () => { fit(); render(); });
   window.addEventListener('keydown', (event) => {
-    if (event.target instanceof HTMLSelectElement) return;
-    if (event.key === ' ') { setPlaying(!state.playing); event.preventDefault(); }
+    // Lists and the slider step by the arrow keys themselves.
+    if (event.target instanceof HTMLSelectElement || event.target instanceof HTMLInputElement) return;
+    if (event.key === ' ' && !(event.target instanceof HTMLButtonElement)) {
+      setPlaying(!state.playing);
+      event.preventDefault();
+    }
     if (event.key === 'ArrowLeft') setFrame(state.frame - 1);
     if (event.key === 'ArrowRight') setFrame(state.frame + 1);
   });

@@ -10,6 +10,8 @@
 #include <fstream>
 #include <string>
 
+#include <unistd.h>
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -33,7 +35,8 @@ const char* const kScene = R"({"name": "passing", "frames": 4, "objects": [
   {"name": "tag", "parent": "moving", "shape": {"generator": "box", "size": [0.2, 0.2, 0.2]},
    "pose": {"translation": [0, 0.7, 0]}}],
   "queries": [{"name": "pairs", "a": "fixed", "b": {"subtree": "moving"}, "kind": "all_pairs"},
-              {"name": "gap", "a": "fixed", "b": "moving", "kind": "distance"}]})";
+              {"name": "gap", "a": "fixed", "b": "moving", "kind": "distance"},
+              {"name": "touch", "a": "fixed", "b": "moving", "kind": "boolean"}]})";
 
 Scene loadTestScene() {
   Result<Scene> scene = parseScene(kScene, "passing.json", ".");
@@ -58,6 +61,7 @@ TEST(ViewAnswers, KeptPairsAreTheRunsCounts) {
   EXPECT_EQ(answers["backend"], "obbtree");
   ASSERT_EQ(answers["queries"].size(), report.measurements.size());
   std::size_t pairs = 0;
+  std::size_t witnesses = 0;
   for (std::size_t q = 0; q < report.measurements.size(); ++q) {
     const QueryMeasurement& m = report.measurements[q];
     const Json& query = answers["queries"][q];
@@ -77,6 +81,16 @@ TEST(ViewAnswers, KeptPairsAreTheRunsCounts) {
         }
       }
       EXPECT_EQ(frame["pairs"].size(), m.frames[f].object_pairs);
+      EXPECT_EQ(frame["disagrees"], m.frames[f].disagrees(m.kind)) << "frame " << f;
+      if (m.kind == QueryKind::kBoolean) {
+        // The OBB tree's witnesses are real, and the page can tell without the full oracle set.
+        for (const Json& pair : frame["pairs"]) {
+          ASSERT_EQ(pair["reported_exact"].size(), pair["reported"].size() / 2);
+          for (const Json& real : pair["reported_exact"])
+            EXPECT_TRUE(real.get<bool>()) << "frame " << f;
+          witnesses += pair["reported_exact"].size();
+        }
+      }
       if (m.kind == QueryKind::kAllPairs) {
         EXPECT_EQ(reported, m.frames[f].reported_pairs) << "frame " << f;
         EXPECT_EQ(exact, m.frames[f].oracle_pairs) << "frame " << f;
@@ -85,11 +99,18 @@ TEST(ViewAnswers, KeptPairsAreTheRunsCounts) {
     }
   }
   EXPECT_GT(pairs, 0u) << "the spheres should meet";
+  EXPECT_GT(witnesses, 0u) << "the boolean query should name witness pairs";
 }
 
-// A front-end folder with a template naming every part, and stand-ins for the scripts.
+// A front-end folder with a template naming every part, and stand-ins for the scripts; one per
+// test and process, since CTest runs tests (and the Release and sanitizer builds) side by side.
 std::string fakeWebDirectory() {
-  const std::filesystem::path web = std::filesystem::temp_directory_path() / "collido_view_web";
+  const std::filesystem::path web =
+      std::filesystem::temp_directory_path() /
+      ("collido_view_web_" +
+       std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + "_" +
+       std::to_string(::getpid()));
+  std::filesystem::remove_all(web);
   std::filesystem::create_directories(web / "view");
   std::filesystem::create_directories(web / "node_modules/three/build");
   std::filesystem::create_directories(web / "node_modules/three/examples/jsm/controls");
@@ -137,7 +158,8 @@ TEST(ViewPage, CarriesTheScenesMeshesPosesAndAnswers) {
   const RunReport report = runObbTree(scene);
   const std::vector<view::ViewBackend> backends = {
       {"obbtree", viewAnswersJson(scene, report, "obbtree"), ""},
-      {"crashy", "", "crashed (SIGSEGV): boom"}};
+      {"crashy", "", "crashed (SIGSEGV): boom"},
+      {"garbled", "", "crashed: its log ends in \xe2\x82"}};
   const Result<std::string> page = view::renderViewPage(scene, backends, fakeWebDirectory());
   ASSERT_TRUE(page.ok()) << page.status().toString();
   const std::string& html = page.value();
@@ -177,7 +199,9 @@ TEST(ViewPage, CarriesTheScenesMeshesPosesAndAnswers) {
         ASSERT_EQ(pose[k].get<double>(), object.poseAt(f).matrix().data()[k]);
     }
   }
-  ASSERT_EQ(data["backends"].size(), 2u);
+  ASSERT_EQ(data["backends"].size(), 3u);
+  EXPECT_EQ(data["backends"][2]["problem"], "crashed: its log ends in \xef\xbf\xbd")
+      << "bytes that are not UTF-8 are replaced, not allowed to lose the page";
   EXPECT_EQ(data["backends"][0]["answers"]["backend"], "obbtree");
   EXPECT_EQ(data["backends"][1]["problem"], "crashed (SIGSEGV): boom");
   EXPECT_FALSE(data["backends"][1].contains("answers"));
@@ -187,6 +211,9 @@ TEST(ViewPage, CarriesTheScenesMeshesPosesAndAnswers) {
 TEST(ViewPage, AMissingLibraryIsNamedWithHowToGetIt) {
   const std::string web = fakeWebDirectory();
   std::filesystem::remove(std::filesystem::path(web) / "node_modules/three/build/three.core.js");
+  const Status checked = view::checkViewFrontEnd(web);
+  ASSERT_FALSE(checked.ok());
+  EXPECT_NE(checked.message().find("three.core.js not found"), std::string::npos);
   const Result<std::string> page = view::renderViewPage(loadTestScene(), {}, web);
   ASSERT_FALSE(page.ok());
   EXPECT_NE(page.status().message().find("three.core.js not found"), std::string::npos);
