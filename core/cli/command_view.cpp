@@ -151,6 +151,15 @@ int view(const ViewArguments& args, const PluginOptions& plugins) {
     std::cerr << "error: " << specs.status().message() << "\n";
     return 2;
   }
+  if (Status s = view::checkViewFrontEnd(study::webDirectory(args.web)); !s.ok()) {
+    std::cerr << "error: " << s.message() << "\n";
+    return 2;
+  }
+  if (thisExecutable().empty()) {
+    std::cerr << "error: cannot find this program's own path (/proc/self/exe) to start the "
+                 "backends' processes\n";
+    return 2;
+  }
   std::error_code ec;
   const std::filesystem::path work =
       std::filesystem::path(args.out).parent_path() /
@@ -170,6 +179,7 @@ int view(const ViewArguments& args, const PluginOptions& plugins) {
   }
   Result<std::string> page =
       view::renderViewPage(scene.value(), answers, study::webDirectory(args.web));
+  std::filesystem::remove_all(work, ec);
   if (!page.ok()) {
     std::cerr << "error: " << page.status().message() << "\n";
     return 2;
@@ -178,7 +188,6 @@ int view(const ViewArguments& args, const PluginOptions& plugins) {
     std::cerr << "error: " << s.message() << "\n";
     return 2;
   }
-  std::filesystem::remove_all(work, ec);
   if (!args.quiet) std::cerr << "view: wrote " << args.out << "\n";
   return 0;
 }

@@ -241,7 +241,7 @@ Result<std::string> renderReport(const Json& data, const std::string& web_direct
   if (!page.ok()) return page.status();
   std::map<std::string, std::string> values{
       {"@TITLE@", htmlText(data.value("title", std::string("study")))},
-      {"@DATA@", dataSafe(data.dump())}};
+      {"@DATA@", dataSafe(data.dump(-1, ' ', false, Json::error_handler_t::replace))}};
   const Status read = readPageParts(
       web,
       {{"@CSS@", web / "report" / "report.css", false},

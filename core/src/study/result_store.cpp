@@ -153,7 +153,9 @@ bool ResultStore::has(const std::string& id) const {
 }
 
 Status ResultStore::write(const CombinationResult& result) const {
-  return writeFileAtomically(resultPath(result.combination.id), resultToJson(result).dump(1));
+  return writeFileAtomically(
+      resultPath(result.combination.id),
+      resultToJson(result).dump(1, ' ', false, Json::error_handler_t::replace));
 }
 
 Result<std::vector<CombinationResult>> ResultStore::readAll() const {

@@ -76,6 +76,15 @@ std::string fileTail(const std::string& path, std::size_t bytes) {
   in.seekg(start);
   std::string text(static_cast<std::size_t>(size - start), '\0');
   in.read(text.data(), static_cast<std::streamsize>(text.size()));
+  // A cut may fall inside a UTF-8 character; its continuation bytes (10xxxxxx) alone are not
+  // text, and JSON writers refuse them.
+  if (start > 0) {
+    std::size_t first = 0;
+    while (first < text.size() && first < 3 &&
+           (static_cast<unsigned char>(text[first]) & 0xC0) == 0x80)
+      ++first;
+    text.erase(0, first);
+  }
   return text;
 }
 

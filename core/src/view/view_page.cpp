@@ -128,6 +128,30 @@ Json queryJson(const SceneQuery& query) {
           {"side_b", query.side_b}};
 }
 
+// The page template and the scripts and style it inlines.
+struct FrontEnd {
+  std::string page;
+  std::map<std::string, std::string> parts;
+};
+
+Result<FrontEnd> readFrontEnd(const std::string& web_directory) {
+  const std::filesystem::path web(web_directory);
+  Result<std::string> page = study::readText(web / "view" / "template.html", "");
+  if (!page.ok()) return page.status();
+  FrontEnd front_end{std::move(page).value(), {}};
+  const std::filesystem::path three = web / "node_modules" / "three";
+  const Status read = study::readPageParts(
+      web,
+      {{"@CSS@", web / "view" / "view.css", false},
+       {"@THREE_CORE@", three / "build" / "three.core.js"},
+       {"@THREE_MODULE@", three / "build" / "three.module.js"},
+       {"@ORBIT_CONTROLS@", three / "examples" / "jsm" / "controls" / "OrbitControls.js"},
+       {"@VIEW_JS@", web / "view" / "view.js"}},
+      front_end.parts);
+  if (!read.ok()) return read;
+  return front_end;
+}
+
 }  // namespace
 
 Result<std::string> renderViewPage(const Scene& scene, const std::vector<ViewBackend>& backends,
@@ -161,23 +185,20 @@ Result<std::string> renderViewPage(const Scene& scene, const std::vector<ViewBac
                      {"queries", std::move(queries)},
                      {"backends", std::move(answers)}};
 
-  const std::filesystem::path web(web_directory);
-  Result<std::string> page = study::readText(web / "view" / "template.html", "");
-  if (!page.ok()) return page.status();
-  std::map<std::string, std::string> values{{"@TITLE@", study::htmlText(scene.name)},
-                                            {"@DATA@", study::dataSafe(data.dump())},
-                                            {"@GEOMETRY@", study::base64(buffer.bytes())}};
-  const std::filesystem::path three = web / "node_modules" / "three";
-  const Status read = study::readPageParts(
-      web,
-      {{"@CSS@", web / "view" / "view.css", false},
-       {"@THREE_CORE@", three / "build" / "three.core.js"},
-       {"@THREE_MODULE@", three / "build" / "three.module.js"},
-       {"@ORBIT_CONTROLS@", three / "examples" / "jsm" / "controls" / "OrbitControls.js"},
-       {"@VIEW_JS@", web / "view" / "view.js"}},
-      values);
-  if (!read.ok()) return read;
-  return study::fillTemplate(page.value(), values);
+  Result<FrontEnd> front_end = readFrontEnd(web_directory);
+  if (!front_end.ok()) return front_end.status();
+  std::map<std::string, std::string>& values = front_end.value().parts;
+  values["@TITLE@"] = study::htmlText(scene.name);
+  // An engine's log in a problem may hold bytes that are not UTF-8; they are replaced, not
+  // allowed to lose the page.
+  values["@DATA@"] = study::dataSafe(data.dump(-1, ' ', false, Json::error_handler_t::replace));
+  values["@GEOMETRY@"] = study::base64(buffer.bytes());
+  return study::fillTemplate(front_end.value().page, values);
+}
+
+Status checkViewFrontEnd(const std::string& web_directory) {
+  const Result<FrontEnd> front_end = readFrontEnd(web_directory);
+  return front_end.ok() ? Status() : front_end.status();
 }
 
 }  // namespace collido::view

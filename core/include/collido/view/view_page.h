@@ -24,4 +24,8 @@ struct ViewBackend {
 Result<std::string> renderViewPage(const Scene& scene, const std::vector<ViewBackend>& backends,
                                    const std::string& web_directory);
 
+/// Whether `web_directory` holds every front-end file a view needs (an error naming the first
+/// missing one and how to get it): checked before any backend runs.
+Status checkViewFrontEnd(const std::string& web_directory);
+
 }  // namespace collido::view
