@@ -92,13 +92,15 @@ TEST(HierarchyBadInput, DuplicateNameInAHierarchy) {
   EXPECT_TRUE(rejected(parse(scene), {"/objects/3/name:", "duplicate object name 'truss'"}));
 }
 
-// "bad.json: /objects/1/motion/random: a random motion places the object in the world against
-//  'relative_to', so the object cannot also have a parent"
-TEST(HierarchyBadInput, RandomMotionWithAParent) {
+// "bad.json: /objects/1/motion/random/relative_to: 'panel' is not defined before this one
+//  (objects are read in file order, each parent before its children)": a random placement
+//  against the object's own child, which is placed through it.
+TEST(HierarchyBadInput, RandomMotionAgainstItsOwnChild) {
   Json scene = validScene();
-  scene["objects"][1]["motion"] = {{"random", {{"relative_to", "other"}, {"overlap", 0.5}}}};
+  scene["objects"][1]["motion"] = {{"random", {{"relative_to", "panel"}, {"overlap", 0.5}}}};
   scene["objects"][1].erase("pose");
-  EXPECT_TRUE(rejected(parse(scene), {"/objects/1/motion/random:", "cannot also have a parent"}));
+  EXPECT_TRUE(rejected(parse(scene), {"/objects/1/motion/random/relative_to:",
+                                      "'panel' is not defined before this one"}));
 }
 
 // "bad.json: /objects/1/parent: frame 0: composed with its parent 'module', the translation

@@ -122,4 +122,9 @@ void composeWithParent(const Reader& r, const Node& at, const SceneObject& paren
   }
 }
 
+void expressRelativeToParent(const SceneObject& parent, SceneObject& object) {
+  for (std::size_t f = 0; f < object.poses.size(); ++f)
+    object.poses[f] = parent.truePoseAt(f).inverse() * object.poses[f];
+}
+
 }  // namespace collido::scene_reading

@@ -37,4 +37,9 @@ Hierarchy readHierarchy(const Reader& r, const Node& objects,
 void composeWithParent(const Reader& r, const Node& at, const SceneObject& parent,
                        std::size_t frames, bool tracked, SceneObject& object);
 
+/// Takes `object.poses`, given in the world frame by frame (a random motion's placements against
+/// another object), relative to `parent`'s true poses, so that composeWithParent gives them back
+/// and the object stays mounted: it belongs to the parent's subtree and its children follow it.
+void expressRelativeToParent(const SceneObject& parent, SceneObject& object);
+
 }  // namespace collido::scene_reading

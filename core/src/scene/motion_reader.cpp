@@ -173,11 +173,6 @@ void readMotion(const Reader& r, const Node& node, const Scene& scene,
     object.poses = readPoseList(r, motion.at("poses"), scene.frames);
   } else if (motion.has("random")) {
     const Node random = motion.at("random");
-    if (node.has("parent")) {
-      r.fail(random,
-             "a random motion places the object in the world against 'relative_to', so "
-             "the object cannot also have a parent");
-    }
     r.expectObject(random, {"seed", "relative_to", "overlap"});
     if (!random.has("relative_to")) r.fail(random, "missing 'relative_to'");
     const std::string other = r.string(random.at("relative_to"));

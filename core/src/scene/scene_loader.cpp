@@ -684,6 +684,10 @@ Scene readScene(const Reader& r, const Json& document, const std::string& base_d
       object.parent = parent;
       sources[i].has_parent = true;
       sources[*parent].has_children = true;
+      // A random motion places the object in the world, against another object.
+      if (sources[i].kind == "random") {
+        scene_reading::expressRelativeToParent(scene.objects[*parent], object);
+      }
       scene_reading::composeWithParent(r, node.at("parent"), scene.objects[*parent], scene.frames,
                                        sources[i].tracked, object);
       const SceneObject& mount = scene.objects[*parent];

@@ -152,6 +152,45 @@ TEST(SceneHierarchy, AChildOfATrackedObjectFollowsItsRecoveredAndTruePoses) {
     expectNear(truth.objects[1].poseAt(f), carrier.truePoseAt(f) * local, "truth scene");
 }
 
+// A random placement applies at any level: mounted on a moving hub, the arm is placed against
+// the target exactly as it would be as a root (the same seed, the same world poses), and its tip
+// follows it; the hub's subtree holds both.
+TEST(SceneHierarchy, ARandomMotionOnAMountedObjectPlacesItInTheWorld) {
+  const std::string objects = R"(
+    {"name": "target", "shape": {"generator": "sphere", "radius": 1, "slices": 12, "stacks": 6}},
+    {"name": "hub", "shape": {"generator": "box"},
+     "motion": {"linear": {"from": {"translation": [-4, 0, 0]},
+                           "to": {"translation": [4, 1, 0], "rotation": {"axis": [0, 0, 1], "degrees": 70}}}}},
+    {"name": "arm", PARENT "shape": {"generator": "box", "size": [0.4, 0.4, 2]},
+     "pose": {"rotation": {"axis": [1, 0, 0], "degrees": 20}},
+     "motion": {"random": {"seed": 9, "relative_to": "target", "overlap": [0.2, 0.6]}}},
+    {"name": "tip", "parent": "arm", "shape": {"generator": "box", "size": [0.1, 0.1, 0.1]},
+     "pose": {"translation": [0, 0, 1.2]}}],
+    "queries": [{"a": "target", "b": {"subtree": "hub"}, "kind": "all_pairs"}]})";
+  const auto with = [&](const std::string& parent) {
+    std::string text = R"({"frames": 6, "objects": [)" + objects;
+    text.replace(text.find("PARENT"), 6, parent);
+    return parse(text);
+  };
+  const Result<Scene> mounted = with(R"("parent": "hub",)");
+  const Result<Scene> free = with("");
+  ASSERT_TRUE(mounted.ok()) << mounted.status().toString();
+  ASSERT_TRUE(free.ok()) << free.status().toString();
+  const Pose tip = translation(0.0, 0.0, 1.2);
+  bool hub_moves = false;
+  for (std::size_t f = 0; f < 6; ++f) {
+    const Pose& arm = mounted.value().objects[2].poseAt(f);
+    EXPECT_LT((arm.matrix() - free.value().objects[2].poseAt(f).matrix()).cwiseAbs().maxCoeff(),
+              1e-12)
+        << "frame " << f;
+    expectNear(mounted.value().objects[3].poseAt(f), arm * tip, "tip");
+    hub_moves |= f > 0 && !mounted.value().objects[1].poseAt(f).isApprox(
+                              mounted.value().objects[1].poseAt(0), 1e-9);
+  }
+  EXPECT_TRUE(hub_moves);
+  EXPECT_EQ(mounted.value().subtree(1), (std::vector<std::size_t>{1, 2, 3}));
+}
+
 // An object mounted on a tracked one moves with the fit's error: its spread is the fit's
 // covariance carried to its own corners (J C Jᵀ, J = [-[R p]x, I] for a corner p in the tracked
 // object's frame), larger than the carrier's own since it lies further from the markers; a
