@@ -1,9 +1,13 @@
 // collido_conformance: the plugin conformance kit.
 //   collido_conformance --plugin=PATH.so [--plugin=...] [--variant=NAME]
 //                       [--expectations-dir=DIR] [--write-expectations-dir=DIR] [--scenes-dir=DIR]
-//                       [GoogleTest flags]
+//                       [--oracle-cache=DIR | --fill-oracle-cache=DIR] [GoogleTest flags]
 // Every variant of every plugin given is run through the whole suite (conformance_test.cpp).
+// The exact oracle's answers are most of a run's time; CTest runs one plugin first with
+// --fill-oracle-cache (computed afresh, written at the end) and the others with --oracle-cache
+// (read for the identical scenes, the rest computed), so each scene's are computed once.
 #include <cstring>
+#include <filesystem>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -49,6 +53,8 @@ int main(int argc, char** argv) {
   using namespace collido::conformance;
   std::vector<std::string> plugins;
   std::string only_variant;
+  std::string oracle_cache;
+  std::string fill_oracle_cache;
   settings().expectations_dir = COLLIDO_SOURCE_DIR "/tests/conformance/expectations";
   settings().scenes_dir = COLLIDO_SOURCE_DIR "/scenes";
   std::vector<char*> rest = {argv[0]};
@@ -64,6 +70,10 @@ int main(int argc, char** argv) {
       settings().write_expectations_dir = value;
     } else if (takeValue(argv[i], "--scenes-dir", value)) {
       settings().scenes_dir = value;
+    } else if (takeValue(argv[i], "--oracle-cache", value)) {
+      oracle_cache = value;
+    } else if (takeValue(argv[i], "--fill-oracle-cache", value)) {
+      fill_oracle_cache = value;
     } else {
       rest.push_back(argv[i]);
     }
@@ -92,8 +102,21 @@ int main(int argc, char** argv) {
     std::cerr << "collido_conformance: " << s.message() << "\n";
     return 2;
   }
+  if (!oracle_cache.empty()) readStoredOracleAnswers(oracle_cache);
+  if (!fill_oracle_cache.empty()) {
+    // Answers left by an earlier build (another oracle) must not outlive a failed fill.
+    std::error_code ec;
+    std::filesystem::remove_all(fill_oracle_cache, ec);
+  }
   int rest_count = static_cast<int>(rest.size());
   rest.push_back(nullptr);  // argv[argc] is null, and GoogleTest moves it along with the flags
   ::testing::InitGoogleTest(&rest_count, rest.data());
-  return RUN_ALL_TESTS();
+  const int failed = RUN_ALL_TESTS();
+  if (!fill_oracle_cache.empty()) {
+    if (collido::Status s = storeOracleAnswers(fill_oracle_cache); !s.ok()) {
+      std::cerr << "collido_conformance: " << s.message() << "\n";
+      return 1;
+    }
+  }
+  return failed;
 }

@@ -5,6 +5,9 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
+#include <iostream>
+
+#include <collido/study/oracle_store.h>
 
 namespace collido::conformance {
 namespace {
@@ -56,6 +59,25 @@ constexpr const char* kKitScenes[] = {
 std::vector<SceneCase>& sceneCases() {
   static std::vector<SceneCase> cases;
   return cases;
+}
+
+void readStoredOracleAnswers(const std::string& directory) {
+  for (SceneCase& c : sceneCases()) {
+    const std::string path = study::oracleStorePath(directory, *c.oracle);
+    if (Status s = study::loadOracleAnswers(path, *c.oracle); !s.ok())
+      std::cerr << "collido_conformance: " << s.message() << "; computing the answers afresh\n";
+  }
+}
+
+Status storeOracleAnswers(const std::string& directory) {
+  std::error_code ec;
+  std::filesystem::create_directories(directory, ec);
+  if (ec) return {StatusCode::kInvalidArgument, directory + ": " + ec.message()};
+  for (const SceneCase& c : sceneCases()) {
+    const std::string path = study::oracleStorePath(directory, *c.oracle);
+    if (Status s = study::saveOracleAnswers(path, *c.oracle); !s.ok()) return s;
+  }
+  return {};
 }
 
 Status loadSceneCases(const std::string& directory) {

@@ -27,4 +27,12 @@ std::vector<SceneCase>& sceneCases();
 /// against a gear. Fails on the first scene that does not load.
 Status loadSceneCases(const std::string& directory);
 
+/// Adds to every case's oracle the answers stored in `directory` for that very scene
+/// (study/oracle_store.h: a file per scene fingerprint); a case without a file computes its own.
+/// A file that does not read is reported on stderr and ignored.
+void readStoredOracleAnswers(const std::string& directory);
+
+/// Writes every case's oracle answers to `directory`, replacing what is there.
+Status storeOracleAnswers(const std::string& directory);
+
 }  // namespace collido::conformance
