@@ -4,7 +4,8 @@
 # is never written. Fails when any target crashes, leaks, hits undefined behaviour, breaks its
 # own check, takes more than 30 s on one input or more than 2 GB of memory.
 # Usage: tools/fuzz.sh [SECONDS per target, default 60] [TARGET...]  (default: every target)
-# Environment: COLLIDO_FUZZ_JOBS: build jobs (default: every core). COLLIDO_FUZZ_SEED: libFuzzer's
+# Environment: COLLIDO_FUZZ_JOBS: build jobs (default: every core). COLLIDO_FUZZ_PARALLEL: targets
+# fuzzed at once (default: every core; each fuzzer uses one). COLLIDO_FUZZ_SEED: libFuzzer's
 # random seed (default: a new one each run). With a fixed seed the inputs tried are one fixed
 # sequence, of which a run covers as much as its time allows: CI fixes the seed, so its verdict
 # depends on the code alone, and a longer run with the same seed here covers what CI will try.
@@ -29,32 +30,56 @@ fi
 tools/configure.sh fuzz -j "${COLLIDO_FUZZ_JOBS:-$(nproc)}"
 
 export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1}"
-summary=()
-failed=0
 for target in "${targets[@]}"; do
-  fuzzer="build/fuzz/fuzzers/$target"
-  seeds="tests/fuzz/corpus/$target"
-  run="build/fuzz/runs/$target"
-  if [[ ! -x "$fuzzer" || ! -d "$seeds" ]]; then
-    echo "error: no fuzz target '$target' (or no $seeds)" >&2
+  if [[ ! -x "build/fuzz/fuzzers/$target" || ! -d "tests/fuzz/corpus/$target" ]]; then
+    echo "error: no fuzz target '$target' (or no tests/fuzz/corpus/$target)" >&2
     exit 2
   fi
+done
+
+# One target's run; its exit status is left in $run/status, read when every run has ended.
+fuzz_target() {
+  local target="$1" fuzzer="build/fuzz/fuzzers/$1" seeds="tests/fuzz/corpus/$1"
+  local run="build/fuzz/runs/$1" status=0 seed=()
+  [[ -n "${COLLIDO_FUZZ_SEED:-}" ]] && seed=(-seed="$COLLIDO_FUZZ_SEED")
+  "$fuzzer" "$run/corpus" -max_total_time="$seconds" -timeout=30 -rss_limit_mb=2048 \
+    "${seed[@]}" -print_final_stats=1 -artifact_prefix="$run/artifacts/" \
+    >"$run/log.txt" 2>&1 || status=$?
+  echo "$status" >"$run/status"
+}
+
+# Each fuzzer is one process on one core, so as many run at once as there are cores
+# (COLLIDO_FUZZ_PARALLEL): each still gets its SECONDS, and the step's wall time shrinks.
+parallel="${COLLIDO_FUZZ_PARALLEL:-$(nproc)}"
+running=0
+for target in "${targets[@]}"; do
+  seeds="tests/fuzz/corpus/$target"
+  run="build/fuzz/runs/$target"
   rm -rf "$run"
   mkdir -p "$run/corpus" "$run/artifacts"
   cp -R "$seeds/." "$run/corpus/"
   echo
   echo "--- $target: ${seconds}s over $(find "$seeds" -type f | wc -l) seeds (log: $run/log.txt)"
-  status=0
-  seed=()
-  [[ -n "${COLLIDO_FUZZ_SEED:-}" ]] && seed=(-seed="$COLLIDO_FUZZ_SEED")
-  "$fuzzer" "$run/corpus" -max_total_time="$seconds" -timeout=30 -rss_limit_mb=2048 \
-    "${seed[@]}" -print_final_stats=1 -artifact_prefix="$run/artifacts/" \
-    >"$run/log.txt" 2>&1 || status=$?
+  fuzz_target "$target" &
+  running=$((running + 1))
+  if [[ $running -ge $parallel ]]; then
+    wait -n || true
+    running=$((running - 1))
+  fi
+done
+wait
+
+summary=()
+failed=0
+for target in "${targets[@]}"; do
+  seeds="tests/fuzz/corpus/$target"
+  run="build/fuzz/runs/$target"
+  status=$(cat "$run/status" 2>/dev/null || echo "?")
   runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$run/log.txt" | tail -n 1)
   coverage=$(grep -oE 'cov: [0-9]+' "$run/log.txt" | tail -n 1 | cut -d' ' -f2)
   added=$(( $(find "$run/corpus" -type f | wc -l) - $(find "$seeds" -type f | wc -l) ))
   line="$target: ${runs:-?} inputs, coverage ${coverage:-?}, $added new corpus entries"
-  if [[ $status -eq 0 ]]; then
+  if [[ $status == 0 ]]; then
     summary+=("PASS $line")
   else
     failed=1
@@ -70,6 +95,6 @@ for target in "${targets[@]}"; do
 done
 
 echo
-echo "=== fuzzing summary (${seconds}s per target)"
+echo "=== fuzzing summary (${seconds}s per target, $parallel at a time)"
 printf '%s\n' "${summary[@]}"
 exit $failed

@@ -1,14 +1,19 @@
 // collido_conformance: the plugin conformance kit.
 //   collido_conformance --plugin=PATH.so [--plugin=...] [--variant=NAME]
 //                       [--expectations-dir=DIR] [--write-expectations-dir=DIR] [--scenes-dir=DIR]
-//                       [--oracle-cache=DIR | --fill-oracle-cache=DIR] [GoogleTest flags]
+//                       [--oracle-cache=DIR | --fill-oracle-cache=DIR]
+//                       [--skip-scenes=STEM,STEM...] [GoogleTest flags]
 // Every variant of every plugin given is run through the whole suite (conformance_test.cpp).
+// --skip-scenes leaves bundled scenes out (the sanitizer build leaves the heaviest ones to the
+// Release run: tests/conformance/CMakeLists.txt).
 // The exact oracle's answers are most of a run's time; CTest runs one plugin first with
 // --fill-oracle-cache (computed afresh, written at the end) and the others with --oracle-cache
 // (read for the identical scenes, the rest computed), so each scene's are computed once.
 #include <cstring>
 #include <filesystem>
 #include <iostream>
+#include <set>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -55,6 +60,7 @@ int main(int argc, char** argv) {
   std::string only_variant;
   std::string oracle_cache;
   std::string fill_oracle_cache;
+  std::set<std::string> skipped_scenes;
   settings().expectations_dir = COLLIDO_SOURCE_DIR "/tests/conformance/expectations";
   settings().scenes_dir = COLLIDO_SOURCE_DIR "/scenes";
   std::vector<char*> rest = {argv[0]};
@@ -74,6 +80,11 @@ int main(int argc, char** argv) {
       oracle_cache = value;
     } else if (takeValue(argv[i], "--fill-oracle-cache", value)) {
       fill_oracle_cache = value;
+    } else if (takeValue(argv[i], "--skip-scenes", value)) {
+      std::stringstream names(value);
+      for (std::string name; std::getline(names, name, ',');) {
+        if (!name.empty()) skipped_scenes.insert(name);
+      }
     } else {
       rest.push_back(argv[i]);
     }
@@ -98,7 +109,7 @@ int main(int argc, char** argv) {
     std::cerr << "collido_conformance: no variant '" << only_variant << "' in the plugins given\n";
     return 2;
   }
-  if (collido::Status s = loadSceneCases(settings().scenes_dir); !s.ok()) {
+  if (collido::Status s = loadSceneCases(settings().scenes_dir, skipped_scenes); !s.ok()) {
     std::cerr << "collido_conformance: " << s.message() << "\n";
     return 2;
   }

@@ -80,13 +80,21 @@ Status storeOracleAnswers(const std::string& directory) {
   return {};
 }
 
-Status loadSceneCases(const std::string& directory) {
+Status loadSceneCases(const std::string& directory, const std::set<std::string>& skipped) {
   std::vector<std::string> files;
+  std::set<std::string> not_found = skipped;
   std::error_code ec;
   for (const auto& entry : std::filesystem::directory_iterator(directory, ec)) {
-    if (entry.path().extension() == ".json") files.push_back(entry.path().string());
+    if (entry.path().extension() != ".json") continue;
+    if (not_found.erase(entry.path().stem().string()) > 0) continue;
+    files.push_back(entry.path().string());
   }
   if (ec) return {StatusCode::kInvalidArgument, directory + ": " + ec.message()};
+  // A renamed scene must not silently leave the skip list meaning nothing.
+  if (!not_found.empty()) {
+    return {StatusCode::kInvalidArgument,
+            directory + ": --skip-scenes names no scene file '" + *not_found.begin() + ".json'"};
+  }
   std::sort(files.begin(), files.end());
   const auto add = [](Result<Scene> scene) -> Status {
     if (!scene.ok()) return scene.status();
