@@ -13,6 +13,12 @@ enum class Timed { kUpdateAndQuery, kUpdate, kQuery, kFreshQuery };
 void deformBenchmark(benchmark::State& state, const Variant& variant,
                      const std::shared_ptr<const Scene>& scene, std::size_t query_index,
                      Timed timed) {
+  // Loaded scenes have a frame at least; one built otherwise could have none, and the frame
+  // counter below wraps modulo the count.
+  if (scene->frames == 0) {
+    state.SkipWithError("the scene has no frames");
+    return;
+  }
   std::unique_ptr<BackendInstance> backend = createOrSkip(variant, state);
   if (!backend) return;
   const Capabilities& caps = backend->capabilities();

@@ -97,6 +97,12 @@ void buildBenchmark(benchmark::State& state, const Variant& variant,
 
 void queryBenchmark(benchmark::State& state, const Variant& variant,
                     const std::shared_ptr<const Scene>& scene, std::size_t query_index) {
+  // Loaded scenes have a frame at least; one built otherwise could have none, and the frame
+  // counter below wraps modulo the count.
+  if (scene->frames == 0) {
+    state.SkipWithError("the scene has no frames");
+    return;
+  }
   std::unique_ptr<BackendInstance> backend = createOrSkip(variant, state);
   if (!backend) return;
   const SceneQuery& query = scene->queries[query_index];
