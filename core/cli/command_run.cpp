@@ -1,6 +1,8 @@
 #include <iostream>
+#include <iterator>
 
 #include <collido/runner/runner.h>
+#include <collido/study/oracle_store.h>
 #include <collido/study/result_store.h>
 
 #include "commands.h"
@@ -12,6 +14,7 @@ struct RunArguments {
   std::vector<std::string> scenes;
   std::vector<std::string> backends;
   std::string json_path;
+  std::string oracle_directory;
   int repetitions = 5;
   bool quiet = false;
   bool fail_on_disagreement = false;
@@ -49,7 +52,19 @@ int run(const RunArguments& args, const PluginOptions& plugin_options) {
   RunOptions options;
   options.repetitions = args.repetitions;
   if (!args.quiet) options.progress = [](const std::string& line) { std::cerr << line << "\n"; };
-  const RunReport report = runScenes(scenes, specs.value(), options);
+  // runScenes, with each scene's oracle answers read from and kept in the store when one is named.
+  RunReport report;
+  for (const Scene& scene : scenes) {
+    OracleCache oracle(scene);
+    const study::StoredOracle stored(args.oracle_directory, oracle);
+    for (const BackendSpec& spec : specs.value()) {
+      RunReport part = runScene(scene, spec, options, oracle);
+      std::move(part.measurements.begin(), part.measurements.end(),
+                std::back_inserter(report.measurements));
+      std::move(part.problems.begin(), part.problems.end(), std::back_inserter(report.problems));
+    }
+    stored.keepNew();
+  }
   std::cout << formatRunTable(report);
   if (!args.json_path.empty()) {
     // The study's atomic write: a reader never sees half a report.
@@ -84,6 +99,9 @@ void addRunCommand(CLI::App& app, const PluginOptions& plugins, int& exit_code) 
                    "backends to run, NAME or NAME[key=value;...] (default: every variant found)")
       ->delimiter(',');
   command->add_option("--json", args->json_path, "also write the results, per frame, as JSON");
+  command->add_option("--oracle-cache", args->oracle_directory,
+                      "keep the exact answers in this folder (a study's store): answers stored "
+                      "there for an identical scene are read, not computed, and new ones added");
   command->add_option("--repetitions", args->repetitions, "timed calls per frame and query")
       ->check(CLI::Range(1, 1000000));
   command->add_flag("--quiet", args->quiet, "no progress lines on stderr");

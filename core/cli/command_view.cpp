@@ -211,21 +211,12 @@ int viewAnswers(const AnswersArguments& args, const PluginOptions& plugins) {
     return 2;
   }
   OracleCache oracle(scene.value());
-  std::string stored;
-  if (!args.oracle_directory.empty()) {
-    stored = study::oracleStorePath(args.oracle_directory, oracle);
-    if (Status s = study::loadOracleAnswers(stored, oracle); !s.ok())
-      std::cerr << "note: " << s.message() << "; computing the answers afresh\n";
-  }
-  const std::size_t known = oracle.computed();
+  const study::StoredOracle stored(args.oracle_directory, oracle);
   RunOptions options;
   options.repetitions = 1;
   options.keep_answers = true;
   const RunReport report = runScene(scene.value(), specs.value().front(), options, oracle);
-  if (!stored.empty() && oracle.computed() != known) {
-    if (Status s = study::saveOracleAnswers(stored, oracle); !s.ok())
-      std::cerr << "note: " << s.message() << "\n";
-  }
+  stored.keepNew();
   const std::string json = viewAnswersJson(scene.value(), report, specs.value().front().label());
   if (Status s = study::writeFileAtomically(args.out, json); !s.ok()) {
     std::cerr << "error: " << s.message() << "\n";

@@ -2,6 +2,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
@@ -11,6 +12,20 @@
 namespace collido::study {
 
 using Json = nlohmann::json;
+
+StoredOracle::StoredOracle(const std::string& directory, OracleCache& cache) : cache_(cache) {
+  if (directory.empty()) return;
+  path_ = oracleStorePath(directory, cache);
+  if (Status s = loadOracleAnswers(path_, cache); !s.ok())
+    std::cerr << "note: " << s.message() << "; computing the answers afresh\n";
+  known_ = cache.computed();
+}
+
+void StoredOracle::keepNew() const {
+  if (path_.empty() || cache_.computed() == known_) return;
+  if (Status s = saveOracleAnswers(path_, cache_); !s.ok())
+    std::cerr << "note: " << s.message() << "\n";
+}
 
 std::string oracleStorePath(const std::string& directory, const OracleCache& cache) {
   return (std::filesystem::path(directory) / (cache.fingerprint() + ".json")).string();

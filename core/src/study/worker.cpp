@@ -1,6 +1,5 @@
 #include <collido/study/worker.h>
 
-#include <iostream>
 #include <optional>
 
 #include <collido/runner/runner.h>
@@ -44,31 +43,16 @@ Result<CombinationResult> runCombination(const WorkerRequest& request) {
   OracleCache oracle(scene);
   std::optional<OracleCache> finest_oracle;
   if (finest) finest_oracle.emplace(*finest, /*witness_only=*/true);
-  const auto stored = [&](OracleCache& cache) {
-    if (request.oracle_directory.empty()) return std::string();
-    std::string path = oracleStorePath(request.oracle_directory, cache);
-    if (Status s = loadOracleAnswers(path, cache); !s.ok()) {
-      std::cerr << "note: " << s.message() << "; computing the answers afresh\n";
-    }
-    return path;
-  };
-  const std::string oracle_path = stored(oracle);
-  const std::size_t oracle_known = oracle.computed();
-  const std::string finest_path = finest_oracle ? stored(*finest_oracle) : std::string();
-  const std::size_t finest_known = finest_oracle ? finest_oracle->computed() : 0;
+  const StoredOracle stored(request.oracle_directory, oracle);
+  std::optional<StoredOracle> finest_stored;
+  if (finest_oracle) finest_stored.emplace(request.oracle_directory, *finest_oracle);
 
   RunReport report = runScene(scene, specs.value().front(), options, oracle,
                               finest_oracle ? &*finest_oracle : nullptr);
 
-  // Keep what this run added; a failure to store costs time later, never an answer.
-  const auto keep = [](const std::string& path, const OracleCache& cache, std::size_t known) {
-    if (path.empty() || cache.computed() == known) return;
-    if (Status s = saveOracleAnswers(path, cache); !s.ok()) {
-      std::cerr << "note: " << s.message() << "\n";
-    }
-  };
-  keep(oracle_path, oracle, oracle_known);
-  if (finest_oracle) keep(finest_path, *finest_oracle, finest_known);
+  // Keep what this run added.
+  stored.keepNew();
+  if (finest_stored) finest_stored->keepNew();
 
   CombinationResult result;
   result.combination = c;

@@ -76,6 +76,28 @@ TEST(OracleStore, DistancesComeBackExactly) {
   }
 }
 
+// A run's link to the store: the second run reads what the first computed and computes nothing;
+// without a folder nothing is read or written.
+TEST(OracleStore, AStoredOracleReadsWhatAnEarlierRunKept) {
+  const Scene s = scene();
+  const std::string directory = test::makeTempDirectory("stored_oracle");
+  {
+    OracleCache first(s);
+    const StoredOracle stored(directory, first);
+    ASSERT_TRUE(first.get(0, 1, 0).intersecting);
+    stored.keepNew();
+  }
+  OracleCache second(s);
+  const StoredOracle stored(directory, second);
+  EXPECT_EQ(second.answers().size(), 1u);
+  EXPECT_TRUE(second.get(0, 1, 0).intersecting);
+  EXPECT_EQ(second.computed(), 0u);
+
+  OracleCache unstored(s);
+  const StoredOracle none("", unstored);
+  EXPECT_TRUE(unstored.answers().empty());
+}
+
 TEST(OracleStore, AMissingFileAddsNothingAndIsNoError) {
   const Scene s = scene();
   OracleCache cache(s);

@@ -21,4 +21,20 @@ Status loadOracleAnswers(const std::string& path, OracleCache& cache);
 /// Writes every answer of `cache` to `path` atomically.
 Status saveOracleAnswers(const std::string& path, const OracleCache& cache);
 
+/// A cache's link to its store for one run: the answers stored for its scene are added when it
+/// is made, and what the run computed beyond them is written back by keepNew(). A store that
+/// cannot be read or written costs time, never an answer: it is noted on stderr and the answers
+/// are computed afresh. An empty directory: no store, nothing read or written.
+class StoredOracle {
+ public:
+  StoredOracle(const std::string& directory, OracleCache& cache);
+  /// Writes the cache to the store when it computed anything since it was read.
+  void keepNew() const;
+
+ private:
+  OracleCache& cache_;
+  std::string path_;
+  std::size_t known_ = 0;
+};
+
 }  // namespace collido::study
