@@ -1,20 +1,29 @@
 // The exact fallback of the certified triangle test: both triangles placed in world coordinates
-// with exact (lazy rational) arithmetic, as the exact oracle places them, then decided with the
-// same algorithm (collido/oracle/triangle_test.h) on CGAL's exact-constructions kernel.
-#include <collido/obbtree/triangle_intersection.h>
+// exactly, as the exact oracle places them (R v + t, not rounded), then decided with the same
+// algorithm (collido/oracle/triangle_test.h). First with floating-point expansions (every world
+// coordinate a short exact sum of doubles, every sign an exact determinant of them: expansion.h),
+// which costs a few times the filtered test; on CGAL's exact-constructions kernel (lazy rationals)
+// only when an input lies outside the expansions' safe range or an expansion outgrows its
+// capacity.
+#include "exact_world.h"
+
+#include <array>
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 
 #include <collido/oracle/orientation.h>
 #include <collido/oracle/triangle_test.h>
 
+#include "expansion.h"
+
 namespace collido::obbtree {
+namespace detail {
 namespace {
 
 using EK = CGAL::Exact_predicates_exact_constructions_kernel;
 using exact::dropCoordinate;
 
-struct ExactWorldKernel {
+struct RationalWorldKernel {
   using Point = EK::Point_3;
   static int orient3d(const Point& a, const Point& b, const Point& c, const Point& d) {
     return static_cast<int>(CGAL::orientation(a, b, c, d));
@@ -32,7 +41,7 @@ struct ExactWorldKernel {
   }
 };
 
-EK::Point_3 place(const Eigen::Vector3d& v, const Eigen::Isometry3d& pose) {
+EK::Point_3 placeRational(const Eigen::Vector3d& v, const Eigen::Isometry3d& pose) {
   const Eigen::Matrix3d& r = pose.linear();
   const Eigen::Vector3d& t = pose.translation();
   using FT = EK::FT;
@@ -44,14 +53,147 @@ EK::Point_3 place(const Eigen::Vector3d& v, const Eigen::Isometry3d& pose) {
   return {world[0], world[1], world[2]};
 }
 
+// A world coordinate, sum of three products and a translation: at most 7 components.
+using Coordinate = Expansion<8>;
+// Differences of coordinates, their products and the determinants.
+using Wide = Expansion<64>;
+
+struct ExpansionPoint {
+  std::array<Coordinate, 3> x;
+};
+
+// Exact signs on expansion coordinates. Remembers when an expansion overflowed its capacity: the
+// signs are then unreliable and the caller decides the pair on rationals.
+class ExpansionWorldKernel {
+ public:
+  using Point = ExpansionPoint;
+
+  bool overflowed() const { return overflowed_; }
+
+  int orient3d(const Point& a, const Point& b, const Point& c, const Point& d) {
+    Wide u[3];
+    Wide v[3];
+    Wide w[3];
+    for (int k = 0; k < 3; ++k) {
+      u[k] = difference(b.x[k], a.x[k]);
+      v[k] = difference(c.x[k], a.x[k]);
+      w[k] = difference(d.x[k], a.x[k]);
+    }
+    // det(u, v, w) = u . (v x w), as the filter computes it.
+    Wide det;
+    Wide minor;
+    Wide term;
+    for (int k = 0; k < 3; ++k) {
+      const int i = (k + 1) % 3;
+      const int j = (k + 2) % 3;
+      cross(v[i], w[j], v[j], w[i], minor);
+      u[k].multiplyInto(minor, term);
+      det.add(term);
+    }
+    return signOf(det);
+  }
+
+  int orient2d(const Point& a, const Point& b, const Point& c, int drop) {
+    const int i = exact::keptFirst(drop);
+    const int j = exact::keptSecond(drop);
+    Wide det;
+    cross(difference(b.x[i], a.x[i]), difference(c.x[j], a.x[j]), difference(b.x[j], a.x[j]),
+          difference(c.x[i], a.x[i]), det);
+    return signOf(det);
+  }
+
+  bool collinear(const Point& a, const Point& b, const Point& c) {
+    for (int drop = 0; drop < 3; ++drop) {
+      if (orient2d(a, b, c, drop) != 0) return false;
+    }
+    return true;
+  }
+
+  int compare(const Point& a, const Point& b, int k) { return signOf(difference(a.x[k], b.x[k])); }
+
+ private:
+  static Wide difference(const Coordinate& x, const Coordinate& y) {
+    Wide result;
+    result.add(x);
+    result.add(y, /*subtract=*/true);
+    return result;
+  }
+
+  // p q - r s, into `result`.
+  static void cross(const Wide& p, const Wide& q, const Wide& r, const Wide& s, Wide& result) {
+    Wide second;
+    p.multiplyInto(q, result);
+    r.multiplyInto(s, second);
+    result.add(second, /*subtract=*/true);
+  }
+
+  int signOf(const Wide& value) {
+    overflowed_ = overflowed_ || value.overflowed();
+    return value.sign();
+  }
+
+  bool overflowed_ = false;
+};
+
+bool inRange(const Eigen::Vector3d* corners, const Eigen::Isometry3d& pose) {
+  for (int k = 0; k < 3; ++k) {
+    for (int c = 0; c < 3; ++c) {
+      if (!inExpansionRange(corners[c][k])) return false;
+    }
+  }
+  const Eigen::Matrix4d& m = pose.matrix();
+  for (int row = 0; row < 3; ++row) {
+    for (int column = 0; column < 4; ++column) {
+      if (!inExpansionRange(m(row, column))) return false;
+    }
+  }
+  return true;
+}
+
+ExpansionPoint placeExpansion(const Eigen::Vector3d& v, const Eigen::Isometry3d& pose) {
+  const Eigen::Matrix3d& r = pose.linear();
+  const Eigen::Vector3d& t = pose.translation();
+  ExpansionPoint p;
+  for (int row = 0; row < 3; ++row) {
+    Coordinate& x = p.x[row];
+    x = Coordinate(t[row]);
+    for (int k = 0; k < 3; ++k)
+      x.add(Coordinate::product(r(row, k), v[k]));
+  }
+  return p;
+}
+
 }  // namespace
+
+std::optional<bool> posedTrianglesIntersectByExpansions(const Eigen::Vector3d* a,
+                                                        const Eigen::Isometry3d& pose_a,
+                                                        const Eigen::Vector3d* b,
+                                                        const Eigen::Isometry3d& pose_b) {
+  if (!inRange(a, pose_a) || !inRange(b, pose_b)) return std::nullopt;
+  ExpansionWorldKernel kernel;
+  const bool answer = exact::TriangleTest<ExpansionWorldKernel>(kernel).intersect(
+      placeExpansion(a[0], pose_a), placeExpansion(a[1], pose_a), placeExpansion(a[2], pose_a),
+      placeExpansion(b[0], pose_b), placeExpansion(b[1], pose_b), placeExpansion(b[2], pose_b));
+  if (kernel.overflowed()) return std::nullopt;
+  return answer;
+}
+
+bool posedTrianglesIntersectByRationals(const Eigen::Vector3d* a, const Eigen::Isometry3d& pose_a,
+                                        const Eigen::Vector3d* b, const Eigen::Isometry3d& pose_b) {
+  RationalWorldKernel kernel;
+  return exact::TriangleTest<RationalWorldKernel>(kernel).intersect(
+      placeRational(a[0], pose_a), placeRational(a[1], pose_a), placeRational(a[2], pose_a),
+      placeRational(b[0], pose_b), placeRational(b[1], pose_b), placeRational(b[2], pose_b));
+}
+
+}  // namespace detail
 
 bool posedTrianglesIntersect(const Eigen::Vector3d* a, const Eigen::Isometry3d& pose_a,
                              const Eigen::Vector3d* b, const Eigen::Isometry3d& pose_b) {
-  ExactWorldKernel kernel;
-  return exact::TriangleTest<ExactWorldKernel>(kernel).intersect(
-      place(a[0], pose_a), place(a[1], pose_a), place(a[2], pose_a), place(b[0], pose_b),
-      place(b[1], pose_b), place(b[2], pose_b));
+  if (std::optional<bool> answer =
+          detail::posedTrianglesIntersectByExpansions(a, pose_a, b, pose_b))
+    return *answer;
+  return detail::posedTrianglesIntersectByRationals(a, pose_a, b, pose_b);
 }
 
 }  // namespace collido::obbtree

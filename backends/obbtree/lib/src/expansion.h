@@ -1,0 +1,197 @@
+// Exact sums and products of doubles as floating-point expansions (Shewchuk, "Adaptive Precision
+// Floating-Point Arithmetic and Fast Robust Geometric Predicates", 1997): a value held as the sum
+// of non-overlapping doubles in increasing magnitude, built with error-free transformations
+// (TwoSum, and TwoProduct through a fused multiply-add), so its sign is its largest component's.
+// Every result is exact as long as no component overflows or underflows: callers keep their
+// inputs in the range that inExpansionRange() admits, which keeps every product of up to six
+// inputs, and every component derived from one, away from both. An expansion that would outgrow
+// its fixed capacity (no heap: the exact fallback of the collision query must stay cheap) marks
+// itself overflowed instead, and the caller decides the sign some other way.
+#pragma once
+
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+
+namespace collido::obbtree::detail {
+
+/// Whether x is zero, or finite with |x| < 2^150 and its lowest set bit >= 2^-170. A world
+/// coordinate r v + t of such inputs has its bits between 2^-340 and 2^302, and an orientation
+/// determinant of such coordinates (degree 3) between 2^-1020 and about 2^912: every component the
+/// expansion algorithms derive is a multiple of the lowest (never subnormal) and far from
+/// overflow, so no error term is ever lost.
+inline bool inExpansionRange(double x) {
+  if (x == 0.0) return true;
+  if (!std::isfinite(x)) return false;
+  int exponent = 0;
+  const double fraction = std::frexp(std::abs(x), &exponent);  // |x| = fraction 2^exponent
+  if (exponent > 150) return false;
+  const auto mantissa = static_cast<std::uint64_t>(std::ldexp(fraction, 53));
+  return exponent - 53 + __builtin_ctzll(mantissa) >= -170;
+}
+
+/// sum = fl(a + b) and error = a + b - sum exactly (Knuth's TwoSum).
+inline double twoSum(double a, double b, double& error) {
+  const double sum = a + b;
+  const double b_virtual = sum - a;
+  const double a_virtual = sum - b_virtual;
+  error = (a - a_virtual) + (b - b_virtual);
+  return sum;
+}
+
+/// TwoSum for |a| >= |b| (or a == 0): Dekker's FastTwoSum.
+inline double fastTwoSum(double a, double b, double& error) {
+  const double sum = a + b;
+  error = b - (sum - a);
+  return sum;
+}
+
+template <int Capacity>
+class Expansion {
+ public:
+  Expansion() = default;
+  explicit Expansion(double x) {
+    if (x != 0.0) push(x);
+  }
+  // Only the components in use are copied.
+  Expansion(const Expansion& other) { assign(other); }
+  Expansion& operator=(const Expansion& other) {
+    if (this != &other) assign(other);
+    return *this;
+  }
+  ~Expansion() = default;
+
+  /// a * b exactly, as at most two components.
+  static Expansion product(double a, double b) {
+    Expansion result;
+    const double p = a * b;
+    const double error = std::fma(a, b, -p);
+    if (error != 0.0) result.push(error);
+    if (p != 0.0) result.push(p);
+    return result;
+  }
+
+  int size() const { return size_; }
+  double component(int i) const { return components_[i]; }
+  bool overflowed() const { return overflowed_; }
+  /// -1, 0 or +1: the sign of the largest component, which outweighs all the others together.
+  int sign() const {
+    if (size_ == 0) return 0;
+    const double top = components_[size_ - 1];
+    return (top > 0.0) - (top < 0.0);
+  }
+
+  void negate() {
+    for (int i = 0; i < size_; ++i)
+      components_[i] = -components_[i];
+  }
+
+  /// Adds b exactly: Shewchuk's GROW-EXPANSION with zero elimination, in place (step i has
+  /// written at most i components when it reads component i).
+  void add(double b) {
+    double q = b;
+    const int count = size_;
+    size_ = 0;
+    for (int i = 0; i < count; ++i) {
+      double error = 0.0;
+      q = twoSum(q, components_[i], error);
+      if (error != 0.0) components_[size_++] = error;
+    }
+    if (q != 0.0) push(q);
+  }
+
+  /// Adds f exactly (f's components grown in one at a time, then the result compressed);
+  /// subtracts it with `subtract`.
+  template <int OtherCapacity>
+  void add(const Expansion<OtherCapacity>& f, bool subtract = false) {
+    overflowed_ = overflowed_ || f.overflowed();
+    for (int j = 0; j < f.size(); ++j)
+      add(subtract ? -f.component(j) : f.component(j));
+    compress();
+  }
+
+  /// this * b exactly: Shewchuk's SCALE-EXPANSION with zero elimination.
+  template <int ResultCapacity>
+  void scaleInto(double b, Expansion<ResultCapacity>& result) const {
+    result.size_ = 0;
+    result.overflowed_ = overflowed_;
+    if (size_ == 0 || b == 0.0) return;
+    double q = components_[0] * b;
+    double low = std::fma(components_[0], b, -q);
+    if (low != 0.0) result.push(low);
+    for (int i = 1; i < size_; ++i) {
+      const double high = components_[i] * b;
+      low = std::fma(components_[i], b, -high);
+      double error = 0.0;
+      const double sum = twoSum(q, low, error);
+      if (error != 0.0) result.push(error);
+      q = fastTwoSum(high, sum, error);
+      if (error != 0.0) result.push(error);
+    }
+    if (q != 0.0) result.push(q);
+  }
+
+  /// this * f exactly, into `result`: the sum over f's components of this scaled by each.
+  template <int OtherCapacity, int ResultCapacity>
+  void multiplyInto(const Expansion<OtherCapacity>& f, Expansion<ResultCapacity>& result) const {
+    result.size_ = 0;
+    result.overflowed_ = overflowed_ || f.overflowed();
+    Expansion<2 * Capacity> scaled;
+    for (int j = 0; j < f.size(); ++j) {
+      scaleInto(f.component(j), scaled);
+      result.add(scaled);
+    }
+  }
+
+ private:
+  template <int>
+  friend class Expansion;
+
+  void assign(const Expansion& other) {
+    size_ = other.size_;
+    overflowed_ = other.overflowed_;
+    for (int i = 0; i < size_; ++i)
+      components_[i] = other.components_[i];
+  }
+
+  void push(double x) {
+    if (size_ == Capacity) {
+      overflowed_ = true;
+      return;
+    }
+    components_[size_++] = x;
+  }
+
+  // Shewchuk's COMPRESS, in place: the same value in fewer non-overlapping components (repeated
+  // growth leaves many small ones).
+  void compress() {
+    if (size_ < 2) return;
+    int bottom = size_ - 1;
+    double q = components_[bottom];
+    for (int i = size_ - 2; i >= 0; --i) {
+      double error = 0.0;
+      const double sum = fastTwoSum(q, components_[i], error);
+      if (error != 0.0) {
+        components_[bottom--] = sum;
+        q = error;
+      } else {
+        q = sum;
+      }
+    }
+    int top = 0;
+    for (int i = bottom + 1; i < size_; ++i) {
+      double error = 0.0;
+      const double sum = fastTwoSum(components_[i], q, error);
+      if (error != 0.0) components_[top++] = error;
+      q = sum;
+    }
+    components_[top++] = q;
+    size_ = (q == 0.0 && top == 1) ? 0 : top;
+  }
+
+  double components_[Capacity];
+  int size_ = 0;
+  bool overflowed_ = false;
+};
+
+}  // namespace collido::obbtree::detail
