@@ -107,4 +107,18 @@ TriangleMesh chainLink(const TriangleMesh& chain, int links, int i) {
   return link;
 }
 
+bool oracleTrianglesIntersect(const std::array<Eigen::Vector3d, 3>& a, const Pose& pose_a,
+                              const std::array<Eigen::Vector3d, 3>& b, const Pose& pose_b) {
+  TriangleMesh mesh_a;
+  mesh_a.vertices.resize(3, 3);
+  mesh_a.triangles.resize(3, 1);
+  mesh_a.triangles << 0, 1, 2;
+  TriangleMesh mesh_b = mesh_a;
+  for (int k = 0; k < 3; ++k) {
+    mesh_a.vertices.col(k) = a[static_cast<std::size_t>(k)];
+    mesh_b.vertices.col(k) = b[static_cast<std::size_t>(k)];
+  }
+  return exactPairIntersects(mesh_a, pose_a, mesh_b, pose_b, {0, 0});
+}
+
 }  // namespace collido::obbtree

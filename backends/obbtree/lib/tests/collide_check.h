@@ -1,6 +1,7 @@
 // Shared checks of tree-tree queries against the exact oracle.
 #pragma once
 
+#include <array>
 #include <random>
 #include <string>
 #include <vector>
@@ -47,5 +48,9 @@ Eigen::Matrix3d randomRotation(std::mt19937_64& rng);
 /// triangles per link, in order).
 TriangleMesh chainLink(const TriangleMesh& chain, int links, int i);
 Pose makePose(const Eigen::Matrix3d& rotation, const Eigen::Vector3d& translation);
+
+/// The exact oracle's answer for triangle a placed by pose_a against triangle b placed by pose_b.
+bool oracleTrianglesIntersect(const std::array<Eigen::Vector3d, 3>& a, const Pose& pose_a,
+                              const std::array<Eigen::Vector3d, 3>& b, const Pose& pose_b);
 
 }  // namespace collido::obbtree

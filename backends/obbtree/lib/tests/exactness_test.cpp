@@ -20,6 +20,7 @@
 #include <collido/oracle/double_triangle_test.h>
 #include <collido/oracle/exact_oracle.h>
 
+#include "../src/exact_world.h"
 #include "collide_check.h"
 
 namespace collido::obbtree {
@@ -153,17 +154,14 @@ TEST(ExactWorldTriangleTest, AgreesWithTheOracleOnPosedTouchingPairs) {
     // One shared pose keeps the contact in exact arithmetic; a second pose breaks it either way.
     const Pose pose_a = randomPose(rng, trial % 3 == 0 ? 1e8 : 1.0);
     const Pose pose_b = trial % 4 == 3 ? randomPose(rng, 1.0) : pose_a;
-    TriangleMesh mesh_a;
-    mesh_a.vertices.resize(3, 3);
-    mesh_a.triangles.resize(3, 1);
-    mesh_a.triangles << 0, 1, 2;
-    TriangleMesh mesh_b = mesh_a;
-    for (int k = 0; k < 3; ++k) {
-      mesh_a.vertices.col(k) = a[static_cast<std::size_t>(k)];
-      mesh_b.vertices.col(k) = b[static_cast<std::size_t>(k)];
-    }
-    const bool truth = exactPairIntersects(mesh_a, pose_a, mesh_b, pose_b, {0, 0});
+    const bool truth = oracleTrianglesIntersect(a, pose_a, b, pose_b);
     EXPECT_EQ(posedTrianglesIntersect(a.data(), pose_a, b.data(), pose_b), truth) << trial;
+    // The expansions decide it (inputs in their range), and the rationals agree.
+    EXPECT_EQ(detail::posedTrianglesIntersectByExpansions(a.data(), pose_a, b.data(), pose_b),
+              std::optional<bool>(truth))
+        << trial;
+    EXPECT_EQ(detail::posedTrianglesIntersectByRationals(a.data(), pose_a, b.data(), pose_b), truth)
+        << trial;
     if (pose_b.matrix() == pose_a.matrix()) {
       EXPECT_TRUE(truth) << trial << ": a shared pose keeps the contact";
     }
