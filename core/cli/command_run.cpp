@@ -1,5 +1,4 @@
 #include <iostream>
-#include <iterator>
 
 #include <collido/runner/runner.h>
 #include <collido/study/oracle_store.h>
@@ -57,12 +56,7 @@ int run(const RunArguments& args, const PluginOptions& plugin_options) {
   for (const Scene& scene : scenes) {
     OracleCache oracle(scene);
     const study::StoredOracle stored(args.oracle_directory, oracle);
-    for (const BackendSpec& spec : specs.value()) {
-      RunReport part = runScene(scene, spec, options, oracle);
-      std::move(part.measurements.begin(), part.measurements.end(),
-                std::back_inserter(report.measurements));
-      std::move(part.problems.begin(), part.problems.end(), std::back_inserter(report.problems));
-    }
+    runSceneOnBackends(scene, specs.value(), options, oracle, report);
     stored.keepNew();
   }
   std::cout << formatRunTable(report);

@@ -570,11 +570,16 @@ RunReport runScenes(const std::vector<Scene>& scenes, const std::vector<BackendS
   RunReport report;
   for (const Scene& scene : scenes) {
     OracleCache oracle(scene);
-    for (const BackendSpec& spec : backends) {
-      runSceneOnBackend(scene, spec, oracle, nullptr, options, report);
-    }
+    runSceneOnBackends(scene, backends, options, oracle, report);
   }
   return report;
+}
+
+void runSceneOnBackends(const Scene& scene, const std::vector<BackendSpec>& backends,
+                        const RunOptions& options, OracleCache& oracle, RunReport& report) {
+  for (const BackendSpec& spec : backends) {
+    runSceneOnBackend(scene, spec, oracle, nullptr, options, report);
+  }
 }
 
 RunReport runScene(const Scene& scene, const BackendSpec& backend, const RunOptions& options,

@@ -81,11 +81,6 @@ class Expansion {
     return (top > 0.0) - (top < 0.0);
   }
 
-  void negate() {
-    for (int i = 0; i < size_; ++i)
-      components_[i] = -components_[i];
-  }
-
   /// Adds b exactly: Shewchuk's GROW-EXPANSION with zero elimination, in place (step i has
   /// written at most i components when it reads component i).
   void add(double b) {

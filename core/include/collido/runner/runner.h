@@ -232,6 +232,12 @@ class OracleCache {
 RunReport runScenes(const std::vector<Scene>& scenes, const std::vector<BackendSpec>& backends,
                     const RunOptions& options);
 
+/// One scene of runScenes: every backend on `scene`, the answers checked against `oracle` (a
+/// cache of this scene's, which the caller may have filled from a store), the measurements
+/// appended to `report`.
+void runSceneOnBackends(const Scene& scene, const std::vector<BackendSpec>& backends,
+                        const RunOptions& options, OracleCache& oracle, RunReport& report);
+
 /// Runs one scene on one backend. With `finest` (the same scene meshed at its finest
 /// resolution, with the same poses), each frame also records whether the finest meshes
 /// intersect, so the error of a coarse mesh is measured against the shape it stands for.
