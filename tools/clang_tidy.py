@@ -121,7 +121,13 @@ def main():
     options = parser.parse_args()
 
     root = os.path.realpath(os.path.join(os.path.dirname(__file__), ".."))
-    tidy = Tidy(options, root)
+    try:
+        tidy = Tidy(options, root)
+    except FileNotFoundError as e:
+        print(f"clang_tidy.py: error: {e.filename}: not found (configure the build folder first, "
+              "e.g. tools/configure.sh release; clang-tidy and clang++ must be installed)",
+              file=sys.stderr)
+        return 2
     paths = [os.path.realpath(f) for f in options.files]
     problems = cached = 0
     with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, options.j)) as pool:

@@ -93,9 +93,11 @@ void addRunCommand(CLI::App& app, const PluginOptions& plugins, int& exit_code) 
                    "backends to run, NAME or NAME[key=value;...] (default: every variant found)")
       ->delimiter(',');
   command->add_option("--json", args->json_path, "also write the results, per frame, as JSON");
-  command->add_option("--oracle-cache", args->oracle_directory,
-                      "keep the exact answers in this folder (a study's store): answers stored "
-                      "there for an identical scene are read, not computed, and new ones added");
+  command
+      ->add_option("--oracle-cache", args->oracle_directory,
+                   "keep the exact answers in this folder (a study's store): answers stored "
+                   "there for an identical scene are read, not computed, and new ones added")
+      ->check(CLI::ExistingDirectory | CLI::NonexistentPath);
   command->add_option("--repetitions", args->repetitions, "timed calls per frame and query")
       ->check(CLI::Range(1, 1000000));
   command->add_flag("--quiet", args->quiet, "no progress lines on stderr");

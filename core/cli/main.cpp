@@ -32,7 +32,9 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    // --help and --version end with 0; any other parse error is bad input, exit 2 as documented
+    // (CLI11's own codes, e.g. 105 for a failed check, named no contract).
+    return app.exit(e) == 0 ? 0 : 2;
   } catch (const std::exception& e) {
     std::cerr << "collido: " << e.what() << "\n";
     return 2;

@@ -588,6 +588,12 @@ TEST(StudyCli, BadArgumentsAreRefused) {
   EXPECT_NE(no_scene.err.find(dir + "/none.json"), std::string::npos) << no_scene.err;
   for (const char* folder : {"/s", "/u", "/n"})
     EXPECT_FALSE(fs::exists(dir + folder)) << folder;
+
+  // An oracle store that is a file, not a folder, is refused before anything runs, as every
+  // option that fails its check is (exit 2, the option named).
+  const CommandRun file_store = collido({"run", scene, "--oracle-cache", scene}, dir);
+  EXPECT_EQ(file_store.exit_code, 2) << describe(file_store);
+  EXPECT_NE(file_store.err.find("--oracle-cache"), std::string::npos) << file_store.err;
 }
 
 // The allocation hooks are preloaded into every worker: build memory is measured by them, also
