@@ -11,8 +11,8 @@
 //      error and the comparisons by the bound on their rounding: separated -> drop the pair;
 //   2. both leaves -> for every triangle pair whose axis-aligned bounds in A's frame overlap
 //      (B's widened by its corners' error radii), run the certified filter on the mapped
-//      corners (each with its error radius); when the filter cannot be sure, decide exactly on
-//      the world coordinates; record hits;
+//      corners (each with its error radius); when the filter cannot be sure, try a separating
+//      edge in projection, then decide exactly on the world coordinates; record hits;
 //   3. otherwise split the node that is not a leaf, or of two inner nodes the larger one (by the
 //      sum of its half extents), and push both child pairs.
 // A B node meets many A nodes, so its box (and a B triangle its corners) is mapped into A's
@@ -378,6 +378,8 @@ class Descent {
     const UncertainPoint* q = tb.corners;
     if (std::optional<bool> hit = trianglesIntersectCertified(p[0], p[1], p[2], q[0], q[1], q[2]))
       return *hit;
+    // Coplanar or parallel to within the mapping error, but side by side: no exact test needed.
+    if (detail::projectionsSeparate(ta, tb)) return false;
     ++result.exact_fallbacks;
     const Eigen::Matrix3Xd& vertices_b = b_.vertices();
     const Eigen::Matrix3Xi& triangles_b = b_.orderedTriangles();

@@ -15,6 +15,7 @@
 #include <collido/oracle/triangle_test.h>
 
 #include "expansion.h"
+#include "tracked_double_double.h"
 
 namespace collido::obbtree {
 namespace detail {
@@ -135,6 +136,98 @@ class ExpansionWorldKernel {
   bool overflowed_ = false;
 };
 
+// World coordinates to about 106 bits, each sign certified or left undecided (then the kernel
+// is unsure and the pair goes on to the expansions): the cheap stage that settles poses whose
+// faces are parallel or coplanar only to within rounding (a solver's "upright" rotation with
+// 1e-18 off the diagonal, gears whose axes are parallel to 1e-19).
+using Tracked = TrackedDoubleDouble;
+struct TrackedPoint {
+  std::array<Tracked, 3> x;
+};
+
+class TrackedWorldKernel {
+ public:
+  using Point = TrackedPoint;
+
+  bool unsure() const { return unsure_; }
+
+  // det(b - a, c - a, d - a) = ((b - a) x (c - a)) . (d - a). The triangle test asks for the
+  // corners of one triangle against the other's plane (a, b, c) in a row: the last plane's
+  // normal is kept, keyed by the corners' values.
+  int orient3d(const Point& a, const Point& b, const Point& c, const Point& d) {
+    if (!same(a, plane_[0]) || !same(b, plane_[1]) || !same(c, plane_[2]) || !has_plane_) {
+      plane_[0] = a;
+      plane_[1] = b;
+      plane_[2] = c;
+      has_plane_ = true;
+      Tracked u[3];
+      Tracked v[3];
+      for (int k = 0; k < 3; ++k) {
+        u[k] = b.x[k] - a.x[k];
+        v[k] = c.x[k] - a.x[k];
+      }
+      for (int k = 0; k < 3; ++k) {
+        const int i = (k + 1) % 3;
+        const int j = (k + 2) % 3;
+        normal_[k] = u[i] * v[j] - u[j] * v[i];
+      }
+    }
+    Tracked det;
+    for (int k = 0; k < 3; ++k)
+      det = det + normal_[k] * (d.x[k] - a.x[k]);
+    return signOf(det);
+  }
+
+  int orient2d(const Point& a, const Point& b, const Point& c, int drop) {
+    const int i = exact::keptFirst(drop);
+    const int j = exact::keptSecond(drop);
+    return signOf((b.x[i] - a.x[i]) * (c.x[j] - a.x[j]) - (b.x[j] - a.x[j]) * (c.x[i] - a.x[i]));
+  }
+
+  bool collinear(const Point& a, const Point& b, const Point& c) {
+    for (int drop = 0; drop < 3; ++drop) {
+      if (orient2d(a, b, c, drop) != 0) return false;
+    }
+    return true;
+  }
+
+  int compare(const Point& a, const Point& b, int k) { return signOf(a.x[k] - b.x[k]); }
+
+ private:
+  int signOf(const Tracked& value) {
+    const int sign = value.certainSign();
+    if (sign != Tracked::kUnsure) return sign;
+    unsure_ = true;
+    return 0;
+  }
+
+  static bool same(const Point& p, const Point& q) {
+    for (int k = 0; k < 3; ++k) {
+      const Tracked& x = p.x[k];
+      const Tracked& y = q.x[k];
+      if (x.hi != y.hi || x.lo != y.lo || x.radius != y.radius) return false;
+    }
+    return true;
+  }
+
+  bool unsure_ = false;
+  bool has_plane_ = false;
+  Point plane_[3];
+  Tracked normal_[3];
+};
+
+TrackedPoint placeTracked(const Eigen::Vector3d& v, const Eigen::Isometry3d& pose) {
+  const Eigen::Matrix3d& r = pose.linear();
+  const Eigen::Vector3d& t = pose.translation();
+  TrackedPoint p;
+  for (int row = 0; row < 3; ++row) {
+    p.x[row] = ((Tracked::exactly(t[row]) + Tracked::product(r(row, 0), v.x())) +
+                Tracked::product(r(row, 1), v.y())) +
+               Tracked::product(r(row, 2), v.z());
+  }
+  return p;
+}
+
 bool inRange(const Eigen::Vector3d* corners, const Eigen::Isometry3d& pose) {
   for (int k = 0; k < 3; ++k) {
     for (int c = 0; c < 3; ++c) {
@@ -165,6 +258,19 @@ ExpansionPoint placeExpansion(const Eigen::Vector3d& v, const Eigen::Isometry3d&
 
 }  // namespace
 
+std::optional<bool> posedTrianglesIntersectByTrackedDoubles(const Eigen::Vector3d* a,
+                                                            const Eigen::Isometry3d& pose_a,
+                                                            const Eigen::Vector3d* b,
+                                                            const Eigen::Isometry3d& pose_b) {
+  if (!inRange(a, pose_a) || !inRange(b, pose_b)) return std::nullopt;
+  TrackedWorldKernel kernel;
+  const bool answer = exact::TriangleTest<TrackedWorldKernel>(kernel).intersect(
+      placeTracked(a[0], pose_a), placeTracked(a[1], pose_a), placeTracked(a[2], pose_a),
+      placeTracked(b[0], pose_b), placeTracked(b[1], pose_b), placeTracked(b[2], pose_b));
+  if (kernel.unsure()) return std::nullopt;
+  return answer;
+}
+
 std::optional<bool> posedTrianglesIntersectByExpansions(const Eigen::Vector3d* a,
                                                         const Eigen::Isometry3d& pose_a,
                                                         const Eigen::Vector3d* b,
@@ -190,6 +296,9 @@ bool posedTrianglesIntersectByRationals(const Eigen::Vector3d* a, const Eigen::I
 
 bool posedTrianglesIntersect(const Eigen::Vector3d* a, const Eigen::Isometry3d& pose_a,
                              const Eigen::Vector3d* b, const Eigen::Isometry3d& pose_b) {
+  if (std::optional<bool> answer =
+          detail::posedTrianglesIntersectByTrackedDoubles(a, pose_a, b, pose_b))
+    return *answer;
   if (std::optional<bool> answer =
           detail::posedTrianglesIntersectByExpansions(a, pose_a, b, pose_b))
     return *answer;

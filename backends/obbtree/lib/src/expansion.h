@@ -95,14 +95,76 @@ class Expansion {
     if (q != 0.0) push(q);
   }
 
-  /// Adds f exactly (f's components grown in one at a time, then the result compressed);
-  /// subtracts it with `subtract`.
+  /// Adds f exactly, subtracts it with `subtract`, and compresses the result (repeated sums
+  /// leave many small components, and every later product pays for each).
   template <int OtherCapacity>
   void add(const Expansion<OtherCapacity>& f, bool subtract = false) {
-    overflowed_ = overflowed_ || f.overflowed();
-    for (int j = 0; j < f.size(); ++j)
-      add(subtract ? -f.component(j) : f.component(j));
+    Expansion sum;
+    sumInto(*this, f, subtract, sum);
+    assign(sum);
     compress();
+  }
+
+  /// e + f (e - f with `subtract`) exactly, into `result`: Shewchuk's FAST-EXPANSION-SUM with
+  /// zero elimination, a merge of the two by magnitude and one pass of TwoSums, so linear in
+  /// their sizes. Both must be strongly non-overlapping, as every expansion built here is
+  /// (round-to-nearest-even keeps the property through every operation of this class).
+  template <int CapacityE, int CapacityF, int ResultCapacity>
+  static void sumInto(const Expansion<CapacityE>& e, const Expansion<CapacityF>& f, bool subtract,
+                      Expansion<ResultCapacity>& result) {
+    result.size_ = 0;
+    result.overflowed_ = e.overflowed_ || f.overflowed_;
+    const double sign = subtract ? -1.0 : 1.0;
+    const int e_size = e.size_;
+    const int f_size = f.size_;
+    if (f_size == 0) {
+      for (int i = 0; i < e_size; ++i)
+        result.push(e.components_[i]);
+      return;
+    }
+    if (e_size == 0) {
+      for (int i = 0; i < f_size; ++i)
+        result.push(sign * f.components_[i]);
+      return;
+    }
+    int i = 0;
+    int j = 0;
+    double e_now = e.components_[0];
+    double f_now = sign * f.components_[0];
+    // The smaller in magnitude of the two next components, and advance past it.
+    const auto take = [&]() {
+      double taken = 0.0;
+      if ((f_now > e_now) == (f_now > -e_now)) {
+        taken = e_now;
+        if (++i < e_size) e_now = e.components_[i];
+      } else {
+        taken = f_now;
+        if (++j < f_size) f_now = sign * f.components_[j];
+      }
+      return taken;
+    };
+    double q = take();
+    if (i < e_size && j < f_size) {
+      double error = 0.0;
+      q = fastTwoSum(take(), q, error);
+      if (error != 0.0) result.push(error);
+    }
+    while (i < e_size && j < f_size) {
+      double error = 0.0;
+      q = twoSum(q, take(), error);
+      if (error != 0.0) result.push(error);
+    }
+    for (; i < e_size; ++i) {
+      double error = 0.0;
+      q = twoSum(q, e.components_[i], error);
+      if (error != 0.0) result.push(error);
+    }
+    for (; j < f_size; ++j) {
+      double error = 0.0;
+      q = twoSum(q, sign * f.components_[j], error);
+      if (error != 0.0) result.push(error);
+    }
+    if (q != 0.0) result.push(q);
   }
 
   /// this * b exactly: Shewchuk's SCALE-EXPANSION with zero elimination.
@@ -126,16 +188,24 @@ class Expansion {
     if (q != 0.0) result.push(q);
   }
 
-  /// this * f exactly, into `result`: the sum over f's components of this scaled by each.
+  /// this * f exactly, into `result`: the sum over the shorter factor's components of the
+  /// longer scaled by each, summed by merges and compressed.
   template <int OtherCapacity, int ResultCapacity>
   void multiplyInto(const Expansion<OtherCapacity>& f, Expansion<ResultCapacity>& result) const {
+    if (f.size() > size_) {
+      f.multiplyInto(*this, result);
+      return;
+    }
     result.size_ = 0;
     result.overflowed_ = overflowed_ || f.overflowed();
     Expansion<2 * Capacity> scaled;
+    Expansion<ResultCapacity> partial;
     for (int j = 0; j < f.size(); ++j) {
       scaleInto(f.component(j), scaled);
-      result.add(scaled);
+      sumInto(result, scaled, /*subtract=*/false, partial);
+      result.assign(partial);
     }
+    result.compress();
   }
 
  private:

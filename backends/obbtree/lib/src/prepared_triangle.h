@@ -83,4 +83,34 @@ inline bool planeSeparates(const PreparedTriangle& t, const PreparedTriangle& ot
   return certainSide(t, other.corners[1]) == s0 && certainSide(t, other.corners[2]) == s0;
 }
 
+// Whether, seen along coordinate axis `drop`, an edge of `t` has t's third corner certainly on
+// one side and every corner of `other` certainly strictly on the other: then the projections
+// are apart, and so are the triangles (a common point would project into both). Settles pairs
+// whose faces are coplanar, or parallel, to within the mapping error but lie side by side
+// (neighbouring faces of a stack, gear faces at backlash), which the plane tests cannot.
+inline bool projectedEdgeSeparates(const PreparedTriangle& t, const PreparedTriangle& other,
+                                   int drop, FilteredKernel& kernel) {
+  const UncertainPoint* c = t.corners;
+  for (int k = 0; k < 3; ++k) {
+    const UncertainPoint& from = c[k];
+    const UncertainPoint& to = c[(k + 1) % 3];
+    const int inside = kernel.orient2d(from, to, c[(k + 2) % 3], drop);
+    if (inside == 0) continue;
+    bool apart = true;
+    for (int m = 0; m < 3 && apart; ++m)
+      apart = kernel.orient2d(from, to, other.corners[m], drop) == -inside;
+    if (apart) return true;
+  }
+  return false;
+}
+
+// Whether the two triangles' projections along the axis nearest a's normal are certainly apart
+// (an edge of either separates them). Signs the filter is unsure of count as not separating.
+inline bool projectionsSeparate(const PreparedTriangle& a, const PreparedTriangle& b) {
+  const Eigen::Vector3d n = a.normal.cwiseAbs();
+  const int drop = n.x() >= n.y() ? (n.x() >= n.z() ? 0 : 2) : (n.y() >= n.z() ? 1 : 2);
+  FilteredKernel kernel;  // its unsure flag is not read: an unsure sign is 0 and never separates
+  return projectedEdgeSeparates(a, b, drop, kernel) || projectedEdgeSeparates(b, a, drop, kernel);
+}
+
 }  // namespace collido::obbtree::detail

@@ -187,10 +187,12 @@ struct TreePair {
   ObbTree compact;
 };
 
-TreePair treesOf(const TriangleMesh& mesh) {
-  BuildOptions compact;
+TreePair treesOf(const TriangleMesh& mesh, std::int32_t max_leaf_triangles = 1) {
+  BuildOptions plain;
+  plain.max_leaf_triangles = max_leaf_triangles;
+  BuildOptions compact = plain;
   compact.float_boxes = true;
-  return {ObbTree::build(mesh.vertices, mesh.triangles, {}),
+  return {ObbTree::build(mesh.vertices, mesh.triangles, plain),
           ObbTree::build(mesh.vertices, mesh.triangles, compact)};
 }
 
@@ -315,6 +317,53 @@ TEST(ExactCollide, UlpGapsUnderRandomRotations) {
   }
   EXPECT_GT(hits, 0);
   EXPECT_GT(misses, 0);
+}
+
+// A rotation a solver leaves "upright": a turn about z with off-diagonal entries of 1e-18 where
+// exact arithmetic would have zeros (stacked_parts and gears_at_backlash after their constraints).
+Eigen::Matrix3d nearlyUpright(double angle) {
+  Eigen::Matrix3d r = Eigen::AngleAxisd(angle, Vector3d::UnitZ()).toRotationMatrix();
+  r(0, 2) = 2.6e-18;
+  r(1, 2) = -1.3e-18;
+  r(2, 0) = -2.3e-18;
+  r(2, 1) = 4.4e-19;
+  return r;
+}
+
+// Faces in the plane z = 0 to within 1e-18, as after a solver: A is a right triangle and a
+// sliver beside it (so A's box is the unit square), B one triangle inside that square, side by
+// side with A's long edge (apart, their bounds overlapping) or with a corner on it (touching, or
+// missing by the tilt: the oracle says). The filter cannot tell the planes apart; the
+// side-by-side pair is settled by A's edge separating them in projection, the other by the
+// double-double stage.
+TEST(ExactCollide, NearlyCoplanarFacesSideBySideOrCornerOnEdge) {
+  TriangleMesh mesh_a;
+  mesh_a.vertices.resize(3, 6);
+  mesh_a.vertices << 0, 1, 0, 1, 1, 0.9,  //
+      0, 0, 1, 0, 1, 1,                   //
+      0, 0, 0, 0, 0, 0;
+  mesh_a.triangles.resize(3, 2);
+  mesh_a.triangles << 0, 3, 1, 4, 2, 5;
+  const TreePair trees_a = treesOf(mesh_a, /*max_leaf_triangles=*/2);  // one box: the square
+  const Pose pose_a = makePose(Eigen::Matrix3d::Identity(), Vector3d::Zero());
+  for (const double corner : {0.55, 0.5}) {
+    TriangleMesh mesh_b;
+    mesh_b.vertices.resize(3, 3);
+    mesh_b.vertices << corner, 0.8, 0.6, corner, 0.6, 0.8, 0, 0, 0;
+    mesh_b.triangles.resize(3, 1);
+    mesh_b.triangles << 0, 1, 2;
+    const TreePair trees_b = treesOf(mesh_b);
+    const Pose pose_b = makePose(nearlyUpright(0.0), Vector3d(0, 0, 9.3e-35));
+    const std::string label = "corner at " + std::to_string(corner);
+    checkAllBoxKinds(mesh_a, trees_a, pose_a, mesh_b, trees_b, pose_b, label);
+    CollideResult result;
+    collide(trees_a.plain, pose_a, trees_b.plain, pose_b, CollideRequest{}, result);
+    if (corner > 0.5) {
+      EXPECT_TRUE(result.pairs.empty()) << label;
+      EXPECT_EQ(result.triangle_tests, 1u) << label;
+      EXPECT_EQ(result.exact_fallbacks, 0u) << label;
+    }
+  }
 }
 
 }  // namespace
