@@ -23,6 +23,7 @@
 #include <collido/obbtree/separating_axis.h>
 #include <collido/obbtree/triangle_intersection.h>
 
+#include "exact_world.h"
 #include "parallel_for.h"
 #include "prepared_triangle.h"
 #include "query_bounds.h"
@@ -166,6 +167,12 @@ struct QueryScratch {
   // Triangles by position in their tree's leaf order: A's as stored, B's mapped into A's frame.
   std::vector<Stamped<detail::PreparedTriangle>> triangles_a;
   std::vector<Stamped<detail::PreparedTriangle>> triangles_b;
+  // Triangles placed in world coordinates for the exact fallback, made only for the few that
+  // reach it: per triangle position a slot (the query's epoch << 32 | index into
+  // world_triangles), sized at the first fallback.
+  std::vector<std::uint64_t> world_slots_a;
+  std::vector<std::uint64_t> world_slots_b;
+  std::vector<detail::WorldTriangle> world_triangles;
   std::vector<PairTask> stack;
 
   void begin(std::size_t nodes_a, std::size_t nodes_b, std::size_t triangle_count_a,
@@ -175,8 +182,11 @@ struct QueryScratch {
       clearStamps(boxes_a);
       clearStamps(triangles_a);
       clearStamps(triangles_b);
+      std::fill(world_slots_a.begin(), world_slots_a.end(), 0);
+      std::fill(world_slots_b.begin(), world_slots_b.end(), 0);
       epoch = 1;
     }
+    world_triangles.clear();
     if (boxes_b.size() < nodes_b) boxes_b.resize(nodes_b);
     if (decode_a && boxes_a.size() < nodes_a) boxes_a.resize(nodes_a);
     if (triangles_a.size() < triangle_count_a) triangles_a.resize(triangle_count_a);
@@ -189,6 +199,8 @@ struct QueryScratch {
            boxes_a.capacity() * sizeof(Stamped<OrientedBox>) +
            (triangles_a.capacity() + triangles_b.capacity()) *
                sizeof(Stamped<detail::PreparedTriangle>) +
+           (world_slots_a.capacity() + world_slots_b.capacity()) * sizeof(std::uint64_t) +
+           world_triangles.capacity() * sizeof(detail::WorldTriangle) +
            stack.capacity() * sizeof(PairTask);
   }
 
@@ -264,6 +276,21 @@ const detail::PreparedTriangle& preparedTriangleOfB(const ObbTree& b, std::int32
                        t.corners[c] = placement.map(b.vertices().col(b.orderedTriangles()(c, j)));
                      detail::prepareTriangle(t);
                    });
+}
+
+// The index in scratch.world_triangles of the triangle at position k of a tree's leaf order
+// (`slots`: that tree's slots, `count` its triangles), placed by `place` unless this query did.
+template <typename Place>
+std::size_t worldTriangleIndex(QueryScratch& scratch, std::vector<std::uint64_t>& slots,
+                               std::size_t count, std::int32_t k, Place&& place) {
+  if (slots.size() < count) slots.resize(count, 0);
+  std::uint64_t& slot = slots[static_cast<std::size_t>(k)];
+  if ((slot >> 32) != scratch.epoch) {
+    slot = (static_cast<std::uint64_t>(scratch.epoch) << 32) | scratch.world_triangles.size();
+    scratch.world_triangles.emplace_back();
+    place(scratch.world_triangles.back());
+  }
+  return static_cast<std::size_t>(slot & 0xffffffffu);
 }
 
 // The simultaneous descent over one pair of node arrays, from any node pair.
@@ -358,7 +385,7 @@ class Descent {
           continue;
         }
         ++result.triangle_tests;
-        if (!trianglesMeet(ta, tb, j, result)) continue;
+        if (!trianglesMeet(ta, i, tb, j, result)) continue;
         // Truncated means a pair beyond the limit exists, not merely that the limit was met.
         if (request_.max_pairs != 0 && result.pairs.size() >= request_.max_pairs) {
           result.truncated = true;
@@ -372,8 +399,8 @@ class Descent {
   }
 
   // The certified filter, and where it is unsure the exact test on the world coordinates.
-  bool trianglesMeet(const detail::PreparedTriangle& ta, const detail::PreparedTriangle& tb,
-                     std::int32_t j, CollideResult& result) {
+  bool trianglesMeet(const detail::PreparedTriangle& ta, std::int32_t i,
+                     const detail::PreparedTriangle& tb, std::int32_t j, CollideResult& result) {
     const UncertainPoint* p = ta.corners;
     const UncertainPoint* q = tb.corners;
     if (std::optional<bool> hit = trianglesIntersectCertified(p[0], p[1], p[2], q[0], q[1], q[2]))
@@ -381,13 +408,30 @@ class Descent {
     // Coplanar or parallel to within the mapping error, but side by side: no exact test needed.
     if (detail::projectionsSeparate(ta, tb)) return false;
     ++result.exact_fallbacks;
-    const Eigen::Matrix3Xd& vertices_b = b_.vertices();
-    const Eigen::Matrix3Xi& triangles_b = b_.orderedTriangles();
     const Eigen::Vector3d corners_a[3] = {p[0].p, p[1].p, p[2].p};
-    const Eigen::Vector3d corners_b[3] = {vertices_b.col(triangles_b(0, j)),
-                                          vertices_b.col(triangles_b(1, j)),
-                                          vertices_b.col(triangles_b(2, j))};
-    return posedTrianglesIntersect(corners_a, placement_.pose_a, corners_b, placement_.pose_b);
+    const Eigen::Vector3d corners_b[3] = {cornerOfB(j, 0), cornerOfB(j, 1), cornerOfB(j, 2)};
+    if (pose_in_range_ < 0) {
+      pose_in_range_ = detail::poseInExpansionRange(placement_.pose_a) &&
+                       detail::poseInExpansionRange(placement_.pose_b);
+    }
+    const std::size_t world_a = worldTriangleIndex(
+        scratch_, scratch_.world_slots_a, a_.triangleCount(), i, [&](detail::WorldTriangle& w) {
+          detail::placeWorldTriangle(corners_a, placement_.pose_a, pose_in_range_ == 1, w);
+        });
+    const std::size_t world_b = worldTriangleIndex(
+        scratch_, scratch_.world_slots_b, b_.triangleCount(), j, [&](detail::WorldTriangle& w) {
+          detail::placeWorldTriangle(corners_b, placement_.pose_b, pose_in_range_ == 1, w);
+        });
+    if (std::optional<bool> hit = detail::worldTrianglesIntersectByTrackedDoubles(
+            scratch_.world_triangles[world_a], scratch_.world_triangles[world_b]))
+      return *hit;
+    return detail::posedTrianglesIntersectByExpansionsOrRationals(corners_a, placement_.pose_a,
+                                                                  corners_b, placement_.pose_b);
+  }
+
+  // Corner c of B's triangle at position j of its leaf order, in B's model frame.
+  Eigen::Vector3d cornerOfB(std::int32_t j, int c) const {
+    return b_.vertices().col(b_.orderedTriangles()(c, j));
   }
 
   const ObbTree& a_;
@@ -397,6 +441,7 @@ class Descent {
   const Placement& placement_;
   const CollideRequest& request_;
   QueryScratch& scratch_;
+  int pose_in_range_ = -1;  // both poses in the expansions' range: 1 or 0, -1 not yet checked
 };
 
 // Node pairs to hand out to threads: at least `wanted`, taken breadth-first from the roots in

@@ -141,9 +141,6 @@ class ExpansionWorldKernel {
 // faces are parallel or coplanar only to within rounding (a solver's "upright" rotation with
 // 1e-18 off the diagonal, gears whose axes are parallel to 1e-19).
 using Tracked = TrackedDoubleDouble;
-struct TrackedPoint {
-  std::array<Tracked, 3> x;
-};
 
 class TrackedWorldKernel {
  public:
@@ -228,19 +225,17 @@ TrackedPoint placeTracked(const Eigen::Vector3d& v, const Eigen::Isometry3d& pos
   return p;
 }
 
-bool inRange(const Eigen::Vector3d* corners, const Eigen::Isometry3d& pose) {
+bool cornersInRange(const Eigen::Vector3d* corners) {
   for (int k = 0; k < 3; ++k) {
     for (int c = 0; c < 3; ++c) {
       if (!inExpansionRange(corners[c][k])) return false;
     }
   }
-  const Eigen::Matrix4d& m = pose.matrix();
-  for (int row = 0; row < 3; ++row) {
-    for (int column = 0; column < 4; ++column) {
-      if (!inExpansionRange(m(row, column))) return false;
-    }
-  }
   return true;
+}
+
+bool inRange(const Eigen::Vector3d* corners, const Eigen::Isometry3d& pose) {
+  return cornersInRange(corners) && poseInExpansionRange(pose);
 }
 
 ExpansionPoint placeExpansion(const Eigen::Vector3d& v, const Eigen::Isometry3d& pose) {
@@ -258,17 +253,43 @@ ExpansionPoint placeExpansion(const Eigen::Vector3d& v, const Eigen::Isometry3d&
 
 }  // namespace
 
+bool poseInExpansionRange(const Eigen::Isometry3d& pose) {
+  const Eigen::Matrix4d& m = pose.matrix();
+  for (int row = 0; row < 3; ++row) {
+    for (int column = 0; column < 4; ++column) {
+      if (!inExpansionRange(m(row, column))) return false;
+    }
+  }
+  return true;
+}
+
+void placeWorldTriangle(const Eigen::Vector3d* corners, const Eigen::Isometry3d& pose,
+                        bool pose_in_range, WorldTriangle& out) {
+  out.in_range = pose_in_range && cornersInRange(corners);
+  if (!out.in_range) return;
+  for (int c = 0; c < 3; ++c)
+    out.corners[c] = placeTracked(corners[c], pose);
+}
+
+std::optional<bool> worldTrianglesIntersectByTrackedDoubles(const WorldTriangle& a,
+                                                            const WorldTriangle& b) {
+  if (!a.in_range || !b.in_range) return std::nullopt;
+  TrackedWorldKernel kernel;
+  const bool answer = exact::TriangleTest<TrackedWorldKernel>(kernel).intersect(
+      a.corners[0], a.corners[1], a.corners[2], b.corners[0], b.corners[1], b.corners[2]);
+  if (kernel.unsure()) return std::nullopt;
+  return answer;
+}
+
 std::optional<bool> posedTrianglesIntersectByTrackedDoubles(const Eigen::Vector3d* a,
                                                             const Eigen::Isometry3d& pose_a,
                                                             const Eigen::Vector3d* b,
                                                             const Eigen::Isometry3d& pose_b) {
-  if (!inRange(a, pose_a) || !inRange(b, pose_b)) return std::nullopt;
-  TrackedWorldKernel kernel;
-  const bool answer = exact::TriangleTest<TrackedWorldKernel>(kernel).intersect(
-      placeTracked(a[0], pose_a), placeTracked(a[1], pose_a), placeTracked(a[2], pose_a),
-      placeTracked(b[0], pose_b), placeTracked(b[1], pose_b), placeTracked(b[2], pose_b));
-  if (kernel.unsure()) return std::nullopt;
-  return answer;
+  WorldTriangle placed_a;
+  WorldTriangle placed_b;
+  placeWorldTriangle(a, pose_a, poseInExpansionRange(pose_a), placed_a);
+  placeWorldTriangle(b, pose_b, poseInExpansionRange(pose_b), placed_b);
+  return worldTrianglesIntersectByTrackedDoubles(placed_a, placed_b);
 }
 
 std::optional<bool> posedTrianglesIntersectByExpansions(const Eigen::Vector3d* a,
@@ -292,6 +313,15 @@ bool posedTrianglesIntersectByRationals(const Eigen::Vector3d* a, const Eigen::I
       placeRational(b[0], pose_b), placeRational(b[1], pose_b), placeRational(b[2], pose_b));
 }
 
+bool posedTrianglesIntersectByExpansionsOrRationals(const Eigen::Vector3d* a,
+                                                    const Eigen::Isometry3d& pose_a,
+                                                    const Eigen::Vector3d* b,
+                                                    const Eigen::Isometry3d& pose_b) {
+  if (std::optional<bool> answer = posedTrianglesIntersectByExpansions(a, pose_a, b, pose_b))
+    return *answer;
+  return posedTrianglesIntersectByRationals(a, pose_a, b, pose_b);
+}
+
 }  // namespace detail
 
 bool posedTrianglesIntersect(const Eigen::Vector3d* a, const Eigen::Isometry3d& pose_a,
@@ -299,10 +329,7 @@ bool posedTrianglesIntersect(const Eigen::Vector3d* a, const Eigen::Isometry3d& 
   if (std::optional<bool> answer =
           detail::posedTrianglesIntersectByTrackedDoubles(a, pose_a, b, pose_b))
     return *answer;
-  if (std::optional<bool> answer =
-          detail::posedTrianglesIntersectByExpansions(a, pose_a, b, pose_b))
-    return *answer;
-  return detail::posedTrianglesIntersectByRationals(a, pose_a, b, pose_b);
+  return detail::posedTrianglesIntersectByExpansionsOrRationals(a, pose_a, b, pose_b);
 }
 
 }  // namespace collido::obbtree

@@ -116,4 +116,9 @@ inline TrackedDoubleDouble operator*(const TrackedDoubleDouble& x, const Tracked
   return z;
 }
 
+/// A point of world coordinates, each a tracked double-double.
+struct TrackedPoint {
+  TrackedDoubleDouble x[3];
+};
+
 }  // namespace collido::obbtree::detail
