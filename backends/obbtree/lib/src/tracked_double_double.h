@@ -6,14 +6,15 @@
 // certified when every step that led to it was exact (a face of a mesh placed by the identity
 // or a quarter turn). Branch-free and of fixed length: no zero elimination, no merges.
 //
-// Sums follow AccurateDWPlusDW and products DWTimesDW3 (with a fused multiply-add) of Joldes,
-// Muller and Popescu (ACM TOMS 2017), with TwoSum wherever they use FastTwoSum. The radii do not
-// rest on that paper's bounds: each algorithm is a few error-free transformations (TwoSum,
-// TwoProduct) and a few rounded operations, and the radius adds what the rounded ones can lose.
-//  - A sum: the errors of its two rounded additions, recovered exactly by TwoSum.
-//  - A product: u |r| for each rounded result r (u = 2^-53), plus 2^-1070 for subnormal results
-//    and for a TwoProduct whose error term could underflow.
-//  - Input radii: |X Y - x y| <= |x| r_y + |y| r_x + r_x r_y, and radii add under sums.
+// Sums follow AccurateDWPlusDW of Joldes, Muller and Popescu (ACM TOMS 2017), with TwoSum
+// wherever it uses FastTwoSum; products sum the four partial products of the two parts, each
+// exactly by TwoProduct, by TwoSums. Every rounding error is either kept or recovered exactly,
+// so the radius adds exactly what the result leaves out:
+//  - a sum: the errors of its two rounded additions (about u^2 |x + y|, u = 2^-53);
+//  - a product: the terms of about u^3 |x y| left out, plus 2^-1070 where a TwoProduct's error
+//    term could underflow;
+//  - input radii: |X Y - x y| <= |x| r_y + |y| r_x + r_x r_y, and radii add under sums.
+// So a result is exact (radius 0) whenever it fits in a double-double and its inputs were exact.
 // The radius itself is summed in double, positive terms only, and widened by (1 + 16u) for its
 // own rounding. Callers keep inputs in inExpansionRange(), far from overflow.
 #pragma once
@@ -58,6 +59,18 @@ constexpr double kFloor = 0x1p-1070;
 // Below this, the error term of a TwoProduct may be subnormal and rounded.
 constexpr double kProductSafe = 0x1p-960;
 
+/// p = fl(a b) and error = a b - p, exact unless the error term underflows (mayUnderflow).
+inline double twoProduct(double a, double b, double& error) {
+  const double p = a * b;
+  error = std::fma(a, b, -p);
+  return p;
+}
+
+// Whether the TwoProduct p of a and b might have lost its error term to underflow.
+inline bool mayUnderflow(double p, double a, double b) {
+  return std::abs(p) < kProductSafe && a != 0.0 && b != 0.0;
+}
+
 // `rounding` and the propagated radii, or exactly 0 when both are.
 inline double radiusOf(double propagated, double rounding, bool exact) {
   return exact ? 0.0 : (propagated + rounding + kFloor) * kWiden;
@@ -94,25 +107,42 @@ inline TrackedDoubleDouble operator-(const TrackedDoubleDouble& x, const Tracked
 
 inline TrackedDoubleDouble operator*(const TrackedDoubleDouble& x, const TrackedDoubleDouble& y) {
   using namespace tracked_detail;
-  const double ch = x.hi * y.hi;
-  const double cl1 = std::fma(x.hi, y.hi, -ch);  // exact unless |ch| < kProductSafe
-  const double tl0 = x.lo * y.lo;
-  const double tl1 = std::fma(x.hi, y.lo, tl0);
-  const double cl2 = std::fma(x.lo, y.hi, tl1);
-  double cl3_error = 0.0;
-  const double cl3 = twoSum(cl1, cl2, cl3_error);
+  // The four partial products, each exactly as a TwoProduct (p + e) unless it could underflow.
+  double e1 = 0.0;
+  double e2 = 0.0;
+  double e3 = 0.0;
+  double e4 = 0.0;
+  const double p1 = twoProduct(x.hi, y.hi, e1);  // ~ |x y|
+  const double p2 = twoProduct(x.hi, y.lo, e2);  // ~ u |x y|
+  const double p3 = twoProduct(x.lo, y.hi, e3);
+  const double p4 = twoProduct(x.lo, y.lo, e4);  // ~ u^2 |x y|
+  const bool underflow = mayUnderflow(p1, x.hi, y.hi) || mayUnderflow(p2, x.hi, y.lo) ||
+                         mayUnderflow(p3, x.lo, y.hi) || mayUnderflow(p4, x.lo, y.lo);
+  // The u-sized terms, then the u^2-sized ones, each sum by TwoSum; what is left out of the
+  // result (d3 .. d6, e4 and dm, all u^3-sized) is summed into the radius.
+  double d1 = 0.0;
+  double d2 = 0.0;
+  double d3 = 0.0;
+  double d4 = 0.0;
+  double d5 = 0.0;
+  double d6 = 0.0;
+  double dm = 0.0;
+  const double s1 = twoSum(p2, p3, d1);
+  const double middle = twoSum(s1, e1, d2);
+  const double s3 = twoSum(d1, d2, d3);
+  const double s4 = twoSum(s3, e2, d4);
+  const double s5 = twoSum(s4, e3, d5);
+  const double lower = twoSum(s5, p4, d6);
+  const double m = twoSum(middle, lower, dm);
   TrackedDoubleDouble z;
-  z.hi = twoSum(ch, cl3, z.lo);
-  // Exact when a factor is zero, or when both are doubles and TwoProduct was exact.
-  const bool zero_factor = x.hi == 0.0 || y.hi == 0.0;
-  const bool doubles = x.lo == 0.0 && y.lo == 0.0 && std::abs(ch) >= kProductSafe;
-  const bool exact = x.radius == 0.0 && y.radius == 0.0 && (zero_factor || doubles);
+  z.hi = twoSum(p1, m, z.lo);
+  const double dropped = std::abs(d3) + std::abs(d4) + std::abs(d5) + std::abs(d6) +
+                         std::abs(e4) + std::abs(dm) + (underflow ? kFloor : 0.0);
   // X Y - x y = x (Y - y) + y (X - x) + (X - x)(Y - y), with |x| <= (1 + u) |x.hi|.
   const double propagated = std::abs(x.hi) * (1.0 + kU) * y.radius +
                             std::abs(y.hi) * (1.0 + kU) * x.radius + x.radius * y.radius;
-  const double rounding = kU * (std::abs(tl0) + std::abs(tl1) + std::abs(cl2)) +
-                          std::abs(cl3_error) + (std::abs(ch) < kProductSafe ? kFloor : 0.0);
-  z.radius = radiusOf(propagated, rounding, exact);
+  const bool exact = x.radius == 0.0 && y.radius == 0.0 && dropped == 0.0;
+  z.radius = radiusOf(propagated, dropped, exact);
   return z;
 }
 
