@@ -90,6 +90,9 @@ struct Placement {
   Eigen::Vector3d translation;
   QueryBounds bounds;
   ExactRow exact_rows[3];
+  // det R_a certainly > 0 (a rotation, not a reflection): orientations in A's frame are the
+  // world's, so the exact fallback may take the filter's 3D signs.
+  bool rotation_a_positive = false;
 
   // B's vertex v mapped into A's frame, with its error radius per coordinate.
   UncertainPoint map(const Eigen::Vector3d& v) const {
@@ -110,6 +113,8 @@ Placement placementOf(const ObbTree& a, const Eigen::Isometry3d& pose_a, const O
                       const Eigen::Isometry3d& pose_b) {
   Placement placement{pose_a,        pose_b, Eigen::Matrix3d::Identity(), Eigen::Vector3d::Zero(),
                       QueryBounds{}, {}};
+  // Computed in double with an error far below 0.5 for any matrix near a rotation.
+  placement.rotation_a_positive = pose_a.linear().determinant() > 0.5;
   if (pose_a.matrix() == pose_b.matrix()) {
     // One pose for both: the relative map is exactly the identity.
     placement.bounds.axis_error = a.axisDefect() + b.axisDefect() + 32.0 * kEps;
@@ -167,12 +172,12 @@ struct QueryScratch {
   // Triangles by position in their tree's leaf order: A's as stored, B's mapped into A's frame.
   std::vector<Stamped<detail::PreparedTriangle>> triangles_a;
   std::vector<Stamped<detail::PreparedTriangle>> triangles_b;
-  // Triangles placed in world coordinates for the exact fallback, made only for the few that
-  // reach it: per triangle position a slot (the query's epoch << 32 | index into
-  // world_triangles), sized at the first fallback.
+  // World positions for the exact fallback, made only for the vertices of triangles that reach
+  // it: per vertex a slot (the query's epoch << 32 | index into world_points), sized at the
+  // first fallback.
   std::vector<std::uint64_t> world_slots_a;
   std::vector<std::uint64_t> world_slots_b;
-  std::vector<detail::WorldTriangle> world_triangles;
+  std::vector<detail::LazyWorldPoint> world_points;
   std::vector<PairTask> stack;
 
   void begin(std::size_t nodes_a, std::size_t nodes_b, std::size_t triangle_count_a,
@@ -186,7 +191,7 @@ struct QueryScratch {
       std::fill(world_slots_b.begin(), world_slots_b.end(), 0);
       epoch = 1;
     }
-    world_triangles.clear();
+    world_points.clear();
     if (boxes_b.size() < nodes_b) boxes_b.resize(nodes_b);
     if (decode_a && boxes_a.size() < nodes_a) boxes_a.resize(nodes_a);
     if (triangles_a.size() < triangle_count_a) triangles_a.resize(triangle_count_a);
@@ -200,7 +205,7 @@ struct QueryScratch {
            (triangles_a.capacity() + triangles_b.capacity()) *
                sizeof(Stamped<detail::PreparedTriangle>) +
            (world_slots_a.capacity() + world_slots_b.capacity()) * sizeof(std::uint64_t) +
-           world_triangles.capacity() * sizeof(detail::WorldTriangle) +
+           world_points.capacity() * sizeof(detail::LazyWorldPoint) +
            stack.capacity() * sizeof(PairTask);
   }
 
@@ -278,17 +283,16 @@ const detail::PreparedTriangle& preparedTriangleOfB(const ObbTree& b, std::int32
                    });
 }
 
-// The index in scratch.world_triangles of the triangle at position k of a tree's leaf order
-// (`slots`: that tree's slots, `count` its triangles), placed by `place` unless this query did.
-template <typename Place>
-std::size_t worldTriangleIndex(QueryScratch& scratch, std::vector<std::uint64_t>& slots,
-                               std::size_t count, std::int32_t k, Place&& place) {
+// The index in scratch.world_points of vertex v of a tree (`slots`: that tree's, `count` its
+// vertices), made unless this query made it already.
+std::size_t worldPointIndex(QueryScratch& scratch, std::vector<std::uint64_t>& slots,
+                            std::size_t count, int v, const Eigen::Vector3d& model,
+                            const Eigen::Isometry3d& pose, bool pose_in_range) {
   if (slots.size() < count) slots.resize(count, 0);
-  std::uint64_t& slot = slots[static_cast<std::size_t>(k)];
+  std::uint64_t& slot = slots[static_cast<std::size_t>(v)];
   if ((slot >> 32) != scratch.epoch) {
-    slot = (static_cast<std::uint64_t>(scratch.epoch) << 32) | scratch.world_triangles.size();
-    scratch.world_triangles.emplace_back();
-    place(scratch.world_triangles.back());
+    slot = (static_cast<std::uint64_t>(scratch.epoch) << 32) | scratch.world_points.size();
+    scratch.world_points.emplace_back(model, pose, pose_in_range);
   }
   return static_cast<std::size_t>(slot & 0xffffffffu);
 }
@@ -410,21 +414,28 @@ class Descent {
     ++result.exact_fallbacks;
     const Eigen::Vector3d corners_a[3] = {p[0].p, p[1].p, p[2].p};
     const Eigen::Vector3d corners_b[3] = {cornerOfB(j, 0), cornerOfB(j, 1), cornerOfB(j, 2)};
-    if (pose_in_range_ < 0) {
-      pose_in_range_ = detail::poseInExpansionRange(placement_.pose_a) &&
-                       detail::poseInExpansionRange(placement_.pose_b);
+    if (placement_.rotation_a_positive) {
+      if (pose_in_range_ < 0) {
+        pose_in_range_ = detail::poseInExpansionRange(placement_.pose_a) &&
+                         detail::poseInExpansionRange(placement_.pose_b);
+      }
+      // Indices first: making a point may move the others.
+      std::size_t index[6];
+      for (int c = 0; c < 3; ++c) {
+        index[c] = worldPointIndex(
+            scratch_, scratch_.world_slots_a, static_cast<std::size_t>(a_.vertices().cols()),
+            a_.orderedTriangles()(c, i), corners_a[c], placement_.pose_a, pose_in_range_ == 1);
+        index[3 + c] = worldPointIndex(
+            scratch_, scratch_.world_slots_b, static_cast<std::size_t>(b_.vertices().cols()),
+            b_.orderedTriangles()(c, j), corners_b[c], placement_.pose_b, pose_in_range_ == 1);
+      }
+      detail::LazyWorldPoint* world[6];
+      for (int k = 0; k < 6; ++k)
+        world[k] = &scratch_.world_points[index[k]];
+      if (std::optional<bool> hit =
+              detail::trianglesIntersectByFilterAndTrackedDoubles(p, world, q, world + 3))
+        return *hit;
     }
-    const std::size_t world_a = worldTriangleIndex(
-        scratch_, scratch_.world_slots_a, a_.triangleCount(), i, [&](detail::WorldTriangle& w) {
-          detail::placeWorldTriangle(corners_a, placement_.pose_a, pose_in_range_ == 1, w);
-        });
-    const std::size_t world_b = worldTriangleIndex(
-        scratch_, scratch_.world_slots_b, b_.triangleCount(), j, [&](detail::WorldTriangle& w) {
-          detail::placeWorldTriangle(corners_b, placement_.pose_b, pose_in_range_ == 1, w);
-        });
-    if (std::optional<bool> hit = detail::worldTrianglesIntersectByTrackedDoubles(
-            scratch_.world_triangles[world_a], scratch_.world_triangles[world_b]))
-      return *hit;
     return detail::posedTrianglesIntersectByExpansionsOrRationals(corners_a, placement_.pose_a,
                                                                   corners_b, placement_.pose_b);
   }

@@ -15,6 +15,7 @@
 #include <collido/oracle/triangle_test.h>
 
 #include "expansion.h"
+#include "filtered_predicates.h"
 #include "tracked_double_double.h"
 
 namespace collido::obbtree {
@@ -213,6 +214,48 @@ class TrackedWorldKernel {
   Tracked normal_[3];
 };
 
+// The double-double stage with the certified filter in front of it: a 3D orientation or a
+// collinearity is first tried on the corners mapped into A's frame (the exact mapped points are
+// R_a^-1 (W - t_a), an affine image of the world points W with det R_a^-1 > 0, so both signs are
+// the world's), and computed on the world double-doubles only when the filter is unsure. 2D
+// orientations and coordinate comparisons depend on the frame and are always the world's.
+struct HybridPoint {
+  const UncertainPoint* mapped = nullptr;
+  LazyWorldPoint* world = nullptr;
+};
+
+class HybridKernel {
+ public:
+  using Point = HybridPoint;
+
+  bool unsure() const { return world_.unsure(); }
+
+  int orient3d(const Point& a, const Point& b, const Point& c, const Point& d) {
+    FilteredKernel filter;
+    const int sign = filter.orient3d(*a.mapped, *b.mapped, *c.mapped, *d.mapped);
+    if (!filter.unsure()) return sign;
+    return world_.orient3d(a.world->world(), b.world->world(), c.world->world(), d.world->world());
+  }
+
+  int orient2d(const Point& a, const Point& b, const Point& c, int drop) {
+    return world_.orient2d(a.world->world(), b.world->world(), c.world->world(), drop);
+  }
+
+  bool collinear(const Point& a, const Point& b, const Point& c) {
+    FilteredKernel filter;
+    const bool answer = filter.collinear(*a.mapped, *b.mapped, *c.mapped);
+    if (!filter.unsure()) return answer;
+    return world_.collinear(a.world->world(), b.world->world(), c.world->world());
+  }
+
+  int compare(const Point& a, const Point& b, int k) {
+    return world_.compare(a.world->world(), b.world->world(), k);
+  }
+
+ private:
+  TrackedWorldKernel world_;
+};
+
 TrackedPoint placeTracked(const Eigen::Vector3d& v, const Eigen::Isometry3d& pose) {
   const Eigen::Matrix3d& r = pose.linear();
   const Eigen::Vector3d& t = pose.translation();
@@ -277,6 +320,38 @@ std::optional<bool> worldTrianglesIntersectByTrackedDoubles(const WorldTriangle&
   TrackedWorldKernel kernel;
   const bool answer = exact::TriangleTest<TrackedWorldKernel>(kernel).intersect(
       a.corners[0], a.corners[1], a.corners[2], b.corners[0], b.corners[1], b.corners[2]);
+  if (kernel.unsure()) return std::nullopt;
+  return answer;
+}
+
+LazyWorldPoint::LazyWorldPoint(const Eigen::Vector3d& model, const Eigen::Isometry3d& pose,
+                               bool pose_in_range)
+    : model_(model),
+      pose_(&pose),
+      in_range_(pose_in_range && inExpansionRange(model.x()) && inExpansionRange(model.y()) &&
+                inExpansionRange(model.z())) {}
+
+const TrackedPoint& LazyWorldPoint::world() {
+  if (!placed_) {
+    world_ = placeTracked(model_, *pose_);
+    placed_ = true;
+  }
+  return world_;
+}
+
+std::optional<bool> trianglesIntersectByFilterAndTrackedDoubles(const UncertainPoint* mapped_a,
+                                                                LazyWorldPoint* const* world_a,
+                                                                const UncertainPoint* mapped_b,
+                                                                LazyWorldPoint* const* world_b) {
+  HybridPoint p[6];
+  for (int c = 0; c < 3; ++c) {
+    if (!world_a[c]->inRange() || !world_b[c]->inRange()) return std::nullopt;
+    p[c] = HybridPoint{&mapped_a[c], world_a[c]};
+    p[3 + c] = HybridPoint{&mapped_b[c], world_b[c]};
+  }
+  HybridKernel kernel;
+  const bool answer =
+      exact::TriangleTest<HybridKernel>(kernel).intersect(p[0], p[1], p[2], p[3], p[4], p[5]);
   if (kernel.unsure()) return std::nullopt;
   return answer;
 }

@@ -31,6 +31,36 @@ void placeWorldTriangle(const Eigen::Vector3d* corners, const Eigen::Isometry3d&
 std::optional<bool> worldTrianglesIntersectByTrackedDoubles(const WorldTriangle& a,
                                                             const WorldTriangle& b);
 
+/// A vertex's world position as tracked double-doubles, placed on first use: the query's
+/// fallback makes one per vertex that reaches it and places only those a sign needs.
+class LazyWorldPoint {
+ public:
+  /// `pose_in_range`: the pose's poseInExpansionRange().
+  LazyWorldPoint(const Eigen::Vector3d& model, const Eigen::Isometry3d& pose, bool pose_in_range);
+  /// Whether the vertex and its pose are in the expansions' safe range (else never placed).
+  bool inRange() const { return in_range_; }
+  /// The world position, placed now if not yet (only when inRange()).
+  const TrackedPoint& world();
+
+ private:
+  Eigen::Vector3d model_;
+  const Eigen::Isometry3d* pose_;
+  bool in_range_ = false;
+  bool placed_ = false;
+  TrackedPoint world_;
+};
+
+/// The double-double stage with the certified filter in front of each 3D orientation and
+/// collinearity: `mapped_a`, `mapped_b` are the corners in A's model frame (A's exact, B's mapped
+/// with their error radii), `world_a`, `world_b` the same corners' world positions. Only for a
+/// pose of A whose rotation has a positive determinant (a rotation), so that orientations in A's
+/// frame and in the world agree. std::nullopt when a corner is out of range or a sign was
+/// uncertain.
+std::optional<bool> trianglesIntersectByFilterAndTrackedDoubles(const UncertainPoint* mapped_a,
+                                                                LazyWorldPoint* const* world_a,
+                                                                const UncertainPoint* mapped_b,
+                                                                LazyWorldPoint* const* world_b);
+
 /// posedTrianglesIntersect on double-doubles with certified radii (tracked_double_double.h);
 /// std::nullopt when an input is outside the expansions' safe range or a sign was uncertain
 /// (every exact zero is).

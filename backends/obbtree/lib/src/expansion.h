@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
+#include <cstring>
 
 namespace collido::obbtree::detail {
 
@@ -22,12 +23,14 @@ namespace collido::obbtree::detail {
 /// overflow, so no error term is ever lost.
 inline bool inExpansionRange(double x) {
   if (x == 0.0) return true;
-  if (!std::isfinite(x)) return false;
-  int exponent = 0;
-  const double fraction = std::frexp(std::abs(x), &exponent);  // |x| = fraction 2^exponent
-  if (exponent > 150) return false;
-  const auto mantissa = static_cast<std::uint64_t>(std::ldexp(fraction, 53));
-  return exponent - 53 + __builtin_ctzll(mantissa) >= -170;
+  std::uint64_t bits = 0;
+  std::memcpy(&bits, &x, sizeof bits);
+  const int biased = static_cast<int>((bits >> 52) & 0x7ff);
+  if (biased == 0x7ff || biased == 0) return false;  // inf, NaN; subnormals reach below 2^-170
+  const int exponent = biased - 1023;                // 2^exponent <= |x| < 2^(exponent + 1)
+  if (exponent >= 150) return false;
+  const std::uint64_t mantissa = (bits & ((std::uint64_t{1} << 52) - 1)) | (std::uint64_t{1} << 52);
+  return exponent - 52 + __builtin_ctzll(mantissa) >= -170;  // the lowest set bit's weight
 }
 
 /// sum = fl(a + b) and error = a + b - sum exactly (Knuth's TwoSum).

@@ -136,8 +136,8 @@ inline TrackedDoubleDouble operator*(const TrackedDoubleDouble& x, const Tracked
   const double m = twoSum(middle, lower, dm);
   TrackedDoubleDouble z;
   z.hi = twoSum(p1, m, z.lo);
-  const double dropped = std::abs(d3) + std::abs(d4) + std::abs(d5) + std::abs(d6) +
-                         std::abs(e4) + std::abs(dm) + (underflow ? kFloor : 0.0);
+  const double dropped = std::abs(d3) + std::abs(d4) + std::abs(d5) + std::abs(d6) + std::abs(e4) +
+                         std::abs(dm) + (underflow ? kFloor : 0.0);
   // X Y - x y = x (Y - y) + y (X - x) + (X - x)(Y - y), with |x| <= (1 + u) |x.hi|.
   const double propagated = std::abs(x.hi) * (1.0 + kU) * y.radius +
                             std::abs(y.hi) * (1.0 + kU) * x.radius + x.radius * y.radius;
