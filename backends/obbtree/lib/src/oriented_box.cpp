@@ -15,6 +15,8 @@ constexpr double kEpsilon = std::numeric_limits<double>::epsilon();
 // operation); an absolute widening far above that, and far below any meaningful length, covers
 // meshes with subnormal coordinates.
 constexpr double kUnderflowGuard = 1e-290;
+// Nodes of at least this many triangles also try the axis-aligned box (BoxFitter::fit).
+constexpr std::int32_t kAlignedCandidateMin = 64;
 
 // Sets centre and extents of `box` (axes given) from the extreme projections of the vertices,
 // measured from `reference` to keep the numbers small, and widens the extents so that the box
@@ -43,6 +45,13 @@ void setExtents(OrientedBox& box, const Eigen::Vector3d& reference,
   const double defect = axis_defect >= 0.0 ? axis_defect : axisDefect(box.axes);
   box.half_extents =
       (0.5 * (hi - lo)).array() + (4.0 * defect + 64.0 * kEpsilon) * scale + kUnderflowGuard;
+}
+
+// A box's surface area over 8 (h0 h1 + h1 h2 + h2 h0): its tightness, meaningful for the flat
+// boxes of faces too, whose volumes are all near zero.
+double surfaceMeasure(const OrientedBox& box) {
+  const Eigen::Vector3d& h = box.half_extents;
+  return h.x() * h.y() + h.y() * h.z() + h.z() * h.x();
 }
 
 // Calls visit(v) for every corner of every triangle (a vertex shared by several, several times).
@@ -121,12 +130,24 @@ OrientedBox BoxFitter::fit(const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
     box.axes.col(1) = solver.eigenvectors().col(1).normalized();
     box.axes.col(2) = box.axes.col(0).cross(box.axes.col(1)).normalized();
   }
-  setExtents(box, mean, vertices, [&](auto&& visit) {
+  const auto corners = [&](auto&& visit) {
     for (std::int32_t i = 0; i < count; ++i) {
       for (int k = 0; k < 3; ++k)
         visit(static_cast<Eigen::Index>(triangles(k, order[i])));
     }
-  });
+  };
+  setExtents(box, mean, vertices, corners);
+  // The axis-aligned box instead where its surface is smaller: CAD parts and assemblies are often
+  // aligned with their model axes, where the covariance's axes are not (a station module's
+  // panels and truss tilt them), and an aligned box separates what lies side by side along an
+  // axis (modules docking along z) at the root.
+  // Only for nodes of many triangles: the top of the tree, where a box meets the most others,
+  // for a small share of the build (each level costs a pass over all vertices).
+  if (count >= kAlignedCandidateMin) {
+    OrientedBox aligned;
+    setExtents(aligned, mean, vertices, corners, /*axis_defect=*/0.0);
+    if (surfaceMeasure(aligned) < surfaceMeasure(box)) box = aligned;
+  }
   // Order the axes by decreasing extent (the eigenvalue order is only a proxy for it), keeping
   // the frame right-handed, so that the longest axis is axis 0 for splitting. Swapping two
   // columns and negating the third are exact, so the box stays the very set it was measured as.
