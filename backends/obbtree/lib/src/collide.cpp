@@ -27,6 +27,7 @@
 #include "parallel_for.h"
 #include "prepared_triangle.h"
 #include "query_bounds.h"
+#include "tracked_world.h"
 
 #include <algorithm>
 #include <cmath>

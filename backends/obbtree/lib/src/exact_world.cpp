@@ -1,10 +1,10 @@
-// The exact fallback of the certified triangle test: both triangles placed in world coordinates
-// exactly, as the exact oracle places them (R v + t, not rounded), then decided with the same
-// algorithm (collido/oracle/triangle_test.h). First with floating-point expansions (every world
-// coordinate a short exact sum of doubles, every sign an exact determinant of them: expansion.h),
-// which costs a few times the filtered test; on CGAL's exact-constructions kernel (lazy rationals)
-// only when an input lies outside the expansions' safe range or an expansion outgrows its
-// capacity.
+// The exact stages of the certified triangle test's fallback: both triangles placed in world
+// coordinates exactly, as the exact oracle places them (R v + t, not rounded), then decided with
+// the same algorithm (collido/oracle/triangle_test.h). With floating-point expansions (every
+// world coordinate a short exact sum of doubles, every sign an exact determinant of them:
+// expansion.h), and on CGAL's exact-constructions kernel (lazy rationals) only when an input lies
+// outside the expansions' safe range or an expansion outgrows its capacity. The double-double
+// stage before them is tracked_world.cpp; posedTrianglesIntersect runs all three.
 #include "exact_world.h"
 
 #include <array>
@@ -15,8 +15,7 @@
 #include <collido/oracle/triangle_test.h>
 
 #include "expansion.h"
-#include "filtered_predicates.h"
-#include "tracked_double_double.h"
+#include "tracked_world.h"
 
 namespace collido::obbtree {
 namespace detail {
@@ -137,148 +136,8 @@ class ExpansionWorldKernel {
   bool overflowed_ = false;
 };
 
-// World coordinates to about 106 bits, each sign certified or left undecided (then the kernel
-// is unsure and the pair goes on to the expansions): the cheap stage that settles poses whose
-// faces are parallel or coplanar only to within rounding (a solver's "upright" rotation with
-// 1e-18 off the diagonal, gears whose axes are parallel to 1e-19).
-using Tracked = TrackedDoubleDouble;
-
-class TrackedWorldKernel {
- public:
-  using Point = TrackedPoint;
-
-  bool unsure() const { return unsure_; }
-
-  // det(b - a, c - a, d - a) = ((b - a) x (c - a)) . (d - a). The triangle test asks for the
-  // corners of one triangle against the other's plane (a, b, c) in a row: the last plane's
-  // normal is kept, keyed by the corners' values.
-  int orient3d(const Point& a, const Point& b, const Point& c, const Point& d) {
-    if (!same(a, plane_[0]) || !same(b, plane_[1]) || !same(c, plane_[2]) || !has_plane_) {
-      plane_[0] = a;
-      plane_[1] = b;
-      plane_[2] = c;
-      has_plane_ = true;
-      Tracked u[3];
-      Tracked v[3];
-      for (int k = 0; k < 3; ++k) {
-        u[k] = b.x[k] - a.x[k];
-        v[k] = c.x[k] - a.x[k];
-      }
-      for (int k = 0; k < 3; ++k) {
-        const int i = (k + 1) % 3;
-        const int j = (k + 2) % 3;
-        normal_[k] = u[i] * v[j] - u[j] * v[i];
-      }
-    }
-    Tracked det;
-    for (int k = 0; k < 3; ++k)
-      det = det + normal_[k] * (d.x[k] - a.x[k]);
-    return signOf(det);
-  }
-
-  int orient2d(const Point& a, const Point& b, const Point& c, int drop) {
-    const int i = exact::keptFirst(drop);
-    const int j = exact::keptSecond(drop);
-    return signOf((b.x[i] - a.x[i]) * (c.x[j] - a.x[j]) - (b.x[j] - a.x[j]) * (c.x[i] - a.x[i]));
-  }
-
-  bool collinear(const Point& a, const Point& b, const Point& c) {
-    for (int drop = 0; drop < 3; ++drop) {
-      if (orient2d(a, b, c, drop) != 0) return false;
-    }
-    return true;
-  }
-
-  int compare(const Point& a, const Point& b, int k) { return signOf(a.x[k] - b.x[k]); }
-
- private:
-  int signOf(const Tracked& value) {
-    const int sign = value.certainSign();
-    if (sign != Tracked::kUnsure) return sign;
-    unsure_ = true;
-    return 0;
-  }
-
-  static bool same(const Point& p, const Point& q) {
-    for (int k = 0; k < 3; ++k) {
-      const Tracked& x = p.x[k];
-      const Tracked& y = q.x[k];
-      if (x.hi != y.hi || x.lo != y.lo || x.radius != y.radius) return false;
-    }
-    return true;
-  }
-
-  bool unsure_ = false;
-  bool has_plane_ = false;
-  Point plane_[3];
-  Tracked normal_[3];
-};
-
-// The double-double stage with the certified filter in front of it: a 3D orientation or a
-// collinearity is first tried on the corners mapped into A's frame (the exact mapped points are
-// R_a^-1 (W - t_a), an affine image of the world points W with det R_a^-1 > 0, so both signs are
-// the world's), and computed on the world double-doubles only when the filter is unsure. 2D
-// orientations and coordinate comparisons depend on the frame and are always the world's.
-struct HybridPoint {
-  const UncertainPoint* mapped = nullptr;
-  LazyWorldPoint* world = nullptr;
-};
-
-class HybridKernel {
- public:
-  using Point = HybridPoint;
-
-  bool unsure() const { return world_.unsure(); }
-
-  int orient3d(const Point& a, const Point& b, const Point& c, const Point& d) {
-    FilteredKernel filter;
-    const int sign = filter.orient3d(*a.mapped, *b.mapped, *c.mapped, *d.mapped);
-    if (!filter.unsure()) return sign;
-    return world_.orient3d(a.world->world(), b.world->world(), c.world->world(), d.world->world());
-  }
-
-  int orient2d(const Point& a, const Point& b, const Point& c, int drop) {
-    return world_.orient2d(a.world->world(), b.world->world(), c.world->world(), drop);
-  }
-
-  bool collinear(const Point& a, const Point& b, const Point& c) {
-    FilteredKernel filter;
-    const bool answer = filter.collinear(*a.mapped, *b.mapped, *c.mapped);
-    if (!filter.unsure()) return answer;
-    return world_.collinear(a.world->world(), b.world->world(), c.world->world());
-  }
-
-  int compare(const Point& a, const Point& b, int k) {
-    return world_.compare(a.world->world(), b.world->world(), k);
-  }
-
- private:
-  TrackedWorldKernel world_;
-};
-
-TrackedPoint placeTracked(const Eigen::Vector3d& v, const Eigen::Isometry3d& pose) {
-  const Eigen::Matrix3d& r = pose.linear();
-  const Eigen::Vector3d& t = pose.translation();
-  TrackedPoint p;
-  for (int row = 0; row < 3; ++row) {
-    p.x[row] = ((Tracked::exactly(t[row]) + Tracked::product(r(row, 0), v.x())) +
-                Tracked::product(r(row, 1), v.y())) +
-               Tracked::product(r(row, 2), v.z());
-  }
-  return p;
-}
-
-bool cornersInRange(const Eigen::Vector3d* corners) {
-  for (int k = 0; k < 3; ++k) {
-    for (int c = 0; c < 3; ++c) {
-      if (!inExpansionRange(corners[c][k])) return false;
-    }
-  }
-  return true;
-}
-
 bool inRange(const Eigen::Vector3d* corners, const Eigen::Isometry3d& pose) {
-  return cornersInRange(corners) && poseInExpansionRange(pose);
+  return cornersInExpansionRange(corners) && poseInExpansionRange(pose);
 }
 
 ExpansionPoint placeExpansion(const Eigen::Vector3d& v, const Eigen::Isometry3d& pose) {
@@ -296,6 +155,15 @@ ExpansionPoint placeExpansion(const Eigen::Vector3d& v, const Eigen::Isometry3d&
 
 }  // namespace
 
+bool cornersInExpansionRange(const Eigen::Vector3d* corners) {
+  for (int k = 0; k < 3; ++k) {
+    for (int c = 0; c < 3; ++c) {
+      if (!inExpansionRange(corners[c][k])) return false;
+    }
+  }
+  return true;
+}
+
 bool poseInExpansionRange(const Eigen::Isometry3d& pose) {
   const Eigen::Matrix4d& m = pose.matrix();
   for (int row = 0; row < 3; ++row) {
@@ -304,67 +172,6 @@ bool poseInExpansionRange(const Eigen::Isometry3d& pose) {
     }
   }
   return true;
-}
-
-void placeWorldTriangle(const Eigen::Vector3d* corners, const Eigen::Isometry3d& pose,
-                        bool pose_in_range, WorldTriangle& out) {
-  out.in_range = pose_in_range && cornersInRange(corners);
-  if (!out.in_range) return;
-  for (int c = 0; c < 3; ++c)
-    out.corners[c] = placeTracked(corners[c], pose);
-}
-
-std::optional<bool> worldTrianglesIntersectByTrackedDoubles(const WorldTriangle& a,
-                                                            const WorldTriangle& b) {
-  if (!a.in_range || !b.in_range) return std::nullopt;
-  TrackedWorldKernel kernel;
-  const bool answer = exact::TriangleTest<TrackedWorldKernel>(kernel).intersect(
-      a.corners[0], a.corners[1], a.corners[2], b.corners[0], b.corners[1], b.corners[2]);
-  if (kernel.unsure()) return std::nullopt;
-  return answer;
-}
-
-LazyWorldPoint::LazyWorldPoint(const Eigen::Vector3d& model, const Eigen::Isometry3d& pose,
-                               bool pose_in_range)
-    : model_(model),
-      pose_(&pose),
-      in_range_(pose_in_range && inExpansionRange(model.x()) && inExpansionRange(model.y()) &&
-                inExpansionRange(model.z())) {}
-
-const TrackedPoint& LazyWorldPoint::world() {
-  if (!placed_) {
-    world_ = placeTracked(model_, *pose_);
-    placed_ = true;
-  }
-  return world_;
-}
-
-std::optional<bool> trianglesIntersectByFilterAndTrackedDoubles(const UncertainPoint* mapped_a,
-                                                                LazyWorldPoint* const* world_a,
-                                                                const UncertainPoint* mapped_b,
-                                                                LazyWorldPoint* const* world_b) {
-  HybridPoint p[6];
-  for (int c = 0; c < 3; ++c) {
-    if (!world_a[c]->inRange() || !world_b[c]->inRange()) return std::nullopt;
-    p[c] = HybridPoint{&mapped_a[c], world_a[c]};
-    p[3 + c] = HybridPoint{&mapped_b[c], world_b[c]};
-  }
-  HybridKernel kernel;
-  const bool answer =
-      exact::TriangleTest<HybridKernel>(kernel).intersect(p[0], p[1], p[2], p[3], p[4], p[5]);
-  if (kernel.unsure()) return std::nullopt;
-  return answer;
-}
-
-std::optional<bool> posedTrianglesIntersectByTrackedDoubles(const Eigen::Vector3d* a,
-                                                            const Eigen::Isometry3d& pose_a,
-                                                            const Eigen::Vector3d* b,
-                                                            const Eigen::Isometry3d& pose_b) {
-  WorldTriangle placed_a;
-  WorldTriangle placed_b;
-  placeWorldTriangle(a, pose_a, poseInExpansionRange(pose_a), placed_a);
-  placeWorldTriangle(b, pose_b, poseInExpansionRange(pose_b), placed_b);
-  return worldTrianglesIntersectByTrackedDoubles(placed_a, placed_b);
 }
 
 std::optional<bool> posedTrianglesIntersectByExpansions(const Eigen::Vector3d* a,

@@ -6,68 +6,13 @@
 
 #include <collido/obbtree/triangle_intersection.h>
 
-#include "tracked_double_double.h"
-
 namespace collido::obbtree::detail {
-
-/// A triangle's corners placed in world coordinates (R v + t) as tracked double-doubles: what
-/// the double-double stage needs of a triangle, made once per query and triangle by the
-/// descent. `in_range`: the corners and pose are in the expansions' safe range (else only the
-/// rationals decide; the corners are not set).
-struct WorldTriangle {
-  TrackedPoint corners[3];
-  bool in_range = false;
-};
 
 /// Whether every entry of the pose's 3x4 matrix is in inExpansionRange(): checked once per query.
 bool poseInExpansionRange(const Eigen::Isometry3d& pose);
 
-/// Places the triangle with corners `corners` by `pose` (`pose_in_range`: the pose's check).
-void placeWorldTriangle(const Eigen::Vector3d* corners, const Eigen::Isometry3d& pose,
-                        bool pose_in_range, WorldTriangle& out);
-
-/// The double-double stage on placed triangles; std::nullopt when either is out of range or a
-/// sign was uncertain.
-std::optional<bool> worldTrianglesIntersectByTrackedDoubles(const WorldTriangle& a,
-                                                            const WorldTriangle& b);
-
-/// A vertex's world position as tracked double-doubles, placed on first use: the query's
-/// fallback makes one per vertex that reaches it and places only those a sign needs.
-class LazyWorldPoint {
- public:
-  /// `pose_in_range`: the pose's poseInExpansionRange().
-  LazyWorldPoint(const Eigen::Vector3d& model, const Eigen::Isometry3d& pose, bool pose_in_range);
-  /// Whether the vertex and its pose are in the expansions' safe range (else never placed).
-  bool inRange() const { return in_range_; }
-  /// The world position, placed now if not yet (only when inRange()).
-  const TrackedPoint& world();
-
- private:
-  Eigen::Vector3d model_;
-  const Eigen::Isometry3d* pose_;
-  bool in_range_ = false;
-  bool placed_ = false;
-  TrackedPoint world_;
-};
-
-/// The double-double stage with the certified filter in front of each 3D orientation and
-/// collinearity: `mapped_a`, `mapped_b` are the corners in A's model frame (A's exact, B's mapped
-/// with their error radii), `world_a`, `world_b` the same corners' world positions. Only for a
-/// pose of A whose rotation has a positive determinant (a rotation), so that orientations in A's
-/// frame and in the world agree. std::nullopt when a corner is out of range or a sign was
-/// uncertain.
-std::optional<bool> trianglesIntersectByFilterAndTrackedDoubles(const UncertainPoint* mapped_a,
-                                                                LazyWorldPoint* const* world_a,
-                                                                const UncertainPoint* mapped_b,
-                                                                LazyWorldPoint* const* world_b);
-
-/// posedTrianglesIntersect on double-doubles with certified radii (tracked_double_double.h);
-/// std::nullopt when an input is outside the expansions' safe range or a sign was uncertain
-/// (every exact zero is).
-std::optional<bool> posedTrianglesIntersectByTrackedDoubles(const Eigen::Vector3d* a,
-                                                            const Eigen::Isometry3d& pose_a,
-                                                            const Eigen::Vector3d* b,
-                                                            const Eigen::Isometry3d& pose_b);
+/// Whether the three corners' coordinates are all in inExpansionRange().
+bool cornersInExpansionRange(const Eigen::Vector3d* corners);
 
 /// posedTrianglesIntersect on floating-point expansions (expansion.h); std::nullopt when an
 /// input is outside the expansions' safe range or an expansion outgrew its capacity.

@@ -19,6 +19,7 @@
 #include "../src/exact_world.h"
 #include "../src/expansion.h"
 #include "../src/tracked_double_double.h"
+#include "../src/tracked_world.h"
 #include "collide_check.h"
 
 namespace collido::obbtree {
