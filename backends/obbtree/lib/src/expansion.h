@@ -110,7 +110,8 @@ class Expansion {
 
   /// e + f (e - f with `subtract`) exactly, into `result`: Shewchuk's FAST-EXPANSION-SUM with
   /// zero elimination, a merge of the two by magnitude and one pass of TwoSums, so linear in
-  /// their sizes. Both must be strongly non-overlapping, as every expansion built here is
+  /// their sizes (TwoSum throughout, where Shewchuk takes FastTwoSum for the first two). Both
+  /// must be strongly non-overlapping, as every expansion built here is
   /// (round-to-nearest-even keeps the property through every operation of this class).
   template <int CapacityE, int CapacityF, int ResultCapacity>
   static void sumInto(const Expansion<CapacityE>& e, const Expansion<CapacityF>& f, bool subtract,
@@ -130,31 +131,29 @@ class Expansion {
         result.push(sign * f.components_[i]);
       return;
     }
+    // Merge by magnitude, the smaller of the two next components first, and sum as it goes.
     int i = 0;
     int j = 0;
-    double e_now = e.components_[0];
-    double f_now = sign * f.components_[0];
-    // The smaller in magnitude of the two next components, and advance past it.
-    const auto take = [&]() {
-      double taken = 0.0;
-      if ((f_now > e_now) == (f_now > -e_now)) {
-        taken = e_now;
-        if (++i < e_size) e_now = e.components_[i];
-      } else {
-        taken = f_now;
-        if (++j < f_size) f_now = sign * f.components_[j];
-      }
-      return taken;
-    };
-    double q = take();
-    if (i < e_size && j < f_size) {
-      double error = 0.0;
-      q = fastTwoSum(take(), q, error);
-      if (error != 0.0) result.push(error);
-    }
+    double q = 0.0;
+    bool started = false;
     while (i < e_size && j < f_size) {
+      const double e_now = e.components_[i];
+      const double f_now = sign * f.components_[j];
+      double next = 0.0;
+      if ((f_now > e_now) == (f_now > -e_now)) {
+        next = e_now;
+        ++i;
+      } else {
+        next = f_now;
+        ++j;
+      }
+      if (!started) {
+        q = next;
+        started = true;
+        continue;
+      }
       double error = 0.0;
-      q = twoSum(q, take(), error);
+      q = twoSum(q, next, error);
       if (error != 0.0) result.push(error);
     }
     for (; i < e_size; ++i) {
