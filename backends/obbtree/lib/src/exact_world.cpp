@@ -155,13 +155,13 @@ ExpansionPoint placeExpansion(const Eigen::Vector3d& v, const Eigen::Isometry3d&
 
 }  // namespace
 
+bool pointInExpansionRange(const Eigen::Vector3d& point) {
+  return inExpansionRange(point.x()) && inExpansionRange(point.y()) && inExpansionRange(point.z());
+}
+
 bool cornersInExpansionRange(const Eigen::Vector3d* corners) {
-  for (int k = 0; k < 3; ++k) {
-    for (int c = 0; c < 3; ++c) {
-      if (!inExpansionRange(corners[c][k])) return false;
-    }
-  }
-  return true;
+  return pointInExpansionRange(corners[0]) && pointInExpansionRange(corners[1]) &&
+         pointInExpansionRange(corners[2]);
 }
 
 bool poseInExpansionRange(const Eigen::Isometry3d& pose) {

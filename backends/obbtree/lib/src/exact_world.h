@@ -11,6 +11,9 @@ namespace collido::obbtree::detail {
 /// Whether every entry of the pose's 3x4 matrix is in inExpansionRange(): checked once per query.
 bool poseInExpansionRange(const Eigen::Isometry3d& pose);
 
+/// Whether the point's coordinates are all in inExpansionRange().
+bool pointInExpansionRange(const Eigen::Vector3d& point);
+
 /// Whether the three corners' coordinates are all in inExpansionRange().
 bool cornersInExpansionRange(const Eigen::Vector3d* corners);
 

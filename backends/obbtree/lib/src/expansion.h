@@ -42,6 +42,14 @@ inline double twoSum(double a, double b, double& error) {
   return sum;
 }
 
+/// product = fl(a b) and error = a b - product exactly, through a fused multiply-add (exact
+/// unless the error term underflows, which inExpansionRange() inputs keep from happening).
+inline double twoProduct(double a, double b, double& error) {
+  const double product = a * b;
+  error = std::fma(a, b, -product);
+  return product;
+}
+
 /// TwoSum for |a| >= |b| (or a == 0): Dekker's FastTwoSum.
 inline double fastTwoSum(double a, double b, double& error) {
   const double sum = a + b;
@@ -67,8 +75,8 @@ class Expansion {
   /// a * b exactly, as at most two components.
   static Expansion product(double a, double b) {
     Expansion result;
-    const double p = a * b;
-    const double error = std::fma(a, b, -p);
+    double error = 0.0;
+    const double p = twoProduct(a, b, error);
     if (error != 0.0) result.push(error);
     if (p != 0.0) result.push(p);
     return result;
@@ -175,12 +183,11 @@ class Expansion {
     result.size_ = 0;
     result.overflowed_ = overflowed_;
     if (size_ == 0 || b == 0.0) return;
-    double q = components_[0] * b;
-    double low = std::fma(components_[0], b, -q);
+    double low = 0.0;
+    double q = twoProduct(components_[0], b, low);
     if (low != 0.0) result.push(low);
     for (int i = 1; i < size_; ++i) {
-      const double high = components_[i] * b;
-      low = std::fma(components_[i], b, -high);
+      const double high = twoProduct(components_[i], b, low);
       double error = 0.0;
       const double sum = twoSum(q, low, error);
       if (error != 0.0) result.push(error);

@@ -35,8 +35,9 @@ struct TrackedDoubleDouble {
 
   /// a * b, exactly (inputs in inExpansionRange(): the error term cannot underflow).
   static TrackedDoubleDouble product(double a, double b) {
-    const double p = a * b;
-    return {p, std::fma(a, b, -p), 0.0};
+    TrackedDoubleDouble z;
+    z.hi = twoProduct(a, b, z.lo);
+    return z;
   }
 
   static constexpr int kUnsure = 2;
@@ -58,13 +59,6 @@ constexpr double kWiden = 1.0 + 16.0 * kU;
 constexpr double kFloor = 0x1p-1070;
 // Below this, the error term of a TwoProduct may be subnormal and rounded.
 constexpr double kProductSafe = 0x1p-960;
-
-/// p = fl(a b) and error = a b - p, exact unless the error term underflows (mayUnderflow).
-inline double twoProduct(double a, double b, double& error) {
-  const double p = a * b;
-  error = std::fma(a, b, -p);
-  return p;
-}
 
 // Whether the TwoProduct p of a and b might have lost its error term to underflow.
 inline bool mayUnderflow(double p, double a, double b) {

@@ -147,30 +147,9 @@ TrackedPoint placeTracked(const Eigen::Vector3d& v, const Eigen::Isometry3d& pos
 
 }  // namespace
 
-void placeWorldTriangle(const Eigen::Vector3d* corners, const Eigen::Isometry3d& pose,
-                        bool pose_in_range, WorldTriangle& out) {
-  out.in_range = pose_in_range && cornersInExpansionRange(corners);
-  if (!out.in_range) return;
-  for (int c = 0; c < 3; ++c)
-    out.corners[c] = placeTracked(corners[c], pose);
-}
-
-std::optional<bool> worldTrianglesIntersectByTrackedDoubles(const WorldTriangle& a,
-                                                            const WorldTriangle& b) {
-  if (!a.in_range || !b.in_range) return std::nullopt;
-  TrackedWorldKernel kernel;
-  const bool answer = exact::TriangleTest<TrackedWorldKernel>(kernel).intersect(
-      a.corners[0], a.corners[1], a.corners[2], b.corners[0], b.corners[1], b.corners[2]);
-  if (kernel.unsure()) return std::nullopt;
-  return answer;
-}
-
 LazyWorldPoint::LazyWorldPoint(const Eigen::Vector3d& model, const Eigen::Isometry3d& pose,
                                bool pose_in_range)
-    : model_(model),
-      pose_(&pose),
-      in_range_(pose_in_range && inExpansionRange(model.x()) && inExpansionRange(model.y()) &&
-                inExpansionRange(model.z())) {}
+    : model_(model), pose_(&pose), in_range_(pose_in_range && pointInExpansionRange(model)) {}
 
 const TrackedPoint& LazyWorldPoint::world() {
   if (!placed_) {
@@ -201,11 +180,15 @@ std::optional<bool> posedTrianglesIntersectByTrackedDoubles(const Eigen::Vector3
                                                             const Eigen::Isometry3d& pose_a,
                                                             const Eigen::Vector3d* b,
                                                             const Eigen::Isometry3d& pose_b) {
-  WorldTriangle placed_a;
-  WorldTriangle placed_b;
-  placeWorldTriangle(a, pose_a, poseInExpansionRange(pose_a), placed_a);
-  placeWorldTriangle(b, pose_b, poseInExpansionRange(pose_b), placed_b);
-  return worldTrianglesIntersectByTrackedDoubles(placed_a, placed_b);
+  if (!cornersInExpansionRange(a) || !cornersInExpansionRange(b) || !poseInExpansionRange(pose_a) ||
+      !poseInExpansionRange(pose_b))
+    return std::nullopt;
+  TrackedWorldKernel kernel;
+  const bool answer = exact::TriangleTest<TrackedWorldKernel>(kernel).intersect(
+      placeTracked(a[0], pose_a), placeTracked(a[1], pose_a), placeTracked(a[2], pose_a),
+      placeTracked(b[0], pose_b), placeTracked(b[1], pose_b), placeTracked(b[2], pose_b));
+  if (kernel.unsure()) return std::nullopt;
+  return answer;
 }
 
 }  // namespace collido::obbtree::detail

@@ -1,6 +1,6 @@
-// The double-double stage of the exact fallback, on triangles placed in world coordinates:
-// whole (posedTrianglesIntersectByTrackedDoubles, the tests' reference) or per vertex on first
-// use, behind the certified filter (the descent's path).
+// The double-double stage of the exact fallback, on triangles placed in world coordinates: alone
+// on a posed pair (posedTrianglesIntersectByTrackedDoubles, as posedTrianglesIntersect runs it)
+// or behind the certified filter on vertices placed on first use (the descent's path).
 #pragma once
 
 #include <optional>
@@ -12,24 +12,6 @@
 #include "tracked_double_double.h"
 
 namespace collido::obbtree::detail {
-
-/// A triangle's corners placed in world coordinates (R v + t) as tracked double-doubles: what
-/// the double-double stage needs of a triangle, made once per query and triangle by the
-/// descent. `in_range`: the corners and pose are in the expansions' safe range (else only the
-/// rationals decide; the corners are not set).
-struct WorldTriangle {
-  TrackedPoint corners[3];
-  bool in_range = false;
-};
-
-/// Places the triangle with corners `corners` by `pose` (`pose_in_range`: the pose's check).
-void placeWorldTriangle(const Eigen::Vector3d* corners, const Eigen::Isometry3d& pose,
-                        bool pose_in_range, WorldTriangle& out);
-
-/// The double-double stage on placed triangles; std::nullopt when either is out of range or a
-/// sign was uncertain.
-std::optional<bool> worldTrianglesIntersectByTrackedDoubles(const WorldTriangle& a,
-                                                            const WorldTriangle& b);
 
 /// A vertex's world position as tracked double-doubles, placed on first use: the query's
 /// fallback makes one per vertex that reaches it and places only those a sign needs.
