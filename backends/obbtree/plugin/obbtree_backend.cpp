@@ -24,8 +24,11 @@ class ObbTreeModel final : public BackendModel {
 
 class ObbTreeBackend final : public Backend {
  public:
-  ObbTreeBackend(BuildOptions options, int threads, bool share_states)
-      : options_(options), threads_(threads), share_states_(share_states) {}
+  ObbTreeBackend(BuildOptions options, int threads, bool share_states, bool vector_box_tests)
+      : options_(options),
+        threads_(threads),
+        share_states_(share_states),
+        vector_box_tests_(vector_box_tests) {}
 
   Capabilities capabilities() const override {
     Capabilities caps;
@@ -97,6 +100,7 @@ class ObbTreeBackend final : public Backend {
         request.kind == QueryKind::kBoolean ? CollideMode::kFirstHit : CollideMode::kAllPairs;
     collide_request.max_pairs = request.max_pairs;
     collide_request.threads = threads_;
+    collide_request.vector_box_tests = vector_box_tests_;
     collide(tree_a, pose_a, tree_b, pose_b, collide_request, scratch_);
     result.intersecting = !scratch_.pairs.empty();
     result.truncated = scratch_.truncated;
@@ -115,6 +119,7 @@ class ObbTreeBackend final : public Backend {
   BuildOptions options_;
   int threads_ = 1;
   bool share_states_ = true;
+  bool vector_box_tests_ = true;
   CollideResult scratch_;
 };
 
@@ -133,12 +138,15 @@ Result<std::unique_ptr<Backend>> create(const std::string& /*variant*/, BackendO
   }
   Result<bool> share_states = options.getBool("share_states", true);
   if (!share_states.ok()) return share_states.status();
+  Result<bool> vector_box_tests = options.getBool("vector_box_tests", true);
+  if (!vector_box_tests.ok()) return vector_box_tests.status();
   BuildOptions build_options;
   build_options.max_leaf_triangles = static_cast<std::int32_t>(leaf.value());
   build_options.float_boxes = float_boxes.value();
   build_options.rebuild_ratio = rebuild_ratio.value();
-  return std::unique_ptr<Backend>(std::make_unique<ObbTreeBackend>(
-      build_options, static_cast<int>(threads.value()), share_states.value()));
+  return std::unique_ptr<Backend>(
+      std::make_unique<ObbTreeBackend>(build_options, static_cast<int>(threads.value()),
+                                       share_states.value(), vector_box_tests.value()));
 }
 
 const PluginInfo& describe() {
@@ -154,7 +162,9 @@ const PluginInfo& describe() {
         "0: a deforming model's subtree is rebuilt when its box grew past this many times its "
         "fresh volume; 0 never), share_states (default true: the trees of an object's active "
         "states "
-        "with one triangle list share its leaf order, each box fitted fresh per state)"}},
+        "with one triangle list share its leaf order, each box fitted fresh per state), "
+        "vector_box_tests (default true: a node's grandchildren tested against the other node "
+        "four at a time in AVX2 where the CPU has it; false: one at a time in scalar code)"}},
       &create};
   return info;
 }

@@ -317,6 +317,33 @@ TEST(Collide, ThreadsGiveTheSameAnswer) {
   }
 }
 
+// The descent's scalar box tests (vector_box_tests = false, the path of CPUs without AVX2)
+// answer as the oracle does, all pairs and first hit, as the vector ones do.
+TEST(Collide, ScalarAndVectorBoxTestsGiveTheOraclesPairs) {
+  std::mt19937_64 rng(57);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (int trial = 0; trial < 4; ++trial) {
+    const Pose pose_a = makePose(randomRotation(rng), Eigen::Vector3d(u(rng), u(rng), u(rng)));
+    const Pose pose_b = makePose(
+        randomRotation(rng), pose_a.translation() + 2.0 * Eigen::Vector3d(u(rng), u(rng), u(rng)));
+    const ObbTree& tree = bunnyTree(trial % 2 == 0 ? 1 : 4);
+    const Pairs truth = exactIntersectingPairs(bunny(), pose_a, bunny(), pose_b).pairs;
+    for (bool vector_box_tests : {false, true}) {
+      const std::string label = "trial " + std::to_string(trial) +
+                                (vector_box_tests ? ", vector box tests" : ", scalar box tests");
+      CollideRequest request;
+      request.vector_box_tests = vector_box_tests;
+      CollideResult all;
+      collide(tree, pose_a, tree, pose_b, request, all);
+      EXPECT_EQ(differences(sorted(all.pairs), truth), "") << label;
+      request.mode = CollideMode::kFirstHit;
+      CollideResult first;
+      collide(tree, pose_a, tree, pose_b, request, first);
+      EXPECT_EQ(first.pairs.empty(), truth.empty()) << label;
+    }
+  }
+}
+
 // Float boxes answer exactly as double boxes do: the same pairs as the oracle, alone or mixed
 // with a double-box tree, on dense bunny overlaps and on tori.
 TEST(Collide, FloatBoxesMatchTheOracle) {

@@ -29,6 +29,10 @@ struct CollideRequest {
   /// of the descent are expanded here, the node pairs found are shared out, and each thread's
   /// hits are appended in a fixed order. Other queries, and 1, run in the calling thread.
   int threads = 1;
+  /// Test a node's grandchildren against the other node four at a time in AVX2 vector
+  /// instructions where the CPU has AVX2 and FMA; false, or a CPU without them: the same
+  /// tests one at a time in scalar code. The answer is the same either way.
+  bool vector_box_tests = true;
 };
 
 /// The answer and the work done.
@@ -46,7 +50,8 @@ struct CollideResult {
 
 /// Collides two posed trees by simultaneous descent from the roots, in A's model frame: B's
 /// boxes are brought into A's frame with the relative pose, a box pair that the 15-axis test
-/// separates ends its branch, otherwise the larger box is split; at two leaves every triangle
+/// separates ends its branch, otherwise the larger box is split two levels at once (its
+/// grandchildren tested together); at two leaves every triangle
 /// pair whose bounds in A's frame overlap is tested by a certified filter on B's vertices
 /// transformed into A's frame (each B box and triangle is transformed once per query), and exactly
 /// on the world coordinates where the filter is unsure. The answer is exact: the pairs whose
