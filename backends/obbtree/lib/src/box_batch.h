@@ -1,14 +1,15 @@
-// One box against up to four others in one separating-axis test: the descent tests a node's
-// grandchildren (the two levels below a split, collapsed) against the other tree's node at
-// once. With AVX2 and FMA the four lanes run in one set of vector instructions; elsewhere, or
-// when asked (CollideRequest::box_tests), each lane goes through boxesOverlap.
+// One box against up to four others in one separating-axis test, the four lanes of one AVX2
+// instruction stream: the descent tests a node's grandchildren (the two levels below a split,
+// collapsed) against the other tree's node at once. Where the CPU lacks AVX2 or FMA, or when
+// asked (CollideRequest::vector_box_tests), the descent tests one child at a time through
+// boxesOverlap instead.
 //
 // Every box is in A's model frame. Lane l pairs the fixed box with box l; which of the two is A's
 // (the first box of boxesOverlap, whose frame the test works in) is `lanes_are_a`. The AVX2
 // kernel computes the same quantities as boxesOverlap, each with at most as many roundings
-// (a fused multiply-add rounds once), so boxesOverlap's slack covers it too; the two kernels can
-// differ only on pairs within that slack, where both call the boxes overlapping or either
-// does, and the triangle tests below decide the answer exactly either way.
+// (a fused multiply-add rounds once), so boxesOverlap's slack covers it too; the two can differ
+// only on pairs within that slack, and the triangle tests below decide the answer exactly
+// either way.
 #pragma once
 
 #include <cstdint>
@@ -38,14 +39,11 @@ struct BoxBatch {
   std::uint32_t full_test_lanes = 0;
 };
 
-/// How the descent tests boxes.
-enum class BoxKernel { kScalar, kAvx2 };
+/// Whether this CPU has AVX2 and FMA, so overlappingLanes() may run.
+bool vectorBoxTestsAvailable();
 
-/// kAvx2 when this CPU has AVX2 and FMA, else kScalar.
-BoxKernel bestBoxKernel();
-
-/// Bit l set: lane l's boxes overlap (or are within the test's slack). kAvx2 is taken only where
-/// bestBoxKernel() is kAvx2, the scalar kernel otherwise.
-std::uint32_t overlappingLanes(const BoxBatch& batch, BoxKernel kernel);
+/// Bit l set: lane l's boxes overlap (or are within boxesOverlap's slack), each lane decided as
+/// boxesOverlap decides its pair. Only where vectorBoxTestsAvailable().
+std::uint32_t overlappingLanes(const BoxBatch& batch);
 
 }  // namespace collido::obbtree::detail

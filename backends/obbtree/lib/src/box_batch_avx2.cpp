@@ -2,7 +2,7 @@
 // one pair per lane of a 256-bit vector of doubles. Compiled for AVX2 and FMA by a target
 // attribute on this function alone (the rest of the library stays baseline x86-64, and no
 // inline function shared with other files is compiled here), called only where
-// bestBoxKernel() found both on the CPU.
+// vectorBoxTestsAvailable() found both on the CPU.
 #include "box_batch.h"
 
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
@@ -36,7 +36,7 @@ COLLIDO_AVX2 inline __m256d separated(__m256d distance, __m256d radius, __m256d 
 
 }  // namespace
 
-COLLIDO_AVX2 std::uint32_t overlappingLanesAvx2(const BoxBatch& batch) {
+COLLIDO_AVX2 std::uint32_t overlappingLanes(const BoxBatch& batch) {
   // A's and B's boxes of every pair: the lanes' own, gathered from the four boxes, or the fixed
   // box broadcast.
   __m256d axes_a[9];
@@ -127,9 +127,9 @@ COLLIDO_AVX2 std::uint32_t overlappingLanesAvx2(const BoxBatch& batch) {
 
 namespace collido::obbtree::detail {
 
-// No AVX2 kernel off x86-64: bestBoxKernel() never picks it, and overlappingLanes() does not
-// call it then; were it called, every lane would count as overlapping (nothing wrongly culled).
-std::uint32_t overlappingLanesAvx2(const BoxBatch& batch) {
+// No AVX2 kernel off x86-64: vectorBoxTestsAvailable() is false there, so this is never called;
+// were it called, every lane would count as overlapping (nothing wrongly culled).
+std::uint32_t overlappingLanes(const BoxBatch& batch) {
   return (1U << batch.count) - 1U;
 }
 

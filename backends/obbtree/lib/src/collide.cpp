@@ -54,6 +54,7 @@ using detail::queryBounds;
 struct PairTask {
   std::int32_t a;
   std::int32_t b;
+  bool boxes_tested = true;  // false: the boxes are tested when the pair is popped
 };
 
 // Row k of r^-1, when it is exactly a signed unit vector: column k of r is +-e_i and row i of
@@ -317,16 +318,18 @@ class Descent {
         placement_(placement),
         request_(request),
         scratch_(queryScratch()),
-        kernel_(request.vector_box_tests ? detail::bestBoxKernel() : detail::BoxKernel::kScalar) {
+        vector_box_tests_(request.vector_box_tests && detail::vectorBoxTestsAvailable()) {
     scratch_.begin(nodes_a.size(), nodes_b.size(), a.triangleCount(), b.triangleCount(),
                    std::is_same_v<NodeA, CompactNode>);
     batch_.axis_error = placement.bounds.axis_error;
   }
 
-  /// Whether the roots' boxes overlap (the descent starts below them only if so).
-  bool rootsOverlap(CollideResult& result) {
+  /// The pair of roots to start from; none when vector box tests find their boxes apart.
+  std::optional<PairTask> roots(CollideResult& result) {
+    if (!vector_box_tests_) return PairTask{0, 0, false};
     const std::int32_t root_a[1] = {0};
-    return testAgainst(PairTask{0, 0}, true, root_a, 1, result) != 0;
+    if (testAgainst(PairTask{0, 0}, true, root_a, 1, result) == 0) return std::nullopt;
+    return PairTask{0, 0};
   }
 
   /// Descends from `start` depth-first, adding to `result`.
@@ -346,6 +349,10 @@ class Descent {
   /// `pending`. Returns false when the query must stop (its first hit, or a pair beyond
   /// max_pairs).
   bool visit(PairTask task, CollideResult& result, std::vector<PairTask>& pending) {
+    if (!task.boxes_tested) {
+      ++result.box_tests;
+      if (!boxesOverlapAt(task)) return true;
+    }
     const NodeA& node_a = nodes_a_[static_cast<std::size_t>(task.a)];
     const NodeB& node_b = nodes_b_[static_cast<std::size_t>(task.b)];
     if (node_a.isLeaf() && node_b.isLeaf()) return leafPair(node_a, node_b, result);
@@ -353,9 +360,12 @@ class Descent {
     const bool split_a =
         node_b.isLeaf() || (!node_a.isLeaf() && boxSize(node_a) >= boxSize(node_b));
     std::int32_t lanes[detail::kBoxLanes];
-    const int count =
-        split_a ? grandchildren(nodes_a_, task.a, lanes) : grandchildren(nodes_b_, task.b, lanes);
-    const std::uint32_t overlapping = testAgainst(task, split_a, lanes, count, result);
+    const int count = split_a ? below(nodes_a_, task.a, vector_box_tests_, lanes)
+                              : below(nodes_b_, task.b, vector_box_tests_, lanes);
+    // Without vector box tests the pairs below are pushed untested and each is tested when
+    // popped, as a binary descent does: a first hit found sooner spares the later tests.
+    const std::uint32_t overlapping =
+        vector_box_tests_ ? testAgainst(task, split_a, lanes, count, result) : (1U << count) - 1U;
     // Pushed last, popped first: lane order, or for a first hit the lane whose centre is nearest
     // the other box's first, as a hit is found sooner there.
     int order[detail::kBoxLanes] = {0, 1, 2, 3};
@@ -363,21 +373,23 @@ class Descent {
     for (int k = count - 1; k >= 0; --k) {
       const int lane = order[k];
       if ((overlapping >> lane & 1U) == 0) continue;
-      pending.push_back(split_a ? PairTask{lanes[lane], task.b} : PairTask{task.a, lanes[lane]});
+      pending.push_back(split_a ? PairTask{lanes[lane], task.b, vector_box_tests_}
+                                : PairTask{task.a, lanes[lane], vector_box_tests_});
     }
     return true;
   }
 
  private:
-  // The nodes two levels below inner node x (a child that is a leaf stands for itself), in
-  // depth-first order; returns how many (2 to 4).
+  // The nodes one level below inner node x, or with `two_levels` two (a child that is a leaf
+  // stands for itself), in depth-first order; returns how many (2 to 4).
   template <typename Node>
-  static int grandchildren(const std::vector<Node>& nodes, std::int32_t x, std::int32_t* lanes) {
+  static int below(const std::vector<Node>& nodes, std::int32_t x, bool two_levels,
+                   std::int32_t* lanes) {
     int count = 0;
     const std::int32_t children[2] = {x + 1, nodes[static_cast<std::size_t>(x)].second_child};
     for (const std::int32_t child : children) {
       const Node& node = nodes[static_cast<std::size_t>(child)];
-      if (node.isLeaf()) {
+      if (!two_levels || node.isLeaf()) {
         lanes[count++] = child;
       } else {
         lanes[count++] = child + 1;
@@ -391,6 +403,7 @@ class Descent {
   // node of `task`; bit l of the result: lanes[l]'s box overlaps.
   std::uint32_t testAgainst(PairTask task, bool split_a, const std::int32_t* lanes, int count,
                             CollideResult& result) {
+    result.box_tests += static_cast<std::uint64_t>(count);
     detail::BoxBatch& batch = batch_;
     batch.count = count;
     batch.lanes_are_a = split_a;
@@ -431,8 +444,20 @@ class Descent {
           batch.full_test_lanes |= 1U << lane;
       }
     }
-    result.box_tests += static_cast<std::uint64_t>(count);
-    return detail::overlappingLanes(batch, kernel_);
+    return detail::overlappingLanes(batch);
+  }
+
+  // One box pair through boxesOverlap: B's box in A's box frame, all 15 axes at two leaves.
+  bool boxesOverlapAt(PairTask pair) {
+    const OrientedBox& box_a = boxOfA(nodes_a_, pair.a, scratch_);
+    const MappedBox& box_b = mappedBoxOfB(nodes_b_, pair.b, placement_, scratch_);
+    const Eigen::Matrix3d relative = box_a.axes.transpose() * box_b.axes;
+    const Eigen::Vector3d offset = box_a.axes.transpose() * (box_b.center - box_a.center);
+    const SeparationTolerance tolerance{placement_.bounds.axis_error, box_b.inflation};
+    const bool leaves = nodes_a_[static_cast<std::size_t>(pair.a)].isLeaf() &&
+                        nodes_b_[static_cast<std::size_t>(pair.b)].isLeaf();
+    return boxesOverlap(relative, offset, box_a.half_extents, box_b.half_extents, tolerance,
+                        !leaves);
   }
 
   // Sorts order[0 .. count) by the distance of lanes[order[k]]'s box centre from the other
@@ -530,7 +555,7 @@ class Descent {
   const Placement& placement_;
   const CollideRequest& request_;
   QueryScratch& scratch_;
-  detail::BoxKernel kernel_;
+  bool vector_box_tests_;
   detail::BoxBatch batch_;
   int pose_in_range_ = -1;  // both poses in the expansions' range: 1 or 0, -1 not yet checked
 };
@@ -539,9 +564,9 @@ class Descent {
 // the calling thread (the pairs tested on the way add their work and hits to `result`). Fewer
 // when the descent ends first.
 template <typename NodeA, typename NodeB>
-std::vector<PairTask> frontier(Descent<NodeA, NodeB>& descent, std::size_t wanted,
+std::vector<PairTask> frontier(Descent<NodeA, NodeB>& descent, PairTask roots, std::size_t wanted,
                                CollideResult& result) {
-  std::vector<PairTask> current{PairTask{0, 0}};
+  std::vector<PairTask> current{roots};
   std::vector<PairTask> next;
   while (!current.empty() && current.size() < wanted) {
     next.clear();
@@ -561,15 +586,16 @@ void descend(const ObbTree& a, const std::vector<NodeA>& nodes_a, const ObbTree&
   const bool parallel =
       request.threads > 1 && request.mode == CollideMode::kAllPairs && request.max_pairs == 0;
   Descent<NodeA, NodeB> descent(a, nodes_a, b, nodes_b, placement, request);
-  if (!descent.rootsOverlap(result)) return;
+  const std::optional<PairTask> roots = descent.roots(result);
+  if (!roots) return;
   if (!parallel) {
-    descent.run(PairTask{0, 0}, result);
+    descent.run(*roots, result);
     return;
   }
   // Several pairs per thread balance uneven subtrees; each task's hits are kept apart and
   // appended in task order, so the answer's order does not depend on the scheduling.
   const std::vector<PairTask> tasks =
-      frontier(descent, 8 * static_cast<std::size_t>(request.threads), result);
+      frontier(descent, *roots, 8 * static_cast<std::size_t>(request.threads), result);
   std::vector<CollideResult> parts(tasks.size());
   detail::parallelFor(request.threads, tasks.size(), [&](std::size_t k) {
     Descent<NodeA, NodeB> worker(a, nodes_a, b, nodes_b, placement, request);

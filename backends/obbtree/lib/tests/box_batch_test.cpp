@@ -1,6 +1,6 @@
-// The batched box test (four boxes against one): each kernel's lane bits against boxesOverlap
-// called on that lane's pair alone, with the boxes on either side, with and without the edge
-// axes, and in every lane count; and the descent answering the same with either kernel.
+// The batched box test (four boxes against one, AVX2): its lane bits against boxesOverlap called
+// on that lane's pair alone, with the boxes on either side, with and without the edge axes, and
+// in every lane count. (The descent's answers with and without it: collide_test.cpp.)
 #include <array>
 #include <random>
 #include <string>
@@ -18,7 +18,6 @@ namespace collido::obbtree {
 namespace {
 
 using detail::BoxBatch;
-using detail::BoxKernel;
 
 Eigen::Matrix3d randomRotation(std::mt19937_64& rng) {
   std::normal_distribution<double> n(0.0, 1.0);
@@ -47,7 +46,8 @@ bool expectedOverlap(const OrientedBox& fixed, const OrientedBox& lane_box, doub
                       SeparationTolerance{axis_error, inflation}, !full_test);
 }
 
-void expectKernelMatchesBoxesOverlap(BoxKernel kernel) {
+TEST(BoxBatch, LanesAnswerAsBoxesOverlap) {
+  if (!detail::vectorBoxTestsAvailable()) GTEST_SKIP() << "this CPU lacks AVX2 or FMA";
   std::mt19937_64 rng(91);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   int overlapping = 0;
@@ -72,7 +72,7 @@ void expectKernelMatchesBoxesOverlap(BoxKernel kernel) {
       batch.half[lane] = box.half_extents.data();
       batch.inflation[lane] = u(rng) < 0.5 ? 0.0 : 0.1 * u(rng);
     }
-    const std::uint32_t got = detail::overlappingLanes(batch, kernel);
+    const std::uint32_t got = detail::overlappingLanes(batch);
     for (int lane = 0; lane < detail::kBoxLanes; ++lane) {
       const bool expected =
           lane < batch.count &&
@@ -89,41 +89,30 @@ void expectKernelMatchesBoxesOverlap(BoxKernel kernel) {
   EXPECT_GT(apart, 1000);
 }
 
-TEST(BoxBatch, ScalarKernelAnswersAsBoxesOverlap) {
-  expectKernelMatchesBoxesOverlap(BoxKernel::kScalar);
-}
-
-TEST(BoxBatch, Avx2KernelAnswersAsBoxesOverlap) {
-  if (detail::bestBoxKernel() != BoxKernel::kAvx2) GTEST_SKIP() << "this CPU lacks AVX2 or FMA";
-  expectKernelMatchesBoxesOverlap(BoxKernel::kAvx2);
-}
-
-// Boxes that touch face to face, edge to edge or at a corner overlap for both kernels (touching
-// counts), and a gap far beyond the slack separates them.
+// Boxes that touch face to face, edge to edge or at a corner overlap (touching counts), and a
+// gap far beyond the slack separates them.
 TEST(BoxBatch, TouchingBoxesOverlapAndGappedOnesDoNot) {
+  if (!detail::vectorBoxTestsAvailable()) GTEST_SKIP() << "this CPU lacks AVX2 or FMA";
   OrientedBox cube;
   cube.half_extents = Eigen::Vector3d::Ones();
-  for (BoxKernel kernel : {BoxKernel::kScalar, detail::bestBoxKernel()}) {
-    for (const Eigen::Vector3d& shift : {Eigen::Vector3d(2, 0, 0), Eigen::Vector3d(2, 2, 0),
-                                         Eigen::Vector3d(2, 2, 2), Eigen::Vector3d(2.001, 0, 0)}) {
-      OrientedBox other = cube;
-      other.center = shift;
-      BoxBatch batch;
-      batch.count = 1;
-      batch.axis_error = 1e-15;
-      batch.full_test_lanes = 1;
-      batch.fixed_axes = cube.axes.data();
-      batch.fixed_center = cube.center.data();
-      batch.fixed_half = cube.half_extents.data();
-      for (int lane = 0; lane < detail::kBoxLanes; ++lane) {
-        batch.axes[lane] = other.axes.data();
-        batch.center[lane] = other.center.data();
-        batch.half[lane] = other.half_extents.data();
-      }
-      const bool touching = shift.x() == 2.0;
-      EXPECT_EQ(detail::overlappingLanes(batch, kernel), touching ? 1U : 0U)
-          << "shift " << shift.transpose() << (kernel == BoxKernel::kAvx2 ? " (AVX2)" : "");
+  for (const Eigen::Vector3d& shift : {Eigen::Vector3d(2, 0, 0), Eigen::Vector3d(2, 2, 0),
+                                       Eigen::Vector3d(2, 2, 2), Eigen::Vector3d(2.001, 0, 0)}) {
+    OrientedBox other = cube;
+    other.center = shift;
+    BoxBatch batch;
+    batch.count = 1;
+    batch.axis_error = 1e-15;
+    batch.full_test_lanes = 1;
+    batch.fixed_axes = cube.axes.data();
+    batch.fixed_center = cube.center.data();
+    batch.fixed_half = cube.half_extents.data();
+    for (int lane = 0; lane < detail::kBoxLanes; ++lane) {
+      batch.axes[lane] = other.axes.data();
+      batch.center[lane] = other.center.data();
+      batch.half[lane] = other.half_extents.data();
     }
+    const bool touching = shift.x() == 2.0;
+    EXPECT_EQ(detail::overlappingLanes(batch), touching ? 1U : 0U) << "shift " << shift.transpose();
   }
 }
 
