@@ -487,12 +487,13 @@ class Descent {
         const detail::PreparedTriangle& ta = preparedTriangleOfA(a_, i, scratch_);
         // Certainly apart (bounds, or one triangle strictly on one side of the other's
         // plane): the exact triangles are apart too.
-        if (detail::boundsApart(ta, tb) || detail::planeSeparates(ta, tb) ||
-            detail::planeSeparates(tb, ta)) {
-          continue;
-        }
+        if (detail::boundsApart(ta, tb)) continue;
+        int side_b[3];  // B's corners against A's plane
+        if (detail::planeSeparates(ta, tb, side_b)) continue;
+        int side_a[3];
+        if (detail::planeSeparates(tb, ta, side_a)) continue;
         ++result.triangle_tests;
-        if (!trianglesMeet(ta, i, tb, j, result)) continue;
+        if (!trianglesMeet(ta, i, side_a, tb, j, side_b, result)) continue;
         // Truncated means a pair beyond the limit exists, not merely that the limit was met.
         if (request_.max_pairs != 0 && result.pairs.size() >= request_.max_pairs) {
           result.truncated = true;
@@ -506,8 +507,16 @@ class Descent {
   }
 
   // The certified filter, and where it is unsure the exact test on the world coordinates.
-  bool trianglesMeet(const detail::PreparedTriangle& ta, std::int32_t i,
-                     const detail::PreparedTriangle& tb, std::int32_t j, CollideResult& result) {
+  // side_a, side_b: each triangle's corners against the other's plane, 0 where unsure.
+  bool trianglesMeet(const detail::PreparedTriangle& ta, std::int32_t i, const int side_a[3],
+                     const detail::PreparedTriangle& tb, std::int32_t j, const int side_b[3],
+                     CollideResult& result) {
+    // Every side certain and none zero: the planes cross, and what is left is the crossing test.
+    if (side_a[0] * side_a[1] * side_a[2] != 0 && side_b[0] * side_b[1] * side_b[2] != 0) {
+      if (std::optional<bool> hit =
+              detail::crossingTrianglesIntersectCertified(ta, side_a, tb, side_b))
+        return *hit;
+    }
     const UncertainPoint* p = ta.corners;
     const UncertainPoint* q = tb.corners;
     if (std::optional<bool> hit = trianglesIntersectCertified(p[0], p[1], p[2], q[0], q[1], q[2]))

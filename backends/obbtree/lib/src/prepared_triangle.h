@@ -13,6 +13,7 @@
 
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include <Eigen/Core>
 
@@ -75,13 +76,22 @@ inline int certainSide(const PreparedTriangle& t, const UncertainPoint& x) {
   return 0;
 }
 
-// Whether every corner of `other` lies certainly strictly on one side of t's plane, so the two
-// exact triangles share no point.
-inline bool planeSeparates(const PreparedTriangle& t, const PreparedTriangle& other) {
-  const int s0 = certainSide(t, other.corners[0]);
-  if (s0 == 0) return false;
-  return certainSide(t, other.corners[1]) == s0 && certainSide(t, other.corners[2]) == s0;
+// The certain side of each corner of `other` against t's plane (0 where unsure). Returns whether
+// all three lie certainly strictly on one side, so the two exact triangles share no point.
+inline bool planeSeparates(const PreparedTriangle& t, const PreparedTriangle& other, int side[3]) {
+  for (int k = 0; k < 3; ++k)
+    side[k] = certainSide(t, other.corners[k]);
+  return side[0] != 0 && side[0] == side[1] && side[1] == side[2];
 }
+
+// The certified filter's triangle test for two triangles whose corners' sides of the other's
+// plane are certain and non-zero (planeSeparates; side_a: a's corners against b's plane):
+// exact::TriangleTest::crossingTrianglesIntersect on the corners, std::nullopt when the filter
+// is unsure of a sign it still needs.
+std::optional<bool> crossingTrianglesIntersectCertified(const PreparedTriangle& a,
+                                                        const int side_a[3],
+                                                        const PreparedTriangle& b,
+                                                        const int side_b[3]);
 
 // Whether, seen along coordinate axis `drop`, an edge of `t` has t's third corner certainly on
 // one side and every corner of `other` certainly strictly on the other: then the projections

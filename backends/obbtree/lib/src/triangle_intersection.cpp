@@ -5,6 +5,7 @@
 #include <collido/oracle/triangle_test.h>
 
 #include "filtered_predicates.h"
+#include "prepared_triangle.h"
 
 namespace collido::obbtree {
 
@@ -18,5 +19,20 @@ std::optional<bool> trianglesIntersectCertified(const UncertainPoint& p1, const 
   if (kernel.unsure()) return std::nullopt;
   return answer;
 }
+
+namespace detail {
+
+std::optional<bool> crossingTrianglesIntersectCertified(const PreparedTriangle& a,
+                                                        const int side_a[3],
+                                                        const PreparedTriangle& b,
+                                                        const int side_b[3]) {
+  FilteredKernel kernel;
+  const bool answer = exact::TriangleTest<FilteredKernel>(kernel).crossingTrianglesIntersect(
+      a.corners, side_a, b.corners, side_b);
+  if (kernel.unsure()) return std::nullopt;
+  return answer;
+}
+
+}  // namespace detail
 
 }  // namespace collido::obbtree

@@ -44,6 +44,16 @@ class TriangleTest {
     return shapesIntersect(classify(p1, q1, r1), classify(p2, q2, r2));
   }
 
+  /// intersect() for two triangles whose corners' sides of the other's plane the caller has
+  /// already decided: side1[i] = orient3d(t2[0], t2[1], t2[2], t1[i]), side2[i] =
+  /// orient3d(t1[0], t1[1], t1[2], t2[i]), none of them zero (so both triangles are proper and
+  /// not coplanar) and neither triangle strictly on one side of the other's plane. Skips the
+  /// classification and those six orientations.
+  bool crossingTrianglesIntersect(const Point* t1, const int side1[3], const Point* t2,
+                                  const int side2[3]) {
+    return crossingSegmentsOverlap(t1, side1, t2, side2);
+  }
+
  private:
   enum class Kind { kTriangle, kSegment, kPoint };
 
