@@ -282,18 +282,34 @@ TEST(Collide, BunnyAgainstBunny) {
   EXPECT_GT(most, 200u);  // dense contact in at least one pose
 }
 
+// Two bunnies at random poses, their centres within 2 units on each axis, with the tree of the
+// given leaf size and the oracle's pairs.
+struct BunnyOverlap {
+  Pose pose_a;
+  Pose pose_b;
+  const ObbTree& tree;
+  Pairs truth;
+};
+BunnyOverlap randomBunnyOverlap(std::mt19937_64& rng, int max_leaf) {
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  const Pose pose_a = makePose(randomRotation(rng), Eigen::Vector3d(u(rng), u(rng), u(rng)));
+  const Pose pose_b = makePose(
+      randomRotation(rng), pose_a.translation() + 2.0 * Eigen::Vector3d(u(rng), u(rng), u(rng)));
+  return BunnyOverlap{pose_a, pose_b, bunnyTree(max_leaf),
+                      exactIntersectingPairs(bunny(), pose_a, bunny(), pose_b).pairs};
+}
+
 // All pairs on several threads: the oracle's pairs, each once, the same work as one thread does
 // (the same node pairs are tested, only shared out), and the same answer for every repetition
 // (the order of the pairs does not depend on the scheduling).
 TEST(Collide, ThreadsGiveTheSameAnswer) {
   std::mt19937_64 rng(52);
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
   for (int trial = 0; trial < 4; ++trial) {
-    const Pose pose_a = makePose(randomRotation(rng), Eigen::Vector3d(u(rng), u(rng), u(rng)));
-    const Pose pose_b = makePose(
-        randomRotation(rng), pose_a.translation() + 2.0 * Eigen::Vector3d(u(rng), u(rng), u(rng)));
-    const ObbTree& tree = bunnyTree(trial % 2 == 0 ? 1 : 4);
-    const Pairs truth = exactIntersectingPairs(bunny(), pose_a, bunny(), pose_b).pairs;
+    const BunnyOverlap overlap = randomBunnyOverlap(rng, trial % 2 == 0 ? 1 : 4);
+    const Pose& pose_a = overlap.pose_a;
+    const Pose& pose_b = overlap.pose_b;
+    const ObbTree& tree = overlap.tree;
+    const Pairs& truth = overlap.truth;
     CollideResult one;
     collide(tree, pose_a, tree, pose_b, CollideRequest{}, one);
     for (int threads : {2, 3, 8}) {
@@ -321,13 +337,12 @@ TEST(Collide, ThreadsGiveTheSameAnswer) {
 // answer as the oracle does, all pairs and first hit, as the vector ones do.
 TEST(Collide, ScalarAndVectorBoxTestsGiveTheOraclesPairs) {
   std::mt19937_64 rng(57);
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
   for (int trial = 0; trial < 4; ++trial) {
-    const Pose pose_a = makePose(randomRotation(rng), Eigen::Vector3d(u(rng), u(rng), u(rng)));
-    const Pose pose_b = makePose(
-        randomRotation(rng), pose_a.translation() + 2.0 * Eigen::Vector3d(u(rng), u(rng), u(rng)));
-    const ObbTree& tree = bunnyTree(trial % 2 == 0 ? 1 : 4);
-    const Pairs truth = exactIntersectingPairs(bunny(), pose_a, bunny(), pose_b).pairs;
+    const BunnyOverlap overlap = randomBunnyOverlap(rng, trial % 2 == 0 ? 1 : 4);
+    const Pose& pose_a = overlap.pose_a;
+    const Pose& pose_b = overlap.pose_b;
+    const ObbTree& tree = overlap.tree;
+    const Pairs& truth = overlap.truth;
     for (bool vector_box_tests : {false, true}) {
       const std::string label = "trial " + std::to_string(trial) +
                                 (vector_box_tests ? ", vector box tests" : ", scalar box tests");
