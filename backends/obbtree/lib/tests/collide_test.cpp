@@ -338,23 +338,19 @@ TEST(Collide, ThreadsGiveTheSameAnswer) {
 TEST(Collide, ScalarAndVectorBoxTestsGiveTheOraclesPairs) {
   std::mt19937_64 rng(57);
   for (int trial = 0; trial < 4; ++trial) {
-    const BunnyOverlap overlap = randomBunnyOverlap(rng, trial % 2 == 0 ? 1 : 4);
-    const Pose& pose_a = overlap.pose_a;
-    const Pose& pose_b = overlap.pose_b;
-    const ObbTree& tree = overlap.tree;
-    const Pairs& truth = overlap.truth;
+    const BunnyOverlap o = randomBunnyOverlap(rng, trial % 2 == 0 ? 1 : 4);
     for (bool vector_box_tests : {false, true}) {
       const std::string label = "trial " + std::to_string(trial) +
                                 (vector_box_tests ? ", vector box tests" : ", scalar box tests");
       CollideRequest request;
       request.vector_box_tests = vector_box_tests;
       CollideResult all;
-      collide(tree, pose_a, tree, pose_b, request, all);
-      EXPECT_EQ(differences(sorted(all.pairs), truth), "") << label;
+      collide(o.tree, o.pose_a, o.tree, o.pose_b, request, all);
+      EXPECT_EQ(differences(sorted(all.pairs), o.truth), "") << label;
       request.mode = CollideMode::kFirstHit;
       CollideResult first;
-      collide(tree, pose_a, tree, pose_b, request, first);
-      EXPECT_EQ(first.pairs.empty(), truth.empty()) << label;
+      collide(o.tree, o.pose_a, o.tree, o.pose_b, request, first);
+      EXPECT_EQ(first.pairs.empty(), o.truth.empty()) << label;
     }
   }
 }
