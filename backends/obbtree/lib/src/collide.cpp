@@ -7,18 +7,18 @@
 // the exact one (R_a^-1 (R_b v + t_b - t_a), the rotations as given, not orthonormalised) by at
 // most QueryBounds::linear |v|_1 + QueryBounds::constant; see backends/obbtree/README.md.
 // Box pairs are tested with the separating-axis test, B's box enlarged by its mapping error and
-// the comparisons by the bound on their rounding; a separated pair ends its branch. The stack
-// holds node pairs whose boxes overlap; per pair (a, b) popped:
+// the comparisons by the bound on their rounding; a separated pair ends its branch. Per node
+// pair (a, b) popped from the stack (its boxes already tested, or tested now):
 //   1. both leaves -> for every triangle pair whose axis-aligned bounds in A's frame overlap
 //      (B's widened by its corners' error radii), run the certified filter on the mapped
 //      corners (each with its error radius); when the filter cannot be sure, try a separating
 //      edge in projection, then decide exactly on the world coordinates; record hits;
 //   2. otherwise split the node that is not a leaf, or of two inner nodes the larger one (by the
-//      sum of its half extents), two levels at once: its grandchildren (a child that is a leaf
-//      stands for itself), up to four, are tested against the other node in one batch
-//      (box_batch.h: one AVX2 instruction stream where the CPU has it), and the pairs that
-//      overlap are pushed. A binary descent would test the children first; the batch tests a
-//      few more boxes than that, each far more cheaply.
+//      sum of its half extents). With vector box tests (AVX2 and FMA on the CPU), two levels at
+//      once: its grandchildren (a child that is a leaf stands for itself), up to four, are
+//      tested against the other node in one batch (box_batch.h) and the pairs that overlap are
+//      pushed; skipping the children's own test leaves about as many box tests, each far
+//      cheaper. Otherwise both child pairs are pushed and tested when popped.
 // A B node meets many A nodes, so its box (and a B triangle its corners) is mapped into A's
 // frame once per query and kept in a per-thread scratch (QueryScratch), as are decoded float
 // boxes of A.
@@ -412,12 +412,10 @@ class Descent {
     const auto set_lane = [&batch](int lane, const Eigen::Matrix3d& axes,
                                    const Eigen::Vector3d& center,
                                    const Eigen::Vector3d& half_extents, double inflation) {
-      for (int k = lane; k < detail::kBoxLanes; ++k) {  // later lanes: a copy until set
-        batch.axes[k] = axes.data();
-        batch.center[k] = center.data();
-        batch.half[k] = half_extents.data();
-        batch.inflation[k] = inflation;
-      }
+      batch.axes[lane] = axes.data();
+      batch.center[lane] = center.data();
+      batch.half[lane] = half_extents.data();
+      batch.inflation[lane] = inflation;
     };
     const NodeA& node_a = nodes_a_[static_cast<std::size_t>(task.a)];
     const NodeB& node_b = nodes_b_[static_cast<std::size_t>(task.b)];
@@ -443,6 +441,12 @@ class Descent {
         if (node_a.isLeaf() && nodes_b_[static_cast<std::size_t>(lanes[lane])].isLeaf())
           batch.full_test_lanes |= 1U << lane;
       }
+    }
+    for (int lane = count; lane < detail::kBoxLanes; ++lane) {  // unused lanes: lane 0 again
+      batch.axes[lane] = batch.axes[0];
+      batch.center[lane] = batch.center[0];
+      batch.half[lane] = batch.half[0];
+      batch.inflation[lane] = batch.inflation[0];
     }
     return detail::overlappingLanes(batch);
   }

@@ -136,10 +136,6 @@ class ExpansionWorldKernel {
   bool overflowed_ = false;
 };
 
-bool inRange(const Eigen::Vector3d* corners, const Eigen::Isometry3d& pose) {
-  return cornersInExpansionRange(corners) && poseInExpansionRange(pose);
-}
-
 ExpansionPoint placeExpansion(const Eigen::Vector3d& v, const Eigen::Isometry3d& pose) {
   const Eigen::Matrix3d& r = pose.linear();
   const Eigen::Vector3d& t = pose.translation();
@@ -174,11 +170,16 @@ bool poseInExpansionRange(const Eigen::Isometry3d& pose) {
   return true;
 }
 
+bool posedCornersInExpansionRange(const Eigen::Vector3d* corners, const Eigen::Isometry3d& pose) {
+  return cornersInExpansionRange(corners) && poseInExpansionRange(pose);
+}
+
 std::optional<bool> posedTrianglesIntersectByExpansions(const Eigen::Vector3d* a,
                                                         const Eigen::Isometry3d& pose_a,
                                                         const Eigen::Vector3d* b,
                                                         const Eigen::Isometry3d& pose_b) {
-  if (!inRange(a, pose_a) || !inRange(b, pose_b)) return std::nullopt;
+  if (!posedCornersInExpansionRange(a, pose_a) || !posedCornersInExpansionRange(b, pose_b))
+    return std::nullopt;
   ExpansionWorldKernel kernel;
   const bool answer = exact::TriangleTest<ExpansionWorldKernel>(kernel).intersect(
       placeExpansion(a[0], pose_a), placeExpansion(a[1], pose_a), placeExpansion(a[2], pose_a),

@@ -17,6 +17,9 @@ bool pointInExpansionRange(const Eigen::Vector3d& point);
 /// Whether the three corners' coordinates are all in inExpansionRange().
 bool cornersInExpansionRange(const Eigen::Vector3d* corners);
 
+/// Whether a posed triangle's corners and its pose are all in inExpansionRange().
+bool posedCornersInExpansionRange(const Eigen::Vector3d* corners, const Eigen::Isometry3d& pose);
+
 /// posedTrianglesIntersect on floating-point expansions (expansion.h); std::nullopt when an
 /// input is outside the expansions' safe range or an expansion outgrew its capacity.
 std::optional<bool> posedTrianglesIntersectByExpansions(const Eigen::Vector3d* a,

@@ -79,9 +79,14 @@ inline int certainSide(const PreparedTriangle& t, const UncertainPoint& x) {
 // The certain side of each corner of `other` against t's plane (0 where unsure). Returns whether
 // all three lie certainly strictly on one side, so the two exact triangles share no point.
 inline bool planeSeparates(const PreparedTriangle& t, const PreparedTriangle& other, int side[3]) {
-  for (int k = 0; k < 3; ++k)
-    side[k] = certainSide(t, other.corners[k]);
-  return side[0] != 0 && side[0] == side[1] && side[1] == side[2];
+  side[0] = certainSide(t, other.corners[0]);
+  if (side[0] == 0) {  // neither a separation nor the crossing short cut can follow
+    side[1] = side[2] = 0;
+    return false;
+  }
+  side[1] = certainSide(t, other.corners[1]);
+  side[2] = certainSide(t, other.corners[2]);
+  return side[0] == side[1] && side[1] == side[2];
 }
 
 // The certified filter's triangle test for two triangles whose corners' sides of the other's

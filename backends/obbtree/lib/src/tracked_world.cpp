@@ -180,8 +180,7 @@ std::optional<bool> posedTrianglesIntersectByTrackedDoubles(const Eigen::Vector3
                                                             const Eigen::Isometry3d& pose_a,
                                                             const Eigen::Vector3d* b,
                                                             const Eigen::Isometry3d& pose_b) {
-  if (!cornersInExpansionRange(a) || !cornersInExpansionRange(b) || !poseInExpansionRange(pose_a) ||
-      !poseInExpansionRange(pose_b))
+  if (!posedCornersInExpansionRange(a, pose_a) || !posedCornersInExpansionRange(b, pose_b))
     return std::nullopt;
   TrackedWorldKernel kernel;
   const bool answer = exact::TriangleTest<TrackedWorldKernel>(kernel).intersect(

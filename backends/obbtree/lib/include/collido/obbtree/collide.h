@@ -50,8 +50,8 @@ struct CollideResult {
 
 /// Collides two posed trees by simultaneous descent from the roots, in A's model frame: B's
 /// boxes are brought into A's frame with the relative pose, a box pair that the 15-axis test
-/// separates ends its branch, otherwise the larger box is split two levels at once (its
-/// grandchildren tested together); at two leaves every triangle
+/// separates ends its branch, otherwise the larger box is split (with vector box tests two
+/// levels at once, its grandchildren tested together); at two leaves every triangle
 /// pair whose bounds in A's frame overlap is tested by a certified filter on B's vertices
 /// transformed into A's frame (each B box and triangle is transformed once per query), and exactly
 /// on the world coordinates where the filter is unsure. The answer is exact: the pairs whose
