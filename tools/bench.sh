@@ -11,7 +11,7 @@ out="${1:-build/release/bench/obbtree_vs_field.json}"
 tools/configure.sh release --target collido_bench >/dev/null
 backends='obbtree,obbtree[max_leaf_triangles=4],obbtree[max_leaf_triangles=8;float_boxes=true]'
 backends+=',obbtree[max_leaf_triangles=4;threads=2],fcl:obb,fcl:obbrss,bullet,ode'
-scenes='bunny_vs_bunny|interlocked_tori|env_rob|meshing_gears|station_docking|gears_at_backlash|stacked_parts|flat_boxes|stacked_plates|peg_in_hole'
+scenes='bunny_vs_bunny|interlocked_tori|env_rob|meshing_gears|station_docking|gears_at_backlash|stacked_parts|flat_boxes|stacked_plates|peg_in_hole|bolted_flange|cad_assembly'
 filter="^((query|floor)/.*($scenes)/(all_pairs|boolean)\$|build/.*/bunny_vs_bunny/bunny_a\$"
 filter+="|scaling/.*/(all_pairs|boolean)/2\$)"
 mkdir -p "$(dirname "$out")"

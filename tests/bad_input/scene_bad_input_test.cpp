@@ -922,6 +922,27 @@ TEST(SceneBadInput, LinearTogetherWithJitter) {
   EXPECT_TRUE(rejected(parse(scene), {"/objects/1/motion:", "exactly one of", "linear"}));
 }
 
+// ---- CAD parts -------------------------------------------------------------------------------
+
+// The generator's own message, at the shape:
+// "bad.json: /objects/0/shape: flange: bore_radius = 0.7, must be < bolt_circle_radius *
+//  cos(pi / bolt_holes) = 0.649519 (each hole's sector must be visible from its centre)"
+TEST(SceneBadInput, FlangeBoreReachingTheBoltHoles) {
+  Json scene = validScene();
+  scene["objects"][0]["shape"] = {{"generator", "flange"}, {"bore_radius", 0.7}};
+  EXPECT_TRUE(rejected(parse(scene), {"/objects/0/shape:", "flange", "bore_radius = 0.7",
+                                      "must be < bolt_circle_radius"}));
+}
+
+// "bad.json: /objects/0/shape: cylinder: inner_radius = 2, must be 0 (solid) or in (0, radius =
+//  0.5)"
+TEST(SceneBadInput, TubeBoreWiderThanTheTube) {
+  Json scene = validScene();
+  scene["objects"][0]["shape"] = {{"generator", "cylinder"}, {"inner_radius", 2}};
+  EXPECT_TRUE(rejected(parse(scene),
+                       {"/objects/0/shape:", "cylinder", "inner_radius = 2", "radius = 0.5"}));
+}
+
 // ---- station module --------------------------------------------------------------------------
 
 // The generator's own message, at the shape:

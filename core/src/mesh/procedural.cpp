@@ -1,5 +1,7 @@
 #include <collido/mesh/procedural.h>
 
+#include "generator_support.h"
+
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
@@ -10,56 +12,7 @@
 namespace collido {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
-/// Generators refuse to build more than this many triangles: beyond it a resolution is a typo,
-/// and the index arithmetic stays far from the int range of Matrix3Xi.
-constexpr double kMaxTriangles = 50.0e6;
-
-// ---- parameter checks ------------------------------------------------------------------------
-//
-// Every check returns the ok Status or kInvalidArgument with "<generator>: <parameter> = <value>,
-// must be <range>", so a scene author can find the field without reading this file.
-
-std::string formatNumber(double value) {
-  std::ostringstream text;
-  text << value;
-  return text.str();
-}
-
-/// Whole numbers written out ("50000000", not "5e+07"), however large.
-std::string formatCount(double value) {
-  std::ostringstream text;
-  text << std::fixed << std::setprecision(0) << value;
-  return text.str();
-}
-
-Status invalid(const std::string& message) {
-  return {StatusCode::kInvalidArgument, message};
-}
-
-Status checkPositive(const std::string& where, const char* name, double value) {
-  if (std::isfinite(value) && value > 0.0) return {};
-  return invalid(where + name + " = " + formatNumber(value) + ", must be finite and > 0");
-}
-
-Status checkFinite(const std::string& where, const char* name, double value) {
-  if (std::isfinite(value)) return {};
-  return invalid(where + name + " = " + formatNumber(value) + ", must be finite");
-}
-
-Status checkAtLeast(const std::string& where, const char* name, int value, int minimum) {
-  if (value >= minimum) return {};
-  return invalid(where + name + " = " + std::to_string(value) +
-                 ", must be >= " + std::to_string(minimum));
-}
-
-/// `triangles` is computed in double by the caller so that huge resolutions cannot overflow.
-Status checkTriangleBudget(const std::string& where, const std::string& what, double triangles) {
-  if (triangles <= kMaxTriangles) return {};
-  return invalid(where + what + " gives " + formatCount(triangles) +
-                 " triangles, must be <= " + formatCount(kMaxTriangles));
-}
+using namespace generator_support;
 
 /// `where` is "torus: " or "chain: link." so the message names the field as the caller wrote it.
 Status checkTorus(const std::string& where, const TorusParams& p) {
@@ -119,52 +72,6 @@ void appendTorus(const TorusParams& p, const Eigen::Isometry3d& place, Eigen::In
       mesh.triangles.col(t++) = Eigen::Vector3i(a, c, d);
     }
   }
-}
-
-/// Appends a closed cylinder around the z axis, z in [z0, z1] (z0 < z1), at column `vertex_base`
-/// / `triangle_base`, and advances both past what it wrote. Layout: rings k = 0 .. rings of
-/// `segments` vertices, vertex (k, i) at angle phi = 2 pi i / segments and z = z0 + (z1 - z0) k /
-/// rings, then the bottom and the top cap centre.
-///
-/// P(phi, z) = (r cos phi, r sin phi, z) has dP/dphi x dP/dz = (r cos phi, r sin phi, 0), the
-/// outward normal, so the side quad (k, i) -> (k, i+1) -> (k+1, i+1) -> (k+1, i) is
-/// counter-clockwise seen from outside. The caps are fans from their centres: (centre, (k, i),
-/// (k, i+1)) faces +z, so the top cap uses it and the bottom cap the reverse.
-void appendCylinder(double radius, double z0, double z1, int segments, int rings,
-                    Eigen::Index& vertex_base, Eigen::Index& triangle_base, TriangleMesh& mesh) {
-  const auto index = [&](int k, int i) {
-    return static_cast<int>(vertex_base) + k * segments + (i % segments);
-  };
-  for (int k = 0; k <= rings; ++k) {
-    // Pin the last ring to z1 exactly: it must not depend on the rounding of the step.
-    const double z = k == rings ? z1 : z0 + (z1 - z0) * k / rings;
-    for (int i = 0; i < segments; ++i) {
-      const double phi = 2.0 * kPi * i / segments;
-      mesh.vertices.col(index(k, i)) =
-          Eigen::Vector3d(radius * std::cos(phi), radius * std::sin(phi), z);
-    }
-  }
-  const int bottom = static_cast<int>(vertex_base) + (rings + 1) * segments;
-  const int top = bottom + 1;
-  mesh.vertices.col(bottom) = Eigen::Vector3d(0.0, 0.0, z0);
-  mesh.vertices.col(top) = Eigen::Vector3d(0.0, 0.0, z1);
-  Eigen::Index t = triangle_base;
-  for (int k = 0; k < rings; ++k) {
-    for (int i = 0; i < segments; ++i) {
-      const int a = index(k, i);
-      const int b = index(k, i + 1);
-      const int c = index(k + 1, i + 1);
-      const int d = index(k + 1, i);
-      mesh.triangles.col(t++) = Eigen::Vector3i(a, b, c);
-      mesh.triangles.col(t++) = Eigen::Vector3i(a, c, d);
-    }
-  }
-  for (int i = 0; i < segments; ++i) {
-    mesh.triangles.col(t++) = Eigen::Vector3i(bottom, index(0, i + 1), index(0, i));
-    mesh.triangles.col(t++) = Eigen::Vector3i(top, index(rings, i), index(rings, i + 1));
-  }
-  vertex_base = top + 1;
-  triangle_base = t;
 }
 
 /// Appends the closed box (parallelepiped) with corner `origin` and edges e0, e1, e2, which must

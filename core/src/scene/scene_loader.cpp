@@ -206,12 +206,52 @@ Result<TriangleMesh> generateStationModule(const Reader& r, const Node& n, std::
   return makeStationModule(p);
 }
 
+Result<TriangleMesh> generateCylinder(const Reader& r, const Node& n, std::string& text,
+                                      TriangleBudget& budget) {
+  r.expectObject(n, {"generator", "radius", "height", "segments", "inner_radius"});
+  CylinderParams p;
+  p.radius = r.positive(n, "radius", p.radius);
+  p.height = r.positive(n, "height", p.height);
+  p.segments = r.resolved(static_cast<int>(r.integer(n, "segments", p.segments, 3, 1 << 20)), 3);
+  p.inner_radius = r.number(n, "inner_radius", p.inner_radius);
+  text = (p.inner_radius > 0.0
+              ? "tube R=" + shortNumber(p.radius) + " r=" + shortNumber(p.inner_radius)
+              : "cylinder r=" + shortNumber(p.radius)) +
+         " h=" + shortNumber(p.height) + " " + std::to_string(p.segments) + " segments";
+  budget.charge(n, text, (p.inner_radius > 0.0 ? 8.0 : 4.0) * p.segments);
+  return makeCylinder(p);
+}
+
+Result<TriangleMesh> generateFlange(const Reader& r, const Node& n, std::string& text,
+                                    TriangleBudget& budget) {
+  r.expectObject(n, {"generator", "outer_radius", "bore_radius", "thickness", "bolt_holes",
+                     "bolt_circle_radius", "hole_radius", "arc_segments", "radial_segments"});
+  FlangeParams p;
+  p.outer_radius = r.positive(n, "outer_radius", p.outer_radius);
+  p.bore_radius = r.positive(n, "bore_radius", p.bore_radius);
+  p.thickness = r.positive(n, "thickness", p.thickness);
+  // Holes are structure, not sampling: the resolution option leaves them alone.
+  p.bolt_holes = static_cast<int>(r.integer(n, "bolt_holes", p.bolt_holes, 3, 100000));
+  p.bolt_circle_radius = r.positive(n, "bolt_circle_radius", p.bolt_circle_radius);
+  p.hole_radius = r.positive(n, "hole_radius", p.hole_radius);
+  p.arc_segments =
+      r.resolved(static_cast<int>(r.integer(n, "arc_segments", p.arc_segments, 1, 1 << 16)), 1);
+  p.radial_segments = r.resolved(
+      static_cast<int>(r.integer(n, "radial_segments", p.radial_segments, 1, 1 << 16)), 1);
+  text = "flange R=" + shortNumber(p.outer_radius) + " bore=" + shortNumber(p.bore_radius) + ", " +
+         std::to_string(p.bolt_holes) + " bolt holes r=" + shortNumber(p.hole_radius);
+  const double outline = 2.0 * (p.arc_segments + p.radial_segments);
+  budget.charge(n, text, 6.0 * p.bolt_holes * outline + 4.0 * p.bolt_holes * p.arc_segments);
+  return makeFlange(p);
+}
+
 const std::map<std::string, Generator>& generators() {
   static const std::map<std::string, Generator> table = {
       {"torus", &generateTorus},   {"chain", &generateChain},
       {"sphere", &generateSphere}, {"grid_sheet", &generateGridSheet},
       {"gear", &generateGear},     {"station_module", &generateStationModule},
-      {"box", &generateBox}};
+      {"box", &generateBox},       {"cylinder", &generateCylinder},
+      {"flange", &generateFlange}};
   return table;
 }
 

@@ -8,10 +8,10 @@ namespace collido {
 // Every generator checks its parameters first and returns kInvalidArgument with a message that
 // names the generator, the parameter and the allowed range ("torus: minor_segments = 2, must be
 // >= 3"); non-finite numbers are rejected, and so is any resolution that would give more than
-// 50 million triangles. Closed meshes (torus, chain, sphere, gear) are watertight 2-manifolds:
-// every edge has exactly two triangles, counter-clockwise seen from outside, no zero-area
-// triangles and no duplicate vertices; the station module is a union of such parts. Lengths are
-// in the caller's unit.
+// 50 million triangles. Closed meshes (torus, chain, sphere, gear, cylinder, flange) are watertight
+// 2-manifolds: every edge has exactly two triangles, counter-clockwise seen from outside, no
+// zero-area triangles and no duplicate vertices; the station module is a union of such parts.
+// Lengths are in the caller's unit.
 
 /// Ring torus around the z axis, centred at the origin: major_segments * minor_segments vertices
 /// and twice as many triangles. Vertex i * minor_segments + j lies at u = 2 pi i / major_segments
@@ -128,6 +128,50 @@ struct StationModuleParams {
   double panel_width = 1.0;  ///< width of each solar panel along z, > 0
 };
 
+/// A cylinder around the z axis from z = -height / 2 to +height / 2: a shaft, a pin or a bolt's
+/// shank, or with inner_radius > 0 a tube (a pipe, a spacer, a washer, a round nut). `segments`
+/// vertices per circle at angle 2 pi i / segments from +x towards +y, so two cylinders of the
+/// same segments and radius share their side facets' planes (a nut's bore on a shank), and with
+/// segments a multiple of 4 the extremes on x and y are vertices.
+/// Solid: the bottom circle, the top circle, then the bottom and top cap centres (2 segments + 2
+/// vertices; 4 segments triangles: side quads, then the caps fanned from their centres).
+/// Tube: the outer bottom and top circles, then the inner ones (4 segments vertices; 8 segments
+/// triangles: outer wall, inner wall, then the bottom and top annuli).
+struct CylinderParams {
+  double radius = 0.5;        ///< outer radius, > 0
+  double height = 1.0;        ///< length along z, > 0
+  int segments = 32;          ///< vertices per circle, >= 3
+  double inner_radius = 0.0;  ///< 0 for a solid cylinder, else the bore: in (0, radius)
+};
+
+/// A pipe flange: an annular plate of the given thickness around the z axis (z from
+/// -thickness / 2 to +thickness / 2) with a central bore and `bolt_holes` round holes whose
+/// centres lie on the bolt circle, hole k at angle 2 pi k / bolt_holes from +x. The plate is cut
+/// into one sector per hole (between the angles of the hole's centre +- pi / bolt_holes); each
+/// sector's outline (arc_segments chords of the rim, radial_segments steps down its edge,
+/// arc_segments chords of the bore, radial_segments steps up its other edge: M = 2 (arc_segments
+/// + radial_segments) points) is joined to its hole by quads, each hole point on the ray from
+/// the hole's centre through its outline point. So the faces z = +-thickness / 2 are exactly
+/// flat, the rim and the bore are bolt_holes * arc_segments-gons, and a hole is an M-gon
+/// inscribed in its circle. Per face: the rim circle, the bore circle (bolt_holes *
+/// arc_segments each, the first vertex of both at angle -pi / bolt_holes), the inner points of
+/// the sector edges (bolt_holes (radial_segments - 1)), the holes (bolt_holes * M); bottom face
+/// first. 6 bolt_holes M + 4 bolt_holes arc_segments triangles: the top face, the bottom face,
+/// the rim wall, the bore wall, the hole walls. A closed surface of genus bolt_holes + 1.
+/// Each hole must lie inside its sector, which must be visible from the hole's centre
+/// (bore_radius < bolt_circle_radius cos(pi / bolt_holes)); the generator says which bound a
+/// parameter breaks.
+struct FlangeParams {
+  double outer_radius = 1.0;         ///< rim, > bolt_circle_radius
+  double bore_radius = 0.5;          ///< > 0
+  double thickness = 0.25;           ///< > 0
+  int bolt_holes = 6;                ///< >= 3
+  double bolt_circle_radius = 0.75;  ///< between the bore and the rim
+  double hole_radius = 0.08;         ///< > 0, the hole inside its sector
+  int arc_segments = 4;              ///< chords of the rim and of the bore per sector, >= 1
+  int radial_segments = 2;           ///< steps along each sector edge, >= 1
+};
+
 /// An axis-aligned box about the origin: 8 vertices (corner (i, j, k) at column i + 2 j + 4 k,
 /// coordinates +-size / 2), 12 outward triangles.
 struct BoxParams {
@@ -139,6 +183,8 @@ Result<TriangleMesh> makeTorus(const TorusParams& params);
 Result<TriangleMesh> makeChain(const ChainParams& params);
 Result<TriangleMesh> makeSphere(const SphereParams& params);
 Result<TriangleMesh> makeBox(const BoxParams& params);
+Result<TriangleMesh> makeCylinder(const CylinderParams& params);
+Result<TriangleMesh> makeFlange(const FlangeParams& params);
 Result<TriangleMesh> makeGridSheet(const GridSheetParams& params);
 Result<TriangleMesh> makeGear(const GearParams& params);
 Result<TriangleMesh> makeStationModule(const StationModuleParams& params);
