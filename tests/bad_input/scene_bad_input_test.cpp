@@ -469,13 +469,14 @@ TEST(SceneBadInput, NegativeRandomSeed) {
 
 // ---- shapes ----------------------------------------------------------------------------------
 
-// "bad.json: /objects/0/shape/generator: unknown generator 'cube' (known: chain, gear,
-//  grid_sheet, sphere, station_module, torus)"
+// "bad.json: /objects/0/shape/generator: unknown generator 'cube' (known: box, chain, cylinder,
+//  flange, gear, grid_sheet, sphere, station_module, torus)"
 TEST(SceneBadInput, UnknownGenerator) {
   Json scene = validScene();
   scene["objects"][0]["shape"] = {{"generator", "cube"}};
   EXPECT_TRUE(rejected(parse(scene), {"/objects/0/shape/generator:", "unknown generator 'cube'",
-                                      "chain, gear, grid_sheet, sphere, station_module, torus"}));
+                                      "box, chain, cylinder, flange, gear, grid_sheet, sphere, "
+                                      "station_module, torus"}));
 }
 
 // "bad.json: /objects/1/shape/minor_segments: expected an integer in [3, 1048576], got 2"
