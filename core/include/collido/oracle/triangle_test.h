@@ -179,11 +179,14 @@ class TriangleTest {
     for (int i = 0; i < 3; ++i)
       side2[i] = k_.orient3d(t1[0], t1[1], t1[2], t2[i]);
     if (allStrictlyOneSide(side2)) return false;
+    // t2's corners all on t1's plane, t2 a proper triangle: the planes are one, so t1's corners
+    // are on t2's plane too and their three signs (each an exact zero, the costliest sign to
+    // decide) need not be asked.
+    if (side2[0] == 0 && side2[1] == 0 && side2[2] == 0) return coplanarTriangles(t1, t2);
     int side1[3];  // corners of t1 relative to t2's plane
     for (int i = 0; i < 3; ++i)
       side1[i] = k_.orient3d(t2[0], t2[1], t2[2], t1[i]);
     if (allStrictlyOneSide(side1)) return false;
-    if (side2[0] == 0 && side2[1] == 0 && side2[2] == 0) return coplanarTriangles(t1, t2);
     return crossingSegmentsOverlap(t1, side1, t2, side2);
   }
 
