@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace collido {
@@ -89,26 +90,23 @@ Status checkFlange(const FlangeParams& p) {
   // bore's chords, the rim's chords.
   status = bound("bore_radius", p.bore_radius, "bolt_circle_radius * cos(pi / bolt_holes)",
                  rho * std::cos(kPi / n), "each hole's sector must be visible from its centre");
+  // The rim's chords come as close to the axis as this.
+  const double rim_reach = p.outer_radius * std::cos(kPi / (n * p.arc_segments));
   if (status.ok()) {
     status =
         bound("bolt_circle_radius", rho, "outer_radius * cos(pi / (bolt_holes * arc_segments))",
-              p.outer_radius * std::cos(kPi / (n * p.arc_segments)),
-              "the hole centres must lie inside the rim");
+              rim_reach, "the hole centres must lie inside the rim");
   }
-  if (!status.ok()) return status;
   // The distance from a hole's centre to its sector's outline is at least the least of these.
-  const double to_rim = p.outer_radius * std::cos(kPi / (n * p.arc_segments)) - rho;
-  const double to_bore = rho * std::cos(kPi / n) - p.bore_radius;
-  const double to_edge = rho * std::sin(kPi / n);
-  status = bound("hole_radius", p.hole_radius, "the clearance to the rim", to_rim,
-                 "a hole must lie inside its sector");
-  if (status.ok()) {
-    status = bound("hole_radius", p.hole_radius, "the clearance to the bore", to_bore,
-                   "a hole must lie inside its sector");
-  }
-  if (status.ok()) {
-    status = bound("hole_radius", p.hole_radius, "the clearance to the sector's edges", to_edge,
-                   "a hole must lie inside its sector");
+  const std::pair<const char*, double> clearances[] = {
+      {"the clearance to the rim", rim_reach - rho},
+      {"the clearance to the bore", rho * std::cos(kPi / n) - p.bore_radius},
+      {"the clearance to the sector's edges", rho * std::sin(kPi / n)}};
+  for (const auto& [limit, clearance] : clearances) {
+    if (status.ok()) {
+      status = bound("hole_radius", p.hole_radius, limit, clearance,
+                     "a hole must lie inside its sector");
+    }
   }
   if (!status.ok()) return status;
   const double m = 2.0 * (p.arc_segments + p.radial_segments);
@@ -119,7 +117,8 @@ Status checkFlange(const FlangeParams& p) {
       6.0 * n * m + 4.0 * n * p.arc_segments);
 }
 
-// Vertex columns of one face of a flange (the layout of procedural.h), `layer` 0 the bottom.
+// Vertex columns of a flange's bottom face (the layout of procedural.h); the top face's vertex
+// above column i is column i + perFace().
 class FlangeLayout {
  public:
   explicit FlangeLayout(const FlangeParams& p)
@@ -127,18 +126,16 @@ class FlangeLayout {
         ring_(p.bolt_holes * p.arc_segments),
         steps_(p.radial_segments),
         outline_(2 * (p.arc_segments + p.radial_segments)),
-        per_layer_(2 * ring_ + holes_ * (steps_ - 1) + holes_ * outline_) {}
+        per_face_(2 * ring_ + holes_ * (steps_ - 1) + holes_ * outline_) {}
 
-  int perLayer() const { return per_layer_; }
+  int perFace() const { return per_face_; }
   int outlinePoints() const { return outline_; }
-  int rim(int layer, int j) const { return layer * per_layer_ + j % ring_; }
-  int bore(int layer, int j) const { return layer * per_layer_ + ring_ + j % ring_; }
+  int rim(int j) const { return j % ring_; }
+  int bore(int j) const { return ring_ + j % ring_; }
   // Inner point l (1 .. radial_segments - 1, from the bore out) of sector edge e.
-  int edge(int layer, int e, int l) const {
-    return layer * per_layer_ + 2 * ring_ + (e % holes_) * (steps_ - 1) + (l - 1);
-  }
-  int hole(int layer, int k, int m) const {
-    return layer * per_layer_ + 2 * ring_ + holes_ * (steps_ - 1) + k * outline_ + m % outline_;
+  int edge(int e, int l) const { return 2 * ring_ + (e % holes_) * (steps_ - 1) + (l - 1); }
+  int hole(int k, int m) const {
+    return 2 * ring_ + holes_ * (steps_ - 1) + k * outline_ + m % outline_;
   }
 
  private:
@@ -146,28 +143,28 @@ class FlangeLayout {
   int ring_;
   int steps_;
   int outline_;
-  int per_layer_;
+  int per_face_;
 };
 
-// Sector k's outline, counter-clockwise seen from +z (the sector on its left): the rim's chords
-// from edge k to edge k + 1, down edge k + 1, the bore's chords back to edge k, up edge k.
-std::vector<int> sectorOutline(const FlangeParams& p, const FlangeLayout& layout, int layer,
-                               int k) {
+// Sector k's outline on the bottom face, counter-clockwise seen from +z (the sector on its
+// left): the rim's chords from edge k to edge k + 1, down edge k + 1, the bore's chords back to
+// edge k, up edge k.
+std::vector<int> sectorOutline(const FlangeParams& p, const FlangeLayout& layout, int k) {
   const int a = p.arc_segments;
   const int steps = p.radial_segments;
   std::vector<int> outline;
   outline.reserve(static_cast<std::size_t>(layout.outlinePoints()));
   for (int i = 0; i < a; ++i)
-    outline.push_back(layout.rim(layer, k * a + i));
-  outline.push_back(layout.rim(layer, (k + 1) * a));
+    outline.push_back(layout.rim(k * a + i));
+  outline.push_back(layout.rim((k + 1) * a));
   for (int l = steps - 1; l >= 1; --l)
-    outline.push_back(layout.edge(layer, k + 1, l));
-  outline.push_back(layout.bore(layer, (k + 1) * a));
+    outline.push_back(layout.edge(k + 1, l));
+  outline.push_back(layout.bore((k + 1) * a));
   for (int i = a - 1; i >= 1; --i)
-    outline.push_back(layout.bore(layer, k * a + i));
-  outline.push_back(layout.bore(layer, k * a));
+    outline.push_back(layout.bore(k * a + i));
+  outline.push_back(layout.bore(k * a));
   for (int l = 1; l < steps; ++l)
-    outline.push_back(layout.edge(layer, k, l));
+    outline.push_back(layout.edge(k, l));
   return outline;
 }
 
@@ -199,26 +196,24 @@ Result<TriangleMesh> makeFlange(const FlangeParams& params) {
   const int a = params.arc_segments;
   const int steps = params.radial_segments;
   const int outline_points = layout.outlinePoints();
+  const int up = layout.perFace();  // from a bottom vertex to the top one above it
   TriangleMesh mesh;
-  mesh.vertices.resize(3, 2 * layout.perLayer());
+  mesh.vertices.resize(3, 2 * up);
   mesh.triangles.resize(3, 6 * n * outline_points + 4 * n * a);
-  const double z[2] = {-0.5 * params.thickness, 0.5 * params.thickness};
+  // The bottom face; the top face is the same points at the other z.
+  const double bottom = -0.5 * params.thickness;
   const double first_angle = -kPi / n;  // edge 0 of sector 0
-  for (int layer = 0; layer < 2; ++layer) {
-    for (int j = 0; j < n * a; ++j) {
-      const double phi = first_angle + 2.0 * kPi * j / (n * a);
-      const Eigen::Vector2d direction(std::cos(phi), std::sin(phi));
-      mesh.vertices.col(layout.rim(layer, j)) << params.outer_radius * direction, z[layer];
-      mesh.vertices.col(layout.bore(layer, j)) << params.bore_radius * direction, z[layer];
-    }
-    for (int e = 0; e < n; ++e) {
-      const double phi = first_angle + 2.0 * kPi * e / n;
-      for (int l = 1; l < steps; ++l) {
-        const double r =
-            params.bore_radius + (params.outer_radius - params.bore_radius) * l / steps;
-        mesh.vertices.col(layout.edge(layer, e, l)) << r * std::cos(phi), r * std::sin(phi),
-            z[layer];
-      }
+  for (int j = 0; j < n * a; ++j) {
+    const double phi = first_angle + 2.0 * kPi * j / (n * a);
+    const Eigen::Vector2d direction(std::cos(phi), std::sin(phi));
+    mesh.vertices.col(layout.rim(j)) << params.outer_radius * direction, bottom;
+    mesh.vertices.col(layout.bore(j)) << params.bore_radius * direction, bottom;
+  }
+  for (int e = 0; e < n; ++e) {
+    const double phi = first_angle + 2.0 * kPi * e / n;
+    for (int l = 1; l < steps; ++l) {
+      const double r = params.bore_radius + (params.outer_radius - params.bore_radius) * l / steps;
+      mesh.vertices.col(layout.edge(e, l)) << r * std::cos(phi), r * std::sin(phi), bottom;
     }
   }
   Eigen::Index t = 0;
@@ -226,33 +221,32 @@ Result<TriangleMesh> makeFlange(const FlangeParams& params) {
     const double centre_angle = 2.0 * kPi * k / n;
     const Eigen::Vector2d centre =
         params.bolt_circle_radius * Eigen::Vector2d(std::cos(centre_angle), std::sin(centre_angle));
-    const std::vector<int> outline[2] = {sectorOutline(params, layout, 0, k),
-                                         sectorOutline(params, layout, 1, k)};
+    const std::vector<int> outline = sectorOutline(params, layout, k);
     for (int m = 0; m < outline_points; ++m) {
       const Eigen::Vector2d ray =
-          (mesh.vertices.col(outline[0][static_cast<std::size_t>(m)]).head<2>() - centre)
-              .normalized();
-      for (int layer = 0; layer < 2; ++layer)
-        mesh.vertices.col(layout.hole(layer, k, m)) << centre + params.hole_radius * ray, z[layer];
+          (mesh.vertices.col(outline[static_cast<std::size_t>(m)]).head<2>() - centre).normalized();
+      mesh.vertices.col(layout.hole(k, m)) << centre + params.hole_radius * ray, bottom;
     }
     for (int m = 0; m < outline_points; ++m) {
-      const auto next = static_cast<std::size_t>((m + 1) % outline_points);
-      const auto here = static_cast<std::size_t>(m);
-      appendQuad(outline[1][here], outline[1][next], layout.hole(1, k, m + 1), layout.hole(1, k, m),
-                 t, mesh);
-      appendQuad(outline[0][here], layout.hole(0, k, m), layout.hole(0, k, m + 1), outline[0][next],
-                 t, mesh);
-      // The hole's wall faces its centre.
-      appendQuad(layout.hole(0, k, m), layout.hole(1, k, m), layout.hole(1, k, m + 1),
-                 layout.hole(0, k, m + 1), t, mesh);
+      const int here = outline[static_cast<std::size_t>(m)];
+      const int next = outline[static_cast<std::size_t>((m + 1) % outline_points)];
+      const int hole = layout.hole(k, m);
+      const int hole_next = layout.hole(k, m + 1);
+      appendQuad(here + up, next + up, hole_next + up, hole + up, t, mesh);
+      appendQuad(here, hole, hole_next, next, t, mesh);
+      appendQuad(hole, hole + up, hole_next + up, hole_next, t, mesh);  // faces the hole's centre
     }
   }
   for (int j = 0; j < n * a; ++j) {
-    appendQuad(layout.rim(0, j), layout.rim(0, j + 1), layout.rim(1, j + 1), layout.rim(1, j), t,
-               mesh);
-    appendQuad(layout.bore(0, j), layout.bore(1, j), layout.bore(1, j + 1), layout.bore(0, j + 1),
-               t, mesh);
+    const int rim = layout.rim(j);
+    const int rim_next = layout.rim(j + 1);
+    const int bore = layout.bore(j);
+    const int bore_next = layout.bore(j + 1);
+    appendQuad(rim, rim_next, rim_next + up, rim + up, t, mesh);
+    appendQuad(bore, bore + up, bore_next + up, bore_next, t, mesh);
   }
+  mesh.vertices.rightCols(up) = mesh.vertices.leftCols(up);
+  mesh.vertices.row(2).tail(up).setConstant(0.5 * params.thickness);
   return mesh;
 }
 
