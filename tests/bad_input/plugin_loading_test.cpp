@@ -267,19 +267,19 @@ TEST(PluginLoading, UnknownOptionIsRefused) {
                        {"obbtree", "unknown option", "max_leaf_triangle", "max_leaf_triangles"}));
 }
 
-// "obbtree: option max_leaf_triangles = 'few': expected an integer in [1, 1048576]"
+// "obbtree: option max_leaf_triangles = 'few': expected an integer in [1, 65535]"
 TEST(PluginLoading, UnparseableOptionValueIsRefused) {
   EXPECT_TRUE(rejected(createObbtree({{"max_leaf_triangles", "few"}}),
                        {"obbtree", "max_leaf_triangles = 'few'", "expected an integer"}));
 }
 
-// "obbtree: option max_leaf_triangles = '0': expected an integer in [1, 1048576]"
+// "obbtree: option max_leaf_triangles = '0': expected an integer in [1, 65535]"
 TEST(PluginLoading, OutOfRangeOptionValueIsRefused) {
   EXPECT_TRUE(rejected(createObbtree({{"max_leaf_triangles", "0"}}),
-                       {"obbtree", "max_leaf_triangles = '0'", "[1, 1048576]"}));
+                       {"obbtree", "max_leaf_triangles = '0'", "[1, 65535]"}));
 }
 
-// "obbtree: option max_leaf_triangles = '4x': expected an integer in [1, 1048576]"
+// "obbtree: option max_leaf_triangles = '4x': expected an integer in [1, 65535]"
 TEST(PluginLoading, OptionValueWithTrailingTextIsRefused) {
   EXPECT_TRUE(rejected(createObbtree({{"max_leaf_triangles", "4x"}}),
                        {"obbtree", "max_leaf_triangles = '4x'"}));

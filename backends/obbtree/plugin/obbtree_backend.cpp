@@ -124,7 +124,8 @@ class ObbTreeBackend final : public Backend {
 };
 
 Result<std::unique_ptr<Backend>> create(const std::string& /*variant*/, BackendOptions& options) {
-  Result<std::int64_t> leaf = options.getInt("max_leaf_triangles", 1, 1, 1 << 20);
+  Result<std::int64_t> leaf =
+      options.getInt("max_leaf_triangles", 1, 1, obbtree::kMaxLeafTriangles);
   if (!leaf.ok()) return leaf.status();
   Result<bool> float_boxes = options.getBool("float_boxes", false);
   if (!float_boxes.ok()) return float_boxes.status();

@@ -386,14 +386,14 @@ class Descent {
   static int below(const std::vector<Node>& nodes, std::int32_t x, bool two_levels,
                    std::int32_t* lanes) {
     int count = 0;
-    const std::int32_t children[2] = {x + 1, nodes[static_cast<std::size_t>(x)].second_child};
+    const std::int32_t children[2] = {x + 1, nodes[static_cast<std::size_t>(x)].secondChild()};
     for (const std::int32_t child : children) {
       const Node& node = nodes[static_cast<std::size_t>(child)];
       if (!two_levels || node.isLeaf()) {
         lanes[count++] = child;
       } else {
         lanes[count++] = child + 1;
-        lanes[count++] = node.second_child;
+        lanes[count++] = node.secondChild();
       }
     }
     return count;
@@ -485,9 +485,11 @@ class Descent {
   }
 
   bool leafPair(const NodeA& node_a, const NodeB& node_b, CollideResult& result) {
-    for (std::int32_t j = node_b.first; j < node_b.first + node_b.count; ++j) {
+    const std::int32_t first_b = node_b.leafFirst();
+    const std::int32_t first_a = node_a.leafFirst();
+    for (std::int32_t j = first_b; j < first_b + node_b.leafCount(); ++j) {
       const detail::PreparedTriangle& tb = preparedTriangleOfB(b_, j, placement_, scratch_);
-      for (std::int32_t i = node_a.first; i < node_a.first + node_a.count; ++i) {
+      for (std::int32_t i = first_a; i < first_a + node_a.leafCount(); ++i) {
         const detail::PreparedTriangle& ta = preparedTriangleOfA(a_, i, scratch_);
         // Certainly apart (bounds, or one triangle strictly on one side of the other's
         // plane): the exact triangles are apart too.

@@ -180,10 +180,10 @@ class Search {
     const bool split_a = !na.isLeaf() && (nb.isLeaf() || boxSize(na) >= boxSize(nb));
     if (split_a) {
       push(pair.a + 1, pair.b);
-      push(na.second_child, pair.b);
+      push(na.secondChild(), pair.b);
     } else {
       push(pair.a, pair.b + 1);
-      push(pair.a, nb.second_child);
+      push(pair.a, nb.secondChild());
     }
   }
 
@@ -195,7 +195,7 @@ class Search {
     const Eigen::Matrix3Xi& tb = b_.orderedTriangles();
     // A's triangles with their bounds, once per leaf pair (each meets every triangle of B's leaf).
     leaf_a_.clear();
-    for (std::int32_t i = na.first; i < na.first + na.count; ++i) {
+    for (std::int32_t i = na.leafFirst(); i < na.leafFirst() + na.leafCount(); ++i) {
       LeafTriangle t;
       for (int k = 0; k < 3; ++k)
         t.corners[static_cast<std::size_t>(k)] = va.col(ta(k, i));
@@ -204,7 +204,7 @@ class Search {
       t.id = a_.triangleId(i);
       leaf_a_.push_back(t);
     }
-    for (std::int32_t j = nb.first; j < nb.first + nb.count; ++j) {
+    for (std::int32_t j = nb.leafFirst(); j < nb.leafFirst() + nb.leafCount(); ++j) {
       std::array<Eigen::Vector3d, 3> corners_b;
       std::array<Eigen::Vector3d, 3> local_b;
       for (int k = 0; k < 3; ++k) {

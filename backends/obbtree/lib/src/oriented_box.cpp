@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 #include <Eigen/Eigenvalues>
@@ -178,14 +179,79 @@ void refitBoxExtents(OrientedBox& box, const Eigen::Ref<const Eigen::Matrix3Xd>&
 
 namespace {
 
-float roundedUp(double value) {
-  float f = static_cast<float>(value);
-  if (static_cast<double>(f) < value) f = std::nextafter(f, std::numeric_limits<float>::infinity());
-  return f;
+// Half extents in 64 bits: three 18-bit counts (bits 0-17, 18-35, 36-53) of a unit 2^e shared
+// by the three, with e + kExtentBias in bits 54-61. The unit is the smallest power of two that
+// counts the largest extent in 18 bits, so each extent is rounded up by at most 2^-17 of the
+// largest. e = kExtentInfinite - kExtentBias stands for infinite extents.
+constexpr int kExtentBits = 18;
+constexpr std::uint64_t kExtentMask = (std::uint64_t{1} << kExtentBits) - 1;
+constexpr int kExtentBias = 168;      // e from -168 (about 3e-51) ...
+constexpr int kExtentInfinite = 255;  // ... to 86 (counts up to about 2e31)
+
+std::uint64_t encodeExtents(const Eigen::Vector3d& reach) {
+  const double largest = reach.maxCoeff();
+  int e = kExtentInfinite - kExtentBias;
+  if (std::isfinite(largest)) {
+    e = std::max(-kExtentBias, std::ilogb(largest) - (kExtentBits - 1));
+    if (std::ceil(std::ldexp(largest, -e)) > static_cast<double>(kExtentMask)) ++e;
+  }
+  std::uint64_t packed = 0;
+  if (e + kExtentBias >= kExtentInfinite) {
+    packed = std::uint64_t{kExtentInfinite} << (3 * kExtentBits);
+  } else {
+    for (int k = 0; k < 3; ++k) {
+      const auto count = static_cast<std::uint64_t>(std::ceil(std::ldexp(reach[k], -e)));
+      packed |= count << (kExtentBits * k);
+    }
+    packed |= static_cast<std::uint64_t>(e + kExtentBias) << (3 * kExtentBits);
+  }
+  return packed;
+}
+
+// A unit quaternion in 48 bits ("smallest three"): the component of largest magnitude is made
+// positive and left out, since it is at least 1/2 and so is recovered from the unit norm with
+// little loss; the other three lie in [-1/sqrt 2, 1/sqrt 2] and are kept as 15-bit levels; the
+// left-out component's index (0..3 for x, y, z, w) takes the low bit of the first two words.
+constexpr double kComponentRange = 0.70710678118654752440;  // 1 / sqrt 2
+constexpr long kComponentLevels = 16383;                    // levels each side of zero
+
+void encodeRotation(const Eigen::Matrix3d& axes, std::uint16_t (&words)[3]) {
+  Eigen::Vector4d c = Eigen::Quaterniond(axes).normalized().coeffs();  // x, y, z, w
+  Eigen::Index largest = 0;
+  c.cwiseAbs().maxCoeff(&largest);
+  if (c[largest] < 0.0) c = -c;  // q and -q are the same rotation
+  int k = 0;
+  for (Eigen::Index i = 0; i < 4; ++i) {
+    if (i == largest) continue;
+    const long level =
+        std::lround(std::clamp(c[i] / kComponentRange, -1.0, 1.0) * kComponentLevels);
+    words[k++] = static_cast<std::uint16_t>((level + kComponentLevels + 1) << 1);
+  }
+  words[0] = static_cast<std::uint16_t>(words[0] | (largest & 1));
+  words[1] = static_cast<std::uint16_t>(words[1] | ((largest >> 1) & 1));
+}
+
+Eigen::Matrix3d decodeRotation(const std::uint16_t (&words)[3]) {
+  // Decoded on every node a query visits: multiplies only, and no normalisation, the left-out
+  // component being chosen to make the quaternion unit (to rounding).
+  constexpr double kStep = kComponentRange / static_cast<double>(kComponentLevels);
+  const int largest = (words[0] & 1) | ((words[1] & 1) << 1);
+  Eigen::Vector4d c;
+  double squared = 0.0;
+  int k = 0;
+  for (int i = 0; i < 4; ++i) {
+    if (i == largest) continue;
+    c[i] = static_cast<double>((words[k++] >> 1) - (kComponentLevels + 1)) * kStep;
+    squared += c[i] * c[i];
+  }
+  c[largest] = std::sqrt(std::max(0.0, 1.0 - squared));
+  Eigen::Quaterniond q;
+  q.coeffs() = c;
+  return q.toRotationMatrix();
 }
 
 // Stores `center` (rounded to float) and the extents about it on the stored axes: the largest
-// projection of any vertex, widened as setExtents widens, rounded up to float.
+// projection of any vertex, widened as setExtents widens, rounded up (encodeExtents).
 template <typename ForEachVertex>
 void measureCompact(CompactBox& box, const Eigen::Vector3d& center,
                     const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
@@ -201,31 +267,39 @@ void measureCompact(CompactBox& box, const Eigen::Vector3d& center,
   const double scale = expanded.center.lpNorm<1>() + reach.lpNorm<1>();
   const double defect = axis_defect >= 0.0 ? axis_defect : axisDefect(expanded.axes);
   const double widening = (4.0 * defect + 64.0 * kEpsilon) * scale + kUnderflowGuard;
-  for (int k = 0; k < 3; ++k)
-    box.half_extents[k] = roundedUp(reach[k] + widening);
+  // Word by word: the box is packed, and its words may not be bound to references.
+  const std::uint64_t packed = encodeExtents(reach.array() + widening);
+  box.half_extents[0] = static_cast<std::uint32_t>(packed);
+  box.half_extents[1] = static_cast<std::uint32_t>(packed >> 32U);
 }
 
 }  // namespace
 
+double halfExtent(const CompactBox& box, int k) {
+  const std::uint64_t packed =
+      box.half_extents[0] | (static_cast<std::uint64_t>(box.half_extents[1]) << 32U);
+  const auto biased = static_cast<int>(packed >> (3 * kExtentBits));
+  if (biased == kExtentInfinite) return std::numeric_limits<double>::infinity();
+  // The unit 2^e as a double built from its exponent bits: e is within the normal range.
+  const std::uint64_t unit_bits = static_cast<std::uint64_t>(biased - kExtentBias + 1023) << 52U;
+  double unit = 0.0;
+  std::memcpy(&unit, &unit_bits, sizeof unit);
+  return static_cast<double>((packed >> (kExtentBits * k)) & kExtentMask) * unit;
+}
+
 OrientedBox expandBox(const CompactBox& box) {
-  Eigen::Quaterniond q(box.rotation[0], box.rotation[1], box.rotation[2], box.rotation[3]);
-  q.normalize();
   OrientedBox out;
-  out.axes = q.toRotationMatrix();
+  out.axes = decodeRotation(box.rotation);
   out.center = Eigen::Vector3f(box.center[0], box.center[1], box.center[2]).cast<double>();
-  out.half_extents =
-      Eigen::Vector3f(box.half_extents[0], box.half_extents[1], box.half_extents[2]).cast<double>();
+  for (int k = 0; k < 3; ++k)
+    out.half_extents[k] = halfExtent(box, k);
   return out;
 }
 
 CompactBox compactBox(const OrientedBox& box, const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
                       const Eigen::Ref<const Eigen::Matrix3Xi>& triangles) {
-  const Eigen::Quaterniond q(box.axes);
   CompactBox out;
-  out.rotation[0] = static_cast<float>(q.w());
-  out.rotation[1] = static_cast<float>(q.x());
-  out.rotation[2] = static_cast<float>(q.y());
-  out.rotation[3] = static_cast<float>(q.z());
+  encodeRotation(box.axes, out.rotation);
   measureCompact(out, box.center, vertices, cornersOf(triangles));
   return out;
 }

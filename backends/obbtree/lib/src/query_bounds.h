@@ -64,8 +64,8 @@ inline double boxSize(const Node& node) {
   return node.box.half_extents.sum();
 }
 inline double boxSize(const CompactNode& node) {
-  return static_cast<double>(node.box.half_extents[0]) + node.box.half_extents[1] +
-         node.box.half_extents[2];
+  return static_cast<double>(halfExtent(node.box, 0)) + halfExtent(node.box, 1) +
+         halfExtent(node.box, 2);
 }
 
 }  // namespace collido::obbtree::detail

@@ -43,7 +43,8 @@ ObbTree ObbTree::build(const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
   ObbTree tree;
   tree.vertices_ = vertices;
   const auto n = static_cast<std::int32_t>(triangles.cols());
-  const std::int32_t max_leaf = std::max<std::int32_t>(1, options.max_leaf_triangles);
+  const std::int32_t max_leaf =
+      std::clamp<std::int32_t>(options.max_leaf_triangles, 1, kMaxLeafTriangles);
   std::vector<std::int32_t> order(static_cast<std::size_t>(n));
   std::iota(order.begin(), order.end(), 0);
 
@@ -78,7 +79,11 @@ ObbTree ObbTree::build(const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
       lower = partition(range, task.count, node.box.axes.col(axis), centroids);
       if (lower > 0 && lower < task.count) break;
     }
-    if (lower == 0 || lower == task.count) continue;  // no axis splits: a leaf
+    if (lower == 0 || lower == task.count) {
+      // No plane splits the centres: a leaf, unless it would hold more than a leaf may.
+      if (task.count <= kMaxLeafTriangles) continue;
+      lower = task.count / 2;
+    }
     // LIFO: the first child is popped next, so it lands at index + 1.
     stack.push_back(Task{task.first + lower, task.count - lower, index, task.depth + 1});
     stack.push_back(Task{task.first, lower, -1, task.depth + 1});
@@ -98,6 +103,9 @@ ObbTree ObbTree::build(const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
   return tree;
 }
 
+// The layout BuildOptions::float_boxes promises (checked here, where the nodes are made).
+static_assert(sizeof(CompactBox) == 26 && sizeof(CompactNode) == 32);
+
 void ObbTree::storeFloatBoxes() {
   // Built in double, then stored in float: each box measured anew around its own triangles.
   float_boxes_ = true;
@@ -106,12 +114,26 @@ void ObbTree::storeFloatBoxes() {
     CompactNode compact;
     compact.box =
         compactBox(node.box, vertices_, topology_->triangles.middleCols(node.first, node.count));
-    compact.second_child = node.second_child;
-    compact.first = node.first;
-    compact.count = node.count;
+    compact.leaf_count = static_cast<std::uint16_t>(node.isLeaf() ? node.count : 0);
+    compact.link = node.isLeaf() ? node.first : node.second_child;
     compact_nodes_.push_back(compact);
   }
   std::vector<Node>().swap(nodes_);
+}
+
+TriangleRange ObbTree::triangleRange(std::size_t node) const {
+  if (!float_boxes_) return TriangleRange{nodes_[node].first, nodes_[node].count};
+  // A subtree's triangles start where its first leaf's do and end where its last leaf's do;
+  // the first leaf is reached by following first children down, the last by second children.
+  std::size_t first_leaf = node;
+  while (!compact_nodes_[first_leaf].isLeaf())
+    ++first_leaf;
+  std::size_t last_leaf = node;
+  while (!compact_nodes_[last_leaf].isLeaf())
+    last_leaf = static_cast<std::size_t>(compact_nodes_[last_leaf].secondChild());
+  const std::int32_t first = compact_nodes_[first_leaf].leafFirst();
+  const CompactNode& last = compact_nodes_[last_leaf];
+  return TriangleRange{first, last.leafFirst() + last.leafCount() - first};
 }
 
 void ObbTree::measureAxisDefect() {
@@ -147,9 +169,9 @@ void ObbTree::buildVertexSpans() {
   std::vector<std::size_t> stamp(static_cast<std::size_t>(vertices_.cols()), 0);
   for (std::size_t i = 0; i < node_count; ++i) {
     topology.extra_begin[i] = static_cast<std::int32_t>(topology.refit_extra.size());
-    const std::int32_t first = float_boxes_ ? compact_nodes_[i].first : nodes_[i].first;
-    const std::int32_t count = float_boxes_ ? compact_nodes_[i].count : nodes_[i].count;
-    for (std::int32_t k = first; k < first + count; ++k) {
+    const TriangleRange range = triangleRange(i);
+    const std::int32_t first = range.first;
+    for (std::int32_t k = first; k < first + range.count; ++k) {
       for (int c = 0; c < 3; ++c) {
         const auto v = static_cast<std::size_t>(topology.triangles(c, k));
         if (first_triangle[v] >= first || stamp[v] == i + 1) continue;

@@ -12,14 +12,27 @@ namespace {
 
 // A subtree's nodes with their triangle positions and child indices moved to where the
 // subtree now sits: triangle positions from `first`, node indices from `root`.
-template <typename NodeT>
-std::vector<NodeT> placed(const std::vector<NodeT>& nodes, std::int32_t first, std::size_t root) {
-  std::vector<NodeT> out = nodes;
-  for (NodeT& node : out) {
+std::vector<Node> placed(const std::vector<Node>& nodes, std::int32_t first, std::size_t root) {
+  std::vector<Node> out = nodes;
+  for (Node& node : out) {
     node.first += first;
-    if (node.second_child >= 0) node.second_child += static_cast<std::int32_t>(root);
+    if (!node.isLeaf()) node.second_child += static_cast<std::int32_t>(root);
   }
   return out;
+}
+std::vector<CompactNode> placed(const std::vector<CompactNode>& nodes, std::int32_t first,
+                                std::size_t root) {
+  std::vector<CompactNode> out = nodes;
+  for (CompactNode& node : out)
+    node.link += node.isLeaf() ? first : static_cast<std::int32_t>(root);
+  return out;
+}
+
+void shiftSecondChild(Node& node, std::int64_t delta) {
+  node.second_child = static_cast<std::int32_t>(node.second_child + delta);
+}
+void shiftSecondChild(CompactNode& node, std::int64_t delta) {
+  node.link = static_cast<std::int32_t>(node.link + delta);
 }
 
 // Replaces nodes [root, end) by `replacement`; the indices of later nodes shift by the change in
@@ -31,8 +44,8 @@ void splice(std::vector<NodeT>& nodes, std::size_t root, std::size_t end,
       static_cast<std::int64_t>(replacement.size()) - static_cast<std::int64_t>(end - root);
   for (std::size_t j = 0; j < nodes.size(); ++j) {
     if (j >= root && j < end) continue;
-    if (nodes[j].second_child >= static_cast<std::int32_t>(end))
-      nodes[j].second_child = static_cast<std::int32_t>(nodes[j].second_child + delta);
+    if (!nodes[j].isLeaf() && nodes[j].secondChild() >= static_cast<std::int32_t>(end))
+      shiftSecondChild(nodes[j], delta);
   }
   const auto at = [&nodes](std::size_t k) {
     return nodes.begin() + static_cast<std::ptrdiff_t>(k);
@@ -44,9 +57,7 @@ void splice(std::vector<NodeT>& nodes, std::size_t root, std::size_t end,
 }  // namespace
 
 double ObbTree::boxVolume(std::size_t node) const {
-  const Eigen::Vector3d h = float_boxes_ ? Eigen::Vector3d(compact_nodes_[node].box.half_extents[0],
-                                                           compact_nodes_[node].box.half_extents[1],
-                                                           compact_nodes_[node].box.half_extents[2])
+  const Eigen::Vector3d h = float_boxes_ ? expandBox(compact_nodes_[node].box).half_extents
                                          : nodes_[node].box.half_extents;
   // Each extent at least 1% of the box's size, so that a flat box (a planar patch) compares by
   // its area instead of by a volume of rounding errors.
@@ -62,17 +73,17 @@ void ObbTree::recordFreshVolumes() {
 std::size_t ObbTree::subtreeEnd(std::size_t node) const {
   // The last node of a subtree is its rightmost leaf: follow second children down.
   for (;;) {
+    const bool leaf = float_boxes_ ? compact_nodes_[node].isLeaf() : nodes_[node].isLeaf();
+    if (leaf) return node + 1;
     const std::int32_t second =
-        float_boxes_ ? compact_nodes_[node].second_child : nodes_[node].second_child;
-    if (second < 0) return node + 1;
+        float_boxes_ ? compact_nodes_[node].secondChild() : nodes_[node].secondChild();
     node = static_cast<std::size_t>(second);
   }
 }
 
 std::size_t ObbTree::rebuildSubtree(std::size_t node) {
   TreeTopology& topology = ownTopology();
-  const std::int32_t first = float_boxes_ ? compact_nodes_[node].first : nodes_[node].first;
-  const std::int32_t count = float_boxes_ ? compact_nodes_[node].count : nodes_[node].count;
+  const auto [first, count] = triangleRange(node);
   const std::size_t end = subtreeEnd(node);
   const Eigen::Matrix3Xi triangles = topology.triangles.middleCols(first, count);
   BuildOptions options = options_;
@@ -129,9 +140,10 @@ void ObbTree::rebuildGrownSubtrees(RefitReport& report) {
     const auto [node, depth] = stack.back();
     stack.pop_back();
     depth_ = std::max(depth_, depth);
+    const bool leaf = float_boxes_ ? compact_nodes_[node].isLeaf() : nodes_[node].isLeaf();
+    if (leaf) continue;
     const std::int32_t second =
-        float_boxes_ ? compact_nodes_[node].second_child : nodes_[node].second_child;
-    if (second < 0) continue;
+        float_boxes_ ? compact_nodes_[node].secondChild() : nodes_[node].secondChild();
     stack.emplace_back(node + 1, depth + 1);
     stack.emplace_back(static_cast<std::size_t>(second), depth + 1);
   }

@@ -13,13 +13,14 @@ std::vector<char> dirtyNodes(const std::vector<NodeT>& nodes, const Eigen::Matri
   for (std::size_t i = nodes.size(); i-- > 0;) {
     const NodeT& node = nodes[i];
     if (node.isLeaf()) {
-      for (std::int32_t t = node.first; t < node.first + node.count && dirty[i] == 0; ++t) {
+      const std::int32_t first = node.leafFirst();
+      for (std::int32_t t = first; t < first + node.leafCount() && dirty[i] == 0; ++t) {
         dirty[i] = moved[static_cast<std::size_t>(triangles(0, t))] |
                    moved[static_cast<std::size_t>(triangles(1, t))] |
                    moved[static_cast<std::size_t>(triangles(2, t))];
       }
     } else {
-      dirty[i] = dirty[i + 1] | dirty[static_cast<std::size_t>(node.second_child)];
+      dirty[i] = dirty[i + 1] | dirty[static_cast<std::size_t>(node.secondChild())];
     }
   }
   return dirty;
@@ -51,11 +52,11 @@ RefitReport ObbTree::refit(const Eigen::Ref<const Eigen::Matrix3Xd>& vertices) {
     const std::vector<char> dirty = dirtyNodes(nodes, topology_->triangles, moved);
     for (std::size_t i = nodes.size(); i-- > 0;) {
       if (dirty[i] == 0) continue;
+      const TriangleRange range = triangleRange(i);
       if (spans) {
-        over_span(nodes[i].box, vertexSpan(i, nodes[i].first, nodes[i].count));
+        over_span(nodes[i].box, vertexSpan(i, range.first, range.count));
       } else {
-        over_triangles(nodes[i].box,
-                       topology_->triangles.middleCols(nodes[i].first, nodes[i].count));
+        over_triangles(nodes[i].box, topology_->triangles.middleCols(range.first, range.count));
       }
       ++report.nodes_refit;
     }

@@ -28,16 +28,14 @@ ObbTree ObbTree::buildLike(const ObbTree& sibling,
   tree.nodes_.resize(node_count);
   for (std::size_t i = 0; i < node_count; ++i) {
     Node& node = tree.nodes_[i];
+    const TriangleRange range = sibling.triangleRange(i);
+    node.first = range.first;
+    node.count = range.count;
     if (sibling.float_boxes_) {
       const CompactNode& from = sibling.compact_nodes_[i];
-      node.second_child = from.second_child;
-      node.first = from.first;
-      node.count = from.count;
+      node.second_child = from.isLeaf() ? -1 : from.secondChild();
     } else {
-      const Node& from = sibling.nodes_[i];
-      node.second_child = from.second_child;
-      node.first = from.first;
-      node.count = from.count;
+      node.second_child = sibling.nodes_[i].second_child;
     }
     node.box = fitter.fit(vertices, triangles, identity.data() + node.first, node.count);
   }

@@ -143,5 +143,33 @@ TEST(OrientedBoxRefit, KeepsAxesAndContainsMovedVertices) {
     EXPECT_TRUE(boxContains(box, s.vertices.col(v)));
 }
 
+// Compact boxes keep 15 bits a component of the quaternion and 8 significant bits of each extent,
+// rounded up: the decoded box still holds every vertex and is at most about 1/128 looser. Half
+// turns (w = 0, where a stored x, y, z would leave w poorly determined) decode to the same axes.
+TEST(CompactBox, HoldsEveryVertexAndStaysCloseToTheFittedBox) {
+  std::mt19937_64 rng(12);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  std::vector<Eigen::Matrix3d> rotations = {
+      Eigen::Matrix3d(Eigen::AngleAxisd(EIGEN_PI, Eigen::Vector3d::UnitZ())),
+      Eigen::Matrix3d(Eigen::AngleAxisd(EIGEN_PI, Eigen::Vector3d(1, 1, 0).normalized()))};
+  for (int trial = 0; trial < 40; ++trial) {
+    const Eigen::Vector3d axis = Eigen::Vector3d(u(rng), u(rng), u(rng)).normalized();
+    rotations.emplace_back(Eigen::AngleAxisd(EIGEN_PI * (1.0 + u(rng)), axis));
+  }
+  for (const Eigen::Matrix3d& rotation : rotations) {
+    const Soup s = boxMesh(Eigen::Vector3d(3.0, 0.7, 0.01), rotation, Eigen::Vector3d(5, -2, 1));
+    const OrientedBox fitted = fit(s);
+    const OrientedBox decoded = expandBox(compactBox(fitted, s.vertices, s.triangles));
+    for (int v = 0; v < s.vertices.cols(); ++v)
+      EXPECT_TRUE(boxContains(decoded, s.vertices.col(v)));
+    EXPECT_LT(axisDefect(decoded.axes), 1e-12);
+    EXPECT_LT((decoded.axes - fitted.axes).cwiseAbs().maxCoeff(), 2e-4);
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_GE(decoded.half_extents[k], fitted.half_extents[k] * (1.0 - 1e-9));
+      EXPECT_LE(decoded.half_extents[k], fitted.half_extents[k] * (1.0 + 1.0 / 128) + 2e-3);
+    }
+  }
+}
+
 }  // namespace
 }  // namespace collido::obbtree

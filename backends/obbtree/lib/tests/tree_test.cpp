@@ -235,6 +235,19 @@ TEST(ObbTreeBuild, CoincidentCentresMakeASingleLeaf) {
   }
 }
 
+// A compact node counts a leaf's triangles in 16 bits: more coincident centres than that are
+// split in halves, in both kinds of tree, and a larger max_leaf_triangles is capped.
+TEST(ObbTreeBuild, CoincidentCentresBeyondTheLeafLimitAreSplitInHalves) {
+  const TriangleMesh mesh = coincidentCentres(Eigen::Vector3d(1, 2, 3), kMaxLeafTriangles + 5);
+  for (const bool float_boxes : {false, true}) {
+    const ObbTree tree = ObbTree::build(mesh.vertices, mesh.triangles, {1 << 20, float_boxes});
+    ASSERT_EQ(tree.nodeCount(), 3u);
+    EXPECT_EQ(tree.validate(), "");
+    EXPECT_EQ(tree.triangleRange(1).count, (kMaxLeafTriangles + 5) / 2);
+    EXPECT_EQ(tree.triangleRange(2).count, kMaxLeafTriangles + 5 - (kMaxLeafTriangles + 5) / 2);
+  }
+}
+
 TEST(ObbTreeBuild, TwoClustersOfCoincidentCentresMakeTwoLeaves) {
   TriangleMesh a = coincidentCentres(Eigen::Vector3d(1, 2, 3), 20);
   const TriangleMesh b = coincidentCentres(Eigen::Vector3d(101, 2, 3), 30);
@@ -422,10 +435,9 @@ TEST(ObbTreeRefit, OnlyBoxesWithMovedVerticesAreRefit) {
         const CompactBox& now = tree.compactNodes()[i].box;
         const CompactBox& then = compact_before[i].box;
         bool same = true;
-        for (int k = 0; k < 3; ++k) {
-          same = same && now.center[k] == then.center[k] &&
-                 now.half_extents[k] == then.half_extents[k];
-        }
+        for (int k = 0; k < 3; ++k)
+          same =
+              same && now.center[k] == then.center[k] && halfExtent(now, k) == halfExtent(then, k);
         changed += same ? 0 : 1;
       } else {
         changed += tree.nodes()[i].box.half_extents != before[i].box.half_extents ||
@@ -504,8 +516,16 @@ TEST(ObbTreeFloatBoxes, SameShapeContainedAndSmaller) {
       EXPECT_EQ(floats.validate(), "");
       ASSERT_EQ(floats.nodeCount(), doubles.nodeCount());
       for (std::size_t i = 0; i < floats.nodeCount(); ++i) {
-        EXPECT_EQ(floats.compactNodes()[i].second_child, doubles.nodes()[i].second_child);
-        EXPECT_EQ(floats.compactNodes()[i].count, doubles.nodes()[i].count);
+        const CompactNode& compact = floats.compactNodes()[i];
+        const Node& node = doubles.nodes()[i];
+        ASSERT_EQ(compact.isLeaf(), node.isLeaf());
+        if (node.isLeaf()) {
+          EXPECT_EQ(compact.leafCount(), node.count);
+        } else {
+          EXPECT_EQ(compact.secondChild(), node.second_child);
+        }
+        EXPECT_EQ(floats.triangleRange(i).first, node.first);
+        EXPECT_EQ(floats.triangleRange(i).count, node.count);
       }
       EXPECT_LT(floats.memoryBytes(), doubles.memoryBytes());
     }

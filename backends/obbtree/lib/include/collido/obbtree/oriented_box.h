@@ -61,16 +61,27 @@ struct VertexSpan {
 void refitBoxExtents(OrientedBox& box, const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
                      const VertexSpan& span, double axis_defect);
 
-/// An oriented box stored in single precision: 40 bytes instead of 120. The axes are a unit
-/// quaternion (w, x, y, z), decoded in double by expandBox; the half extents were measured on
-/// the decoded axes about the stored centre when the box was made (compactBox), widened as a
-/// fitted box's are and rounded up to float, so the box the query sees — expandBox's — contains
-/// every vertex it was made for, exactly as a double box does.
+/// An oriented box in 26 bytes instead of 120. The centre is rounded to float. The axes are a
+/// unit quaternion kept to 15 bits a component (its largest component left out and recovered
+/// from the unit norm), decoded in double by expandBox. The half extents were measured on the
+/// decoded axes about the stored centre when the box was made (compactBox), widened as a fitted
+/// box's are, and rounded up to whole units of 2^-18 of the largest (a shared binary exponent
+/// and three 18-bit counts). So the box the query sees — expandBox's — contains every vertex it
+/// was made for, exactly as a double box does, and is looser than the fitted box only by about
+/// 1e-4 of its size (the rounded axes). Packed to 2-byte alignment so that a CompactNode holds
+/// it, a leaf's triangle count and a link in 32 bytes.
+#pragma pack(push, 2)
 struct CompactBox {
-  float rotation[4] = {1.0F, 0.0F, 0.0F, 0.0F};
   float center[3] = {0.0F, 0.0F, 0.0F};
-  float half_extents[3] = {0.0F, 0.0F, 0.0F};
+  /// The half extents, packed (oriented_box.cpp, encodeExtents); read them with halfExtent().
+  std::uint32_t half_extents[2] = {0, 0};
+  /// The quaternion, packed (oriented_box.cpp, encodeRotation); the default is the identity.
+  std::uint16_t rotation[3] = {32769, 32769, 32768};
 };
+#pragma pack(pop)
+
+/// Half extent k of a compact box, as the query uses it.
+double halfExtent(const CompactBox& box, int k);
 
 /// The box a compact box stands for: axes decoded from the quaternion (normalised in double;
 /// the one computation used at build, refit and query time), centre and extents as stored.

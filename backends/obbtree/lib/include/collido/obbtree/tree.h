@@ -14,9 +14,10 @@ namespace collido::obbtree {
 
 /// How to build a tree.
 struct BuildOptions {
-  std::int32_t max_leaf_triangles = 1;  ///< split while a node holds more than this (>= 1)
-  /// Store the boxes in single precision (CompactBox: 52 instead of 136 bytes a node), still
-  /// containing every triangle they bound; the tree's shape is the same as with double boxes.
+  /// Split while a node holds more than this (1 to kMaxLeafTriangles).
+  std::int32_t max_leaf_triangles = 1;
+  /// Store compact boxes (CompactNode: 32 instead of 136 bytes a node), still containing every
+  /// triangle they bound; the tree's shape is the same as with double boxes.
   bool float_boxes = false;
   /// The model will be refit (update() with moved vertices): keep, per node, the list of its
   /// distinct vertices (in a compact form: about 10 bytes per triangle), so that a refit
@@ -46,15 +47,34 @@ struct Node {
   std::int32_t count = 0;          ///< triangles in this subtree: order[first .. first + count)
 
   bool isLeaf() const { return second_child < 0; }
+  // The accessors a CompactNode has too, for code written for either kind of node.
+  std::int32_t secondChild() const { return second_child; }
+  std::int32_t leafFirst() const { return first; }
+  std::int32_t leafCount() const { return count; }
 };
 
-/// A node with its box in single precision (BuildOptions::float_boxes); same layout otherwise.
+/// A node with a compact box (BuildOptions::float_boxes): 32 bytes. An inner node keeps only
+/// its second child's index and a leaf only its triangles; the tree computes an inner node's
+/// triangle range when it needs it (ObbTree::triangleRange).
 struct CompactNode {
   CompactBox box;
-  std::int32_t second_child = -1;
+  std::uint16_t leaf_count = 0;  ///< triangles in a leaf (at most kMaxLeafTriangles); 0 inside
+  std::int32_t link = 0;         ///< an inner node's second child; a leaf's first triangle position
+
+  bool isLeaf() const { return leaf_count != 0; }
+  std::int32_t secondChild() const { return link; }
+  std::int32_t leafFirst() const { return link; }
+  std::int32_t leafCount() const { return leaf_count; }
+};
+
+/// The most triangles a leaf holds, whatever BuildOptions::max_leaf_triangles says (a node whose
+/// triangle centres all coincide, which no plane splits, is split in halves above it).
+inline constexpr std::int32_t kMaxLeafTriangles = 65535;
+
+/// The triangles of a subtree: positions [first, first + count) of the tree's triangle order.
+struct TriangleRange {
   std::int32_t first = 0;
   std::int32_t count = 0;
-  bool isLeaf() const { return second_child < 0; }
 };
 
 /// What a tree's shape fixes whatever the vertex positions: the triangles in leaf order, their
@@ -113,6 +133,8 @@ class ObbTree {
     return topology_->ids[static_cast<std::size_t>(k)];
   }
   std::size_t triangleCount() const { return topology_->ids.size(); }
+  /// The triangles under node i (inner nodes of a compact tree: found through its last leaf).
+  TriangleRange triangleRange(std::size_t node) const;
   /// Deepest level (the root is at depth 0).
   int depth() const { return depth_; }
   /// The largest axisDefect of any box as the query decodes it (the separating-axis bound's
