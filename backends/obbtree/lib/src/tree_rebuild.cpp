@@ -57,8 +57,9 @@ void splice(std::vector<NodeT>& nodes, std::size_t root, std::size_t end,
 }  // namespace
 
 double ObbTree::boxVolume(std::size_t node) const {
-  const Eigen::Vector3d h = float_boxes_ ? expandBox(compact_nodes_[node].box).half_extents
-                                         : nodes_[node].box.half_extents;
+  Eigen::Vector3d h = float_boxes_ ? Eigen::Vector3d::Zero() : nodes_[node].box.half_extents;
+  for (int k = 0; k < 3 && float_boxes_; ++k)
+    h[k] = halfExtent(compact_nodes_[node].box, k);
   // Each extent at least 1% of the box's size, so that a flat box (a planar patch) compares by
   // its area instead of by a volume of rounding errors.
   return 8.0 * (h.array() + 0.01 * h.sum()).prod();
