@@ -179,14 +179,10 @@ void refitBoxExtents(OrientedBox& box, const Eigen::Ref<const Eigen::Matrix3Xd>&
 
 namespace {
 
-// Half extents in 64 bits: three 18-bit counts (bits 0-17, 18-35, 36-53) of a unit 2^e shared
-// by the three, with e + kExtentBias in bits 54-61. The unit is the smallest power of two that
-// counts the largest extent in 18 bits, so each extent is rounded up by at most 2^-17 of the
-// largest. e = kExtentInfinite - kExtentBias stands for infinite extents.
-constexpr int kExtentBits = 18;
-constexpr std::uint64_t kExtentMask = (std::uint64_t{1} << kExtentBits) - 1;
-constexpr int kExtentBias = 168;      // e from -168 (about 3e-51) ...
-constexpr int kExtentInfinite = 255;  // ... to 86 (counts up to about 2e31)
+// Half extents in 64 bits (the layout is in oriented_box.h, CompactBoxLayout): the unit is the
+// smallest power of two that counts the largest extent in 18 bits, so each extent is rounded up
+// by at most 2^-17 of the largest.
+using namespace compact_box_layout;
 
 std::uint64_t encodeExtents(const Eigen::Vector3d& reach) {
   const double largest = reach.maxCoeff();
@@ -232,22 +228,23 @@ void encodeRotation(const Eigen::Matrix3d& axes, std::uint16_t (&words)[3]) {
 }
 
 Eigen::Matrix3d decodeRotation(const std::uint16_t (&words)[3]) {
-  // Decoded on every node a query visits: multiplies only, and no normalisation, the left-out
-  // component being chosen to make the quaternion unit (to rounding).
+  // Decoded on every node a query visits: multiplies and one square root, no normalisation
+  // (the left-out component makes the quaternion unit, to rounding), and the left-out
+  // component's place chosen by selects rather than stores to a computed index.
   constexpr double kStep = kComponentRange / static_cast<double>(kComponentLevels);
+  const auto stored = [&](int k) {
+    return static_cast<double>((words[k] >> 1) - (kComponentLevels + 1)) * kStep;
+  };
+  const double a = stored(0);
+  const double b = stored(1);
+  const double c = stored(2);
+  const double left_out = std::sqrt(std::max(0.0, 1.0 - (a * a + b * b + c * c)));
   const int largest = (words[0] & 1) | ((words[1] & 1) << 1);
-  Eigen::Vector4d c;
-  double squared = 0.0;
-  int k = 0;
-  for (int i = 0; i < 4; ++i) {
-    if (i == largest) continue;
-    c[i] = static_cast<double>((words[k++] >> 1) - (kComponentLevels + 1)) * kStep;
-    squared += c[i] * c[i];
-  }
-  c[largest] = std::sqrt(std::max(0.0, 1.0 - squared));
-  Eigen::Quaterniond q;
-  q.coeffs() = c;
-  return q.toRotationMatrix();
+  const double x = largest == 0 ? left_out : a;
+  const double y = largest == 0 ? a : (largest == 1 ? left_out : b);
+  const double z = largest <= 1 ? b : (largest == 2 ? left_out : c);
+  const double w = largest == 3 ? left_out : c;
+  return Eigen::Quaterniond(w, x, y, z).toRotationMatrix();
 }
 
 // Stores `center` (rounded to float) and the extents about it on the stored axes: the largest
@@ -274,18 +271,6 @@ void measureCompact(CompactBox& box, const Eigen::Vector3d& center,
 }
 
 }  // namespace
-
-double halfExtent(const CompactBox& box, int k) {
-  const std::uint64_t packed =
-      box.half_extents[0] | (static_cast<std::uint64_t>(box.half_extents[1]) << 32U);
-  const auto biased = static_cast<int>(packed >> (3 * kExtentBits));
-  if (biased == kExtentInfinite) return std::numeric_limits<double>::infinity();
-  // The unit 2^e as a double built from its exponent bits: e is within the normal range.
-  const std::uint64_t unit_bits = static_cast<std::uint64_t>(biased - kExtentBias + 1023) << 52U;
-  double unit = 0.0;
-  std::memcpy(&unit, &unit_bits, sizeof unit);
-  return static_cast<double>((packed >> (kExtentBits * k)) & kExtentMask) * unit;
-}
 
 OrientedBox expandBox(const CompactBox& box) {
   OrientedBox out;

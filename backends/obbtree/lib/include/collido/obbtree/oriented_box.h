@@ -1,6 +1,8 @@
 #pragma once
 
 #include <cstdint>
+#include <cstring>
+#include <limits>
 #include <vector>
 
 #include <Eigen/Core>
@@ -80,8 +82,30 @@ struct CompactBox {
 };
 #pragma pack(pop)
 
-/// Half extent k of a compact box, as the query uses it.
-double halfExtent(const CompactBox& box, int k);
+/// The layout of CompactBox::half_extents, as one 64-bit word (half_extents[0] its low half):
+/// three 18-bit counts (bits 0-17, 18-35, 36-53) of a unit 2^e shared by the three, and
+/// e + kExtentBias in bits 54-61; kExtentInfinite there stands for infinite extents.
+namespace compact_box_layout {
+inline constexpr int kExtentBits = 18;
+inline constexpr std::uint64_t kExtentMask = (std::uint64_t{1} << kExtentBits) - 1;
+inline constexpr int kExtentBias = 168;      // e from -168 (about 3e-51) ...
+inline constexpr int kExtentInfinite = 255;  // ... to 86 (counts up to about 2e31)
+}  // namespace compact_box_layout
+
+/// Half extent k of a compact box, as the query uses it (inline: the descent reads the sizes
+/// of the boxes it splits).
+inline double halfExtent(const CompactBox& box, int k) {
+  using namespace compact_box_layout;
+  const std::uint64_t packed =
+      box.half_extents[0] | (static_cast<std::uint64_t>(box.half_extents[1]) << 32U);
+  const auto biased = static_cast<int>(packed >> (3 * kExtentBits));
+  if (biased == kExtentInfinite) return std::numeric_limits<double>::infinity();
+  // The unit 2^e as a double made from its exponent bits: e is within the normal range.
+  const std::uint64_t unit_bits = static_cast<std::uint64_t>(biased - kExtentBias + 1023) << 52U;
+  double unit = 0.0;
+  std::memcpy(&unit, &unit_bits, sizeof unit);
+  return static_cast<double>((packed >> (kExtentBits * k)) & kExtentMask) * unit;
+}
 
 /// The box a compact box stands for: axes decoded from the quaternion (normalised in double;
 /// the one computation used at build, refit and query time), centre and extents as stored.
