@@ -185,18 +185,24 @@ namespace {
 using namespace compact_box_layout;
 
 std::uint64_t encodeExtents(const Eigen::Vector3d& reach) {
+  // Scaled by powers of two made from their bits (exact: the counts are normal numbers), and the
+  // largest extent's binary exponent read from its bits: refit encodes every box it measures.
   const double largest = reach.maxCoeff();
   int e = kExtentInfinite - kExtentBias;
   if (std::isfinite(largest)) {
-    e = std::max(-kExtentBias, std::ilogb(largest) - (kExtentBits - 1));
-    if (std::ceil(std::ldexp(largest, -e)) > static_cast<double>(kExtentMask)) ++e;
+    std::uint64_t bits = 0;
+    std::memcpy(&bits, &largest, sizeof bits);
+    // A subnormal's exponent field is 0: far below -kExtentBias either way.
+    const int exponent = static_cast<int>((bits >> 52U) & 0x7FFU) - 1023;
+    e = std::max(-kExtentBias, exponent - (kExtentBits - 1));
+    if (std::ceil(largest * powerOfTwo(-e)) > static_cast<double>(kExtentMask)) ++e;
   }
   std::uint64_t packed = 0;
   if (e + kExtentBias >= kExtentInfinite) {
     packed = std::uint64_t{kExtentInfinite} << (3 * kExtentBits);
   } else {
     for (int k = 0; k < 3; ++k) {
-      const auto count = static_cast<std::uint64_t>(std::ceil(std::ldexp(reach[k], -e)));
+      const auto count = static_cast<std::uint64_t>(std::ceil(reach[k] * powerOfTwo(-e)));
       packed |= count << (kExtentBits * k);
     }
     packed |= static_cast<std::uint64_t>(e + kExtentBias) << (3 * kExtentBits);

@@ -136,6 +136,26 @@ TriangleRange ObbTree::triangleRange(std::size_t node) const {
   return TriangleRange{first, last.leafFirst() + last.leafCount() - first};
 }
 
+std::vector<TriangleRange> ObbTree::triangleRanges() const {
+  std::vector<TriangleRange> ranges(nodeCount());
+  if (!float_boxes_) {
+    for (std::size_t i = 0; i < ranges.size(); ++i)
+      ranges[i] = TriangleRange{nodes_[i].first, nodes_[i].count};
+    return ranges;
+  }
+  // Children come after their parent: a reverse sweep has both children's ranges at hand.
+  for (std::size_t i = ranges.size(); i-- > 0;) {
+    const CompactNode& node = compact_nodes_[i];
+    if (node.isLeaf()) {
+      ranges[i] = TriangleRange{node.leafFirst(), node.leafCount()};
+    } else {
+      const TriangleRange& second = ranges[static_cast<std::size_t>(node.secondChild())];
+      ranges[i] = TriangleRange{ranges[i + 1].first, ranges[i + 1].count + second.count};
+    }
+  }
+  return ranges;
+}
+
 void ObbTree::measureAxisDefect() {
   // Refit keeps the axes, so this bound holds for the tree's whole life.
   for (const Node& node : nodes_)
@@ -167,9 +187,10 @@ void ObbTree::buildVertexSpans() {
   topology.extra_begin.assign(node_count + 1, 0);
   topology.refit_extra.clear();
   std::vector<std::size_t> stamp(static_cast<std::size_t>(vertices_.cols()), 0);
+  const std::vector<TriangleRange> ranges = triangleRanges();
   for (std::size_t i = 0; i < node_count; ++i) {
     topology.extra_begin[i] = static_cast<std::int32_t>(topology.refit_extra.size());
-    const TriangleRange range = triangleRange(i);
+    const TriangleRange range = ranges[i];
     const std::int32_t first = range.first;
     for (std::int32_t k = first; k < first + range.count; ++k) {
       for (int c = 0; c < 3; ++c) {

@@ -48,11 +48,17 @@ RefitReport ObbTree::refit(const Eigen::Ref<const Eigen::Matrix3Xd>& vertices) {
   // boxes are widened by the tree's bound on their axes' defect (axisDefect(), computed at
   // build over every box and kept by a refit, which keeps the axes).
   const bool spans = !topology_->first_use.empty();
+  // Compact nodes keep no inner ranges: one sweep finds them all.
+  const std::vector<TriangleRange> compact_ranges =
+      float_boxes_ ? triangleRanges() : std::vector<TriangleRange>();
+  const auto rangeOf = [&](std::size_t i) {
+    return float_boxes_ ? compact_ranges[i] : TriangleRange{nodes_[i].first, nodes_[i].count};
+  };
   const auto refitDirty = [&](auto& nodes, auto&& over_triangles, auto&& over_span) {
     const std::vector<char> dirty = dirtyNodes(nodes, topology_->triangles, moved);
     for (std::size_t i = nodes.size(); i-- > 0;) {
       if (dirty[i] == 0) continue;
-      const TriangleRange range = triangleRange(i);
+      const TriangleRange range = rangeOf(i);
       if (spans) {
         over_span(nodes[i].box, vertexSpan(i, range.first, range.count));
       } else {

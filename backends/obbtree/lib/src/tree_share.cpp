@@ -26,9 +26,10 @@ ObbTree ObbTree::buildLike(const ObbTree& sibling,
   BoxFitter fitter(static_cast<std::size_t>(vertices.cols()));
   const std::size_t node_count = sibling.nodeCount();
   tree.nodes_.resize(node_count);
+  const std::vector<TriangleRange> ranges = sibling.triangleRanges();
   for (std::size_t i = 0; i < node_count; ++i) {
     Node& node = tree.nodes_[i];
-    const TriangleRange range = sibling.triangleRange(i);
+    const TriangleRange range = ranges[i];
     node.first = range.first;
     node.count = range.count;
     if (sibling.float_boxes_) {

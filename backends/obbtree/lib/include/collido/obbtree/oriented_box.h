@@ -90,6 +90,15 @@ inline constexpr int kExtentBits = 18;
 inline constexpr std::uint64_t kExtentMask = (std::uint64_t{1} << kExtentBits) - 1;
 inline constexpr int kExtentBias = 168;      // e from -168 (about 3e-51) ...
 inline constexpr int kExtentInfinite = 255;  // ... to 86 (counts up to about 2e31)
+
+/// 2^e for a normal exponent (-1022 <= e <= 1023), made from its bits: exact, and no library
+/// call on the refit's and the query's paths.
+inline double powerOfTwo(int e) {
+  const std::uint64_t bits = static_cast<std::uint64_t>(e + 1023) << 52U;
+  double value = 0.0;
+  std::memcpy(&value, &bits, sizeof value);
+  return value;
+}
 }  // namespace compact_box_layout
 
 /// Half extent k of a compact box, as the query uses it (inline: the descent reads the sizes
@@ -100,11 +109,8 @@ inline double halfExtent(const CompactBox& box, int k) {
       box.half_extents[0] | (static_cast<std::uint64_t>(box.half_extents[1]) << 32U);
   const auto biased = static_cast<int>(packed >> (3 * kExtentBits));
   if (biased == kExtentInfinite) return std::numeric_limits<double>::infinity();
-  // The unit 2^e as a double made from its exponent bits: e is within the normal range.
-  const std::uint64_t unit_bits = static_cast<std::uint64_t>(biased - kExtentBias + 1023) << 52U;
-  double unit = 0.0;
-  std::memcpy(&unit, &unit_bits, sizeof unit);
-  return static_cast<double>((packed >> (kExtentBits * k)) & kExtentMask) * unit;
+  return static_cast<double>((packed >> (kExtentBits * k)) & kExtentMask) *
+         powerOfTwo(biased - kExtentBias);
 }
 
 /// The box a compact box stands for: axes decoded from the quaternion (normalised in double;

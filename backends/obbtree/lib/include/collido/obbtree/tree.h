@@ -135,6 +135,8 @@ class ObbTree {
   std::size_t triangleCount() const { return topology_->ids.size(); }
   /// The triangles under node i (inner nodes of a compact tree: found through its last leaf).
   TriangleRange triangleRange(std::size_t node) const;
+  /// Every node's triangles, in one sweep (for passes over all nodes; triangleRange walks).
+  std::vector<TriangleRange> triangleRanges() const;
   /// Deepest level (the root is at depth 0).
   int depth() const { return depth_; }
   /// The largest axisDefect of any box as the query decodes it (the separating-axis bound's
