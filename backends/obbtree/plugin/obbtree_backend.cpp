@@ -40,8 +40,10 @@ class ObbTreeBackend final : public Backend {
     caps.counts_update_work = true;
     caps.notes =
         "Exact triangle-pair answers (exact predicates on the doubles of B's triangles mapped "
-        "into A's frame). Distances by best-first descent with box-pair lower bounds, exact to "
-        "rounding (0 exactly on contact), with a certified interval. No contact points: "
+        "into A's frame). Distances by best-first descent with box-pair lower bounds, with a "
+        "certified interval about 1e-13 of the coordinates' magnitude wide (at most 2^-19 of the "
+        "distance beyond the request's tolerance): pairs the double computation cannot certify "
+        "are decided exactly, and 0 means the exact test found contact. No contact points: "
         "mesh-mesh contact geometry is not defined yet.";
     return caps;
   }
@@ -87,7 +89,7 @@ class ObbTreeBackend final : public Backend {
       d.triangle_a = answer.triangle_a;
       d.triangle_b = answer.triangle_b;
       d.lower = answer.lower_bound;
-      d.upper = answer.distance;
+      d.upper = answer.upper_bound;
       result.intersecting = answer.distance == 0.0;
       result.counters.bv_tests = answer.box_tests;
       result.counters.primitive_tests = answer.triangle_tests;

@@ -214,15 +214,22 @@ constexpr ExactDistance kExactDistances[3][3] = {
     {&pointTriDistance, &pointSegDistance, &pointPointDistance},
 };
 
-// One triangle of a mesh, posed exactly and classified.
-Element posedElement(const TriangleMesh& mesh, const Pose& pose, std::int32_t t) {
+// One triangle given by its model corners, posed exactly and classified.
+Element posedElement(const std::array<Eigen::Vector3d, 3>& corners, const Pose& pose) {
   TriangleMesh single;
   single.vertices.resize(3, 3);
   for (int k = 0; k < 3; ++k)
-    single.vertices.col(k) = mesh.corner(static_cast<std::size_t>(t), k);
+    single.vertices.col(k) = corners[static_cast<std::size_t>(k)];
   single.triangles = Eigen::Matrix3Xi(3, 1);
   single.triangles.col(0) << 0, 1, 2;
   return poseMesh(single, pose).elements.front();
+}
+
+Element posedElement(const TriangleMesh& mesh, const Pose& pose, std::int32_t t) {
+  std::array<Eigen::Vector3d, 3> corners;
+  for (int k = 0; k < 3; ++k)
+    corners[static_cast<std::size_t>(k)] = mesh.corner(static_cast<std::size_t>(t), k);
+  return posedElement(corners, pose);
 }
 
 // A uniform grid over the region where the two meshes' bounds overlap, holding A's elements.
@@ -374,6 +381,17 @@ double exactPairSquaredDistance(const TriangleMesh& a, const Pose& pose_a, const
   const Element y = posedElement(b, pose_b, pair.b);
   const FT d2 = kExactDistances[x.kind][y.kind](x, y);
   return CGAL::to_double(d2.exact());
+}
+
+ExactInterval exactPosedSquaredDistance(const std::array<Eigen::Vector3d, 3>& a, const Pose& pose_a,
+                                        const std::array<Eigen::Vector3d, 3>& b,
+                                        const Pose& pose_b) {
+  const Element x = posedElement(a, pose_a);
+  const Element y = posedElement(b, pose_b);
+  const FT d2 = kExactDistances[x.kind][y.kind](x, y);
+  const auto& exact = d2.exact();
+  const std::pair<double, double> bounds = CGAL::to_interval(exact);
+  return ExactInterval{bounds.first, CGAL::to_double(exact), bounds.second};
 }
 
 bool exactTrianglesIntersect(const std::array<Eigen::Vector3d, 3>& t1,

@@ -2,8 +2,10 @@
 #include <collido/obbtree/distance.h>
 
 #include <collido/obbtree/triangle_intersection.h>
+#include <collido/oracle/distance_oracle.h>
 #include <collido/oracle/triangle_distance.h>
 
+#include "certified_distance.h"
 #include "query_bounds.h"
 
 #include <algorithm>
@@ -89,37 +91,53 @@ class Search {
         std::max(root_a.center.cwiseAbs().maxCoeff() + root_a.half_extents.sum(),
                  map_(root_b.center).cwiseAbs().maxCoeff() + root_b.half_extents.sum());
     rounding_ = 1e-13 * magnitude;
+    // Distances in A's frame are those of R_a^-1 applied to the world; R_a's singular values
+    // lie within sqrt(1 -+ defect) of 1 (axisDefect bounds |R_a^T R_a - I|).
+    const double defect = axisDefect(pose_a.linear());
+    shrink_ = defect < 1e-3 ? (1.0 - defect) * (1.0 - 2.0 * kEps) : 0.0;
+    grow_ = defect < 1e-3 ? (1.0 + defect) * (1.0 + 2.0 * kEps)
+                          : std::numeric_limits<double>::infinity();
   }
 
   void run() {
     answer_ = DistanceAnswer{};
-    best_ = std::numeric_limits<double>::infinity();
+    best_value_ = std::numeric_limits<double>::infinity();
+    best_upper_ = std::numeric_limits<double>::infinity();
+    floor_ = std::numeric_limits<double>::infinity();
     push(0, 0);
-    double lower = best_;
     while (!queue_.empty()) {
       const Pending next = queue_.top();
-      if (next.bound >= best_ - tolerance()) {
-        lower = next.bound;
+      if (worldLower(next.bound) >= best_value_ - tolerance()) {
+        floor_ = std::min(floor_, worldLower(next.bound));
         break;
       }
       queue_.pop();
       expand(next);
     }
-    if (queue_.empty()) lower = best_;
-    answer_.distance = best_;
-    answer_.lower_bound = std::min(lower, best_);
+    answer_.upper_bound = best_upper_;
+    answer_.lower_bound = std::min(floor_, answer_.distance);
+    if (best_value_ == 0.0) answer_.lower_bound = answer_.upper_bound = 0.0;
   }
 
  private:
-  // What the search may leave unproven: the request's tolerance, and never less than rounding
-  // (1e-13 of the coordinates' magnitude), so that pairs tied with the best one to rounding —
-  // parallel faces put thousands at one distance — are not all opened down to their triangles.
-  // Not within rounding of contact: there a pair may touch exactly, and contact is decided
-  // exactly (0), so every pair that could touch is tried.
+  // The relative width a pair's double interval must reach; a wider one (nearly touching,
+  // slivers, near-parallel edges) is decided exactly. Double intervals are about 1e-13 of the
+  // coordinates' magnitude wide, so this sends a pair to the exact stage only when it is within
+  // about 1e-7 of the magnitude of contact or badly conditioned.
+  static constexpr double kRelativeWidth = 0x1p-20;
+
+  // What the search may leave unproven: the request's tolerance, and pairs tied with the best
+  // to rounding (1e-13 of the coordinates' magnitude, but never more than kRelativeWidth of the
+  // distance), so that parallel faces, which put thousands of pairs at one distance, are not
+  // all opened down to their triangles. Near contact that is a tiny share, and every pair that
+  // could touch is tried.
   double tolerance() const {
-    const double rounding = best_ > 4.0 * rounding_ ? rounding_ : 0.0;
-    return std::max({request_.abs_tolerance, request_.rel_tolerance * best_, rounding});
+    return std::max({request_.abs_tolerance, request_.rel_tolerance * best_value_,
+                     std::min(rounding_, kRelativeWidth * best_value_)});
   }
+
+  // A lower bound in A's frame as a lower bound on the world distance.
+  double worldLower(double a_frame) const { return std::max(0.0, a_frame * shrink_); }
 
   struct MappedBox {
     Eigen::Matrix3d axes;
@@ -166,7 +184,10 @@ class Search {
 
   void push(std::int32_t ia, std::int32_t ib) {
     const double lower = bound(ia, ib);
-    if (lower >= best_ - tolerance()) return;
+    if (worldLower(lower) >= best_value_ - tolerance()) {
+      floor_ = std::min(floor_, worldLower(lower));
+      return;
+    }
     queue_.push(Pending{lower, ia, ib});
   }
 
@@ -217,36 +238,82 @@ class Search {
           std::sqrt(3.0) * map_.bounds.pointError(local_b[0].cwiseAbs().cwiseMax(
                                local_b[1].cwiseAbs().cwiseMax(local_b[2].cwiseAbs())));
       for (const LeafTriangle& ta_leaf : leaf_a_) {
-        const std::array<Eigen::Vector3d, 3>& corners_a = ta_leaf.corners;
         // The gap between the triangles' axis-aligned bounds (in A's frame) is a lower bound on
         // their distance: a pair that cannot beat the best is not measured.
         const double gap = (ta_leaf.lo - hi_b).cwiseMax(lo_b - ta_leaf.hi).cwiseMax(0.0).norm();
-        if (gap * (1.0 - 8.0 * kEps) - mapping_error >= best_ - tolerance()) continue;
-        ++answer_.triangle_tests;
-        TriangleClosestPoints closest = closestPointsOfTriangles(corners_a, corners_b);
-        if (!(closest.distance < best_)) continue;
-        // Within rounding of contact: the exact test says whether it is contact.
-        const double rounding =
-            4.0 * map_.bounds.pointError(local_b[0].cwiseAbs() + local_b[1].cwiseAbs() +
-                                         local_b[2].cwiseAbs()) +
-            64.0 * kEps * corners_a[0].cwiseAbs().maxCoeff();
-        if (closest.distance <= rounding &&
-            posedTrianglesIntersect(corners_a.data(), pose_a_, local_b.data(), pose_b_)) {
-          closest.distance = 0.0;
-          closest.point_b = closest.point_a;
+        const double gap_bound = worldLower(gap * (1.0 - 8.0 * kEps) - mapping_error);
+        if (gap_bound >= best_value_ - tolerance()) {
+          floor_ = std::min(floor_, gap_bound);
+          continue;
         }
-        best_ = closest.distance;
-        answer_.point_a = pose_a_ * closest.point_a;
-        answer_.point_b = closest.distance == 0.0 ? answer_.point_a : pose_a_ * closest.point_b;
+        ++answer_.triangle_tests;
+        const PairDistance pair = measure(ta_leaf.corners, corners_b, local_b, mapping_error);
+        floor_ = std::min(floor_, pair.lower);
+        best_upper_ = std::min(best_upper_, pair.upper);
+        if (!(pair.value < best_value_)) continue;
+        best_value_ = pair.value;
+        answer_.distance = pair.value;
+        answer_.point_a = pose_a_ * pair.point_a;
+        answer_.point_b = pair.value == 0.0 ? answer_.point_a : pose_a_ * pair.point_b;
         answer_.triangle_a = ta_leaf.id;
         answer_.triangle_b = b_.triangleId(j);
-        if (best_ == 0.0) {
+        if (best_value_ == 0.0) {
           // Nothing can be closer: end the search.
           queue_ = {};
           return;
         }
       }
     }
+  }
+
+  // One triangle pair's world distance and interval.
+  struct PairDistance {
+    double lower = 0.0;
+    double upper = 0.0;
+    double value = 0.0;
+    Eigen::Vector3d point_a;  // in A's frame
+    Eigen::Vector3d point_b;
+  };
+
+  // A pair found touching: distance 0, at a shared point as computed (the crossing point of an
+  // edge through the other's face, which the certified candidates do not include).
+  static PairDistance touching(const std::array<Eigen::Vector3d, 3>& corners_a,
+                               const std::array<Eigen::Vector3d, 3>& corners_b, PairDistance pair) {
+    pair.lower = pair.upper = pair.value = 0.0;
+    pair.point_a = closestPointsOfTriangles(corners_a, corners_b).point_a;
+    pair.point_b = pair.point_a;
+    return pair;
+  }
+
+  // In double precision with a certified interval (certified_distance.h); where that interval
+  // cannot rule out contact, or is wider than kRelativeWidth of its lower end, the pair is
+  // decided in exact arithmetic on the world corners: contact by the exact triangle test, else
+  // the exact squared distance.
+  PairDistance measure(const std::array<Eigen::Vector3d, 3>& corners_a,
+                       const std::array<Eigen::Vector3d, 3>& corners_b,
+                       const std::array<Eigen::Vector3d, 3>& local_b, double mapping_error) {
+    const detail::CertifiedDistance computed =
+        detail::certifiedTriangleDistance(corners_a, corners_b, mapping_error);
+    PairDistance pair{worldLower(computed.lower), computed.upper * grow_, 0.0, computed.point_a,
+                      computed.point_b};
+    pair.value = std::clamp(computed.value, pair.lower, pair.upper);
+    if (pair.lower > 0.0 && pair.upper - pair.lower <= kRelativeWidth * pair.lower) return pair;
+    ++answer_.exact_tests;
+    if (pair.lower == 0.0 &&
+        posedTrianglesIntersect(corners_a.data(), pose_a_, local_b.data(), pose_b_)) {
+      return touching(corners_a, corners_b, pair);
+    }
+    const ExactInterval squared = exactPosedSquaredDistance(corners_a, pose_a_, local_b, pose_b_);
+    // sqrt rounds to nearest: one step outwards keeps each end on its side of the exact root.
+    pair.lower = std::nextafter(std::sqrt(squared.lower), 0.0);
+    pair.upper = std::nextafter(std::sqrt(squared.upper), std::numeric_limits<double>::infinity());
+    pair.value = std::clamp(std::sqrt(squared.nearest), pair.lower, pair.upper);
+    if (squared.upper == 0.0) return touching(corners_a, corners_b, pair);
+    if (pair.value == 0.0) {
+      pair.value = pair.upper;  // an underflowed square of a true gap: never 0 for apart
+    }
+    pair.lower = std::max(0.0, pair.lower);
+    return pair;
   }
 
   const ObbTree& a_;
@@ -259,8 +326,14 @@ class Search {
   DistanceAnswer& answer_;
   Map map_;
   std::priority_queue<Pending, std::vector<Pending>, std::greater<>> queue_;
-  double best_ = std::numeric_limits<double>::infinity();
+  // The least value and the least upper end of the pairs measured: the answer lies between the
+  // least lower bound of everything measured or set aside and best_upper_.
+  double best_value_ = std::numeric_limits<double>::infinity();
+  double best_upper_ = std::numeric_limits<double>::infinity();
   double rounding_ = 0.0;
+  double floor_ = std::numeric_limits<double>::infinity();  // least lower bound set aside
+  double shrink_ = 1.0;
+  double grow_ = 1.0;
   struct LeafTriangle {
     std::array<Eigen::Vector3d, 3> corners;
     Eigen::Vector3d lo;

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <limits>
 
@@ -44,5 +45,19 @@ MeshDistance exactMeshDistance(const TriangleMesh& a, const Pose& pose_a, const 
 /// exactly (degenerate triangles as their segment or point) and rounded to double.
 double exactPairSquaredDistance(const TriangleMesh& a, const Pose& pose_a, const TriangleMesh& b,
                                 const Pose& pose_b, const TrianglePair& pair);
+
+/// An interval of doubles holding an exact value, and the double nearest to it.
+struct ExactInterval {
+  double lower = 0.0;
+  double nearest = 0.0;
+  double upper = 0.0;
+};
+
+/// The squared distance between triangle `a` posed by pose_a and `b` posed by pose_b (corners in
+/// model coordinates, posed exactly as above; degenerate triangles as their segment or point),
+/// computed exactly and given as the tightest interval of doubles around it.
+ExactInterval exactPosedSquaredDistance(const std::array<Eigen::Vector3d, 3>& a, const Pose& pose_a,
+                                        const std::array<Eigen::Vector3d, 3>& b,
+                                        const Pose& pose_b);
 
 }  // namespace collido
