@@ -175,7 +175,7 @@ TEST(StressCategories, NamesAreTheContract) {
     names.push_back(categoryName(c));
   EXPECT_EQ(names, (std::vector<std::string>{"coplanar", "touching", "near_touching", "degenerate",
                                              "far_from_origin", "scaled", "tiny_features",
-                                             "axis_rotations", "mesh_defects"}));
+                                             "axis_rotations", "mesh_defects", "distance"}));
   EXPECT_FALSE(parseCategory("near-touching"));
   EXPECT_FALSE(parseCategory(""));
 }

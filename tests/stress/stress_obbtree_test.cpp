@@ -1,9 +1,10 @@
 // The OBB tree held to the exact oracle on every case of every category's bundled stress scene
 // (scenes/stress/<category>.json, the cases the study runs): the same intersecting triangle pairs,
 // and the same boolean answer with a witness pair that really intersects, at leaf sizes 1 and 4
-// with double and float boxes. The bar is zero wrong answers in every category; a failure
-// names the cases and how they differ.
+// with double and float boxes, and on the distance category the distance too. The bar is
+// zero wrong answers in every category; a failure names the cases and how they differ.
 #include <algorithm>
+#include <cmath>
 #include <sstream>
 #include <string>
 #include <tuple>
@@ -12,7 +13,9 @@
 #include <gtest/gtest.h>
 
 #include <collido/obbtree/collide.h>
+#include <collido/obbtree/distance.h>
 #include <collido/obbtree/tree.h>
+#include <collido/oracle/distance_oracle.h>
 #include <collido/oracle/exact_oracle.h>
 #include <collido/scene/scene.h>
 #include <collido/stress/stress_cases.h>
@@ -98,8 +101,26 @@ TEST_P(StressObbTree, AnswersLikeTheOracle) {
         says_intersecting && !exactPairIntersects(*a.mesh, pose_a, *b.mesh, pose_b,
                                                   TrianglePair{first.pairs[0].a, first.pairs[0].b});
 
+    // The distance category: 0 exactly on contact, an interval holding the exact distance, and
+    // the value within the documented 2^-19 of it (collido/obbtree/distance.h).
+    std::string distance_problem;
+    if (category == Category::kDistance) {
+      obbtree::DistanceAnswer d;
+      obbtree::distance(tree_a, pose_a, tree_b, pose_b, obbtree::DistanceRequest{}, d);
+      const double exact = exactMeshDistance(*a.mesh, pose_a, *b.mesh, pose_b).distance;
+      const double ulps = 4.0 * 0x1p-53 * exact;  // the reference is within two ulps
+      if ((d.distance == 0.0) != (exact == 0.0) || d.lower_bound > exact + ulps ||
+          d.upper_bound < exact - ulps || d.distance < d.lower_bound ||
+          d.distance > d.upper_bound || std::abs(d.distance - exact) > 0x1p-19 * exact + ulps) {
+        std::ostringstream text;
+        text.precision(17);
+        text << "; distance " << d.distance << " in [" << d.lower_bound << ", " << d.upper_bound
+             << "], exact " << exact;
+        distance_problem = text.str();
+      }
+    }
     if (missed.empty() && extra.empty() && !repeated && says_intersecting == truth.intersecting &&
-        !false_witness) {
+        !false_witness && distance_problem.empty()) {
       continue;
     }
     if (++wrong <= 12) {
@@ -108,7 +129,7 @@ TEST_P(StressObbTree, AnswersLikeTheOracle) {
              << " pairs; all pairs missed " << missed.size() << ", extra " << extra.size()
              << (repeated ? ", repeated pairs" : "") << "; boolean "
              << (says_intersecting ? "intersecting" : "apart")
-             << (false_witness ? " (witness does not intersect)" : "") << "\n";
+             << (false_witness ? " (witness does not intersect)" : "") << distance_problem << "\n";
     }
   }
   EXPECT_GT(cases, 0u);

@@ -317,7 +317,7 @@
     } else {
       const pct = (x) => (x === null || x === undefined) ? '-' : fmt(100 * x, 1) + '%';
       const values = (kind) => cells.map((c) => {
-        const a = kind === 'boolean' ? c.boolean : c.all_pairs;
+        const a = kind === 'boolean' ? c.boolean : kind === 'distance' ? c.distance : c.all_pairs;
         const measured = a.status === 'measured';
         return {
           backend: c.backend, category: c.category, cases: c.cases, status: a.status,
@@ -335,8 +335,13 @@
       const settings = [...new Set(cells.map((c) => c.backend))];
       const box = el('div', { class: 'charts' });
       s.appendChild(box);
-      for (const [kind, title] of [['boolean', 'Wrong boolean answers'],
-        ['all_pairs', 'Wrong all-pairs answers']]) {
+      const kinds = [['boolean', 'Wrong boolean answers'], ['all_pairs', 'Wrong all-pairs answers']];
+      // The distance category's answers, held to the exact distance at contact scale.
+      if (cells.some((c) => c.distance && c.distance.status !== 'none')) {
+        kinds.push(['distance', 'Wrong distance answers (0 for apart, positive for touching, ' +
+          'or off by more than 1e-6 of the exact distance)']);
+      }
+      for (const [kind, title] of kinds) {
         const tooltip = [{ field: 'backend' }, { field: 'category' }, { field: 'cases' },
           { field: 'status' }, { field: 'answered' }, { field: 'wrong' },
           { field: 'rate', title: 'wrong rate', format: '.4f' },
@@ -374,18 +379,19 @@
                 color: { condition: { test: 'datum.rate > 0.3', value: '#fff' }, value: '#222' } } }] });
       }
       table(s, ['backend / setting', 'category', 'cases', 'boolean wrong', 'FN', 'FP',
-        'all-pairs wrong', 'true pairs', 'missed', 'extra', 'no answer'],
+        'all-pairs wrong', 'true pairs', 'missed', 'extra', 'distance wrong', 'no answer'],
       cells.map((c) => {
         const b = c.boolean;
         const p = c.all_pairs;
+        const d = c.distance || { status: 'none', failed: 0 };
         const answer = (a) => a.status === 'measured' ? a.wrong + ' / ' + a.answered : a.status;
         const measured = p.status === 'measured';
         return [c.backend, c.category, String(c.cases), answer(b), String(b.false_negatives),
           String(b.false_positives), answer(p), measured ? String(p.true_pairs) : '-',
           measured ? p.missed_pairs + ' (' + pct(p.missed_share) + ')' : '-',
           measured ? p.extra_pairs + ' (' + pct(p.extra_share) + ')' : '-',
-          String(b.failed + p.failed)];
-      }), ['', '', 'num', 'num', 'num', 'num', 'num', 'num', 'num', 'num', 'num']);
+          answer(d), String(b.failed + p.failed + d.failed)];
+      }), ['', '', 'num', 'num', 'num', 'num', 'num', 'num', 'num', 'num', 'num', 'num']);
     }
   }
 

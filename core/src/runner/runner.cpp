@@ -14,6 +14,7 @@
 #include <tuple>
 
 #include <collido/host/backend_instance.h>
+#include <collido/oracle/distance_oracle.h>
 #include <collido/oracle/exact_oracle.h>
 #include <collido/oracle/proximity.h>
 #include <collido/oracle/triangle_distance.h>
@@ -463,14 +464,6 @@ void runSceneOnBackend(const Scene& scene, const BackendSpec& spec, OracleCache&
 
 namespace {
 
-std::array<Eigen::Vector3d, 3> posedTriangle(const TriangleMesh& mesh, const Pose& pose,
-                                             std::int32_t t) {
-  std::array<Eigen::Vector3d, 3> corners;
-  for (int k = 0; k < 3; ++k)
-    corners[static_cast<std::size_t>(k)] = pose * mesh.corner(static_cast<std::size_t>(t), k);
-  return corners;
-}
-
 // The distance answer against the exact one: within rounding below, within tolerance and
 // rounding above; points the reported distance apart and on their triangles; a certified
 // interval that holds the exact distance.
@@ -486,13 +479,22 @@ void compareDistance(const TriangleMesh& a, const Pose& pose_a, const TriangleMe
   record.distance_above =
       rounding + std::max(request.abs_tolerance, request.rel_tolerance * truth.distance);
   record.oracle_intersecting = truth.distance == 0.0;
-  record.reported_intersecting = d.distance <= rounding;
+  // Contact is a distance of exactly 0 (or a negative, penetration-signed one): a tiny positive
+  // distance says the meshes are apart, however close to rounding it is.
+  record.reported_intersecting = d.distance <= 0.0;
   bool invalid = std::abs((d.point_b - d.point_a).norm() - d.distance) > rounding;
+  // Decided exactly (the point as a zero-area triangle against the posed one): a double
+  // closest point on a sliver can be off by far more than the rounding allowed here.
   const auto off_triangle = [&](const TriangleMesh& mesh, const Pose& pose, std::int32_t t,
                                 const Eigen::Vector3d& p) {
     if (t < 0) return false;
     if (static_cast<std::size_t>(t) >= mesh.triangleCount()) return true;
-    return (closestPointOnTriangle(p, posedTriangle(mesh, pose, t)) - p).norm() > rounding;
+    std::array<Eigen::Vector3d, 3> corners;
+    for (int k = 0; k < 3; ++k)
+      corners[static_cast<std::size_t>(k)] = mesh.corner(static_cast<std::size_t>(t), k);
+    const double squared =
+        exactPosedClosestPoints({p, p, p}, Pose::Identity(), corners, pose).squared_distance.lower;
+    return std::sqrt(squared) > rounding;
   };
   invalid = invalid || off_triangle(a, pose_a, d.triangle_a, d.point_a) ||
             off_triangle(b, pose_b, d.triangle_b, d.point_b);

@@ -568,7 +568,10 @@ void readStress(const Reader& r, const Node& root, const std::string& base_direc
                     static_cast<double>(c.a->triangleCount() + c.b->triangleCount()));
       const std::size_t a = add_object(c.name, "a", c.a, c.pose_a);
       const std::size_t b = add_object(c.name, "b", c.b, c.pose_b);
-      for (const QueryKind kind : {QueryKind::kAllPairs, QueryKind::kBoolean}) {
+      // The distance category asks for the distance where the others ask for the pairs.
+      const QueryKind detailed =
+          *category == stress::Category::kDistance ? QueryKind::kDistance : QueryKind::kAllPairs;
+      for (const QueryKind kind : {detailed, QueryKind::kBoolean}) {
         SceneQuery query;
         query.name = c.name + " " + queryKindName(kind);
         query.a = a;

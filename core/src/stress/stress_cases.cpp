@@ -19,8 +19,8 @@ struct CategoryInfo {
 
 // Indexed by Category. The meanings are the contract of each generator (and scenes/README.md
 // repeats them).
-const std::array<CategoryInfo, 9>& table() {
-  static const std::array<CategoryInfo, 9> categories = {{
+const std::array<CategoryInfo, 10>& table() {
+  static const std::array<CategoryInfo, 10> categories = {{
       {Category::kCoplanar,
        "coplanar",
        {0, 3,
@@ -82,6 +82,15 @@ const std::array<CategoryInfo, 9>& table() {
         "size to either side of it"},
        {3, 8, 13},
        &detail::meshDefectsCase},
+      {Category::kDistance,
+       "distance",
+       {0, 8,
+        "translation exponent: touching cubes and cubes one ulp to 1e-9 apart, crossing and "
+        "2^-30 to 2^-50 apart sliver triangles, zero-area triangles on, one ulp off and one ulp "
+        "inside a cube's face, edge and corner, all translated about 10^severity; asked for "
+        "their distance"},
+       {0, 3, 6, 8},
+       &detail::distanceCase},
   }};
   return categories;
 }

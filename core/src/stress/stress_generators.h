@@ -32,5 +32,6 @@ StressCase degenerateCase(const CaseRequest& request, Rng& rng);
 StressCase tinyFeaturesCase(const CaseRequest& request, Rng& rng);
 StressCase axisRotationsCase(const CaseRequest& request, Rng& rng);
 StressCase meshDefectsCase(const CaseRequest& request, Rng& rng);
+StressCase distanceCase(const CaseRequest& request, Rng& rng);
 
 }  // namespace collido::stress::detail

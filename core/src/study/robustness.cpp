@@ -8,6 +8,7 @@
 #include <collido/study/robustness.h>
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <sstream>
 #include <utility>
@@ -34,7 +35,27 @@ std::size_t categoryRank(const std::string& category) {
   return all.size();
 }
 
+// A distance answer at contact scale (RobustnessCell::distance).
+void addDistanceFrame(const FrameRecord& f, RobustnessAnswers& answers) {
+  ++answers.answered;
+  if (!f.oracle_distance || !f.reported_distance) {
+    ++answers.wrong;
+    return;
+  }
+  const double exact = *f.oracle_distance;
+  const double reported = *f.reported_distance;
+  if (exact == 0.0 && reported != 0.0) ++answers.false_negatives;
+  if (exact != 0.0 && reported == 0.0) ++answers.false_positives;
+  const bool wrong = (exact == 0.0) != (reported == 0.0) || f.invalid_distance_witness ||
+                     !(std::abs(reported - exact) <= kStressDistanceRelativeError * exact);
+  if (wrong) ++answers.wrong;
+}
+
 void addFrame(const FrameRecord& f, QueryKind kind, RobustnessAnswers& answers) {
+  if (kind == QueryKind::kDistance) {
+    addDistanceFrame(f, answers);
+    return;
+  }
   ++answers.answered;
   if (f.disagrees(kind)) ++answers.wrong;
   if (f.oracle_intersecting && !f.reported_intersecting) ++answers.false_negatives;
@@ -224,12 +245,18 @@ std::vector<RobustnessCell> robustnessMatrix(const std::vector<CombinationResult
       const std::size_t lost = known == scene_cases.end() ? 0 : known->second;
       cell.cases += lost;
       cell.boolean.failed += lost;
-      cell.all_pairs.failed += lost;
+      (c.category == stress::categoryName(stress::Category::kDistance) ? cell.distance
+                                                                       : cell.all_pairs)
+          .failed += lost;
       continue;
     }
     for (const QueryMeasurement& m : r.measurements) {
-      if (m.kind != QueryKind::kBoolean && m.kind != QueryKind::kAllPairs) continue;
-      RobustnessAnswers& answers = m.kind == QueryKind::kBoolean ? cell.boolean : cell.all_pairs;
+      if (m.kind != QueryKind::kBoolean && m.kind != QueryKind::kAllPairs &&
+          m.kind != QueryKind::kDistance)
+        continue;
+      RobustnessAnswers& answers = m.kind == QueryKind::kBoolean    ? cell.boolean
+                                   : m.kind == QueryKind::kAllPairs ? cell.all_pairs
+                                                                    : cell.distance;
       if (m.kind == QueryKind::kBoolean) ++cell.cases;
       if (m.status.rfind("skipped", 0) == 0) {
         ++answers.unsupported;
@@ -275,7 +302,13 @@ std::string robustnessText(const std::vector<RobustnessCell>& cells) {
   });
 
   std::ostringstream out;
-  const auto matrix = [&](const char* title, bool pairs) {
+  enum class Answers { kBoolean, kAllPairs, kDistance };
+  const auto of = [](const RobustnessCell& cell, Answers which) -> const RobustnessAnswers& {
+    return which == Answers::kBoolean    ? cell.boolean
+           : which == Answers::kAllPairs ? cell.all_pairs
+                                         : cell.distance;
+  };
+  const auto matrix = [&](const char* title, Answers which) {
     out << title << "\n";
     std::vector<std::string> header = {"backend"};
     header.insert(header.end(), categories.begin(), categories.end());
@@ -284,18 +317,28 @@ std::string robustnessText(const std::vector<RobustnessCell>& cells) {
       std::vector<std::string> row = {setting};
       for (const std::string& category : categories) {
         const auto found = at.find({setting, category});
-        row.push_back(found == at.end()
-                          ? "-"
-                          : rateText(pairs ? found->second->all_pairs : found->second->boolean));
+        row.push_back(found == at.end() ? "-" : rateText(of(*found->second, which)));
       }
       rows.push_back(row);
     }
     out << formatTextTable(header, rows, 1);
   };
-  matrix("Wrong boolean answers (share of cases whose answer differs from the oracle's):", false);
+  matrix("Wrong boolean answers (share of cases whose answer differs from the oracle's):",
+         Answers::kBoolean);
   out << "\n";
   matrix("Wrong all-pairs answers (share of cases whose pair set differs from the oracle's):",
-         true);
+         Answers::kAllPairs);
+  const bool distances = std::any_of(cells.begin(), cells.end(), [](const RobustnessCell& cell) {
+    return cell.distance.status() != "none";
+  });
+  if (distances) {
+    out << "\n";
+    matrix(("Wrong distance answers (0 for meshes apart, positive for touching ones, or off the "
+            "exact distance by more than " +
+            formatNumber("%g", kStressDistanceRelativeError) + " of it):")
+               .c_str(),
+           Answers::kDistance);
+  }
 
   out << "\nEvery count (FN/FP: boolean answers apart that intersect / intersecting that are "
          "apart; missed: true pairs not reported, share of true pairs; extra: reported pairs that "
@@ -315,14 +358,16 @@ std::string robustnessText(const std::vector<RobustnessCell>& cells) {
                     pairs_measured ? shareText(p.missedShare()) : "-",
                     pairs_measured ? std::to_string(p.extra_pairs) : "-",
                     pairs_measured ? shareText(p.extraShare()) : "-",
+                    cell.distance.status() == "measured" ? std::to_string(cell.distance.wrong)
+                                                         : cell.distance.status(),
                     std::to_string(b.invalid_pairs + p.invalid_pairs),
-                    std::to_string(b.failed + p.failed)});
+                    std::to_string(b.failed + p.failed + cell.distance.failed)});
     for (const std::string& f : cell.worker_failures)
       failures.push_back(cell.setting + " / " + f);
   }
   out << formatTextTable(
       {"backend", "category", "cases", "bool wrong", "FN", "FP", "pairs wrong", "true pairs",
-       "missed", "missed share", "extra", "extra share", "invalid", "no answer"},
+       "missed", "missed share", "extra", "extra share", "dist wrong", "invalid", "no answer"},
       rows, 2);
   if (!failures.empty()) {
     out << "\nWorkers that did not finish (their cases count as no answer):\n";
@@ -340,6 +385,7 @@ nlohmann::ordered_json robustnessJson(const std::vector<RobustnessCell>& cells) 
                     {"cases", cell.cases},
                     {"boolean", answersJson(cell.boolean, false)},
                     {"all_pairs", answersJson(cell.all_pairs, true)},
+                    {"distance", answersJson(cell.distance, false)},
                     {"worker_failures", cell.worker_failures}});
   }
   return list;

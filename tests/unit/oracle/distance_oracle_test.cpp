@@ -3,6 +3,8 @@
 #include <cmath>
 #include <fstream>
 #include <random>
+#include <string>
+#include <tuple>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -110,6 +112,66 @@ TEST(TriangleDistance, DegenerateTrianglesCountAsSegmentsAndPoints) {
   const TriangleMesh mf = singleTriangle(face);
   const TriangleMesh ms = singleTriangle(segment);
   EXPECT_EQ(exactPairSquaredDistance(mf, Pose::Identity(), ms, Pose::Identity(), {0, 0}), 0.25);
+}
+
+// The exact closest points against CGAL's exact squared distance (the same value, rounded the
+// same way), on random, sliver, near-parallel, crossing and degenerate pairs under random poses:
+// each point on its triangle (decided exactly) and the two the distance apart.
+TEST(ExactClosestPoints, MatchTheExactSquaredDistanceWithPointsOnTheTriangles) {
+  std::mt19937_64 rng(26);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  const auto pose = [&]() {
+    const Eigen::Quaterniond q(u(rng), u(rng), u(rng), u(rng));
+    Pose p = Pose::Identity();
+    p.linear() = q.normalized().toRotationMatrix();
+    p.translation() = Eigen::Vector3d(100.0 * u(rng), u(rng), u(rng));
+    return p;
+  };
+  int touching = 0;
+  for (int trial = 0; trial < 120; ++trial) {
+    Triangle a = randomTriangle(rng, 1.0);
+    Triangle b = randomTriangle(rng, 1.0);
+    switch (trial % 6) {
+      case 1:  // a sliver
+        a[2] = 0.5 * (a[0] + a[1]) + 1e-9 * Eigen::Vector3d(u(rng), u(rng), u(rng));
+        break;
+      case 2:  // b nearly parallel to a, a little apart
+        for (int k = 0; k < 3; ++k)
+          b[static_cast<std::size_t>(k)] =
+              a[static_cast<std::size_t>(k)] + Eigen::Vector3d(0.3, 0.1, 1e-7 * (1 + k));
+        break;
+      case 3:  // b a segment, then a point
+        b[2] = 0.25 * b[0] + 0.75 * b[1];
+        break;
+      case 4:
+        b[1] = b[0];
+        b[2] = b[0];
+        break;
+      default:
+        break;
+    }
+    const Pose pose_a = trial % 2 == 0 ? Pose::Identity() : pose();
+    const Pose pose_b = trial % 3 == 0 ? pose_a : pose();
+    const ExactClosestPoints got = exactPosedClosestPoints(a, pose_a, b, pose_b);
+    const double exact =
+        exactPairSquaredDistance(singleTriangle(a), pose_a, singleTriangle(b), pose_b, {0, 0});
+    const std::string label = "trial " + std::to_string(trial);
+    EXPECT_EQ(got.squared_distance.nearest, exact) << label;
+    EXPECT_LE(got.squared_distance.lower, exact) << label;
+    EXPECT_GE(got.squared_distance.upper, exact) << label;
+    touching += exact == 0.0 ? 1 : 0;
+    const double allowed =
+        1e-13 * (1.0 + pose_a.translation().norm() + pose_b.translation().norm());
+    for (const auto& [point, triangle, posed] :
+         {std::make_tuple(got.point_a, a, pose_a), std::make_tuple(got.point_b, b, pose_b)}) {
+      const double off =
+          exactPosedClosestPoints({point, point, point}, Pose::Identity(), triangle, posed)
+              .squared_distance.upper;
+      EXPECT_LE(std::sqrt(off), allowed) << label << ": a point off its triangle";
+    }
+    EXPECT_NEAR((got.point_b - got.point_a).norm(), std::sqrt(exact), allowed) << label;
+  }
+  EXPECT_GT(touching, 0);
 }
 
 TEST(MeshDistance, SpheresAtKnownGapsAndTouching) {

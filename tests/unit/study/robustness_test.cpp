@@ -277,3 +277,54 @@ TEST(RobustnessMatrix, CategoryTravelsWithTheCombination) {
 
 }  // namespace
 }  // namespace collido::study
+
+namespace collido::study {
+namespace {
+
+// The distance category's answers are held to the exact distance at contact scale: 0 for
+// meshes apart, a positive distance for touching ones and a relative error above 1e-6 are
+// wrong, though the runner's general check (rounding of the coordinates) lets them pass.
+TEST(RobustnessMatrix, DistanceAnswersAreHeldToTheExactDistance) {
+  Sweep sweep;
+  const Combination c =
+      planStudy({{"/scenes/stress/distance.json", "stress_distance", false, "distance"}},
+                {"fcl:rss"}, sweep)
+          .front();
+  CombinationResult r;
+  r.combination = c;
+  // (exact, reported): right, right (touching), 0 for apart, positive for touching, 1e-5 off.
+  const std::pair<double, double> answers[] = {
+      {1e-9, 1e-9 * (1.0 + 1e-9)}, {0.0, 0.0}, {2e-16, 0.0}, {0.0, 1e-17}, {1e-3, 1.00001e-3}};
+  std::size_t index = 0;
+  for (const auto& [exact, reported] : answers) {
+    QueryMeasurement m;
+    m.backend = c.backend;
+    m.scene = "stress_distance";
+    m.query = "distance/s0/" + std::to_string(index++) + "/cubes distance";
+    m.kind = QueryKind::kDistance;
+    m.times_us = {1.0};
+    FrameRecord f;
+    f.oracle_distance = exact;
+    f.reported_distance = reported;
+    f.distance_below = 1e-10;  // the runner's rounding allowance: every answer passes it
+    f.distance_above = 1e-10;
+    m.frames = {f};
+    summariseMeasurement(m);
+    r.measurements.push_back(m);
+  }
+  const std::vector<RobustnessCell> cells = robustnessMatrix({r});
+  ASSERT_EQ(cells.size(), 1u);
+  const RobustnessAnswers& d = cells[0].distance;
+  EXPECT_EQ(d.answered, 5u);
+  EXPECT_EQ(d.wrong, 3u);
+  EXPECT_EQ(d.false_positives, 1u);  // 0 for meshes apart
+  EXPECT_EQ(d.false_negatives, 1u);  // positive for touching ones
+  EXPECT_EQ(cells[0].all_pairs.status(), "none");
+  const std::string text = robustnessText(cells);
+  EXPECT_NE(text.find("Wrong distance answers"), std::string::npos) << text;
+  EXPECT_NE(text.find("60.0% (3/5)"), std::string::npos) << text;
+  EXPECT_EQ(robustnessJson(cells)[0]["distance"]["wrong"], 3);
+}
+
+}  // namespace
+}  // namespace collido::study

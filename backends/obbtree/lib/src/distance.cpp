@@ -253,8 +253,8 @@ class Search {
         if (!(pair.value < best_value_)) continue;
         best_value_ = pair.value;
         answer_.distance = pair.value;
-        answer_.point_a = pose_a_ * pair.point_a;
-        answer_.point_b = pair.value == 0.0 ? answer_.point_a : pose_a_ * pair.point_b;
+        answer_.point_a = pair.point_a;
+        answer_.point_b = pair.value == 0.0 ? pair.point_a : pair.point_b;
         answer_.triangle_a = ta_leaf.id;
         answer_.triangle_b = b_.triangleId(j);
         if (best_value_ == 0.0) {
@@ -266,21 +266,21 @@ class Search {
     }
   }
 
-  // One triangle pair's world distance and interval.
+  // One triangle pair's world distance, interval and closest points.
   struct PairDistance {
     double lower = 0.0;
     double upper = 0.0;
     double value = 0.0;
-    Eigen::Vector3d point_a;  // in A's frame
-    Eigen::Vector3d point_b;
+    Eigen::Vector3d point_a = Eigen::Vector3d::Zero();  // world
+    Eigen::Vector3d point_b = Eigen::Vector3d::Zero();
   };
 
   // A pair found touching: distance 0, at a shared point as computed (the crossing point of an
   // edge through the other's face, which the certified candidates do not include).
-  static PairDistance touching(const std::array<Eigen::Vector3d, 3>& corners_a,
-                               const std::array<Eigen::Vector3d, 3>& corners_b, PairDistance pair) {
-    pair.lower = pair.upper = pair.value = 0.0;
-    pair.point_a = closestPointsOfTriangles(corners_a, corners_b).point_a;
+  PairDistance touching(const std::array<Eigen::Vector3d, 3>& corners_a,
+                        const std::array<Eigen::Vector3d, 3>& corners_b) const {
+    PairDistance pair;
+    pair.point_a = pose_a_ * closestPointsOfTriangles(corners_a, corners_b).point_a;
     pair.point_b = pair.point_a;
     return pair;
   }
@@ -288,31 +288,32 @@ class Search {
   // In double precision with a certified interval (certified_distance.h); where that interval
   // cannot rule out contact, or is wider than kRelativeWidth of its lower end, the pair is
   // decided in exact arithmetic on the world corners: contact by the exact triangle test, else
-  // the exact squared distance.
+  // the exact closest points (their squared distance as an interval, the points rounded once;
+  // the double ones can be far off along a sliver or near-parallel edges).
   PairDistance measure(const std::array<Eigen::Vector3d, 3>& corners_a,
                        const std::array<Eigen::Vector3d, 3>& corners_b,
                        const std::array<Eigen::Vector3d, 3>& local_b, double mapping_error) {
     const detail::CertifiedDistance computed =
         detail::certifiedTriangleDistance(corners_a, corners_b, mapping_error);
-    PairDistance pair{worldLower(computed.lower), computed.upper * grow_, 0.0, computed.point_a,
-                      computed.point_b};
+    PairDistance pair{worldLower(computed.lower), computed.upper * grow_, 0.0,
+                      pose_a_ * computed.point_a, pose_a_ * computed.point_b};
     pair.value = std::clamp(computed.value, pair.lower, pair.upper);
     if (pair.lower > 0.0 && pair.upper - pair.lower <= kRelativeWidth * pair.lower) return pair;
     ++answer_.exact_tests;
     if (pair.lower == 0.0 &&
         posedTrianglesIntersect(corners_a.data(), pose_a_, local_b.data(), pose_b_)) {
-      return touching(corners_a, corners_b, pair);
+      return touching(corners_a, corners_b);
     }
-    const ExactInterval squared = exactPosedSquaredDistance(corners_a, pose_a_, local_b, pose_b_);
+    const ExactClosestPoints exact = exactPosedClosestPoints(corners_a, pose_a_, local_b, pose_b_);
+    const ExactInterval& squared = exact.squared_distance;
+    if (squared.upper == 0.0) return touching(corners_a, corners_b);
     // sqrt rounds to nearest: one step outwards keeps each end on its side of the exact root.
-    pair.lower = std::nextafter(std::sqrt(squared.lower), 0.0);
+    pair.lower = std::max(0.0, std::nextafter(std::sqrt(squared.lower), 0.0));
     pair.upper = std::nextafter(std::sqrt(squared.upper), std::numeric_limits<double>::infinity());
     pair.value = std::clamp(std::sqrt(squared.nearest), pair.lower, pair.upper);
-    if (squared.upper == 0.0) return touching(corners_a, corners_b, pair);
-    if (pair.value == 0.0) {
-      pair.value = pair.upper;  // an underflowed square of a true gap: never 0 for apart
-    }
-    pair.lower = std::max(0.0, pair.lower);
+    if (pair.value == 0.0) pair.value = pair.upper;  // an underflowed square: never 0 for apart
+    pair.point_a = exact.point_a;
+    pair.point_b = exact.point_b;
     return pair;
   }
 

@@ -53,11 +53,21 @@ struct ExactInterval {
   double upper = 0.0;
 };
 
-/// The squared distance between triangle `a` posed by pose_a and `b` posed by pose_b (corners in
-/// model coordinates, posed exactly as above; degenerate triangles as their segment or point),
-/// computed exactly and given as the tightest interval of doubles around it.
-ExactInterval exactPosedSquaredDistance(const std::array<Eigen::Vector3d, 3>& a, const Pose& pose_a,
-                                        const std::array<Eigen::Vector3d, 3>& b,
-                                        const Pose& pose_b);
+/// The closest points of two posed triangles, computed exactly and rounded once.
+struct ExactClosestPoints {
+  ExactInterval squared_distance;  ///< the tightest interval of doubles around it, and nearest
+  Eigen::Vector3d point_a = Eigen::Vector3d::Zero();  ///< world, on a (each coordinate rounded)
+  Eigen::Vector3d point_b = Eigen::Vector3d::Zero();  ///< world, on b
+};
+
+/// The closest points of triangle `a` posed by pose_a and `b` posed by pose_b (corners in model
+/// coordinates, posed exactly as above; degenerate triangles as their segment or point), in
+/// exact rational arithmetic: the closest points of every pair of edges and of every corner
+/// projected into the other triangle where it falls inside, the nearest pair exactly. For
+/// triangles that share a point the squared distance is 0 and the points are one shared point.
+ExactClosestPoints exactPosedClosestPoints(const std::array<Eigen::Vector3d, 3>& a,
+                                           const Pose& pose_a,
+                                           const std::array<Eigen::Vector3d, 3>& b,
+                                           const Pose& pose_b);
 
 }  // namespace collido

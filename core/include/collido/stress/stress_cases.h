@@ -25,6 +25,7 @@ enum class Category {
   kTinyFeatures,   ///< "tiny_features": a feature 1e-6 of a big object's size makes the contact
   kAxisRotations,  ///< "axis_rotations": rotations at and near 90° and 180°, near-parallel edges
   kMeshDefects,    ///< "mesh_defects": meshes with cracks, duplicate vertices, non-manifold edges
+  kDistance,       ///< "distance": touching and nearly touching pairs asked for their distance
 };
 
 /// Every category, in the order above.

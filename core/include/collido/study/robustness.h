@@ -39,14 +39,24 @@ struct RobustnessAnswers {
   std::string status() const;
 };
 
+/// How far a distance answer of the stress suite may be from the exact distance, relative to it.
+/// The runner's general check allows rounding of the coordinates' magnitude, which at contact
+/// scale is the whole gap.
+constexpr double kStressDistanceRelativeError = 1e-6;
+
 /// One cell of the robustness matrix: a backend setting on a robustness category.
 struct RobustnessCell {
   std::string setting;    ///< backend setting as the dashboard labels it, e.g. "obbtree[...]" or
                           ///< "fcl:obb needs=every"
   std::string category;   ///< Combination::category, e.g. "near_touching"
-  std::size_t cases = 0;  ///< cases asked (each case asks one boolean and one all-pairs query)
+  std::size_t cases = 0;  ///< cases asked (each case asks one boolean and one all-pairs query,
+                          ///< or, in the distance category, one boolean and one distance query)
   RobustnessAnswers boolean;
   RobustnessAnswers all_pairs;
+  /// Distance answers (the distance category), held to the exact distance at contact scale:
+  /// wrong when 0 for meshes apart, positive for touching ones, or off by more than
+  /// kStressDistanceRelativeError of the exact distance (FN/FP: the 0-or-not verdict).
+  RobustnessAnswers distance;
   /// Combinations of the category whose worker crashed, timed out or failed: "stress_touching:
   /// crashed (SIGSEGV)".
   std::vector<std::string> worker_failures;
