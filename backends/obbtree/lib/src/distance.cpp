@@ -46,16 +46,22 @@ double boxPairLowerBound(const Eigen::Matrix3d& r, const Eigen::Vector3d& t,
     const int i1 = (i + 1) % 3;
     const int i2 = (i + 2) % 3;
     for (int j = 0; j < 3; ++j) {
-      // Axis e_i x B_j has length sqrt(r(i1,j)^2 + r(i2,j)^2); nearly parallel edges give a
-      // degenerate axis whose bound the face axes already cover.
-      const double length = std::hypot(r(i1, j), r(i2, j));
-      if (length < 1e-6) continue;
       const int j1 = (j + 1) % 3;
       const int j2 = (j + 2) % 3;
       const double distance = std::abs(t[i2] * r(i1, j) - t[i1] * r(i2, j));
       const double radius =
           a[i1] * abs_r(i2, j) + a[i2] * abs_r(i1, j) + b[j1] * abs_r(i, j2) + b[j2] * abs_r(i, j1);
-      gap = std::max(gap, (distance - radius - slack) / length);
+      const double separation = distance - radius - slack;
+      if (!(separation > 0.0)) continue;
+      // Axis e_i x B_j has length sqrt(r(i1,j)^2 + r(i2,j)^2) (entries of a rotation: no over-
+      // or underflow that matters, and the final widening covers the roundings); nearly
+      // parallel edges give a degenerate axis whose bound the face axes already cover. The
+      // square root is taken only for an axis that raises the gap (skipping one only loosens
+      // the bound).
+      const double length_squared = r(i1, j) * r(i1, j) + r(i2, j) * r(i2, j);
+      if (length_squared < 1e-12) continue;
+      if (separation * separation <= gap * gap * length_squared) continue;
+      gap = std::max(gap, separation / std::sqrt(length_squared));
     }
   }
   return gap * (1.0 - 8.0 * kEps);
