@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <random>
 #include <vector>
@@ -210,6 +211,73 @@ TEST(ExactOracle, FirstPairModeGivesOneRealPair) {
       a, Pose::Identity(), b, translation(Eigen::Vector3d(100, 0, 0)), OracleMode::kFirstPair);
   EXPECT_FALSE(apart.intersecting);
   EXPECT_TRUE(apart.pairs.empty());
+}
+
+}  // namespace
+}  // namespace collido
+
+namespace collido {
+namespace {
+
+// Whether `p` lies on triangle `t` of `mesh` posed by `pose`, to within `allowed` (decided
+// exactly: the point as a zero-area triangle against the posed one).
+bool onTriangle(const Eigen::Vector3d& p, const TriangleMesh& mesh, const Pose& pose,
+                std::int32_t t, double allowed) {
+  std::array<Eigen::Vector3d, 3> corners;
+  for (int k = 0; k < 3; ++k)
+    corners[static_cast<std::size_t>(k)] = mesh.corner(static_cast<std::size_t>(t), k);
+  return std::sqrt(exactPosedClosestPoints({p, p, p}, Pose::Identity(), corners, pose)
+                       .squared_distance.upper) <= allowed;
+}
+
+// The exact intersection of a pair: a segment for crossing triangles, a polygon for coplanar
+// overlapping ones, a point for corner contact, nothing for disjoint ones; every point on both
+// triangles to rounding, under random poses too.
+TEST(ExactIntersectionSet, ShapesOfCrossingCoplanarTouchingAndDisjointPairs) {
+  const Triangle floor_triangle{Eigen::Vector3d(-1, -1, 0), Eigen::Vector3d(2, -1, 0),
+                                Eigen::Vector3d(-1, 2, 0)};
+  const Triangle crossing{Eigen::Vector3d(0.2, 0.2, -1), Eigen::Vector3d(0.2, 0.3, 1),
+                          Eigen::Vector3d(0.3, 0.2, 1)};
+  const Triangle coplanar{Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(3, 0, 0),
+                          Eigen::Vector3d(0, 3, 0)};
+  const Triangle corner{Eigen::Vector3d(2, -1, 0), Eigen::Vector3d(3, -1, 1),
+                        Eigen::Vector3d(3, 0, 1)};
+  const Triangle apart{Eigen::Vector3d(0, 0, 1), Eigen::Vector3d(1, 0, 1),
+                       Eigen::Vector3d(0, 1, 1)};
+  const struct {
+    const Triangle* other;
+    ExactIntersection::Shape shape;
+    const char* label;
+  } cases[] = {{&crossing, ExactIntersection::Shape::kSegment, "crossing"},
+               {&coplanar, ExactIntersection::Shape::kPolygon, "coplanar"},
+               {&corner, ExactIntersection::Shape::kPoint, "corner"},
+               {&apart, ExactIntersection::Shape::kEmpty, "apart"}};
+  std::mt19937_64 rng(26);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (int posed = 0; posed < 2; ++posed) {
+    Pose pose = Pose::Identity();
+    if (posed == 1) {
+      pose.linear() =
+          Eigen::Quaterniond(u(rng), u(rng), u(rng), u(rng)).normalized().toRotationMatrix();
+      pose.translation() = Eigen::Vector3d(1e3 * u(rng), u(rng), u(rng));
+    }
+    const TriangleMesh a = meshOf({floor_triangle});
+    for (const auto& c : cases) {
+      const TriangleMesh b = meshOf({*c.other});
+      const ExactIntersection got = exactPairIntersection(a, pose, b, pose, {0, 0});
+      EXPECT_EQ(got.shape, c.shape) << c.label << " posed " << posed;
+      const std::size_t expected = c.shape == ExactIntersection::Shape::kEmpty     ? 0u
+                                   : c.shape == ExactIntersection::Shape::kPoint   ? 1u
+                                   : c.shape == ExactIntersection::Shape::kSegment ? 2u
+                                                                                   : 3u;
+      EXPECT_GE(got.points.size(), expected) << c.label;
+      const double allowed = 1e-13 * (1.0 + pose.translation().norm());
+      for (const Eigen::Vector3d& p : got.points) {
+        EXPECT_TRUE(onTriangle(p, a, pose, 0, allowed)) << c.label << " posed " << posed;
+        EXPECT_TRUE(onTriangle(p, b, pose, 0, allowed)) << c.label << " posed " << posed;
+      }
+    }
+  }
 }
 
 }  // namespace

@@ -55,4 +55,20 @@ namespace collido {
 bool exactPairIntersects(const TriangleMesh& a, const Pose& pose_a, const TriangleMesh& b,
                          const Pose& pose_b, const TrianglePair& pair);
 
+/// Where two posed triangles meet, computed exactly and each point rounded to double once: the
+/// reference for contact geometry. Crossing triangles meet in a segment, touching ones in a
+/// point or a segment, coplanar overlapping ones in a convex polygon (degenerate triangles as
+/// their segment or point).
+struct ExactIntersection {
+  enum class Shape { kEmpty, kPoint, kSegment, kPolygon };
+  Shape shape = Shape::kEmpty;
+  /// World points: the point, the segment's two ends, or the polygon's corners in order.
+  std::vector<Eigen::Vector3d> points;
+};
+
+/// The intersection of triangle pair.a of A and pair.b of B, posed as in exactIntersectingPairs.
+ExactIntersection exactPairIntersection(const TriangleMesh& a, const Pose& pose_a,
+                                        const TriangleMesh& b, const Pose& pose_b,
+                                        const TrianglePair& pair);
+
 }  // namespace collido
