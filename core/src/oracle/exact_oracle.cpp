@@ -19,6 +19,7 @@
 #include <CGAL/intersections.h>
 #include <CGAL/squared_distance_3.h>
 
+#include <collido/assert.h>
 #include <collido/oracle/distance_oracle.h>
 
 namespace collido {
@@ -308,51 +309,42 @@ void closestPointsOfElements(const Element& x, const Element& y, Point& on_x, Po
   corner_face(y, x, false);
 }
 
-// A point that two intersecting elements share.
-Point sharedPoint(const Element& x, const Element& y) {
-  // An edge of one meeting the other (closed triangles that meet always have one), else the
-  // elements are points or segments meeting at an endpoint.
-  const auto meet = [](const Element& edges, const Element& other, Point& at) {
-    for (const auto& [p0, p1] : edgesOf(edges)) {
-      if (p0 == p1) {
-        Element point;
-        point.kind = kPointElement;
-        point.p[0] = p0;
-        if (elementsIntersect(point, other)) {
-          at = p0;
-          return true;
-        }
-        continue;
-      }
-      const EK::Segment_3 segment(p0, p1);
-      if (other.kind == kTriangleElement) {
-        const auto hit = CGAL::intersection(segment, triangleOf(other));
-        if (!hit) continue;
-        // CGAL 5.5: a boost::optional of a boost::variant.
-        if (const Point* p = boost::get<Point>(&*hit)) {
-          at = *p;
-          return true;
-        }
-        if (const EK::Segment_3* s = boost::get<EK::Segment_3>(&*hit)) {
-          at = s->source();
-          return true;
-        }
-      } else {
-        Point p;
-        Point q;
-        closestOnSegments(p0, p1, other.p[0],
-                          other.kind == kSegmentElement ? other.p[1] : other.p[0], p, q);
-        if (p == q) {
-          at = p;
-          return true;
-        }
-      }
+// The points of an exact intersection result: a point, a segment's ends, a triangle's corners
+// or a polygon's (CGAL 5.5: a boost::optional of a boost::variant over those).
+template <typename Result>
+void collectPoints(const Result& result, std::vector<Point>& points) {
+  if (!result) return;
+  if (const Point* p = boost::get<Point>(&*result)) {
+    points.push_back(*p);
+  } else if (const EK::Segment_3* s = boost::get<EK::Segment_3>(&*result)) {
+    points.push_back(s->source());
+    points.push_back(s->target());
+  }
+}
+
+std::vector<Point> intersectionPoints(const Element& x, const Element& y) {
+  std::vector<Point> points;
+  if (x.kind == kPointElement) return {x.p[0]};
+  if (y.kind == kPointElement) return {y.p[0]};
+  if (x.kind == kTriangleElement && y.kind == kTriangleElement) {
+    const auto result = CGAL::intersection(triangleOf(x), triangleOf(y));
+    if (!result) return points;
+    if (const EK::Triangle_3* t = boost::get<EK::Triangle_3>(&*result)) {
+      for (int k = 0; k < 3; ++k)
+        points.push_back(t->vertex(k));
+    } else if (const auto* polygon = boost::get<std::vector<Point>>(&*result)) {
+      points = *polygon;
+    } else {
+      collectPoints(result, points);
     }
-    return false;
-  };
-  Point at = x.p[0];
-  if (meet(x, y, at) || meet(y, x, at)) return at;
-  return at;
+  } else if (x.kind == kTriangleElement) {
+    collectPoints(CGAL::intersection(triangleOf(x), segmentOf(y)), points);
+  } else if (y.kind == kTriangleElement) {
+    collectPoints(CGAL::intersection(triangleOf(y), segmentOf(x)), points);
+  } else {
+    collectPoints(CGAL::intersection(segmentOf(x), segmentOf(y)), points);
+  }
+  return points;
 }
 
 using ExactDistance = FT (*)(const Element&, const Element&);
@@ -544,9 +536,9 @@ ExactClosestPoints exactPosedClosestPoints(const std::array<Eigen::Vector3d, 3>&
   Point best_a;
   Point best_b;
   if (elementsIntersect(x, y)) {
-    // A shared point: where the first triangle's edge or corner meets the second, or the other
-    // way round (one of the two always does for closed triangles that meet).
-    best_a = sharedPoint(x, y);
+    const std::vector<Point> shared = intersectionPoints(x, y);
+    COLLIDO_ASSERT(!shared.empty(), "exact intersection of intersecting elements is empty");
+    best_a = shared.front();  // a point both share
     best_b = best_a;
   } else {
     closestPointsOfElements(x, y, best_a, best_b);
@@ -559,48 +551,6 @@ ExactClosestPoints exactPosedClosestPoints(const std::array<Eigen::Vector3d, 3>&
   answer.point_b = rounded(best_b);
   return answer;
 }
-
-namespace {
-
-// The points of an exact intersection result: a point, a segment's ends, a triangle's corners
-// or a polygon's (CGAL 5.5: a boost::optional of a boost::variant over those).
-template <typename Result>
-void collectPoints(const Result& result, std::vector<Point>& points) {
-  if (!result) return;
-  if (const Point* p = boost::get<Point>(&*result)) {
-    points.push_back(*p);
-  } else if (const EK::Segment_3* s = boost::get<EK::Segment_3>(&*result)) {
-    points.push_back(s->source());
-    points.push_back(s->target());
-  }
-}
-
-std::vector<Point> intersectionPoints(const Element& x, const Element& y) {
-  std::vector<Point> points;
-  if (x.kind == kPointElement) return {x.p[0]};
-  if (y.kind == kPointElement) return {y.p[0]};
-  if (x.kind == kTriangleElement && y.kind == kTriangleElement) {
-    const auto result = CGAL::intersection(triangleOf(x), triangleOf(y));
-    if (!result) return points;
-    if (const EK::Triangle_3* t = boost::get<EK::Triangle_3>(&*result)) {
-      for (int k = 0; k < 3; ++k)
-        points.push_back(t->vertex(k));
-    } else if (const auto* polygon = boost::get<std::vector<Point>>(&*result)) {
-      points = *polygon;
-    } else {
-      collectPoints(result, points);
-    }
-  } else if (x.kind == kTriangleElement) {
-    collectPoints(CGAL::intersection(triangleOf(x), segmentOf(y)), points);
-  } else if (y.kind == kTriangleElement) {
-    collectPoints(CGAL::intersection(triangleOf(y), segmentOf(x)), points);
-  } else {
-    collectPoints(CGAL::intersection(segmentOf(x), segmentOf(y)), points);
-  }
-  return points;
-}
-
-}  // namespace
 
 ExactIntersection exactPairIntersection(const TriangleMesh& a, const Pose& pose_a,
                                         const TriangleMesh& b, const Pose& pose_b,
