@@ -1,0 +1,153 @@
+#include "exact_elements.h"
+
+#include <algorithm>
+#include <utility>
+
+#include <CGAL/intersections.h>
+
+namespace collido::exact {
+namespace {
+
+Box boxOf(const Point& p) {
+  Box b;
+  for (int k = 0; k < 3; ++k) {
+    const std::pair<double, double> range = CGAL::to_interval(p[k]);
+    b.lo[k] = range.first;
+    b.hi[k] = range.second;
+  }
+  return b;
+}
+
+bool triTri(const Element& x, const Element& y) {
+  return CGAL::do_intersect(triangleOf(x), triangleOf(y));
+}
+bool triSeg(const Element& x, const Element& y) {
+  return CGAL::do_intersect(triangleOf(x), segmentOf(y));
+}
+bool triPoint(const Element& x, const Element& y) {
+  return triangleOf(x).has_on(y.p[0]);
+}
+bool segTri(const Element& x, const Element& y) {
+  return triSeg(y, x);
+}
+bool segSeg(const Element& x, const Element& y) {
+  return CGAL::do_intersect(segmentOf(x), segmentOf(y));
+}
+bool segPoint(const Element& x, const Element& y) {
+  return segmentOf(x).has_on(y.p[0]);
+}
+bool pointTri(const Element& x, const Element& y) {
+  return triPoint(y, x);
+}
+bool pointSeg(const Element& x, const Element& y) {
+  return segPoint(y, x);
+}
+bool pointPoint(const Element& x, const Element& y) {
+  return x.p[0] == y.p[0];
+}
+
+using ExactTest = bool (*)(const Element&, const Element&);
+constexpr ExactTest kExactTests[3][3] = {
+    {&triTri, &triSeg, &triPoint},
+    {&segTri, &segSeg, &segPoint},
+    {&pointTri, &pointSeg, &pointPoint},
+};
+
+}  // namespace
+
+std::vector<Point> poseVertices(const TriangleMesh& mesh, const Pose& pose) {
+  const Eigen::Matrix3d& r = pose.linear();
+  const Eigen::Vector3d& t = pose.translation();
+  const bool identity = r == Eigen::Matrix3d::Identity() && t == Eigen::Vector3d::Zero();
+  std::vector<Point> points;
+  points.reserve(mesh.vertexCount());
+  for (Eigen::Index v = 0; v < mesh.vertices.cols(); ++v) {
+    const Eigen::Vector3d x = mesh.vertices.col(v);
+    if (identity) {
+      points.emplace_back(x.x(), x.y(), x.z());
+      continue;
+    }
+    FT world[3];
+    for (int row = 0; row < 3; ++row) {
+      world[row] = FT(r(row, 0)) * FT(x.x()) + FT(r(row, 1)) * FT(x.y()) +
+                   FT(r(row, 2)) * FT(x.z()) + FT(t[row]);
+    }
+    points.emplace_back(world[0], world[1], world[2]);
+  }
+  return points;
+}
+
+Element classify(const Point& a, const Point& b, const Point& c) {
+  Element e;
+  if (!CGAL::collinear(a, b, c)) {
+    e.kind = kTriangleElement;
+    e.p[0] = a;
+    e.p[1] = b;
+    e.p[2] = c;
+  } else {
+    Point sorted[3] = {a, b, c};
+    std::sort(std::begin(sorted), std::end(sorted), [](const Point& x, const Point& y) {
+      return CGAL::compare_xyz(x, y) == CGAL::SMALLER;
+    });
+    if (sorted[0] == sorted[2]) {
+      e.kind = kPointElement;
+      e.p[0] = sorted[0];
+    } else {
+      e.kind = kSegmentElement;
+      e.p[0] = sorted[0];
+      e.p[1] = sorted[2];
+    }
+  }
+  e.box = boxOf(a);
+  e.box.add(boxOf(b));
+  e.box.add(boxOf(c));
+  return e;
+}
+
+PosedMesh poseMesh(const TriangleMesh& mesh, const Pose& pose) {
+  const std::vector<Point> points = poseVertices(mesh, pose);
+  PosedMesh out;
+  out.elements.reserve(mesh.triangleCount());
+  for (Eigen::Index t = 0; t < mesh.triangles.cols(); ++t) {
+    out.elements.push_back(classify(points[static_cast<std::size_t>(mesh.triangles(0, t))],
+                                    points[static_cast<std::size_t>(mesh.triangles(1, t))],
+                                    points[static_cast<std::size_t>(mesh.triangles(2, t))]));
+    out.bounds.add(out.elements.back().box);
+  }
+  return out;
+}
+
+EK::Triangle_3 triangleOf(const Element& e) {
+  return {e.p[0], e.p[1], e.p[2]};
+}
+EK::Segment_3 segmentOf(const Element& e) {
+  return {e.p[0], e.p[1]};
+}
+
+bool elementsIntersect(const Element& x, const Element& y) {
+  return kExactTests[x.kind][y.kind](x, y);
+}
+
+// One triangle given by its model corners, posed exactly and classified.
+Element posedElement(const std::array<Eigen::Vector3d, 3>& corners, const Pose& pose) {
+  TriangleMesh single;
+  single.vertices.resize(3, 3);
+  for (int k = 0; k < 3; ++k)
+    single.vertices.col(k) = corners[static_cast<std::size_t>(k)];
+  single.triangles = Eigen::Matrix3Xi(3, 1);
+  single.triangles.col(0) << 0, 1, 2;
+  return poseMesh(single, pose).elements.front();
+}
+
+Element posedElement(const TriangleMesh& mesh, const Pose& pose, std::int32_t t) {
+  std::array<Eigen::Vector3d, 3> corners;
+  for (int k = 0; k < 3; ++k)
+    corners[static_cast<std::size_t>(k)] = mesh.corner(static_cast<std::size_t>(t), k);
+  return posedElement(corners, pose);
+}
+
+Eigen::Vector3d rounded(const Point& p) {
+  return {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
+}
+
+}  // namespace collido::exact

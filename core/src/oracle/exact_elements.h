@@ -1,0 +1,84 @@
+// Exact elements of the reference oracle, shared by its intersection, closest-point and
+// intersection-set code (internal to core/src/oracle).
+//
+// Cases of a triangle (after exact classification):
+//   triangle - three non-collinear corners;
+//   segment  - collinear corners, not all equal: the segment between the two extreme corners;
+//   point    - all corners equal.
+// A pair of elements is decided by a 3x3 dispatch table of CGAL do_intersect/has_on calls, all
+// exact with the Epeck kernel. The world coordinates R*v + t are Epeck lazy numbers, so they are
+// exact too; their interval approximations give conservative boxes for the grid prefilter.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <Eigen/Core>
+
+#include <collido/geometry.h>
+#include <collido/mesh/triangle_mesh.h>
+
+namespace collido::exact {
+
+using EK = CGAL::Exact_predicates_exact_constructions_kernel;
+using Point = EK::Point_3;
+using FT = EK::FT;
+
+enum ElementKind { kTriangleElement = 0, kSegmentElement = 1, kPointElement = 2 };
+
+struct Box {
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
+  Eigen::Vector3d hi = Eigen::Vector3d::Constant(-std::numeric_limits<double>::infinity());
+
+  void add(const Box& o) {
+    lo = lo.cwiseMin(o.lo);
+    hi = hi.cwiseMax(o.hi);
+  }
+  bool overlaps(const Box& o) const {
+    return (lo.array() <= o.hi.array()).all() && (o.lo.array() <= hi.array()).all();
+  }
+  bool empty() const { return (lo.array() > hi.array()).any(); }
+};
+
+struct Element {
+  ElementKind kind = kTriangleElement;
+  Point p[3];  // triangle corners; a segment uses p[0], p[1]; a point p[0]
+  Box box;
+};
+
+struct PosedMesh {
+  std::vector<Element> elements;
+  Box bounds;
+};
+
+/// The exact world points pose * v of every vertex of `mesh`.
+std::vector<Point> poseVertices(const TriangleMesh& mesh, const Pose& pose);
+/// The element three exact points make: a triangle, a segment or a point.
+Element classify(const Point& a, const Point& b, const Point& c);
+/// Every triangle of `mesh` posed exactly and classified, with the bounds of them all.
+PosedMesh poseMesh(const TriangleMesh& mesh, const Pose& pose);
+/// One triangle given by its model corners, posed exactly and classified.
+Element posedElement(const std::array<Eigen::Vector3d, 3>& corners, const Pose& pose);
+/// Triangle t of `mesh`, posed exactly and classified.
+Element posedElement(const TriangleMesh& mesh, const Pose& pose, std::int32_t t);
+
+EK::Triangle_3 triangleOf(const Element& e);
+EK::Segment_3 segmentOf(const Element& e);
+
+/// Whether two elements share a point, decided exactly.
+bool elementsIntersect(const Element& x, const Element& y);
+/// The exact squared distance of two elements (0 when they share a point).
+FT elementsSquaredDistance(const Element& x, const Element& y);
+/// The points where two intersecting elements meet: a point, a segment's two ends or a coplanar
+/// polygon's corners (empty when they do not meet).
+std::vector<Point> intersectionPoints(const Element& x, const Element& y);
+/// The closest points of two elements that do not meet.
+void closestPointsOfElements(const Element& x, const Element& y, Point& on_x, Point& on_y);
+
+/// A point rounded to the nearest doubles.
+Eigen::Vector3d rounded(const Point& p);
+
+}  // namespace collido::exact
