@@ -286,6 +286,15 @@ TEST_P(Interface, ContactsFollowTheConventions) {
   }
   EXPECT_GT(mean_normal.normalized().x(), 0.9)
       << "contact normals must point from A towards B (+x); mean " << mean_normal.transpose();
+
+  // Against the exact contacts (docs/DESIGN.md, "Contact geometry"), as the
+  // "contacts/spheres" expectation: the sets the contacts stand for, their normals and depths.
+  const OracleAnswer truth = exactIntersectingPairs(mesh, Pose::Identity(), mesh, moved(1.9));
+  FrameRecord record;
+  compareWithOracle(mesh, Pose::Identity(), mesh, moved(1.9), request, result, truth, record);
+  ASSERT_TRUE(record.contact);
+  expectAsRecorded("contacts/spheres", disagreementOf(record, QueryKind::kContacts),
+                   " (" + contactScoreText(*record.contact) + ")");
 }
 
 // --- distance ----------------------------------------------------------------------------------

@@ -11,8 +11,11 @@ namespace {
 
 using Json = nlohmann::json;
 
-constexpr const char* kFields[] = {"disagreeing_frames", "false_negatives", "false_positives",
-                                   "missed_pairs",       "extra_pairs",     "invalid_pairs"};
+constexpr const char* kFields[] = {"disagreeing_frames",  "false_negatives",  "false_positives",
+                                   "missed_pairs",        "extra_pairs",      "invalid_pairs",
+                                   "false_contact_pairs", "contacts_off_set", "malformed_contacts"};
+// Written only where non-zero, so records of queries without contacts keep their six counts.
+constexpr std::size_t kContactFieldsFrom = 6;
 
 std::size_t* field(Disagreement& d, const std::string& name) {
   if (name == "disagreeing_frames") return &d.disagreeing_frames;
@@ -21,13 +24,18 @@ std::size_t* field(Disagreement& d, const std::string& name) {
   if (name == "missed_pairs") return &d.missed_pairs;
   if (name == "extra_pairs") return &d.extra_pairs;
   if (name == "invalid_pairs") return &d.invalid_pairs;
+  if (name == "false_contact_pairs") return &d.false_contact_pairs;
+  if (name == "contacts_off_set") return &d.contacts_off_set;
+  if (name == "malformed_contacts") return &d.malformed_contacts;
   return nullptr;
 }
 
 Json toJson(Disagreement d) {
   Json j = Json::object();
-  for (const char* name : kFields)
-    j[name] = *field(d, name);
+  std::size_t index = 0;
+  for (const char* name : kFields) {
+    if (index++ < kContactFieldsFrom || *field(d, name) != 0) j[name] = *field(d, name);
+  }
   return j;
 }
 
@@ -40,7 +48,9 @@ bool Disagreement::none() const {
 bool Disagreement::operator==(const Disagreement& o) const {
   return disagreeing_frames == o.disagreeing_frames && false_negatives == o.false_negatives &&
          false_positives == o.false_positives && missed_pairs == o.missed_pairs &&
-         extra_pairs == o.extra_pairs && invalid_pairs == o.invalid_pairs;
+         extra_pairs == o.extra_pairs && invalid_pairs == o.invalid_pairs &&
+         false_contact_pairs == o.false_contact_pairs && contacts_off_set == o.contacts_off_set &&
+         malformed_contacts == o.malformed_contacts;
 }
 
 std::string Disagreement::toString() const {
@@ -48,6 +58,10 @@ std::string Disagreement::toString() const {
   out << "disagreeing frames " << disagreeing_frames << ", false negatives " << false_negatives
       << ", false positives " << false_positives << ", missed pairs " << missed_pairs
       << ", extra pairs " << extra_pairs << ", invalid pairs " << invalid_pairs;
+  if (false_contact_pairs + contacts_off_set + malformed_contacts != 0) {
+    out << ", contacts naming false pairs " << false_contact_pairs << ", contacts off their set "
+        << contacts_off_set << ", malformed contacts " << malformed_contacts;
+  }
   return out.str();
 }
 
@@ -63,6 +77,11 @@ Disagreement disagreementOf(const FrameRecord& f, QueryKind kind) {
     if (!f.truncated) d.missed_pairs = f.oracle_pairs - f.matched_pairs;
     d.extra_pairs = f.reported_pairs - f.matched_pairs;
   }
+  if (f.contact) {
+    d.false_contact_pairs = f.contact->false_pairs;
+    d.contacts_off_set = f.contact->off_set;
+    d.malformed_contacts = f.contact->bad_normals + f.contact->bad_depths;
+  }
   return d;
 }
 
@@ -76,6 +95,9 @@ Disagreement disagreementOf(const QueryMeasurement& m) {
     sum.missed_pairs += d.missed_pairs;
     sum.extra_pairs += d.extra_pairs;
     sum.invalid_pairs += d.invalid_pairs;
+    sum.false_contact_pairs += d.false_contact_pairs;
+    sum.contacts_off_set += d.contacts_off_set;
+    sum.malformed_contacts += d.malformed_contacts;
   }
   return sum;
 }

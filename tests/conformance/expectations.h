@@ -19,6 +19,12 @@ struct Disagreement {
   std::size_t extra_pairs = 0;      ///< reported pairs that do not intersect (all_pairs)
   std::size_t invalid_pairs = 0;    ///< out of range, duplicated, or false witnesses (a
                                     ///< boolean's pair, a distance's points)
+  /// Contacts (docs/DESIGN.md, "Contact geometry"): naming a pair that does not meet, off their
+  /// pair's exact set beyond rounding (or standing for no pair), and with a non-unit normal or
+  /// a negative depth.
+  std::size_t false_contact_pairs = 0;
+  std::size_t contacts_off_set = 0;
+  std::size_t malformed_contacts = 0;
 
   bool none() const;
   bool operator==(const Disagreement& o) const;

@@ -173,6 +173,55 @@
     }
   }
 
+  // --- 1c. contacts: run time against contact error ------------------------------------------
+  {
+    const s = section('contact-error', 'Contacts: run time against contact error',
+      'Contacts queries only, each contact held to the exact contact of its triangle pair ' +
+      '(docs/DESIGN.md, "Contact geometry"): median time per query (log scale) against the ' +
+      'largest distance of a contact point to its pair\'s exact intersection set (log scale; ' +
+      'an error below 1e-17 is drawn at 1e-17). The table gives every contact figure.');
+    const box = el('div', { class: 'charts' });
+    s.appendChild(box);
+    const rows = ok.filter((r) => r.kind === 'contacts' && r.contacts_per_frame !== null &&
+      r.contacts_per_frame !== undefined);
+    const groups = groupBy(rows, (r) => r.scene + ' · ' + r.query);
+    if (groups.size === 0) empty(s, 'No measured contacts query.');
+    const figure = (v, digits) => (v === null || v === undefined ? '-' : v.toPrecision(digits));
+    const lines = [];
+    for (const [name, points] of groups) {
+      const values = points.map((p) => Object.assign({}, p, {
+        shown_error: Math.max(p.contact_position_error === null ? 1e-17 :
+          p.contact_position_error, 1e-17) }));
+      chart(box, 'contact-error:' + name, {
+        title: name, width: 360, height: 220, data: { values: values },
+        mark: { type: 'point', filled: true, size: 70 },
+        encoding: {
+          x: { field: 'median_us', type: 'quantitative', scale: { type: 'log' },
+            title: 'median time per query (µs)' },
+          y: { field: 'shown_error', type: 'quantitative', scale: { type: 'log' },
+            title: 'largest contact point error' },
+          color: colour,
+          tooltip: [{ field: 'label' }, { field: 'median_us', format: '.1f' },
+            { field: 'contacts_per_frame', format: '.1f' },
+            { field: 'contact_position_error', format: '.3g' },
+            { field: 'contact_normal_error_deg', format: '.3g' },
+            { field: 'contact_depth_error', format: '.3g' },
+            { field: 'contact_coverage', format: '.3f' },
+            { field: 'contact_false_pairs' }] } });
+      for (const p of points) {
+        lines.push([name, p.label, p.median_us.toFixed(1), figure(p.contacts_per_frame, 3),
+          figure(p.contact_position_error, 3), figure(p.contact_surface_error, 3),
+          figure(p.contact_normal_error_deg, 3), figure(p.contact_depth_error, 3),
+          p.contact_coverage === null ? '-' : (100 * p.contact_coverage).toFixed(1) + '%',
+          String(p.contact_false_pairs)]);
+      }
+    }
+    if (lines.length > 0) {
+      table(s, ['scene · query', 'backend / setting', 'median µs', 'contacts/frame', 'point err',
+        'surface err', 'normal °', 'depth err', 'coverage', 'false pairs'], lines);
+    }
+  }
+
   // --- NURBS surfaces: run time against error (collido surface-distance files) ---------------
   {
     const s = section('surfaces', 'NURBS surfaces: run time against error',

@@ -67,7 +67,7 @@ test('every chart of the report renders without console errors', async () => {
     const pictures = await page.$$eval('img', (nodes) => nodes.map((n) => ({
       view: n.getAttribute('data-view'), width: n.naturalWidth })));
     for (const p of pictures) assert.ok(p.width > 0, `picture ${p.view} did not decode`);
-    for (const id of ['time-vs-error', 'distance-error', 'surfaces', 'frep', 'robustness', 'time-distributions', 'deforming', 'tracking',
+    for (const id of ['time-vs-error', 'distance-error', 'contact-error', 'surfaces', 'frep', 'robustness', 'time-distributions', 'deforming', 'tracking',
       'pose-error', 'memory', 'scaling',
       'failures', 'scene-views', 'needs', 'comparison', 'table']) {
       assert.ok(sections.includes(id), `missing section ${id}`);

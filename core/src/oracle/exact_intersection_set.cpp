@@ -59,23 +59,34 @@ using exact::intersectionPoints;
 using exact::Point;
 using exact::posedElement;
 
-ExactIntersection exactPairIntersection(const TriangleMesh& a, const Pose& pose_a,
-                                        const TriangleMesh& b, const Pose& pose_b,
-                                        const TrianglePair& pair) {
-  const Element x = posedElement(a, pose_a, pair.a);
-  const Element y = posedElement(b, pose_b, pair.b);
+namespace {
+
+ExactIntersection intersectionOf(const Element& x, const Element& y) {
   ExactIntersection answer;
   if (!elementsIntersect(x, y)) return answer;
   const std::vector<Point> points = intersectionPoints(x, y);
-  for (const Point& p : points) {
-    answer.points.emplace_back(CGAL::to_double(p.x()), CGAL::to_double(p.y()),
-                               CGAL::to_double(p.z()));
-  }
+  for (const Point& p : points)
+    answer.points.push_back(exact::rounded(p));
   answer.shape = points.empty()       ? ExactIntersection::Shape::kEmpty
                  : points.size() == 1 ? ExactIntersection::Shape::kPoint
                  : points.size() == 2 ? ExactIntersection::Shape::kSegment
                                       : ExactIntersection::Shape::kPolygon;
   return answer;
+}
+
+}  // namespace
+
+ExactIntersection exactPairIntersection(const TriangleMesh& a, const Pose& pose_a,
+                                        const TriangleMesh& b, const Pose& pose_b,
+                                        const TrianglePair& pair) {
+  return intersectionOf(posedElement(a, pose_a, pair.a), posedElement(b, pose_b, pair.b));
+}
+
+ExactIntersection exactPosedIntersection(const std::array<Eigen::Vector3d, 3>& a,
+                                         const Pose& pose_a,
+                                         const std::array<Eigen::Vector3d, 3>& b,
+                                         const Pose& pose_b) {
+  return intersectionOf(posedElement(a, pose_a), posedElement(b, pose_b));
 }
 
 }  // namespace collido

@@ -17,6 +17,26 @@ std::optional<T> optionalFrom(const Json& json, const char* key) {
   return found->get<T>();
 }
 
+std::optional<ContactScore> contactScoreFrom(const Json& j, const char* key) {
+  const auto found = j.find(key);
+  if (found == j.end() || found->is_null()) return std::nullopt;
+  const Json& c = *found;
+  ContactScore score;
+  score.contacts = c.at("contacts").get<std::size_t>();
+  score.false_pairs = c.at("false_pairs").get<std::size_t>();
+  score.bad_normals = c.at("bad_normals").get<std::size_t>();
+  score.bad_depths = c.at("bad_depths").get<std::size_t>();
+  score.off_set = c.at("off_set").get<std::size_t>();
+  score.position_error = optionalFrom<double>(c, "position_error");
+  score.surface_error = optionalFrom<double>(c, "surface_error");
+  score.normal_error_deg = optionalFrom<double>(c, "normal_error_deg");
+  score.depth_error = optionalFrom<double>(c, "depth_error");
+  score.coverage = optionalFrom<double>(c, "coverage");
+  score.covered_length = c.at("covered_length").get<double>();
+  score.total_length = c.at("total_length").get<double>();
+  return score;
+}
+
 FrameRecord frameFrom(const Json& j) {
   FrameRecord f;
   f.frame = j.at("frame").get<std::size_t>();
@@ -37,6 +57,7 @@ FrameRecord frameFrom(const Json& j) {
   f.distance_below = optionalFrom<double>(j, "distance_below").value_or(0.0);
   f.distance_above = optionalFrom<double>(j, "distance_above").value_or(0.0);
   f.invalid_distance_witness = optionalFrom<bool>(j, "invalid_distance_witness").value_or(false);
+  f.contact = contactScoreFrom(j, "contact");
   f.median_us = j.at("median_us").get<double>();
   f.floor_us = optionalFrom<double>(j, "floor_us");
   f.update_us = optionalFrom<double>(j, "update_us");
@@ -79,6 +100,7 @@ Json measurementToJson(const QueryMeasurement& m) {
           {"tracking_missed_within_margin", optionalJson(m.tracking_missed_within_margin)},
           {"max_distance_error", optionalJson(m.max_distance_error)},
           {"max_relative_distance_error", optionalJson(m.max_relative_distance_error)},
+          {"contact", m.contact ? contactScoreJson<Json>(*m.contact) : Json()},
           {"recall", m.recall},
           {"precision", m.precision},
           {"counts_bv_tests", m.counts_bv_tests},

@@ -16,6 +16,7 @@ std::string formatRunTable(const RunReport& report) {
   std::vector<std::string> notes;
   std::vector<std::string> tracking;
   std::vector<std::string> distances;
+  std::vector<std::string> contacts;
   std::set<std::string> tracked;  // (scene, query): every backend has the same figure
   for (const QueryMeasurement& m : report.measurements) {
     if (m.tracking_false_contacts && tracked.insert(m.scene + " / " + m.query).second) {
@@ -44,6 +45,9 @@ std::string formatRunTable(const RunReport& report) {
                ? " (" + formatNumber("%.3g", *m.max_relative_distance_error) + " of the distance)"
                : std::string()));
     }
+    if (m.contact)
+      contacts.push_back(m.backend + " / " + m.scene + " / " + m.query + ": " +
+                         contactScoreText(*m.contact));
     const bool pairs = m.kind == QueryKind::kAllPairs;
     rows.push_back({m.backend, m.scene, m.query, std::to_string(m.frames.size()),
                     formatNumber("%.1f", m.median_us), formatNumber("%.1f", m.p90_us),
@@ -62,6 +66,8 @@ std::string formatRunTable(const RunReport& report) {
     out << "tracking: " << line << "\n";
   for (const std::string& line : distances)
     out << "distance: " << line << "\n";
+  for (const std::string& line : contacts)
+    out << "contacts: " << line << "\n";
   for (const std::string& problem : report.problems)
     out << "problem: " << problem << "\n";
   return out.str();

@@ -104,7 +104,12 @@ void summariseMeasurement(QueryMeasurement& m) {
   m.update_rebuilds.reset();
   m.max_distance_error.reset();
   m.max_relative_distance_error.reset();
+  m.contact.reset();
   for (const FrameRecord& f : m.frames) {
+    if (f.contact) {
+      if (!m.contact) m.contact.emplace();
+      m.contact->add(*f.contact);
+    }
     if (f.oracle_distance && f.reported_distance) {
       const double error = std::abs(*f.reported_distance - *f.oracle_distance);
       m.max_distance_error = std::max(m.max_distance_error.value_or(0.0), error);
@@ -171,6 +176,10 @@ void addAnswer(const FrameRecord& one, FrameRecord& frame) {
   frame.distance_below = one.distance_below;
   frame.distance_above = one.distance_above;
   frame.invalid_distance_witness = one.invalid_distance_witness;
+  if (one.contact) {
+    if (!frame.contact) frame.contact.emplace();
+    frame.contact->add(*one.contact);
+  }
 }
 
 // Whether another version of the scene (the finest meshes, the true poses) intersects in
@@ -537,6 +546,11 @@ void compareWithOracle(const TriangleMesh& a, const Pose& pose_a, const Triangle
   reported.erase(std::unique(reported.begin(), reported.end()), reported.end());
   record.invalid_pairs += before_dedupe - reported.size();
 
+  if (kind == QueryKind::kContacts) {
+    record.oracle_pairs = truth.pairs.size();
+    record.contact = scoreContacts(a, pose_a, b, pose_b, truth.pairs, result.contacts);
+    return;
+  }
   if (kind == QueryKind::kBoolean) {
     // A witness, when given, must really intersect.
     for (const TrianglePair& p : reported) {
@@ -561,6 +575,7 @@ bool FrameRecord::disagrees(QueryKind kind) const {
            *reported_distance > *oracle_distance + distance_above;
   }
   if (oracle_intersecting != reported_intersecting || invalid_pairs != 0) return true;
+  if (kind == QueryKind::kContacts) return contact && contact->anyWrong();
   if (kind != QueryKind::kAllPairs) return false;
   // A truncated answer is right when every pair it gives is real and some were left out.
   if (truncated) return matched_pairs != reported_pairs || reported_pairs >= oracle_pairs;

@@ -769,10 +769,13 @@ Scene readScene(const Reader& r, const Json& document, const std::string& base_d
     }
     if (!node.has("kind")) r.fail(node, "missing 'kind'");
     query.request.kind = readQueryKind(r, node.at("kind"));
-    if (query.isGroup() && query.request.kind != QueryKind::kAllPairs) {
+    // A group's answer is the union over its object pairs: pairs and contacts add up, a
+    // boolean or a distance over a group would need a definition of its own.
+    if (query.isGroup() && query.request.kind != QueryKind::kAllPairs &&
+        query.request.kind != QueryKind::kContacts) {
       r.fail(node.at("kind"),
              "a group query ('among', or a subtree of more than one object) asks "
-             "all_pairs only, not " +
+             "all_pairs or contacts only, not " +
                  std::string(queryKindName(query.request.kind)));
     }
     query.request.max_pairs =

@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include <collido/runner/text_table.h>
+#include <collido/study/contact_table.h>
 #include <collido/study/deform_table.h>
 #include <collido/study/field_table.h>
 #include <collido/study/robustness.h>
@@ -123,6 +124,7 @@ std::string benchmarkJson(const std::vector<CombinationResult>& results) {
       }
       if (m.floor_ratio) entry["floor_ratio"] = *m.floor_ratio;
       if (m.update_median_us) entry["update_median_us"] = *m.update_median_us;
+      if (m.contact) entry["contact"] = contactScoreJson<Json>(*m.contact);
       benchmarks.push_back(entry);
     }
   }
@@ -231,6 +233,10 @@ std::string studyTable(const std::vector<CombinationResult>& results) {
     out << "\nThe OBB tree against the field (single thread, exact answers; per scene and "
            "query):\n";
     out << field;
+  }
+  if (const std::string contacts = contactTable(results); !contacts.empty()) {
+    out << "\nContacts against the exact reference:\n";
+    out << contacts;
   }
   if (const std::string deforming = deformTable(results); !deforming.empty()) {
     out << "\nDeforming scenes (update, then query, every frame):\n";

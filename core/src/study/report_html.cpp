@@ -67,6 +67,14 @@ Json row(const CombinationResult& r, const QueryMeasurement& m) {
           {"precision", m.precision},
           {"max_distance_error", nullable(m.max_distance_error)},
           {"max_relative_distance_error", nullable(m.max_relative_distance_error)},
+          {"contacts_per_frame",
+           m.contact ? Json(static_cast<double>(m.contact->contacts) / frames) : Json()},
+          {"contact_position_error", m.contact ? nullable(m.contact->position_error) : Json()},
+          {"contact_surface_error", m.contact ? nullable(m.contact->surface_error) : Json()},
+          {"contact_normal_error_deg", m.contact ? nullable(m.contact->normal_error_deg) : Json()},
+          {"contact_depth_error", m.contact ? nullable(m.contact->depth_error) : Json()},
+          {"contact_coverage", m.contact ? nullable(m.contact->coverage) : Json()},
+          {"contact_false_pairs", m.contact ? Json(m.contact->false_pairs) : Json()},
           {"finest_error_rate", m.finest_disagreements
                                     ? Json(static_cast<double>(*m.finest_disagreements) / frames)
                                     : Json()},

@@ -71,4 +71,10 @@ ExactIntersection exactPairIntersection(const TriangleMesh& a, const Pose& pose_
                                         const TriangleMesh& b, const Pose& pose_b,
                                         const TrianglePair& pair);
 
+/// The same for triangle `a` (model corners) posed by pose_a and `b` posed by pose_b.
+ExactIntersection exactPosedIntersection(const std::array<Eigen::Vector3d, 3>& a,
+                                         const Pose& pose_a,
+                                         const std::array<Eigen::Vector3d, 3>& b,
+                                         const Pose& pose_b);
+
 }  // namespace collido

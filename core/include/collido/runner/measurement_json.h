@@ -16,6 +16,24 @@ nlohmann::json measurementToJson(const QueryMeasurement& measurement);
 /// Reads what measurementToJson wrote; errors name the missing or mistyped field.
 Result<QueryMeasurement> measurementFromJson(const nlohmann::json& json);
 
+/// A contact score as JSON (ContactScore's fields; unset figures null).
+template <typename JsonT>
+JsonT contactScoreJson(const ContactScore& c) {
+  const auto optional = [](const auto& value) { return value ? JsonT(*value) : JsonT(); };
+  return {{"contacts", c.contacts},
+          {"false_pairs", c.false_pairs},
+          {"bad_normals", c.bad_normals},
+          {"bad_depths", c.bad_depths},
+          {"off_set", c.off_set},
+          {"position_error", optional(c.position_error)},
+          {"surface_error", optional(c.surface_error)},
+          {"normal_error_deg", optional(c.normal_error_deg)},
+          {"depth_error", optional(c.depth_error)},
+          {"coverage", optional(c.coverage)},
+          {"covered_length", c.covered_length},
+          {"total_length", c.total_length}};
+}
+
 /// One frame's record of measurement `m` as JSON: the fields of measurementToJson's "frames"
 /// and of a study's records.jsonl lines, written once for both (JsonT: nlohmann::json or
 /// nlohmann::ordered_json). Figures the backend or scene does not give are null.
@@ -42,6 +60,7 @@ JsonT frameRecordJson(const FrameRecord& f, const QueryMeasurement& m) {
           {"distance_below", f.distance_below},
           {"distance_above", f.distance_above},
           {"invalid_distance_witness", f.invalid_distance_witness},
+          {"contact", f.contact ? contactScoreJson<JsonT>(*f.contact) : JsonT()},
           {"disagrees", f.disagrees(m.kind)},
           {"median_us", f.median_us},
           {"floor_us", optional(f.floor_us)},

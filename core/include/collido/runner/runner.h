@@ -13,6 +13,7 @@
 #include <collido/host/plugin_library.h>
 #include <collido/oracle/exact_oracle.h>
 #include <collido/query.h>
+#include <collido/runner/contact_score.h>
 #include <collido/scene/scene.h>
 
 namespace collido {
@@ -106,6 +107,8 @@ struct FrameRecord {
   /// reported triangles, or a certified interval misses the exact distance (all within
   /// `distance_below`).
   bool invalid_distance_witness = false;
+  /// kContacts: the contacts held to the exact reference (docs/DESIGN.md, "Contact geometry").
+  std::optional<ContactScore> contact;
   std::uint64_t bv_tests = 0;
   std::uint64_t primitive_tests = 0;
   /// Object pairs asked: 1 for a two-object query; for a group query, the candidates the shared
@@ -159,6 +162,9 @@ struct QueryMeasurement {
   /// to the exact distance (frames at distance 0 count in the absolute figure only).
   std::optional<double> max_distance_error;
   std::optional<double> max_relative_distance_error;
+  /// kContacts: the frames' contact scores folded together (maxima of the errors, coverage of
+  /// all frames' intersection curves together); unset for other queries.
+  std::optional<ContactScore> contact;
   double recall = 1.0;     ///< kAllPairs: matched / exact pairs over all frames (1 if none)
   double precision = 1.0;  ///< kAllPairs: matched / reported pairs over all frames (1 if none)
   bool counts_bv_tests = false;
