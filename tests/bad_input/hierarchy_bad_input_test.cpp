@@ -193,11 +193,12 @@ TEST(HierarchyBadInput, SubtreesThatOverlap) {
 }
 
 // "bad.json: /queries/0/kind: a group query ('among', or a subtree of more than one object) asks
-//  all_pairs only, not boolean"
+//  all_pairs or contacts only, not boolean"
 TEST(HierarchyBadInput, BooleanSubtreeQuery) {
   Json scene = validScene();
   scene["queries"][0]["kind"] = "boolean";
-  EXPECT_TRUE(rejected(parse(scene), {"/queries/0/kind:", "subtree", "all_pairs only"}));
+  EXPECT_TRUE(
+      rejected(parse(scene), {"/queries/0/kind:", "subtree", "all_pairs or contacts only"}));
 }
 
 // "bad.json: /queries/0/among/1: object 'truss' named twice"

@@ -237,7 +237,7 @@ TEST(PluginLoading, StaticTableLoads) {
   ASSERT_TRUE(instance.ok()) << instance.status().toString();
   EXPECT_EQ(instance.value()->name(), "obbtree");
   EXPECT_TRUE(instance.value()->capabilities().queries.contains(QueryKind::kAllPairs));
-  EXPECT_FALSE(instance.value()->capabilities().queries.contains(QueryKind::kContacts));
+  EXPECT_TRUE(instance.value()->capabilities().queries.contains(QueryKind::kContacts));
 }
 
 // The host checks the variant before calling the plugin:
@@ -381,16 +381,6 @@ TEST(PluginLoading, NegativeIndexIsRefused) {
                        {"obbtree", "triangle 1", "references vertex -1"}));
 }
 
-// Needs beyond the capabilities are unsupported, not invalid:
-// "obbtree: the scene needs contacts but the backend answers boolean, all_pairs"
-TEST(PluginLoading, BuildNeedingAnUnsupportedQueryIsUnsupported) {
-  auto backend = instance();
-  ASSERT_NE(backend, nullptr);
-  const OwnedMesh mesh = tetrahedron();
-  EXPECT_TRUE(hasCodeAndWords(backend->build(mesh.view(), BuildNeeds{QueryKind::kContacts, false}),
-                              StatusCode::kUnsupported, {"obbtree", "contacts"}));
-}
-
 // ---- the adapter: queries --------------------------------------------------------------------
 
 /// An instance with one tetrahedron built for boolean queries only.
@@ -439,11 +429,12 @@ TEST(PluginLoading, QueryKindTheModelWasNotBuiltForIsInvalid) {
 }
 
 // "obbtree: does not answer contacts queries"
-TEST(PluginLoading, QueryKindTheBackendDoesNotAnswerIsUnsupported) {
+// The obbtree answers every kind: a model asked a kind it was not built for is refused.
+TEST(PluginLoading, QueryKindTheModelWasNotBuiltForIsRefused) {
   Built built = builtTetrahedron();
   ASSERT_NE(built.model, 0u);
   EXPECT_TRUE(hasCodeAndWords(queryOf(built, built.model, built.model, QueryKind::kContacts),
-                              StatusCode::kUnsupported, {"obbtree", "contacts"}));
+                              StatusCode::kInvalidArgument, {"obbtree", "built for", "contacts"}));
 }
 
 // "obbtree: query: distance tolerances must be finite and >= 0 (absolute -1.000000, ...)"

@@ -203,11 +203,13 @@ TEST(SceneBadInput, ToleranceOnANonDistanceQuery) {
   EXPECT_TRUE(rejected(parse(scene), {"/queries/0/abs_tolerance:", "distance queries only"}));
 }
 
-// "bad.json: /queries/0/kind: a group query ('among') asks all_pairs only, not distance"
+// "bad.json: /queries/0/kind: a group query ('among') asks all_pairs or contacts only, not
+// distance"
 TEST(SceneBadInput, GroupAsksForADistance) {
   Json scene = validScene();
   scene["queries"] = Json::array({Json{{"among", "*"}, {"kind", "distance"}}});
-  EXPECT_TRUE(rejected(parse(scene), {"/queries/0/kind:", "all_pairs only, not distance"}));
+  EXPECT_TRUE(
+      rejected(parse(scene), {"/queries/0/kind:", "all_pairs or contacts only, not distance"}));
 }
 
 // ---- group queries ---------------------------------------------------------------------------
@@ -264,11 +266,12 @@ TEST(SceneBadInput, GroupIsAnUnknownWord) {
   EXPECT_TRUE(rejected(parse(groupScene("all")), {"/queries/0/among:", "'among' is \"*\""}));
 }
 
-// "bad.json: /queries/0/kind: a group query ('among') asks all_pairs only, not boolean"
+// "bad.json: /queries/0/kind: a group query ('among') asks all_pairs or contacts only, not boolean"
 TEST(SceneBadInput, GroupAsksABooleanQuestion) {
   Json scene = groupScene("*");
   scene["queries"][0]["kind"] = "boolean";
-  EXPECT_TRUE(rejected(parse(scene), {"/queries/0/kind:", "all_pairs only, not boolean"}));
+  EXPECT_TRUE(
+      rejected(parse(scene), {"/queries/0/kind:", "all_pairs or contacts only, not boolean"}));
 }
 
 // ---- wrong types -----------------------------------------------------------------------------

@@ -61,6 +61,24 @@ TEST_F(SurfaceBuild, AWellFormedSurfaceIsBuiltAndAnswers) {
   EXPECT_GE(*result.distance.upper, 1.0 - 1e-12);
 }
 
+// A kind outside the capabilities (the seed method answers distance only) is unsupported, not
+// invalid, at build ("nurbs:hull: the scene needs contacts but the backend answers distance")
+// and at query.
+TEST_F(SurfaceBuild, BuildNeedingAnUnsupportedQueryIsUnsupported) {
+  EXPECT_TRUE(test::hasCodeAndWords(
+      seed->build(nurbs::viewOf(zone), BuildNeeds{QueryKind::kContacts, false}),
+      StatusCode::kUnsupported, {"nurbs:hull", "contacts"}));
+}
+
+TEST_F(SurfaceBuild, AQueryKindTheBackendDoesNotAnswerIsUnsupported) {
+  Result<ModelHandle> a = seed->build(nurbs::viewOf(zone), kDistance);
+  ASSERT_TRUE(a.ok());
+  QueryResult result;
+  EXPECT_TRUE(test::hasCodeAndWords(
+      seed->query(a.value(), Pose::Identity(), a.value(), Pose::Identity(), QueryRequest{}, result),
+      StatusCode::kUnsupported, {"nurbs:hull", "boolean"}));
+}
+
 TEST_F(SurfaceBuild, ANonPositiveWeightIsRefusedNamingTheControlPoint) {
   zone.at(1, 2).w() = -1.0;
   EXPECT_TRUE(rejected(seed->build(nurbs::viewOf(zone), kDistance),

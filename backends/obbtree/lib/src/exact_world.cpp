@@ -8,6 +8,7 @@
 #include "exact_world.h"
 
 #include <array>
+#include <initializer_list>
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 
@@ -72,6 +73,14 @@ class ExpansionWorldKernel {
   bool overflowed() const { return overflowed_; }
 
   int orient3d(const Point& a, const Point& b, const Point& c, const Point& d) {
+    Wide det;
+    orient3dDeterminant(a, b, c, d, det);
+    return signOf(det);
+  }
+
+  /// det(b - a, c - a, d - a) = ((b - a) x (c - a)) . (d - a), exactly, into `det`.
+  void orient3dDeterminant(const Point& a, const Point& b, const Point& c, const Point& d,
+                           Wide& det) {
     Wide u[3];
     Wide v[3];
     Wide w[3];
@@ -81,7 +90,6 @@ class ExpansionWorldKernel {
       w[k] = difference(d.x[k], a.x[k]);
     }
     // det(u, v, w) = u . (v x w), as the filter computes it.
-    Wide det;
     Wide minor;
     Wide term;
     for (int k = 0; k < 3; ++k) {
@@ -91,7 +99,17 @@ class ExpansionWorldKernel {
       u[k].multiplyInto(minor, term);
       det.add(term);
     }
-    return signOf(det);
+    overflowed_ = overflowed_ || det.overflowed();
+  }
+
+  /// (p1 - p0) x (q1 - q0) after dropping coordinate `drop`, exactly, into `result`.
+  void cross2(const Point& p0, const Point& p1, const Point& q0, const Point& q1, int drop,
+              Wide& result) {
+    const int i = exact::keptFirst(drop);
+    const int j = exact::keptSecond(drop);
+    cross(difference(p1.x[i], p0.x[i]), difference(q1.x[j], q0.x[j]), difference(p1.x[j], p0.x[j]),
+          difference(q1.x[i], q0.x[i]), result);
+    overflowed_ = overflowed_ || result.overflowed();
   }
 
   int orient2d(const Point& a, const Point& b, const Point& c, int drop) {
@@ -186,6 +204,72 @@ std::optional<bool> posedTrianglesIntersectByExpansions(const Eigen::Vector3d* a
       placeExpansion(b[0], pose_b), placeExpansion(b[1], pose_b), placeExpansion(b[2], pose_b));
   if (kernel.overflowed()) return std::nullopt;
   return answer;
+}
+
+namespace {
+
+bool inRange(std::initializer_list<const PosedModelPoint*> points) {
+  for (const PosedModelPoint* p : points) {
+    if (!pointInExpansionRange(p->model) || !poseInExpansionRange(*p->pose)) return false;
+  }
+  return true;
+}
+
+ExpansionPoint placed(const PosedModelPoint& p) {
+  return placeExpansion(p.model, *p.pose);
+}
+
+}  // namespace
+
+std::optional<int> posedOrient3dByExpansions(const PosedModelPoint& a, const PosedModelPoint& b,
+                                             const PosedModelPoint& c, const PosedModelPoint& d) {
+  if (!inRange({&a, &b, &c, &d})) return std::nullopt;
+  ExpansionWorldKernel kernel;
+  const int sign = kernel.orient3d(placed(a), placed(b), placed(c), placed(d));
+  if (kernel.overflowed()) return std::nullopt;
+  return sign;
+}
+
+std::optional<int> posedOrient2dByExpansions(const PosedModelPoint& a, const PosedModelPoint& b,
+                                             const PosedModelPoint& c, int drop) {
+  if (!inRange({&a, &b, &c})) return std::nullopt;
+  ExpansionWorldKernel kernel;
+  const int sign = kernel.orient2d(placed(a), placed(b), placed(c), drop);
+  if (kernel.overflowed()) return std::nullopt;
+  return sign;
+}
+
+std::optional<int> posedCompareByExpansions(const PosedModelPoint& a, const PosedModelPoint& b,
+                                            int k) {
+  if (!inRange({&a, &b})) return std::nullopt;
+  ExpansionWorldKernel kernel;
+  const int sign = kernel.compare(placed(a), placed(b), k);
+  if (kernel.overflowed()) return std::nullopt;
+  return sign;
+}
+
+std::optional<double> posedOrient3dValueByExpansions(const PosedModelPoint& a,
+                                                     const PosedModelPoint& b,
+                                                     const PosedModelPoint& c,
+                                                     const PosedModelPoint& d) {
+  if (!inRange({&a, &b, &c, &d})) return std::nullopt;
+  ExpansionWorldKernel kernel;
+  Wide det;
+  kernel.orient3dDeterminant(placed(a), placed(b), placed(c), placed(d), det);
+  if (kernel.overflowed()) return std::nullopt;
+  return det.estimate();
+}
+
+std::optional<double> posedCross2ValueByExpansions(const PosedModelPoint& p0,
+                                                   const PosedModelPoint& p1,
+                                                   const PosedModelPoint& q0,
+                                                   const PosedModelPoint& q1, int drop) {
+  if (!inRange({&p0, &p1, &q0, &q1})) return std::nullopt;
+  ExpansionWorldKernel kernel;
+  Wide value;
+  kernel.cross2(placed(p0), placed(p1), placed(q0), placed(q1), drop, value);
+  if (kernel.overflowed()) return std::nullopt;
+  return value.estimate();
 }
 
 bool posedTrianglesIntersectByRationals(const Eigen::Vector3d* a, const Eigen::Isometry3d& pose_a,

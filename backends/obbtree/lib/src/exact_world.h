@@ -38,4 +38,33 @@ bool posedTrianglesIntersectByExpansionsOrRationals(const Eigen::Vector3d* a,
                                                     const Eigen::Vector3d* b,
                                                     const Eigen::Isometry3d& pose_b);
 
+/// A model point and the pose that places it: its world position is R v + t, exactly.
+struct PosedModelPoint {
+  Eigen::Vector3d model = Eigen::Vector3d::Zero();
+  const Eigen::Isometry3d* pose = nullptr;
+};
+
+/// Signs on the exact world positions of posed model points, on expansions: orient3d (the sign
+/// of ((b - a) x (c - a)) . (d - a)), orient2d after dropping coordinate `drop`, and the
+/// comparison of coordinate k. std::nullopt outside the expansions' safe range or on overflow.
+std::optional<int> posedOrient3dByExpansions(const PosedModelPoint& a, const PosedModelPoint& b,
+                                             const PosedModelPoint& c, const PosedModelPoint& d);
+std::optional<int> posedOrient2dByExpansions(const PosedModelPoint& a, const PosedModelPoint& b,
+                                             const PosedModelPoint& c, int drop);
+std::optional<int> posedCompareByExpansions(const PosedModelPoint& a, const PosedModelPoint& b,
+                                            int k);
+
+/// The values, to within a few units in the last place, of an orientation determinant
+/// ((b - a) x (c - a)) . (d - a) and of a 2D cross product (p1 - p0) x (q1 - q0) after dropping
+/// coordinate `drop`, on the exact world positions: what a crossing point needs where the
+/// doubles' own determinants are too ill conditioned. std::nullopt as above.
+std::optional<double> posedOrient3dValueByExpansions(const PosedModelPoint& a,
+                                                     const PosedModelPoint& b,
+                                                     const PosedModelPoint& c,
+                                                     const PosedModelPoint& d);
+std::optional<double> posedCross2ValueByExpansions(const PosedModelPoint& p0,
+                                                   const PosedModelPoint& p1,
+                                                   const PosedModelPoint& q0,
+                                                   const PosedModelPoint& q1, int drop);
+
 }  // namespace collido::obbtree::detail

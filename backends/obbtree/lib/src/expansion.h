@@ -85,6 +85,14 @@ class Expansion {
   int size() const { return size_; }
   double component(int i) const { return components_[i]; }
   bool overflowed() const { return overflowed_; }
+  /// The value to within a few units in the last place: the components summed from the
+  /// smallest, so the largest absorbs the rest's rounded sum.
+  double estimate() const {
+    double sum = 0.0;
+    for (int i = 0; i < size_; ++i)
+      sum += components_[i];
+    return sum;
+  }
   /// -1, 0 or +1: the sign of the largest component, which outweighs all the others together.
   int sign() const {
     if (size_ == 0) return 0;

@@ -1,0 +1,68 @@
+#include "contact_signs.h"
+
+#include <cmath>
+#include <limits>
+
+#include "filtered_predicates.h"
+
+namespace collido::obbtree::detail {
+
+PosedCorner posedCorner(const Eigen::Vector3d& model, const Eigen::Isometry3d& pose) {
+  constexpr double kUnit = std::numeric_limits<double>::epsilon() / 2.0;
+  const Eigen::Matrix3d& r = pose.linear();
+  const Eigen::Vector3d& t = pose.translation();
+  PosedCorner corner;
+  corner.exact = PosedModelPoint{model, &pose};
+  for (int row = 0; row < 3; ++row) {
+    // Error-free transformations tell whether every product and sum was exact: then the double
+    // is the exact world coordinate (radius 0, and the filter's exact predicates on doubles
+    // settle zeros: faces at exact offsets, the usual CAD case).
+    double sum = t[row];
+    double magnitude = std::abs(t[row]);
+    bool exact = true;
+    for (int k = 0; k < 3; ++k) {
+      const double product = r(row, k) * model[k];
+      exact = exact && std::fma(r(row, k), model[k], -product) == 0.0;
+      const double next = sum + product;
+      const double product_part = next - sum;  // Knuth's TwoSum: the addition's exact error
+      const double sum_part = next - product_part;
+      exact = exact && (sum - sum_part) + (product - product_part) == 0.0;
+      sum = next;
+      magnitude += std::abs(product);
+    }
+    corner.world.p[row] = sum;
+    // Four roundings of a sum of four terms: within 4u/(1 - 4u) of the sum of their magnitudes;
+    // 5u covers that and the rounding of the magnitudes' own sum.
+    corner.world.error[row] = exact ? 0.0 : 5.0 * kUnit * magnitude;
+  }
+  return corner;
+}
+
+int ContactSignKernel::settle(const std::optional<int>& sign) {
+  if (sign) return *sign;
+  failed_ = true;
+  return 0;
+}
+
+int ContactSignKernel::orient3d(const Point& a, const Point& b, const Point& c, const Point& d) {
+  FilteredKernel filter;
+  const int sign = filter.orient3d(a.world, b.world, c.world, d.world);
+  if (!filter.unsure()) return sign;
+  return settle(posedOrient3dByExpansions(a.exact, b.exact, c.exact, d.exact));
+}
+
+int ContactSignKernel::orient2d(const Point& a, const Point& b, const Point& c, int drop) {
+  FilteredKernel filter;
+  const int sign = filter.orient2d(a.world, b.world, c.world, drop);
+  if (!filter.unsure()) return sign;
+  return settle(posedOrient2dByExpansions(a.exact, b.exact, c.exact, drop));
+}
+
+int ContactSignKernel::compare(const Point& a, const Point& b, int k) {
+  FilteredKernel filter;
+  const int sign = filter.compare(a.world, b.world, k);
+  if (!filter.unsure()) return sign;
+  return settle(posedCompareByExpansions(a.exact, b.exact, k));
+}
+
+}  // namespace collido::obbtree::detail

@@ -1,0 +1,148 @@
+// The OBB tree's contacts against the reference definition (docs/DESIGN.md, "Contact geometry"):
+// crossing tori at a random pose (the double-precision sets), boxes stacked face on face (the
+// coplanar sets, decided exactly), then the merge radius and the cap.
+#include <cmath>
+#include <random>
+#include <set>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include <collido/mesh/procedural.h>
+#include <collido/obbtree/collide.h>
+#include <collido/obbtree/contacts.h>
+#include <collido/oracle/contact_reference.h>
+#include <collido/oracle/exact_oracle.h>
+
+#include "collide_check.h"
+
+namespace collido::obbtree {
+namespace {
+
+struct Posed {
+  TriangleMesh mesh;
+  ObbTree tree;
+  std::vector<std::int32_t> positions;
+};
+
+Posed prepare(TriangleMesh mesh) {
+  ObbTree tree = ObbTree::build(mesh.vertices, mesh.triangles);
+  std::vector<std::int32_t> positions = leafPositionsOfIds(tree);
+  return {std::move(mesh), std::move(tree), std::move(positions)};
+}
+
+ContactAnswer contactsOf(const Posed& a, const Pose& pose_a, const Posed& b, const Pose& pose_b,
+                         const ContactOptions& options) {
+  CollideResult pairs;
+  collide(a.tree, pose_a, b.tree, pose_b, CollideRequest{}, pairs);
+  ContactAnswer answer;
+  contactsOfPairs(a.tree, a.positions, pose_a, b.tree, b.positions, pose_b, pairs.pairs, options,
+                  answer);
+  return answer;
+}
+
+// Every contact is its pair's reference contact, to rounding; every exact pair has one, unless
+// its point coincides with a deeper contact's.
+void expectReference(const Posed& a, const Pose& pose_a, const Posed& b, const Pose& pose_b,
+                     const ContactAnswer& answer, const std::string& label) {
+  const OracleAnswer exact = exactIntersectingPairs(a.mesh, pose_a, b.mesh, pose_b);
+  ASSERT_FALSE(exact.pairs.empty()) << label;
+  const double magnitude = std::max((pose_a * a.mesh.vertices).cwiseAbs().maxCoeff(),
+                                    (pose_b * b.mesh.vertices).cwiseAbs().maxCoeff());
+  const double rounding = 0x1p-40 * magnitude;
+  std::set<std::pair<std::int32_t, std::int32_t>> named;
+  for (const TriangleContact& c : answer.contacts) {
+    const collido::TrianglePair pair{c.triangle_a, c.triangle_b};
+    named.insert({pair.a, pair.b});
+    const PairContact reference = exactPairContact(a.mesh, pose_a, b.mesh, pose_b, pair);
+    ASSERT_NE(reference.set.shape, ExactIntersection::Shape::kEmpty) << label;
+    EXPECT_LE((c.position - reference.point).norm(), rounding) << label;
+    EXPECT_LE(distanceToIntersection(reference.set, c.position), rounding) << label;
+    EXPECT_LE((c.normal - reference.frame.normal).norm(), 1e-12) << label;
+    EXPECT_NEAR(c.depth, reference.frame.depth, rounding) << label;
+  }
+  for (const collido::TrianglePair& pair : exact.pairs) {
+    if (named.count({pair.a, pair.b}) != 0) continue;
+    const Eigen::Vector3d point = exactPairContact(a.mesh, pose_a, b.mesh, pose_b, pair).point;
+    bool coincident = false;
+    for (const TriangleContact& c : answer.contacts)
+      coincident = coincident || (c.position - point).norm() <= rounding;
+    EXPECT_TRUE(coincident) << label << ": pair " << pair.a << "," << pair.b << " has no contact";
+  }
+}
+
+TEST(ObbTreeContacts, CrossingToriMatchTheReference) {
+  const Posed torus = prepare(unwrap(makeTorus(TorusParams{1.0, 0.25, 32, 16}), "torus"));
+  Pose pose_b = Pose::Identity();
+  pose_b.linear() =
+      Eigen::AngleAxisd(1.2, Eigen::Vector3d(1.0, 0.3, 0.2).normalized()).toRotationMatrix();
+  pose_b.translation() = Eigen::Vector3d(1.6, 0.05, 0.02);
+  const ContactAnswer answer = contactsOf(torus, Pose::Identity(), torus, pose_b, {});
+  EXPECT_FALSE(answer.truncated);
+  EXPECT_GT(answer.contacts.size(), 20u);
+  // Crossing at generic angles: the double-precision sets, nearly never the exact ones.
+  EXPECT_LT(answer.exact_sets * 10, answer.contacts.size()) << answer.exact_sets;
+  expectReference(torus, Pose::Identity(), torus, pose_b, answer, "tori");
+}
+
+// Face on face and edge on face: every corner on the other plane, decided on exact signs.
+TEST(ObbTreeContacts, StackedBoxesMatchTheReference) {
+  const Posed box = prepare(unwrap(makeBox(BoxParams{}), "box"));
+  Pose on_top = Pose::Identity();
+  on_top.translation() = Eigen::Vector3d(0.25, 0.5, 1.0);  // face on face, offset in x and y
+  const ContactAnswer answer = contactsOf(box, Pose::Identity(), box, on_top, {});
+  expectReference(box, Pose::Identity(), box, on_top, answer, "stacked");
+  int polygons = 0;
+  for (const TriangleContact& c : answer.contacts) {
+    EXPECT_DOUBLE_EQ(c.position.z(), 0.5) << "the shared face lies at z = 0.5";
+    // Face on face (a coplanar polygon): neither triangle reaches behind the other's plane.
+    const PairContact reference = exactPairContact(box.mesh, Pose::Identity(), box.mesh, on_top,
+                                                   {c.triangle_a, c.triangle_b});
+    if (reference.set.shape == ExactIntersection::Shape::kPolygon) {
+      ++polygons;
+      EXPECT_EQ(c.depth, 0.0);
+      EXPECT_EQ(c.normal, Eigen::Vector3d::UnitZ());
+    }
+  }
+  EXPECT_GT(polygons, 0);
+}
+
+TEST(ObbTreeContacts, MergeRadiusAndCapShapeTheManifold) {
+  const Posed torus = prepare(unwrap(makeTorus(TorusParams{1.0, 0.25, 32, 16}), "torus"));
+  Pose pose_b = Pose::Identity();
+  pose_b.linear() = Eigen::AngleAxisd(1.5707963267948966, Eigen::Vector3d::UnitX()).matrix();
+  pose_b.translation() = Eigen::Vector3d(1.6, 0.0, 0.0);  // B's tube through A's
+  const ContactAnswer all = contactsOf(torus, Pose::Identity(), torus, pose_b, {});
+  ASSERT_GT(all.contacts.size(), 12u);
+  double deepest = 0.0;
+  for (const TriangleContact& c : all.contacts)
+    deepest = std::max(deepest, c.depth);
+
+  // A radius wider than the region merges everything into the deepest contact.
+  const ContactAnswer one = contactsOf(torus, Pose::Identity(), torus, pose_b, {10.0, 0});
+  ASSERT_EQ(one.contacts.size(), 1u);
+  EXPECT_EQ(one.contacts[0].depth, deepest);
+  EXPECT_EQ(one.merged, all.contacts.size() - 1);
+
+  // A cap keeps the deepest and a spread: the kept contacts are farther apart than the
+  // same number taken in pair order.
+  const ContactAnswer capped = contactsOf(torus, Pose::Identity(), torus, pose_b, {0.0, 6});
+  ASSERT_EQ(capped.contacts.size(), 6u);
+  EXPECT_TRUE(capped.truncated);
+  const auto closest_gap = [](const std::vector<TriangleContact>& contacts, std::size_t count) {
+    double gap = INFINITY;
+    for (std::size_t i = 0; i < count; ++i) {
+      for (std::size_t j = i + 1; j < count; ++j)
+        gap = std::min(gap, (contacts[i].position - contacts[j].position).norm());
+    }
+    return gap;
+  };
+  EXPECT_GT(closest_gap(capped.contacts, 6), closest_gap(all.contacts, 6));
+  bool has_deepest = false;
+  for (const TriangleContact& c : capped.contacts)
+    has_deepest = has_deepest || c.depth == deepest;
+  EXPECT_TRUE(has_deepest);
+}
+
+}  // namespace
+}  // namespace collido::obbtree
