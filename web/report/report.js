@@ -140,6 +140,23 @@
     }
   }
 
+  // Median time (log) against an error (log, floored at 1e-17 so exact answers stay visible):
+  // the chart the distance and contact sections share.
+  function timeAgainstErrorChart(box, name, points, error, title, tooltip) {
+    const values = points.map((p) => Object.assign({}, p, {
+      shown_error: Math.max(error(p) === null || error(p) === undefined ? 1e-17 : error(p),
+        1e-17) }));
+    chart(box, name, {
+      title: name.slice(name.indexOf(':') + 1), width: 360, height: 220,
+      data: { values: values }, mark: { type: 'point', filled: true, size: 70 },
+      encoding: {
+        x: { field: 'median_us', type: 'quantitative', scale: { type: 'log' },
+          title: 'median time per query (µs)' },
+        y: { field: 'shown_error', type: 'quantitative', scale: { type: 'log' }, title: title },
+        color: colour,
+        tooltip: [{ field: 'label' }, { field: 'median_us', format: '.1f' }].concat(tooltip) } });
+  }
+
   // --- 1b. distances: run time against distance error -----------------------------------------
   {
     const s = section('distance-error', 'Distances: run time against error',
@@ -154,22 +171,12 @@
     const groups = groupBy(rows, (r) => r.scene + ' · ' + r.query);
     if (groups.size === 0) empty(s, 'No measured distance query.');
     for (const [name, points] of groups) {
-      const values = points.map((p) => Object.assign({}, p, {
-        shown_error: Math.max(p.max_relative_distance_error === null ? p.max_distance_error :
-          p.max_relative_distance_error, 1e-17) }));
-      chart(box, 'distance-error:' + name, {
-        title: name, width: 360, height: 220, data: { values: values },
-        mark: { type: 'point', filled: true, size: 70 },
-        encoding: {
-          x: { field: 'median_us', type: 'quantitative', scale: { type: 'log' },
-            title: 'median time per query (µs)' },
-          y: { field: 'shown_error', type: 'quantitative', scale: { type: 'log' },
-            title: 'largest relative distance error' },
-          color: colour,
-          tooltip: [{ field: 'label' }, { field: 'median_us', format: '.1f' },
-            { field: 'max_distance_error', format: '.3g' },
-            { field: 'max_relative_distance_error', format: '.3g' },
-            { field: 'error_rate', format: '.3f' }] } });
+      timeAgainstErrorChart(box, 'distance-error:' + name, points,
+        (p) => (p.max_relative_distance_error === null ? p.max_distance_error :
+          p.max_relative_distance_error), 'largest relative distance error',
+        [{ field: 'max_distance_error', format: '.3g' },
+          { field: 'max_relative_distance_error', format: '.3g' },
+          { field: 'error_rate', format: '.3f' }]);
     }
   }
 
@@ -189,25 +196,14 @@
     const figure = (v, digits) => (v === null || v === undefined ? '-' : v.toPrecision(digits));
     const lines = [];
     for (const [name, points] of groups) {
-      const values = points.map((p) => Object.assign({}, p, {
-        shown_error: Math.max(p.contact_position_error === null ? 1e-17 :
-          p.contact_position_error, 1e-17) }));
-      chart(box, 'contact-error:' + name, {
-        title: name, width: 360, height: 220, data: { values: values },
-        mark: { type: 'point', filled: true, size: 70 },
-        encoding: {
-          x: { field: 'median_us', type: 'quantitative', scale: { type: 'log' },
-            title: 'median time per query (µs)' },
-          y: { field: 'shown_error', type: 'quantitative', scale: { type: 'log' },
-            title: 'largest contact point error' },
-          color: colour,
-          tooltip: [{ field: 'label' }, { field: 'median_us', format: '.1f' },
-            { field: 'contacts_per_frame', format: '.1f' },
-            { field: 'contact_position_error', format: '.3g' },
-            { field: 'contact_normal_error_deg', format: '.3g' },
-            { field: 'contact_depth_error', format: '.3g' },
-            { field: 'contact_coverage', format: '.3f' },
-            { field: 'contact_false_pairs' }] } });
+      timeAgainstErrorChart(box, 'contact-error:' + name, points,
+        (p) => p.contact_position_error, 'largest contact point error',
+        [{ field: 'contacts_per_frame', format: '.1f' },
+          { field: 'contact_position_error', format: '.3g' },
+          { field: 'contact_normal_error_deg', format: '.3g' },
+          { field: 'contact_depth_error', format: '.3g' },
+          { field: 'contact_coverage', format: '.3f' },
+          { field: 'contact_false_pairs' }]);
       for (const p of points) {
         lines.push([name, p.label, p.median_us.toFixed(1), figure(p.contacts_per_frame, 3),
           figure(p.contact_position_error, 3), figure(p.contact_surface_error, 3),

@@ -26,14 +26,6 @@ double depthBehind(const Eigen::Vector3d& normal, const Eigen::Vector3d& on_plan
   return depth;
 }
 
-std::array<Eigen::Vector3d, 3> posedCorners(const TriangleMesh& mesh, const Pose& pose,
-                                            std::int32_t t) {
-  std::array<Eigen::Vector3d, 3> corners;
-  for (int k = 0; k < 3; ++k)
-    corners[static_cast<std::size_t>(k)] = pose * mesh.corner(static_cast<std::size_t>(t), k);
-  return corners;
-}
-
 }  // namespace
 
 ContactFrame contactFrame(const std::array<Eigen::Vector3d, 3>& a,
@@ -61,7 +53,7 @@ PairContact exactPairContact(const TriangleMesh& a, const Pose& pose_a, const Tr
   PairContact contact;
   contact.set = exactPairIntersection(a, pose_a, b, pose_b, pair);
   contact.point = intersectionMean(contact.set);
-  contact.frame = contactFrame(posedCorners(a, pose_a, pair.a), posedCorners(b, pose_b, pair.b));
+  contact.frame = contactFrame(posedTriangle(a, pose_a, pair.a), posedTriangle(b, pose_b, pair.b));
   return contact;
 }
 
@@ -93,6 +85,14 @@ double distanceToIntersection(const ExactIntersection& set, const Eigen::Vector3
   for (std::size_t i = 1; i + 1 < q.size(); ++i)
     best = std::min(best, distanceToTriangle(p, {q[0], q[i], q[i + 1]}));
   return best;
+}
+
+std::array<Eigen::Vector3d, 3> posedTriangle(const TriangleMesh& mesh, const Pose& pose,
+                                             std::int32_t t) {
+  std::array<Eigen::Vector3d, 3> corners;
+  for (int k = 0; k < 3; ++k)
+    corners[static_cast<std::size_t>(k)] = pose * mesh.corner(static_cast<std::size_t>(t), k);
+  return corners;
 }
 
 double distanceToTriangle(const Eigen::Vector3d& p, const std::array<Eigen::Vector3d, 3>& t) {

@@ -24,14 +24,6 @@ double angleDegrees(const Eigen::Vector3d& u, const Eigen::Vector3d& v) {
   return std::atan2(u.cross(v).norm(), u.dot(v)) * 180.0 / kPi;
 }
 
-std::array<Eigen::Vector3d, 3> posedCorners(const TriangleMesh& mesh, const Pose& pose,
-                                            std::int32_t t) {
-  std::array<Eigen::Vector3d, 3> corners;
-  for (int k = 0; k < 3; ++k)
-    corners[static_cast<std::size_t>(k)] = pose * mesh.corner(static_cast<std::size_t>(t), k);
-  return corners;
-}
-
 bool inRange(std::int32_t t, const TriangleMesh& mesh) {
   return t >= 0 && static_cast<std::size_t>(t) < mesh.triangleCount();
 }
@@ -118,8 +110,8 @@ ContactScore scoreContacts(const TriangleMesh& a, const Pose& pose_a, const Tria
       raise(score.position_error, off);
       if (!(off <= rounding)) ++score.off_set;
     }
-    const std::array<Eigen::Vector3d, 3> ta = posedCorners(a, pose_a, pair.a);
-    const std::array<Eigen::Vector3d, 3> tb = posedCorners(b, pose_b, pair.b);
+    const std::array<Eigen::Vector3d, 3> ta = posedTriangle(a, pose_a, pair.a);
+    const std::array<Eigen::Vector3d, 3> tb = posedTriangle(b, pose_b, pair.b);
     raise(score.surface_error,
           std::max(distanceToTriangle(c.position, ta), distanceToTriangle(c.position, tb)));
     const ContactFrame& frame = ref->frame;

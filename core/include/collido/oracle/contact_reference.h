@@ -1,6 +1,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <optional>
 
 #include <Eigen/Core>
@@ -52,6 +53,10 @@ Eigen::Vector3d intersectionMean(const ExactIntersection& set);
 /// The distance from `p` to an intersection set (a point, a segment or a planar convex
 /// polygon), in double; infinity for an empty set.
 double distanceToIntersection(const ExactIntersection& set, const Eigen::Vector3d& p);
+
+/// Triangle t of `mesh` placed by `pose`, in double.
+std::array<Eigen::Vector3d, 3> posedTriangle(const TriangleMesh& mesh, const Pose& pose,
+                                             std::int32_t t);
 
 /// The distance from `p` to a closed triangle, degenerate ones as the segment or point they are.
 double distanceToTriangle(const Eigen::Vector3d& p, const std::array<Eigen::Vector3d, 3>& t);
