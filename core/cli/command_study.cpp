@@ -13,6 +13,7 @@
 #include <set>
 #include <sstream>
 
+#include <collido/study/folder_lock.h>
 #include <collido/study/outputs.h>
 #include <collido/study/progress.h>
 #include <collido/study/result_store.h>
@@ -249,6 +250,13 @@ int runStudy(const StudyArguments& args, const PluginOptions& plugins) {
       study::shardOf(study::planStudy(scenes, settings, sweep, onlyScenes(sweep, scenes)),
                      shard_index, shard_count);
 
+  // One driver per folder: a second one on the same --out would delete the first one's scratch
+  // files and store results under its plan. Held until this function returns.
+  Result<study::FolderLock> lock = study::FolderLock::acquire(args.out);
+  if (!lock.ok()) {
+    std::cerr << "error: " << lock.status().message() << "\n";
+    return 2;
+  }
   const ResultStore store(args.out);
   Result<std::vector<Combination>> stored_plan = store.readPlan();
   if (!stored_plan.ok()) {

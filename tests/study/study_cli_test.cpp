@@ -21,6 +21,7 @@
 #include <nlohmann/json.hpp>
 
 #include <collido/scene/scene.h>
+#include <collido/study/folder_lock.h>
 #include <collido/study/plan.h>
 #include <collido/study/result_store.h>
 
@@ -403,6 +404,19 @@ TEST(StudyCli, ResumeRunsOnlyWhatIsMissing) {
   EXPECT_EQ(different.exit_code, 2) << describe(different);
   EXPECT_NE(different.err.find("holds a different study"), std::string::npos) << different.err;
   EXPECT_EQ(readResults(out).size(), 2u);  // neither touched the results
+
+  // While another driver holds the folder, a second one is refused before it touches anything.
+  {
+    const Result<study::FolderLock> held = study::FolderLock::acquire(out);
+    ASSERT_TRUE(held.ok()) << held.status().message();
+    const CommandRun locked_out = collido(resume, dir);
+    EXPECT_EQ(locked_out.exit_code, 2) << describe(locked_out);
+    EXPECT_NE(locked_out.err.find("in use by another collido study (PID " +
+                                  std::to_string(getpid()) + ")"),
+              std::string::npos)
+        << locked_out.err;
+  }
+  EXPECT_EQ(readText(kept), kept_text);
 }
 
 TEST(StudyCli, RetryFailedRunsFailuresAgain) {
