@@ -24,11 +24,8 @@ class ObbTreeModel final : public BackendModel {
   }
   ObbTree& tree() { return tree_; }
   const ObbTree& tree() const { return tree_; }
-  // Built on first use where the needs did not announce contacts.
-  const std::vector<std::int32_t>& leafPositions() {
-    if (positions_.empty()) positions_ = leafPositionsOfIds(tree_);
-    return positions_;
-  }
+  // The adapter asks contacts only of models whose needs announced them.
+  const std::vector<std::int32_t>& leafPositions() const { return positions_; }
 
  private:
   ObbTree tree_;
@@ -96,8 +93,8 @@ class ObbTreeBackend final : public Backend {
 
   Status query(BackendModel& a, const Pose& pose_a, BackendModel& b, const Pose& pose_b,
                const QueryRequest& request, QueryResult& result) override {
-    ObbTreeModel& model_a = static_cast<ObbTreeModel&>(a);
-    ObbTreeModel& model_b = static_cast<ObbTreeModel&>(b);
+    const ObbTreeModel& model_a = static_cast<ObbTreeModel&>(a);
+    const ObbTreeModel& model_b = static_cast<ObbTreeModel&>(b);
     const ObbTree& tree_a = model_a.tree();
     const ObbTree& tree_b = model_b.tree();
     if (request.kind == QueryKind::kDistance) {
