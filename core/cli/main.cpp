@@ -1,6 +1,8 @@
 // collido: the command-line front of Collidoscope.
+#include <cstdlib>
 #include <exception>
 #include <iostream>
+#include <string>
 
 #include "commands.h"
 
@@ -16,6 +18,15 @@ int main(int argc, char** argv) {
   app.add_flag("--no-default-plugins", plugins.no_defaults,
                "load only plugins given with --plugin (not the build tree, install folder or "
                "COLLIDO_PLUGIN_PATH)");
+  // Set in the environment, so that worker processes inherit the same limit.
+  app.add_option_function<unsigned long long>(
+         "--max-input-mb",
+         [](unsigned long long mebibytes) {
+           setenv("COLLIDO_MAX_INPUT_MB", std::to_string(mebibytes).c_str(), 1);
+         },
+         "largest input file (scene, mesh, sweep, ...) read, in MiB (default: "
+         "$COLLIDO_MAX_INPUT_MB, else 1024)")
+      ->check(CLI::PositiveNumber);
   int exit_code = 0;
   collido::cli::addBackendsCommand(app, plugins, exit_code);
   collido::cli::addCheckCommand(app, exit_code);

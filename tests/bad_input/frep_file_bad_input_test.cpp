@@ -102,7 +102,7 @@ TEST(FrepFileBadInput, MissingFileIsNamed) {
   const Result<FrepFile> file = loadFrepFile("/no/such/frep.json");
   ASSERT_FALSE(file.ok());
   EXPECT_TRUE(test::hasCodeAndWords(file.status(), StatusCode::kInvalidArgument,
-                                    {"/no/such/frep.json", "cannot open"}));
+                                    {"/no/such/frep.json", "FRep file not found"}));
 }
 
 TEST(FrepFile, AnimatedSolidsChangeWithTime) {

@@ -31,6 +31,7 @@
 #include <iostream>
 #include <iterator>
 #include <limits>
+#include <new>
 #include <sstream>
 #include <utility>
 #include <vector>
@@ -39,6 +40,8 @@
 #include <CGAL/IO/OBJ.h>
 #include <CGAL/IO/polygon_soup_io.h>
 #include <assimp/Importer.hpp>
+
+#include <collido/mesh/input_file.h>
 
 namespace collido {
 namespace {
@@ -200,9 +203,8 @@ constexpr Reader kDoublePrecisionReaders[] = {
 }  // namespace
 
 Result<TriangleMesh> loadMesh(const std::string& path, MeshReport* report) {
+  if (Status s = checkInputFile(path, "mesh file"); !s.ok()) return s;
   std::error_code ec;
-  if (!std::filesystem::exists(path, ec)) return readError(path, "file not found");
-  if (!std::filesystem::is_regular_file(path, ec)) return readError(path, "not a regular file");
   if (std::filesystem::file_size(path, ec) == 0 && !ec) return readError(path, "the file is empty");
 
   const std::string ext = lowerExtension(path);
@@ -217,18 +219,24 @@ Result<TriangleMesh> loadMesh(const std::string& path, MeshReport* report) {
                                              "' (neither CGAL's obj/off/ply/stl readers nor "
                                              "assimp read this extension)");
   }
-  Result<Imported> imported = reader != std::end(kDoublePrecisionReaders)
-                                  ? readWithCgal(path, reader->format)
-                                  : detail::readWithAssimp(path);
-  if (!imported.ok()) return imported.status();
-  Imported& result = imported.value();
-  if (Status s = validateMesh(result.mesh, path); !s.ok()) return s;
-  if (report != nullptr) {
-    *report = result.report;
-    report->source = path;
-    inspectMesh(result.mesh, *report);
+  // A file within the size limit can still describe more than memory holds (a header that
+  // promises a billion faces); the error then names the file instead of a bare bad_alloc.
+  try {
+    Result<Imported> imported = reader != std::end(kDoublePrecisionReaders)
+                                    ? readWithCgal(path, reader->format)
+                                    : detail::readWithAssimp(path);
+    if (!imported.ok()) return imported.status();
+    Imported& result = imported.value();
+    if (Status s = validateMesh(result.mesh, path); !s.ok()) return s;
+    if (report != nullptr) {
+      *report = result.report;
+      report->source = path;
+      inspectMesh(result.mesh, *report);
+    }
+    return std::move(result.mesh);
+  } catch (const std::bad_alloc&) {
+    return Status(StatusCode::kOutOfMemory, path + ": out of memory reading the mesh");
   }
-  return std::move(result.mesh);
 }
 
 }  // namespace collido

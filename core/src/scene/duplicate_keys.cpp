@@ -3,6 +3,8 @@
 #include <set>
 #include <vector>
 
+#include <collido/scene/json_document.h>
+
 #include "scene_reader.h"
 
 namespace collido::scene_reading {
@@ -71,3 +73,11 @@ Result<Json> parseDocument(const std::string& text, const std::string& label) {
 }
 
 }  // namespace collido::scene_reading
+
+namespace collido {
+
+Result<nlohmann::json> parseJsonDocument(const std::string& text, const std::string& label) {
+  return scene_reading::parseDocument(text, label);
+}
+
+}  // namespace collido

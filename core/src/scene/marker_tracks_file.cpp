@@ -12,6 +12,8 @@
 #include <sstream>
 #include <tuple>
 
+#include <collido/mesh/input_file.h>
+
 // The parser copies file names for its messages with strncpy, which GCC flags where it is
 // inlined into this file (the copy is bounded and terminated by the parser itself).
 #if defined(__GNUC__) && !defined(__clang__)
@@ -53,6 +55,7 @@ Result<MarkerTracks> readMarkerTracks(const std::string& path, const std::string
   std::ifstream probe(path);
   if (!probe) return Status(StatusCode::kInvalidArgument, path + ": tracks file not found");
   probe.close();
+  if (Status s = checkInputFile(path, "tracks file"); !s.ok()) return s;
   MarkerTracks tracks(frames);
   std::size_t rows = 0;
   std::set<std::tuple<std::size_t, int>> seen;

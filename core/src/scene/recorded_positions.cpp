@@ -7,6 +7,8 @@
 #include <fstream>
 #include <limits>
 
+#include <collido/mesh/input_file.h>
+
 namespace collido {
 namespace {
 
@@ -30,6 +32,7 @@ Result<RecordedPositions> readRecordedPositions(const std::string& path) {
   const auto fail = [&path](const std::string& problem) -> Result<RecordedPositions> {
     return Status(StatusCode::kInvalidArgument, path + ": recorded positions: " + problem);
   };
+  if (Status s = checkInputFile(path, "recorded positions"); !s.ok()) return s;
   std::ifstream in(path, std::ios::binary);
   if (!in)
     return Status(StatusCode::kInvalidArgument, path + ": cannot open the recorded positions");

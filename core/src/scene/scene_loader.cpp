@@ -909,17 +909,10 @@ bool Scene::hasGeneratedShapes() const {
 }
 
 Result<Scene> loadScene(const std::string& path, const SceneLoadOptions& options) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    std::error_code ec;
-    return Status(
-        StatusCode::kInvalidArgument,
-        path + (std::filesystem::exists(path, ec) ? ": cannot be read" : ": file not found"));
-  }
-  std::stringstream buffer;
-  buffer << in.rdbuf();
+  Result<std::string> text = readInputFile(path, "scene file");
+  if (!text.ok()) return text.status();
   Result<Scene> scene =
-      parseScene(buffer.str(), path, std::filesystem::path(path).parent_path().string(), options);
+      parseScene(text.value(), path, std::filesystem::path(path).parent_path().string(), options);
   if (scene.ok()) scene.value().path = path;
   return scene;
 }

@@ -15,6 +15,7 @@
 #include <Eigen/Core>
 #include <nlohmann/json.hpp>
 
+#include <collido/mesh/input_file.h>
 #include <collido/status.h>
 
 namespace collido::scene_reading {
@@ -47,13 +48,10 @@ Json::parser_callback_t duplicateKeyCheck(const std::string& label);
 /// file and, for a syntax error, the byte.
 Result<Json> parseDocument(const std::string& text, const std::string& label);
 
-/// The whole of a text file; an unreadable one is an error "PATH: cannot open the WHAT".
+/// The whole of a text input file, checked by readInputFile (kind, size limit); an error names
+/// the file and calls it `what`.
 inline Result<std::string> readTextFile(const std::string& path, const std::string& what) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return Status(StatusCode::kInvalidArgument, path + ": cannot open the " + what);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
+  return readInputFile(path, what);
 }
 
 inline const char* typeName(const Json& v) {

@@ -7,6 +7,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include <collido/mesh/input_file.h>
+#include <collido/scene/json_document.h>
+
 namespace collido::study {
 namespace {
 
@@ -216,6 +219,10 @@ std::vector<std::string> SweepBackend::settings() const {
 }
 
 Result<Sweep> parseSweep(const std::string& text, const std::string& label) {
+  // Checked strictly first (a repeated key is an error, as in scene files); read again in key
+  // order, which names the settings (obbtree[max_leaf_triangles=1;float_boxes=false]).
+  if (Result<nlohmann::json> strict = parseJsonDocument(text, label); !strict.ok())
+    return strict.status();
   try {
     const Json root = Json::parse(text);
     return readSweep(Checker(label), root);
@@ -228,11 +235,9 @@ Result<Sweep> parseSweep(const std::string& text, const std::string& label) {
 }
 
 Result<Sweep> loadSweep(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return Status(StatusCode::kInvalidArgument, path + ": cannot be read");
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  return parseSweep(buffer.str(), path);
+  Result<std::string> text = readInputFile(path, "sweep file");
+  if (!text.ok()) return text.status();
+  return parseSweep(text.value(), path);
 }
 
 }  // namespace collido::study

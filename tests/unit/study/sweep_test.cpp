@@ -145,6 +145,14 @@ TEST(Sweep, ErrorsNameLabelPointerAndProblem) {
   expectError(R"({"timeout_s": "60"})", "/timeout_s", "positive number of seconds");
 }
 
+// As in scene files, a repeated key is refused rather than the last one silently counting.
+TEST(Sweep, ARepeatedKeyIsRefused) {
+  expectError(R"({"backends": ["obbtree"], "backends": ["ode"]})", "/backends",
+              "duplicate key 'backends'");
+  expectError(R"({"backends": [{"variant": "x", "options": {"a": [1], "a": [2]}}]})",
+              "/backends/0/options/a", "duplicate key 'a'");
+}
+
 TEST(Sweep, InvalidJsonNamesTheLabel) {
   const std::string message = errorOf(R"({"backends": [)");
   EXPECT_EQ(message.rfind(std::string(kLabel) + ": not valid JSON", 0), 0u) << message;
