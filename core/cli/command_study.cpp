@@ -13,6 +13,7 @@
 #include <set>
 #include <sstream>
 
+#include <collido/study/expected_time.h>
 #include <collido/study/folder_lock.h>
 #include <collido/study/outputs.h>
 #include <collido/study/progress.h>
@@ -47,6 +48,7 @@ struct StudyArguments {
   double timeout_s = 0.0;
   int repetitions = 0;
   bool quiet = false;
+  std::string expected_times;
 };
 
 // LD_PRELOAD for the allocation hooks, when they were built beside this executable.
@@ -310,14 +312,25 @@ int runStudy(const StudyArguments& args, const PluginOptions& plugins) {
   }
   const int repetitions = args.repetitions > 0 ? args.repetitions : sweep.repetitions.value_or(5);
   const double timeout_s = args.timeout_s > 0 ? args.timeout_s : sweep.timeout_s.value_or(600.0);
-  std::cerr << "study: " << plan.size() << " combinations"
-            << (shard_count > 1 ? " in shard " + args.shard : "") << ", " << todo.size()
-            << " to run, results in " << args.out << "\n";
+  study::CombinationTimes times;
+  if (!args.expected_times.empty()) {
+    Result<study::CombinationTimes> loaded = study::loadCombinationTimes(args.expected_times);
+    if (loaded.ok()) {
+      times = std::move(loaded).value();
+    } else {  // an estimate is a courtesy: without one the study still runs
+      std::cerr << "warning: " << loaded.status().message() << "; no expected time\n";
+    }
+  }
+  const study::TimeEstimate estimate = study::estimateTimes(todo, times);
+  std::cerr << study::startLine(plan.size(), todo.size(), estimate,
+                                shard_count > 1 ? args.shard : "", args.out)
+            << "\n";
 
   stop_requested.store(false);
   std::signal(SIGINT, requestStop);
   std::signal(SIGTERM, requestStop);
   study::StudyProgress progress(std::cerr, todo.size(), !args.quiet && isatty(STDERR_FILENO) != 0);
+  progress.setExpected(estimate.seconds);
   bool interrupted = false;
   for (std::size_t i = 0; i < todo.size(); ++i) {
     const Combination& c = *todo[i];
@@ -497,6 +510,9 @@ void addStudyCommands(CLI::App& app, const PluginOptions& plugins, int& exit_cod
                    "timed calls per frame and query (default: the sweep's, else 5)")
       ->check(CLI::Range(1, 1000000));
   command->add_flag("--quiet", args->quiet, "no progress on stderr");
+  command->add_option("--expected-times", args->expected_times,
+                      "an earlier study folder or its times.json: the expected time printed at "
+                      "the start and the progress estimate come from its wall times");
   command->callback([args, &plugins, &exit_code] { exit_code = runStudy(*args, plugins); });
 
   CLI::App* worker = app.add_subcommand("worker", "");  // internal: one combination

@@ -16,6 +16,7 @@
 #include <collido/runner/text_table.h>
 #include <collido/study/contact_table.h>
 #include <collido/study/deform_table.h>
+#include <collido/study/expected_time.h>
 #include <collido/study/field_table.h>
 #include <collido/study/robustness.h>
 #include <collido/study/tracking_table.h>
@@ -269,6 +270,10 @@ Status writeStudyOutputs(const std::string& directory,
     return s;
   }
   if (Status s = writeFileAtomically((folder / "summary.json").string(), benchmarkJson(results));
+      !s.ok()) {
+    return s;
+  }
+  if (Status s = writeFileAtomically((folder / "times.json").string(), timesJson(results));
       !s.ok()) {
     return s;
   }

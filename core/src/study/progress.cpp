@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <utility>
 
 namespace collido::study {
 
@@ -45,10 +46,28 @@ void StudyProgress::frames(std::size_t done, std::size_t total) {
   frames_total_ = total;
 }
 
+void StudyProgress::setExpected(std::vector<double> seconds) {
+  expected_ = std::move(seconds);
+}
+
 std::string StudyProgress::estimateLeft() const {
   const double elapsed = std::chrono::duration<double>(Clock::now() - started_).count();
   const double current =
       frames_total_ == 0 ? 0.0 : static_cast<double>(frames_done_) / frames_total_;
+  if (expected_.size() == combinations_) {
+    double expected_done = 0.0;
+    double expected_left = 0.0;
+    for (std::size_t i = 0; i < expected_.size(); ++i) {
+      const double part = i < finished_ ? 1.0 : i == finished_ ? current : 0.0;
+      expected_done += expected_[i] * part;
+      expected_left += expected_[i] * (1.0 - part);
+    }
+    if (expected_done + expected_left > 0.0) {
+      // Before anything has run, or on a machine like the one that measured: as expected.
+      const double pace = expected_done > 0.0 ? elapsed / expected_done : 1.0;
+      return formatDuration(expected_left * pace);
+    }
+  }
   const double done = static_cast<double>(finished_) + current;
   if (done <= 0.0) return "?";
   return formatDuration(elapsed / done * (static_cast<double>(combinations_) - done));

@@ -164,7 +164,7 @@ TEST(StudyTable, FailedQueriesAreListedAsFailures) {
       << table;
 }
 
-TEST(WriteStudyOutputs, WritesTheThreeFiles) {
+TEST(WriteStudyOutputs, WritesTheFourFiles) {
   const std::string dir = test::makeTempDirectory("outputs");
   const std::vector<CombinationResult> results = mixedResults();
   ASSERT_TRUE(writeStudyOutputs(dir, results).ok());
@@ -172,7 +172,8 @@ TEST(WriteStudyOutputs, WritesTheThreeFiles) {
   for (const auto& entry : std::filesystem::directory_iterator(dir))
     names.push_back(entry.path().filename().string());
   std::sort(names.begin(), names.end());
-  EXPECT_EQ(names, (std::vector<std::string>{"records.jsonl", "summary.json", "table.txt"}));
+  EXPECT_EQ(names,
+            (std::vector<std::string>{"records.jsonl", "summary.json", "table.txt", "times.json"}));
   std::ifstream table(dir + "/table.txt");
   std::stringstream text;
   text << table.rdbuf();

@@ -30,8 +30,8 @@ std::string studyTable(const std::vector<CombinationResult>& results);
 /// the study ran none.
 std::string robustnessReport(const std::vector<CombinationResult>& results);
 
-/// Writes records.jsonl, summary.json and table.txt into `directory`, and robustness.txt when the
-/// study ran stress scenes, each atomically.
+/// Writes records.jsonl, summary.json, times.json (expected_time.h) and table.txt into
+/// `directory`, and robustness.txt when the study ran stress scenes, each atomically.
 Status writeStudyOutputs(const std::string& directory,
                          const std::vector<CombinationResult>& results);
 

@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <ostream>
 #include <string>
+#include <vector>
 
 namespace collido::study {
 
@@ -19,8 +20,12 @@ class StudyProgress {
   void finish(const std::string& outcome);
   /// Redraws the bars (at most ten times a second).
   void tick();
-  /// "1m05s": the estimated time left, from the mean time per combination so far.
+  /// "1m05s": the estimated time left. With expected times per combination (setExpected), the
+  /// expected time of what is left, scaled by how the finished part compared with its
+  /// expectation; else the mean time per combination so far.
   std::string estimateLeft() const;
+  /// Expected seconds of each combination, in the order they run (estimateTimes).
+  void setExpected(std::vector<double> seconds);
 
  private:
   using Clock = std::chrono::steady_clock;
@@ -36,6 +41,7 @@ class StudyProgress {
   std::string label_;
   std::size_t frames_done_ = 0;
   std::size_t frames_total_ = 0;
+  std::vector<double> expected_;
 };
 
 /// A duration in seconds as people read it: "42s", "3m07s", "1h02m".
