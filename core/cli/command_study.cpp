@@ -5,7 +5,6 @@
 #include <unistd.h>
 
 #include <atomic>
-#include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -18,6 +17,7 @@
 #include <collido/study/outputs.h>
 #include <collido/study/progress.h>
 #include <collido/study/result_store.h>
+#include <collido/study/stop_signals.h>
 #include <collido/study/sweep.h>
 #include <collido/study/worker.h>
 #include <collido/study/worker_process.h>
@@ -30,12 +30,6 @@ namespace {
 using study::Combination;
 using study::CombinationResult;
 using study::ResultStore;
-
-std::atomic<bool> stop_requested{false};
-
-extern "C" void requestStop(int /*signal*/) {
-  stop_requested.store(true);
-}
 
 struct StudyArguments {
   std::vector<std::string> scenes;
@@ -130,7 +124,8 @@ std::map<std::string, std::set<std::string>> onlyScenes(
 // Runs one combination in a worker and reads its answer back.
 CombinationResult runInWorker(const Combination& c, const ResultStore& store,
                               const StudyArguments& args, int repetitions, double timeout_s,
-                              const PluginOptions& plugins, study::StudyProgress& progress) {
+                              const PluginOptions& plugins, study::StudyProgress& progress,
+                              const std::atomic<bool>& stop) {
   const std::string request_path = store.scratchPath(c.id + ".request");
   const std::string answer_path = store.scratchPath(c.id);
   std::filesystem::remove(answer_path);
@@ -154,7 +149,7 @@ CombinationResult runInWorker(const Combination& c, const ResultStore& store,
   launch.environment = workerEnvironment();
   launch.log_path = store.logPath(c.id);
   launch.timeout_s = timeout_s;
-  launch.stop = &stop_requested;
+  launch.stop = &stop;
   launch.on_progress = [&progress](std::size_t done, std::size_t total) {
     progress.frames(done, total);
   };
@@ -326,9 +321,8 @@ int runStudy(const StudyArguments& args, const PluginOptions& plugins) {
                                 shard_count > 1 ? args.shard : "", args.out)
             << "\n";
 
-  stop_requested.store(false);
-  std::signal(SIGINT, requestStop);
-  std::signal(SIGTERM, requestStop);
+  // Ctrl-C, SIGTERM or a lost session stops the running worker; what finished stays stored.
+  const study::StopOnSignals stop;
   study::StudyProgress progress(std::cerr, todo.size(), !args.quiet && isatty(STDERR_FILENO) != 0);
   progress.setExpected(estimate.seconds);
   bool interrupted = false;
@@ -336,7 +330,7 @@ int runStudy(const StudyArguments& args, const PluginOptions& plugins) {
     const Combination& c = *todo[i];
     progress.start(i, c.label());
     CombinationResult result =
-        runInWorker(c, store, args, repetitions, timeout_s, plugins, progress);
+        runInWorker(c, store, args, repetitions, timeout_s, plugins, progress, stop.requested());
     if (result.outcome.status == "interrupted") {
       interrupted = true;
       break;
@@ -348,13 +342,11 @@ int runStudy(const StudyArguments& args, const PluginOptions& plugins) {
     if (!args.quiet) progress.finish(outcomeText(result));
     Result<std::vector<CombinationResult>> all = store.readAll();
     if (all.ok()) (void)study::writeStudyOutputs(store.directory(), all.value());
-    if (stop_requested.load()) {
+    if (stop.requested().load()) {
       interrupted = true;
       break;
     }
   }
-  std::signal(SIGINT, SIG_DFL);
-  std::signal(SIGTERM, SIG_DFL);
 
   Result<std::vector<CombinationResult>> all = store.readAll();
   if (!all.ok()) {

@@ -2,6 +2,7 @@
 // backend answers in a child process of its own (collido view-answers), so an engine that
 // crashes or hangs loses its own answers only; the exact oracle's answers are kept on disk
 // between them and computed once.
+#include <atomic>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -15,6 +16,7 @@
 #include <collido/study/plan.h>
 #include <collido/study/report_html.h>
 #include <collido/study/result_store.h>
+#include <collido/study/stop_signals.h>
 #include <collido/study/worker_process.h>
 #include <collido/view/view_page.h>
 
@@ -97,8 +99,8 @@ std::string readFile(const std::string& path) {
 
 // One backend's answers, from a child process.
 view::ViewBackend answersOf(const ViewArguments& args, const PluginOptions& plugins,
-                            const std::string& backend, const std::string& work,
-                            std::size_t index) {
+                            const std::string& backend, const std::string& work, std::size_t index,
+                            const std::atomic<bool>& stop) {
   view::ViewBackend result;
   result.label = backend;
   const std::string out = work + "/answers_" + std::to_string(index) + ".json";
@@ -113,6 +115,7 @@ view::ViewBackend answersOf(const ViewArguments& args, const PluginOptions& plug
   }
   launch.log_path = work + "/log_" + std::to_string(index) + ".txt";
   launch.timeout_s = args.timeout_s;
+  launch.stop = &stop;
   const study::WorkerOutcome outcome = study::runWorkerProcess(launch);
   if (!outcome.ok()) {
     result.problem =
@@ -169,10 +172,17 @@ int view(const ViewArguments& args, const PluginOptions& plugins) {
     std::cerr << "error: " << work.string() << ": " << ec.message() << "\n";
     return 2;
   }
+  // Ctrl-C, SIGTERM or a lost session stops the running backend's process, not only this one.
+  const study::StopOnSignals stop;
   std::vector<view::ViewBackend> answers;
   for (std::size_t i = 0; i < backends.size(); ++i) {
     if (!args.quiet) std::cerr << "view: " << backends[i] << "\n";
-    answers.push_back(answersOf(args, plugins, backends[i], work.string(), i));
+    answers.push_back(answersOf(args, plugins, backends[i], work.string(), i, stop.requested()));
+    if (stop.requested().load()) {
+      std::filesystem::remove_all(work, ec);
+      std::cerr << "view interrupted (signal " << stop.signal() << "): nothing written\n";
+      return 130;
+    }
     if (!answers.back().problem.empty()) {
       std::cerr << "warning: " << backends[i] << ": " << answers.back().problem << "\n";
     }
@@ -236,9 +246,11 @@ void addViewCommands(CLI::App& app, const PluginOptions& plugins, int& exit_code
   auto args = std::make_shared<ViewArguments>();
   command->add_option("scene", args->scene, "scene file (JSON)")->required();
   command->add_option("-o,--out", args->out, "the page to write (HTML)")->required();
-  command->add_option("--backends", args->backends,
-                      "backends to show, NAME or NAME[key=value;...] (default: those the study "
-                      "of --results ran on the scene, else every variant found)");
+  command
+      ->add_option("--backends", args->backends,
+                   "backends to show, NAME or NAME[key=value;...] (default: those the study of "
+                   "--results ran on the scene, else every variant found)")
+      ->delimiter(',');
   command->add_option("--results", args->results,
                       "a study folder (collido study --out): show the backends it ran here");
   command->add_option("--timeout", args->timeout_s,

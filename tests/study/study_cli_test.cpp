@@ -436,8 +436,8 @@ TEST(StudyCli, RetryFailedRunsFailuresAgain) {
   EXPECT_EQ(byBackend(readResults(out))["misbehaving:crash"].outcome.status, "crashed");
 }
 
-// Ctrl-C (SIGINT to the study) kills the running worker, keeps what finished, and exits 130;
-// --resume then completes the study.
+// A lost session (SIGHUP to the study; Ctrl-C and SIGTERM take the same path) kills the running
+// worker, keeps what finished, and exits 130; --resume then completes the study.
 TEST(StudyCli, InterruptedStudyResumes) {
   const std::string dir = test::makeTempDirectory("study_interrupt");
   const std::string out = dir + "/study";
@@ -461,7 +461,7 @@ TEST(StudyCli, InterruptedStudyResumes) {
     FAIL() << "no worker started\n" << readText(dir + "/first.err");
   }
   std::this_thread::sleep_for(std::chrono::milliseconds(200));
-  ASSERT_EQ(kill(pid, SIGINT), 0);
+  ASSERT_EQ(kill(pid, SIGHUP), 0);
   const int code = waitFor(pid, 20.0);
   const std::string err = readText(dir + "/first.err");
   EXPECT_EQ(code, 130) << err;

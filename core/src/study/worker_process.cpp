@@ -1,11 +1,12 @@
 // Worker processes: each combination runs in a child so that a crash, abort or hang of an
 // engine costs that combination only. The child gets its own process group, so a timeout kills
-// whatever the engine started too.
+// whatever the engine started too, and dies with its parent.
 #include <collido/study/worker_process.h>
 
 #include <fcntl.h>
 #include <poll.h>
 #include <signal.h>
+#include <sys/prctl.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -40,8 +41,12 @@ void consumeProgress(std::string& buffer, const WorkerLaunch& launch) {
   }
 }
 
-[[noreturn]] void execChild(const WorkerLaunch& launch, int stdout_fd) {
+[[noreturn]] void execChild(const WorkerLaunch& launch, int stdout_fd, pid_t parent) {
   setpgid(0, 0);
+  // A worker dies with its driver (SIGKILL, or a lost session), instead of running on without a
+  // time limit. The parent may have died before this line: then nobody would send the signal.
+  prctl(PR_SET_PDEATHSIG, SIGKILL);
+  if (getppid() != parent) _exit(129);
   dup2(stdout_fd, STDOUT_FILENO);
   const int log = open(launch.log_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   if (log >= 0) dup2(log, STDERR_FILENO);
@@ -97,6 +102,7 @@ WorkerOutcome runWorkerProcess(const WorkerLaunch& launch) {
     return outcome;
   }
   const Clock::time_point start = Clock::now();
+  const pid_t parent = getpid();
   const pid_t pid = fork();
   if (pid < 0) {
     close(pipe_fds[0]);
@@ -108,7 +114,7 @@ WorkerOutcome runWorkerProcess(const WorkerLaunch& launch) {
   if (pid == 0) {
     close(pipe_fds[0]);
     // dup2 clears close-on-exec on the copy, so stdout survives the exec.
-    execChild(launch, pipe_fds[1]);
+    execChild(launch, pipe_fds[1], parent);
   }
   setpgid(pid, pid);  // also here: whichever of parent and child runs first
   close(pipe_fds[1]);

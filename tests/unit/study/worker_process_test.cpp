@@ -3,6 +3,8 @@
 #include <collido/study/worker_process.h>
 
 #include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <atomic>
 #include <chrono>
@@ -168,6 +170,36 @@ TEST(RunWorkerProcess, StopRequestKillsTheWorkerAsInterrupted) {
   EXPECT_EQ(outcome.status, "interrupted");
   EXPECT_EQ(outcome.signal, SIGKILL);
   EXPECT_LT(outcome.wall_s, 5.0);
+}
+
+// A driver killed outright (SIGKILL: no handler runs) takes its worker with it, instead of
+// leaving it to run on without a time limit.
+TEST(RunWorkerProcess, AWorkerDiesWithItsDriver) {
+  const std::string dir = test::makeTempDirectory("worker_orphan");
+  const std::string pid_file = dir + "/worker.pid";
+  WorkerLaunch launch = shell("echo $$ > " + pid_file + ".part; mv " + pid_file + ".part " +
+                                  pid_file + "; exec sleep 30",
+                              "worker_orphan");
+  const pid_t driver = fork();
+  if (driver == 0) {
+    (void)runWorkerProcess(launch);
+    _exit(0);
+  }
+  ASSERT_GT(driver, 0);
+  const Clock::time_point start = Clock::now();
+  while (readText(pid_file).empty() && Clock::now() - start < std::chrono::seconds(10))
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  const pid_t worker = static_cast<pid_t>(std::stol("0" + readText(pid_file)));
+  kill(driver, SIGKILL);
+  waitpid(driver, nullptr, 0);
+  ASSERT_GT(worker, 0) << "the worker never started";
+  bool ended = false;
+  for (int i = 0; i < 250 && !ended; ++i) {
+    ended = processEnded(worker);
+    if (!ended) std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  if (!ended) kill(worker, SIGKILL);
+  EXPECT_TRUE(ended) << "worker " << worker << " outlived its driver";
 }
 
 TEST(RunWorkerProcess, ExitBeforeTheTimeoutIsNotATimeout) {

@@ -25,9 +25,10 @@ struct WorkerLaunch {
   const std::atomic<bool>* stop = nullptr;
 };
 
-/// Starts the worker in its own process group, follows its progress, kills it (and anything it
-/// started) at the time limit, and reports how it ended: exit code or signal, wall time, peak
-/// resident memory and the tail of its log. Never throws for anything the worker does.
+/// Starts the worker in its own process group, dying with this process (PR_SET_PDEATHSIG), follows
+/// its progress, kills it (and anything it started) at the time limit or when `stop` is raised, and
+/// reports how it ended: exit code or signal, wall time, peak resident memory and the tail of its
+/// log. Never throws for anything the worker does.
 WorkerOutcome runWorkerProcess(const WorkerLaunch& launch);
 
 /// The last `bytes` bytes of a file ("" when it cannot be read).
