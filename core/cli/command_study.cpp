@@ -4,6 +4,7 @@
 // interrupted study resumes where it stopped.
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <filesystem>
 #include <fstream>
@@ -411,7 +412,21 @@ int runWorkerMode(const std::string& request_path, const std::string& out_path, 
   return 0;
 }
 
-int runMerge(const std::string& out, const std::vector<std::string>& inputs) {
+// Whether `folder` holds a study's plan or results.
+bool holdsStudy(const std::string& folder) {
+  std::error_code ec;
+  const std::filesystem::path path(folder);
+  return std::filesystem::exists(path / "plan.json", ec) ||
+         (std::filesystem::is_directory(path / "results", ec) &&
+          !std::filesystem::is_empty(path / "results", ec));
+}
+
+bool sameFolder(const std::string& a, const std::string& b) {
+  std::error_code ec;
+  return std::filesystem::equivalent(a, b, ec) && !ec;
+}
+
+int runMerge(const std::string& out, const std::vector<std::string>& inputs, bool replace) {
   std::vector<Combination> plan;
   std::set<std::string> planned;
   std::map<std::string, CombinationResult> results;
@@ -439,6 +454,27 @@ int runMerge(const std::string& out, const std::vector<std::string>& inputs) {
         results[r.combination.id] = std::move(r);
       }
     }
+  }
+  // A folder that holds another study would keep its results beside the merged ones: the table
+  // would then count combinations of neither input.
+  Result<study::FolderLock> lock = study::FolderLock::acquire(out);
+  if (!lock.ok()) {
+    std::cerr << "error: " << lock.status().message() << "\n";
+    return 2;
+  }
+  const bool out_is_input = std::any_of(inputs.begin(), inputs.end(), [&out](const std::string& in) {
+    return sameFolder(in, out);
+  });
+  if (holdsStudy(out) && !out_is_input) {
+    if (!replace) {
+      std::cerr << "error: " << out
+                << " already holds a study; merge into a new folder, or pass --replace to "
+                   "replace what it holds\n";
+      return 2;
+    }
+    std::error_code ec;
+    for (const char* stale : {"results", "plan.json", "robustness.txt"})
+      std::filesystem::remove_all(std::filesystem::path(out) / stale, ec);
   }
   const ResultStore store(out);
   if (Status s = store.prepare(); !s.ok()) {
@@ -529,7 +565,12 @@ void addStudyCommands(CLI::App& app, const PluginOptions& plugins, int& exit_cod
   auto inputs = std::make_shared<std::vector<std::string>>();
   merge->add_option("inputs", *inputs, "study folders to join")->required();
   merge->add_option("--out", *merge_out, "the joined study folder")->required();
-  merge->callback([merge_out, inputs, &exit_code] { exit_code = runMerge(*merge_out, *inputs); });
+  auto replace = std::make_shared<bool>(false);
+  merge->add_flag("--replace", *replace,
+                  "when --out already holds a study, replace it (else that is refused)");
+  merge->callback([merge_out, inputs, replace, &exit_code] {
+    exit_code = runMerge(*merge_out, *inputs, *replace);
+  });
 }
 
 }  // namespace collido::cli

@@ -523,6 +523,17 @@ TEST(StudyCli, ShardsMergeIntoTheWholeStudy) {
   EXPECT_EQ(lineCount(readText(dir + "/m/records.jsonl")), 3u * 2u * 3u);
   EXPECT_EQ(merged.out, readText(dir + "/m/table.txt"));
 
+  // Merging onto a folder that holds a study would keep its results beside the new ones.
+  const CommandRun again = collido({"merge", "--out", dir + "/m", dir + "/a"}, dir);
+  EXPECT_EQ(again.exit_code, 2) << describe(again);
+  EXPECT_NE(again.err.find("already holds a study"), std::string::npos) << again.err;
+  const CommandRun replaced = collido({"merge", "--out", dir + "/m", "--replace", dir + "/a"}, dir);
+  ASSERT_EQ(replaced.exit_code, 0) << describe(replaced);
+  EXPECT_NE(replaced.err.find("merged 2 of 2 planned combinations"), std::string::npos)
+      << replaced.err;
+  EXPECT_EQ(jsonFilesIn(dir + "/m/results").size(), 2u);
+  EXPECT_EQ(lineCount(readText(dir + "/m/records.jsonl")), 2u * 2u * 3u);
+
   const CommandRun not_a_study = collido({"merge", "--out", dir + "/n", dir}, dir);
   EXPECT_EQ(not_a_study.exit_code, 2) << describe(not_a_study);
   EXPECT_NE(not_a_study.err.find("no study here"), std::string::npos) << not_a_study.err;
