@@ -1,3 +1,6 @@
+#include <unistd.h>
+
+#include <csignal>
 #include <iostream>
 
 #include <collido/runner/runner.h>
@@ -18,6 +21,31 @@ struct RunArguments {
   bool quiet = false;
   bool fail_on_disagreement = false;
 };
+
+// collido run keeps every backend in this process (one scene loaded once, answers compared in
+// memory); a crashing engine therefore ends the run. Say so, and where the isolation is, before
+// the signal takes its default course.
+extern "C" void explainCrash(int signal) {
+  static const char kMessage[] =
+      "\ncollido run: a backend crashed; collido run keeps every backend in this one process, so "
+      "this run's results are lost (the progress lines above name the backend that was "
+      "running). collido study runs each backend in a worker process of its own, where a crash "
+      "costs one combination.\n";
+  (void)!write(STDERR_FILENO, kMessage, sizeof kMessage - 1);
+  std::raise(signal);  // the handler was reset (SA_RESETHAND): the default action ends the process
+}
+
+void explainCrashes() {
+#if defined(__SANITIZE_ADDRESS__)
+  return;  // AddressSanitizer's own report of the crash says more
+#endif
+  struct sigaction action {};
+  action.sa_handler = explainCrash;
+  action.sa_flags = SA_RESETHAND;
+  sigemptyset(&action.sa_mask);
+  for (const int signal : {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT})
+    sigaction(signal, &action, nullptr);
+}
 
 int run(const RunArguments& args, const PluginOptions& plugin_options) {
   std::vector<Scene> scenes;
@@ -53,6 +81,7 @@ int run(const RunArguments& args, const PluginOptions& plugin_options) {
   if (!args.quiet) options.progress = [](const std::string& line) { std::cerr << line << "\n"; };
   // runScenes, with each scene's oracle answers read from and kept in the store when one is named.
   RunReport report;
+  explainCrashes();
   for (const Scene& scene : scenes) {
     OracleCache oracle(scene);
     const study::StoredOracle stored(args.oracle_directory, oracle);
@@ -84,8 +113,9 @@ void addRunCommand(CLI::App& app, const PluginOptions& plugins, int& exit_code) 
   CLI::App* command = app.add_subcommand(
       "run",
       "Run the scenes' queries on backends, check every answer against the exact oracle, and "
-      "print time, error and memory per backend, scene and query. Exit code: 0 ok, 1 a backend "
-      "failed, 2 bad input, 3 disagreement with --fail-on-disagreement");
+      "print time, error and memory per backend, scene and query. Every backend runs in this "
+      "process, so a crashing engine ends the run: collido study isolates each in a worker. Exit "
+      "code: 0 ok, 1 a backend failed, 2 bad input, 3 disagreement with --fail-on-disagreement");
   auto args = std::make_shared<RunArguments>();
   command->add_option("scenes", args->scenes, "scene files (JSON)")->required();
   command

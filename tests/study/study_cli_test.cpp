@@ -621,6 +621,22 @@ TEST(StudyCli, BadArgumentsAreRefused) {
   EXPECT_NE(file_store.err.find("--oracle-cache"), std::string::npos) << file_store.err;
 }
 
+// collido run keeps every backend in one process: a crash ends it, and says where isolation is.
+TEST(StudyCli, RunExplainsACrashAndPointsToStudy) {
+#if defined(__SANITIZE_ADDRESS__)
+  GTEST_SKIP() << "built with AddressSanitizer, whose own crash report is kept";
+#else
+  const std::string dir = test::makeTempDirectory("run_crash");
+  const CommandRun run =
+      collido({"run", writeSmallScene(dir), "--backends", "misbehaving:abort"}, dir);
+  EXPECT_EQ(run.exit_code, 128 + SIGABRT) << describe(run);
+  EXPECT_NE(run.err.find("collido run: a backend crashed"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("collido study runs each backend in a worker process"),
+            std::string::npos)
+      << run.err;
+#endif
+}
+
 // The allocation hooks are preloaded into every worker: build memory is measured by them, also
 // what a backend leaves out of its own count.
 TEST(StudyCli, WorkersMeasureBuildsWithTheAllocationHooks) {
