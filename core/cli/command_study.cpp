@@ -462,9 +462,8 @@ int runMerge(const std::string& out, const std::vector<std::string>& inputs, boo
     std::cerr << "error: " << lock.status().message() << "\n";
     return 2;
   }
-  const bool out_is_input = std::any_of(inputs.begin(), inputs.end(), [&out](const std::string& in) {
-    return sameFolder(in, out);
-  });
+  const bool out_is_input = std::any_of(
+      inputs.begin(), inputs.end(), [&out](const std::string& in) { return sameFolder(in, out); });
   if (holdsStudy(out) && !out_is_input) {
     if (!replace) {
       std::cerr << "error: " << out

@@ -631,8 +631,7 @@ TEST(StudyCli, RunExplainsACrashAndPointsToStudy) {
       collido({"run", writeSmallScene(dir), "--backends", "misbehaving:abort"}, dir);
   EXPECT_EQ(run.exit_code, 128 + SIGABRT) << describe(run);
   EXPECT_NE(run.err.find("collido run: a backend crashed"), std::string::npos) << run.err;
-  EXPECT_NE(run.err.find("collido study runs each backend in a worker process"),
-            std::string::npos)
+  EXPECT_NE(run.err.find("collido study runs each backend in a worker process"), std::string::npos)
       << run.err;
 #endif
 }
