@@ -16,6 +16,7 @@
 #include <collido/study/expected_time.h>
 #include <collido/study/folder_lock.h>
 #include <collido/study/outputs.h>
+#include <collido/study/plugin_probe.h>
 #include <collido/study/progress.h>
 #include <collido/study/result_store.h>
 #include <collido/study/stop_signals.h>
@@ -29,6 +30,11 @@ namespace collido::cli {
 namespace {
 
 using study::Combination;
+
+// How long a plugin may take to load (its static constructors, the engine's start-up) before it
+// counts as hanging: generous, since a cold disk can take seconds.
+constexpr double kPluginLoadTimeoutS = 30.0;
+
 using study::CombinationResult;
 using study::ResultStore;
 
@@ -44,6 +50,7 @@ struct StudyArguments {
   int repetitions = 0;
   bool quiet = false;
   std::string expected_times;
+  double plugin_timeout_s = kPluginLoadTimeoutS;
 };
 
 // LD_PRELOAD for the allocation hooks, when they were built beside this executable.
@@ -64,7 +71,7 @@ std::vector<std::string> workerEnvironment() {
 // The backend settings to run: the sweep's (restricted to the variants --backends names, plus
 // any --backends entry the sweep does not mention), else --backends, else every variant found.
 std::vector<std::string> backendSettings(const StudyArguments& args, const study::Sweep& sweep,
-                                         const PluginDiscovery& found) {
+                                         const study::PluginProbe& found) {
   std::vector<std::string> settings;
   std::set<std::string> named;
   for (const std::string& text : args.backends) {
@@ -84,11 +91,8 @@ std::vector<std::string> backendSettings(const StudyArguments& args, const study
         parseBackendText(text);
     if (!parsed.ok() || swept.count(parsed.value().first) == 0) settings.push_back(text);
   }
-  if (settings.empty() && args.backends.empty() && sweep.backends.empty()) {
-    for (const auto& plugin : found.plugins)
-      for (const VariantInfo& v : plugin->variants())
-        settings.push_back(v.name);
-  }
+  if (settings.empty() && args.backends.empty() && sweep.backends.empty())
+    settings = found.variantNames();
   return settings;
 }
 
@@ -123,10 +127,9 @@ std::map<std::string, std::set<std::string>> onlyScenes(
 }
 
 // Runs one combination in a worker and reads its answer back.
-CombinationResult runInWorker(const Combination& c, const ResultStore& store,
-                              const StudyArguments& args, int repetitions, double timeout_s,
-                              const PluginOptions& plugins, study::StudyProgress& progress,
-                              const std::atomic<bool>& stop) {
+CombinationResult runInWorker(const Combination& c, const ResultStore& store, int repetitions,
+                              double timeout_s, const std::string& plugin_file,
+                              study::StudyProgress& progress, const std::atomic<bool>& stop) {
   const std::string request_path = store.scratchPath(c.id + ".request");
   const std::string answer_path = store.scratchPath(c.id);
   std::filesystem::remove(answer_path);
@@ -140,7 +143,10 @@ CombinationResult runInWorker(const Combination& c, const ResultStore& store,
   }
   study::WorkerLaunch launch;
   launch.executable = thisExecutable();
-  launch.arguments = pluginArguments(plugins);
+  // The worker loads only the plugin its backend comes from: another plugin that misbehaves
+  // while loading cannot cost this combination.
+  launch.arguments = {"--no-default-plugins", "--plugin",
+                      std::filesystem::absolute(plugin_file).string()};
   for (const std::string& a :
        {std::string("worker"), std::string("--request"), request_path, std::string("--out"),
         answer_path, std::string("--repetitions"), std::to_string(repetitions),
@@ -155,7 +161,6 @@ CombinationResult runInWorker(const Combination& c, const ResultStore& store,
     progress.frames(done, total);
   };
   launch.on_tick = [&progress] { progress.tick(); };
-  (void)args;
   result.outcome = study::runWorkerProcess(launch);
   if (result.outcome.ok()) {
     std::ifstream in(answer_path, std::ios::binary);
@@ -200,6 +205,20 @@ std::string outcomeText(const CombinationResult& r) {
   return text;
 }
 
+// The plugins, each looked at by a child process (a scratch folder of its own holds their
+// answers), so that none is loaded into the driver.
+study::PluginProbe probeInChildren(const PluginOptions& plugins, double timeout_s) {
+  const PluginCandidates candidates = pluginCandidates(plugins.paths, !plugins.no_defaults);
+  std::error_code ec;
+  const std::filesystem::path scratch =
+      std::filesystem::temp_directory_path(ec) / ("collido_plugins_" + std::to_string(getpid()));
+  std::filesystem::create_directories(scratch, ec);
+  study::PluginProbe probe =
+      study::probePlugins(thisExecutable(), candidates, timeout_s, scratch.string());
+  std::filesystem::remove_all(scratch, ec);
+  return probe;
+}
+
 int runStudy(const StudyArguments& args, const PluginOptions& plugins) {
   study::Sweep sweep;
   if (!args.sweep_path.empty()) {
@@ -221,15 +240,18 @@ int runStudy(const StudyArguments& args, const PluginOptions& plugins) {
                       scene.value().name, scene.value().hasGeneratedShapes(),
                       scene.value().category});
   }
-  const PluginDiscovery found = discoverPlugins(plugins.paths, !plugins.no_defaults);
+  const study::PluginProbe found = probeInChildren(plugins, args.plugin_timeout_s);
   for (const std::string& problem : found.problems)
     std::cerr << "warning: " << problem << "\n";
   const std::vector<std::string> settings = backendSettings(args, sweep, found);
-  if (Result<std::vector<BackendSpec>> specs = resolveBackends(settings, found.plugins);
-      !specs.ok()) {
-    std::cerr << "error: " << specs.status().message() << "\n";
+  Result<std::vector<std::string>> plugin_files = study::pluginFilesOf(settings, found);
+  if (!plugin_files.ok()) {
+    std::cerr << "error: " << plugin_files.status().message() << "\n";
     return 2;
   }
+  std::map<std::string, std::string> plugin_file_of;
+  for (std::size_t i = 0; i < settings.size(); ++i)
+    plugin_file_of[settings[i]] = plugin_files.value()[i];
   if (settings.empty()) {
     std::cerr << "error: no backends to run (build the plugins or pass --plugin)\n";
     return 2;
@@ -330,8 +352,8 @@ int runStudy(const StudyArguments& args, const PluginOptions& plugins) {
   for (std::size_t i = 0; i < todo.size(); ++i) {
     const Combination& c = *todo[i];
     progress.start(i, c.label());
-    CombinationResult result =
-        runInWorker(c, store, args, repetitions, timeout_s, plugins, progress, stop.requested());
+    CombinationResult result = runInWorker(
+        c, store, repetitions, timeout_s, plugin_file_of.at(c.backend), progress, stop.requested());
     if (result.outcome.status == "interrupted") {
       interrupted = true;
       break;
@@ -537,10 +559,34 @@ void addStudyCommands(CLI::App& app, const PluginOptions& plugins, int& exit_cod
                    "timed calls per frame and query (default: the sweep's, else 5)")
       ->check(CLI::Range(1, 1000000));
   command->add_flag("--quiet", args->quiet, "no progress on stderr");
+  command
+      ->add_option("--plugin-timeout", args->plugin_timeout_s,
+                   "seconds a plugin may take to load, in a process of its own, before it counts "
+                   "as hanging and is skipped (default 30)")
+      ->check(CLI::PositiveNumber);
   command->add_option("--expected-times", args->expected_times,
                       "an earlier study folder or its times.json: the expected time printed at "
                       "the start and the progress estimate come from its wall times");
   command->callback([args, &plugins, &exit_code] { exit_code = runStudy(*args, plugins); });
+
+  CLI::App* info = app.add_subcommand("plugin-info", "");  // internal: one plugin, probed
+  info->group("");
+  auto info_file = std::make_shared<std::string>();
+  auto info_out = std::make_shared<std::string>();
+  info->add_option("file", *info_file)->required();
+  info->add_option("--out", *info_out)->required();
+  info->callback([info_file, info_out, &exit_code] {
+    Result<std::shared_ptr<PluginLibrary>> plugin = PluginLibrary::open(*info_file);
+    if (!plugin.ok()) {
+      std::cerr << "error: " << plugin.status().message() << "\n";
+      exit_code = 2;
+      return;
+    }
+    const Status written =
+        study::writeFileAtomically(*info_out, study::pluginInfoJson(*plugin.value()).dump());
+    if (!written.ok()) std::cerr << "error: " << written.message() << "\n";
+    exit_code = written.ok() ? 0 : 2;
+  });
 
   CLI::App* worker = app.add_subcommand("worker", "");  // internal: one combination
   worker->group("");

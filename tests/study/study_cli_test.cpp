@@ -621,6 +621,27 @@ TEST(StudyCli, BadArgumentsAreRefused) {
   EXPECT_NE(file_store.err.find("--oracle-cache"), std::string::npos) << file_store.err;
 }
 
+// Plugins are loaded by child processes before the driver uses them: one that crashes or hangs
+// while loading is skipped with a warning naming it, and the study runs on without it.
+TEST(StudyCli, APluginThatCrashesOrHangsWhileLoadingIsSkipped) {
+  const std::string dir = test::makeTempDirectory("study_load_traps");
+  std::vector<std::string> args = studyArgs(writeSmallScene(dir), "misbehaving:exact", dir + "/s");
+  args.insert(args.begin(), {"--plugin", COLLIDO_LOAD_TRAP_PLUGIN_DIR});
+  args.insert(args.end(), {"--plugin-timeout", "1"});
+  const CommandRun run = collido(args, dir);
+  ASSERT_EQ(run.exit_code, 0) << describe(run);
+  EXPECT_NE(run.err.find("libcollido_plugin_crash_on_load.so: crashed while loading (SIGSEGV); "
+                         "skipped"),
+            std::string::npos)
+      << run.err;
+  EXPECT_NE(run.err.find("libcollido_plugin_hang_on_load.so: still loading after 1 s"),
+            std::string::npos)
+      << run.err;
+  const std::vector<CombinationResult> results = readResults(dir + "/s");
+  ASSERT_EQ(results.size(), 1u);
+  EXPECT_EQ(results[0].outcome.status, "ok");
+}
+
 // collido run keeps every backend in one process: a crash ends it, and says where isolation is.
 TEST(StudyCli, RunExplainsACrashAndPointsToStudy) {
 #if defined(__SANITIZE_ADDRESS__)

@@ -137,31 +137,13 @@ std::vector<std::string> defaultPluginDirectories() {
   return dirs;
 }
 
-PluginDiscovery discoverPlugins(const std::vector<std::string>& paths, bool use_defaults) {
-  PluginDiscovery found;
-  std::set<std::string> variants_seen;
+PluginCandidates pluginCandidates(const std::vector<std::string>& paths, bool use_defaults) {
+  PluginCandidates found;
   std::set<std::string> files_seen;
   const auto consider = [&](const std::string& file) {
     std::error_code ec;
     const std::string canonical = fs::weakly_canonical(file, ec).string();
-    if (!files_seen.insert(ec ? file : canonical).second) return;
-    Result<std::shared_ptr<PluginLibrary>> plugin = PluginLibrary::open(file);
-    if (!plugin.ok()) {
-      found.problems.push_back(plugin.status().message());
-      return;
-    }
-    bool fresh = true;
-    for (const VariantInfo& v : plugin.value()->variants()) {
-      if (variants_seen.count(v.name) != 0) {
-        found.problems.push_back("plugin " + file + ": variant '" + v.name +
-                                 "' is already provided by an earlier plugin; this one is ignored");
-        fresh = false;
-      }
-    }
-    if (!fresh) return;
-    for (const VariantInfo& v : plugin.value()->variants())
-      variants_seen.insert(v.name);
-    found.plugins.push_back(std::move(plugin).value());
+    if (files_seen.insert(ec ? file : canonical).second) found.files.push_back(file);
   };
   const auto scan = [&](const std::string& path, bool explicit_path) {
     std::error_code ec;
@@ -186,6 +168,37 @@ PluginDiscovery discoverPlugins(const std::vector<std::string>& paths, bool use_
   if (use_defaults) {
     for (const std::string& dir : defaultPluginDirectories())
       scan(dir, false);
+  }
+  return found;
+}
+
+std::string shadowedVariantProblem(const std::string& file, const std::string& variant) {
+  return "plugin " + file + ": variant '" + variant +
+         "' is already provided by an earlier plugin; this one is ignored";
+}
+
+PluginDiscovery discoverPlugins(const std::vector<std::string>& paths, bool use_defaults) {
+  const PluginCandidates candidates = pluginCandidates(paths, use_defaults);
+  PluginDiscovery found;
+  found.problems = candidates.problems;
+  std::set<std::string> variants_seen;
+  for (const std::string& file : candidates.files) {
+    Result<std::shared_ptr<PluginLibrary>> plugin = PluginLibrary::open(file);
+    if (!plugin.ok()) {
+      found.problems.push_back(plugin.status().message());
+      continue;
+    }
+    bool fresh = true;
+    for (const VariantInfo& v : plugin.value()->variants()) {
+      if (variants_seen.count(v.name) != 0) {
+        found.problems.push_back(shadowedVariantProblem(file, v.name));
+        fresh = false;
+      }
+    }
+    if (!fresh) continue;
+    for (const VariantInfo& v : plugin.value()->variants())
+      variants_seen.insert(v.name);
+    found.plugins.push_back(std::move(plugin).value());
   }
   return found;
 }

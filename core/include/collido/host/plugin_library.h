@@ -52,6 +52,19 @@ std::string executableDirectory();
 /// the COLLIDO_PLUGIN_PATH environment variable (colon-separated).
 std::vector<std::string> defaultPluginDirectories();
 
+/// The plugin files to consider, in order, without loading any: each file of `paths` (a folder
+/// gives its `libcollido_plugin_*.so` files, sorted), then, if `use_defaults`, those of
+/// defaultPluginDirectories(); a file seen twice counts once. A missing explicit path is a
+/// problem.
+struct PluginCandidates {
+  std::vector<std::string> files;
+  std::vector<std::string> problems;
+};
+PluginCandidates pluginCandidates(const std::vector<std::string>& paths, bool use_defaults = true);
+
+/// The problem recorded when `file` offers a variant an earlier plugin already gave.
+std::string shadowedVariantProblem(const std::string& file, const std::string& variant);
+
 /// The plugins found, and what went wrong on the way (each problem names its file).
 struct PluginDiscovery {
   std::vector<std::shared_ptr<PluginLibrary>> plugins;
