@@ -5,36 +5,10 @@
 #include <cstdio>
 #include <type_traits>
 
+#include <collido/runner/digest.h>
 #include <collido/runner/runner.h>
 
 namespace collido {
-namespace {
-
-// FNV-1a, 64 bits: a stable digest (the same on every run and platform of one byte order).
-class Digest {
- public:
-  void bytes(const void* data, std::size_t size) {
-    const auto* p = static_cast<const unsigned char*>(data);
-    for (std::size_t i = 0; i < size; ++i) {
-      hash_ = (hash_ ^ p[i]) * 0x100000001b3ULL;
-    }
-  }
-  template <typename T>
-  void value(const T& v) {
-    static_assert(std::is_trivially_copyable_v<T>);
-    bytes(&v, sizeof v);
-  }
-  std::string hex() const {
-    char text[17];
-    std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(hash_));
-    return text;
-  }
-
- private:
-  std::uint64_t hash_ = 0xcbf29ce484222325ULL;
-};
-
-}  // namespace
 
 const OracleAnswer& OracleCache::get(std::size_t ia, std::size_t ib, std::size_t frame,
                                      bool distance) {
@@ -104,6 +78,17 @@ std::string OracleCache::fingerprint() const {
       d.value(index);
   }
   return d.hex();
+}
+
+std::string OracleCache::inputSizes() const {
+  std::string sizes = "frames " + std::to_string(scene_.frames) + ", queries " +
+                      std::to_string(scene_.queries.size()) + ", objects";
+  for (const SceneObject& o : scene_.objects) {
+    sizes += " " + std::to_string(o.mesh->vertices.cols()) + "v " +
+             std::to_string(o.mesh->triangles.cols()) + "t " + std::to_string(o.poses.size()) +
+             "p" + (o.changesShape() ? " changing" : "");
+  }
+  return sizes;
 }
 
 }  // namespace collido

@@ -44,6 +44,11 @@ Status loadOracleAnswers(const std::string& path, OracleCache& cache) {
     if (document.at("fingerprint").get<std::string>() != cache.fingerprint()) {
       return bad("the stored answers are for another scene (fingerprint differs)");
     }
+    // Equal digests of different inputs are astronomically unlikely; equal sizes make sure.
+    if (document.at("sizes").get<std::string>() != cache.inputSizes()) {
+      return bad("the stored answers are for another scene (its sizes, " +
+                 document.at("sizes").get<std::string>() + ", differ)");
+    }
     // Read everything before adding anything: a file broken half-way adds nothing.
     std::vector<std::pair<OracleCache::Key, OracleAnswer>> read;
     for (const Json& entry : document.at("answers")) {
@@ -111,7 +116,9 @@ Status saveOracleAnswers(const std::string& path, const OracleCache& cache) {
   std::error_code ec;
   std::filesystem::create_directories(std::filesystem::path(path).parent_path(), ec);
   if (ec) return Status(StatusCode::kInvalidArgument, path + ": " + ec.message());
-  const Json document{{"fingerprint", cache.fingerprint()}, {"answers", std::move(answers)}};
+  const Json document{{"fingerprint", cache.fingerprint()},
+                      {"sizes", cache.inputSizes()},
+                      {"answers", std::move(answers)}};
   return writeFileAtomically(path, document.dump());
 }
 

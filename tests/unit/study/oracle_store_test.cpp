@@ -132,19 +132,35 @@ TEST(OracleStore, ABrokenFileIsNamedAndAddsNothing) {
   const Scene s = scene();
   OracleCache cache(s);
   const std::string path = test::makeTempDirectory("oracle_store") + "/broken.json";
-  test::writeFile(path, R"({"fingerprint": ")" + cache.fingerprint() +
-                            R"(", "answers": [[0, 1, 0, true, 1, 1, [3, 4]], [0, 1, 1, true]]})");
+  const std::string head =
+      R"({"fingerprint": ")" + cache.fingerprint() + R"(", "sizes": ")" + cache.inputSizes();
+  test::writeFile(path,
+                  head + R"(", "answers": [[0, 1, 0, true, 1, 1, [3, 4]], [0, 1, 1, true]]})");
   const Status status = loadOracleAnswers(path, cache);
   EXPECT_FALSE(status.ok());
   EXPECT_NE(status.message().find(path), std::string::npos) << status.message();
   EXPECT_TRUE(cache.answers().empty());
 
-  test::writeFile(path, R"({"fingerprint": ")" + cache.fingerprint() +
-                            R"(", "answers": [[0, 1, 0, true, 1, 1, []]]})");
+  test::writeFile(path, head + R"(", "answers": [[0, 1, 0, true, 1, 1, []]]})");
   EXPECT_FALSE(loadOracleAnswers(path, cache).ok()) << "a verdict without its pairs";
 }
 
+// Should two scenes ever share a digest, their sizes still tell them apart.
+TEST(OracleStore, AnswersWhoseInputSizesDifferAreRefused) {
+  const Scene s = scene();
+  OracleCache cache(s);
+  const std::string path = test::makeTempDirectory("oracle_store") + "/collision.json";
+  test::writeFile(path, R"({"fingerprint": ")" + cache.fingerprint() +
+                            R"(", "sizes": "frames 99, queries 1, objects 8v 12t 1p", )"
+                            R"("answers": [[0, 1, 0, false, 0, 0, []]]})");
+  const Status status = loadOracleAnswers(path, cache);
+  EXPECT_FALSE(status.ok());
+  EXPECT_NE(status.message().find("its sizes, frames 99"), std::string::npos) << status.message();
+  EXPECT_TRUE(cache.answers().empty());
+}
+
 TEST(OracleStore, TheFingerprintIsStableAcrossLoads) {
+  EXPECT_EQ(OracleCache(scene()).fingerprint().size(), 32u);  // 128 bits
   EXPECT_EQ(OracleCache(scene()).fingerprint(), OracleCache(scene()).fingerprint());
 }
 

@@ -219,10 +219,13 @@ class OracleCache {
   /// How many answers and distances this cache has computed itself: grows whenever there is
   /// something new to keep (a distance added to a known answer included).
   std::size_t computed() const { return computed_; }
-  /// A digest (16 hex digits) of everything the answers depend on: each object's vertices,
-  /// triangles and poses, the frames, the queries' kinds and objects, and witness_only. Two
-  /// caches with equal fingerprints hold interchangeable answers.
+  /// A digest (XXH3-128, 32 hex digits) of everything the answers depend on: each object's
+  /// vertices, triangles and poses, the frames, the queries' kinds and objects, and
+  /// witness_only. Two caches with equal fingerprints hold interchangeable answers.
   std::string fingerprint() const;
+  /// The sizes of those inputs ("frames 24, queries 3, objects 1839v 3674t 1p / ..."): stored
+  /// beside the answers and compared on a hit, a second check beside the digest.
+  std::string inputSizes() const;
 
  private:
   const Scene& scene_;
