@@ -13,6 +13,8 @@
 #include <set>
 #include <sstream>
 
+#include <collido/mesh/input_file.h>
+#include <collido/runner/digest.h>
 #include <collido/study/expected_time.h>
 #include <collido/study/folder_lock.h>
 #include <collido/study/outputs.h>
@@ -205,6 +207,67 @@ std::string outcomeText(const CombinationResult& r) {
   return text;
 }
 
+// A digest of every file the scene was read from (its content, in the order read).
+Result<std::string> inputsDigest(const Scene& scene) {
+  Digest digest;
+  for (const std::string& file : scene.input_files) {
+    Result<std::string> bytes = readInputFile(file, "input file");
+    if (!bytes.ok()) return bytes.status();
+    digest.text(bytes.value());
+  }
+  return digest.hex();
+}
+
+// "obbtree 0.4, engine OBB tree 0.4": what a change of plugin or engine version shows in.
+std::string pluginIdentity(const study::PluginProbe& found, const std::string& backend) {
+  Result<std::pair<std::string, std::map<std::string, std::string>>> parsed =
+      parseBackendText(backend);
+  const study::ProbedPlugin* plugin = parsed.ok() ? found.offering(parsed.value().first) : nullptr;
+  if (plugin == nullptr) return "";
+  return plugin->name + " " + plugin->version + ", engine " + plugin->engine_name + " " +
+         plugin->engine_version;
+}
+
+// Why the same combinations (by label) now have other ids: which scenes' files, plugins or
+// repetitions changed; "" when the combinations themselves differ.
+std::string changedInputs(const std::vector<Combination>& before,
+                          const std::vector<Combination>& now) {
+  std::map<std::string, const Combination*> earlier;
+  for (const Combination& c : before)
+    earlier[c.label()] = &c;
+  if (earlier.size() != now.size()) return "";
+  std::set<std::string> scenes;
+  std::set<std::string> plugins;
+  std::set<std::string> repetitions;
+  for (const Combination& c : now) {
+    const auto found = earlier.find(c.label());
+    if (found == earlier.end()) return "";
+    const Combination& old = *found->second;
+    if (old.scene_digest != c.scene_digest) scenes.insert(c.scene_name);
+    if (old.plugin_identity != c.plugin_identity) {
+      plugins.insert("'" + (old.plugin_identity.empty() ? "?" : old.plugin_identity) + "' -> '" +
+                     c.plugin_identity + "'");
+    }
+    if (old.repetitions != c.repetitions) {
+      repetitions.insert(std::to_string(old.repetitions) + " -> " + std::to_string(c.repetitions));
+    }
+  }
+  std::string text;
+  const auto add = [&text](const std::string& what, const std::set<std::string>& items) {
+    if (items.empty()) return;
+    text += (text.empty() ? "" : "; ") + what;
+    bool first = true;
+    for (const std::string& item : items) {
+      text += (first ? " " : ", ") + item;
+      first = false;
+    }
+  };
+  add("the files (scene file or meshes) of", scenes);
+  add("plugin", plugins);
+  add("repetitions", repetitions);
+  return text;
+}
+
 // The plugins, each looked at by a child process (a scratch folder of its own holds their
 // answers), so that none is loaded into the driver.
 study::PluginProbe probeInChildren(const PluginOptions& plugins, double timeout_s) {
@@ -230,6 +293,7 @@ int runStudy(const StudyArguments& args, const PluginOptions& plugins) {
     sweep = std::move(loaded).value();
   }
   std::vector<study::PlannedScene> scenes;
+  std::map<std::string, std::string> scene_digests;  // by the planned path
   for (const std::string& path : args.scenes) {
     Result<Scene> scene = loadScene(path);
     if (!scene.ok()) {
@@ -239,6 +303,12 @@ int runStudy(const StudyArguments& args, const PluginOptions& plugins) {
     scenes.push_back({std::filesystem::absolute(path).lexically_normal().string(),
                       scene.value().name, scene.value().hasGeneratedShapes(),
                       scene.value().category});
+    Result<std::string> digest = inputsDigest(scene.value());
+    if (!digest.ok()) {
+      std::cerr << "error: " << digest.status().message() << "\n";
+      return 2;
+    }
+    scene_digests[scenes.back().path] = digest.value();
   }
   const study::PluginProbe found = probeInChildren(plugins, args.plugin_timeout_s);
   for (const std::string& problem : found.problems)
@@ -266,9 +336,16 @@ int runStudy(const StudyArguments& args, const PluginOptions& plugins) {
     }
     std::tie(shard_index, shard_count) = shard.value();
   }
-  const std::vector<Combination> plan =
-      study::shardOf(study::planStudy(scenes, settings, sweep, onlyScenes(sweep, scenes)),
-                     shard_index, shard_count);
+  const int repetitions = args.repetitions > 0 ? args.repetitions : sweep.repetitions.value_or(5);
+  const double timeout_s = args.timeout_s > 0 ? args.timeout_s : sweep.timeout_s.value_or(600.0);
+  std::vector<Combination> whole =
+      study::planStudy(scenes, settings, sweep, onlyScenes(sweep, scenes));
+  for (Combination& c : whole) {
+    const std::string& digest = scene_digests.at(c.scene_path);
+    const std::string identity = pluginIdentity(found, c.backend);
+    c = study::withInputs(std::move(c), digest, identity, repetitions);
+  }
+  const std::vector<Combination> plan = study::shardOf(whole, shard_index, shard_count);
 
   // One driver per folder: a second one on the same --out would delete the first one's scratch
   // files and store results under its plan. Held until this function returns.
@@ -296,9 +373,17 @@ int runStudy(const StudyArguments& args, const PluginOptions& plugins) {
     for (const Combination& c : plan)
       now.insert(c.id);
     if (before != now) {
-      std::cerr << "error: " << args.out
-                << " holds a different study (other scenes, backends, sweep or shard); resume "
-                   "with the same arguments, or choose another --out\n";
+      const std::string changed = changedInputs(stored_plan.value(), plan);
+      if (!changed.empty()) {
+        std::cerr << "error: " << args.out << ": the inputs changed since this study started ("
+                  << changed
+                  << "); its stored results would mix with new ones. Start it afresh in another "
+                     "--out, or remove the folder\n";
+      } else {
+        std::cerr << "error: " << args.out
+                  << " holds a different study (other scenes, backends, sweep or shard); resume "
+                     "with the same arguments, or choose another --out\n";
+      }
       return 2;
     }
   }
@@ -328,8 +413,6 @@ int runStudy(const StudyArguments& args, const PluginOptions& plugins) {
     }
     todo.push_back(&c);
   }
-  const int repetitions = args.repetitions > 0 ? args.repetitions : sweep.repetitions.value_or(5);
-  const double timeout_s = args.timeout_s > 0 ? args.timeout_s : sweep.timeout_s.value_or(600.0);
   study::CombinationTimes times;
   if (!args.expected_times.empty()) {
     Result<study::CombinationTimes> loaded = study::loadCombinationTimes(args.expected_times);
@@ -451,6 +534,7 @@ bool sameFolder(const std::string& a, const std::string& b) {
 int runMerge(const std::string& out, const std::vector<std::string>& inputs, bool replace) {
   std::vector<Combination> plan;
   std::set<std::string> planned;
+  std::map<std::string, std::pair<std::string, std::string>> label_source;  // label: id, folder
   std::map<std::string, CombinationResult> results;
   for (const std::string& input : inputs) {
     const ResultStore shard(input);
@@ -466,8 +550,18 @@ int runMerge(const std::string& out, const std::vector<std::string>& inputs, boo
       std::cerr << "error: " << input << ": no study here (no plan.json, no results/)\n";
       return 2;
     }
-    for (const Combination& c : shard_plan.value())
+    for (const Combination& c : shard_plan.value()) {
+      // Shards of one study share their inputs; the same combination run on other inputs (a
+      // scene or plugin changed between shards) would sit beside itself in the table.
+      const auto [known, fresh] = label_source.emplace(c.label(), std::make_pair(c.id, input));
+      if (!fresh && known->second.first != c.id) {
+        std::cerr << "error: " << input << " and " << known->second.second << " ran " << c.label()
+                  << " on different inputs (a scene file, mesh, plugin or the repetitions "
+                     "changed between them); merge only shards of one study\n";
+        return 2;
+      }
       if (planned.insert(c.id).second) plan.push_back(c);
+    }
     for (CombinationResult& r : shard_results.value()) {
       if (planned.insert(r.combination.id).second) plan.push_back(r.combination);
       const auto existing = results.find(r.combination.id);

@@ -405,6 +405,25 @@ TEST(StudyCli, ResumeRunsOnlyWhatIsMissing) {
   EXPECT_NE(different.err.find("holds a different study"), std::string::npos) << different.err;
   EXPECT_EQ(readResults(out).size(), 2u);  // neither touched the results
 
+  // A changed input gives other ids: resuming is refused, naming what changed.
+  std::vector<std::string> more_repetitions = resume;
+  *(std::find(more_repetitions.begin(), more_repetitions.end(), "--repetitions") + 1) = "2";
+  const CommandRun repeated = collido(more_repetitions, dir);
+  EXPECT_EQ(repeated.exit_code, 2) << describe(repeated);
+  EXPECT_NE(repeated.err.find("the inputs changed since this study started (repetitions 1 -> 2)"),
+            std::string::npos)
+      << repeated.err;
+  const std::string scene_text = readText(scene);
+  std::string thicker = scene_text;
+  thicker.replace(thicker.find("0.4"), 3, "0.45");
+  test::writeFile(scene, thicker);
+  const CommandRun edited = collido(resume, dir);
+  test::writeFile(scene, scene_text);
+  EXPECT_EQ(edited.exit_code, 2) << describe(edited);
+  EXPECT_NE(edited.err.find("the files (scene file or meshes) of linked"), std::string::npos)
+      << edited.err;
+  EXPECT_EQ(readResults(out).size(), 2u);
+
   // While another driver holds the folder, a second one is refused before it touches anything.
   {
     const Result<study::FolderLock> held = study::FolderLock::acquire(out);
@@ -502,16 +521,23 @@ TEST(StudyCli, ShardsMergeIntoTheWholeStudy) {
   ASSERT_EQ(merged.exit_code, 0) << describe(merged);
   EXPECT_NE(merged.err.find("merged 3 of 3 planned combinations"), std::string::npos) << merged.err;
 
-  // The merged folder holds exactly the plan an unsharded study would have.
+  // The merged folder holds exactly the plan an unsharded study would have, a result for each.
   const std::vector<Combination> plan = planStudy(
       {{scene, "linked", true}}, {"obbtree", "misbehaving:exact", "misbehaving:wrong"}, Sweep{});
-  std::set<std::string> planned;
+  std::set<std::string> planned_labels;
   for (const Combination& c : plan)
-    planned.insert(c.id + ".json");
-  const std::vector<std::string> files = jsonFilesIn(dir + "/m/results");
-  EXPECT_EQ(std::set<std::string>(files.begin(), files.end()), planned);
+    planned_labels.insert(c.label());
   const Result<std::vector<Combination>> merged_plan = ResultStore(dir + "/m").readPlan();
   ASSERT_TRUE(merged_plan.ok()) << merged_plan.status().message();
+  std::set<std::string> merged_labels;
+  std::set<std::string> merged_files;
+  for (const Combination& c : merged_plan.value()) {
+    merged_labels.insert(c.label());
+    merged_files.insert(c.id + ".json");
+  }
+  EXPECT_EQ(merged_labels, planned_labels);
+  const std::vector<std::string> files = jsonFilesIn(dir + "/m/results");
+  EXPECT_EQ(std::set<std::string>(files.begin(), files.end()), merged_files);
   EXPECT_EQ(merged_plan.value().size(), 3u);
   std::map<std::string, CombinationResult> results = byBackend(readResults(dir + "/m"));
   ASSERT_EQ(results.size(), 3u);
@@ -533,6 +559,15 @@ TEST(StudyCli, ShardsMergeIntoTheWholeStudy) {
       << replaced.err;
   EXPECT_EQ(jsonFilesIn(dir + "/m/results").size(), 2u);
   EXPECT_EQ(lineCount(readText(dir + "/m/records.jsonl")), 2u * 2u * 3u);
+
+  // The same combinations run on other inputs (here the repetitions) are not one study.
+  std::vector<std::string> a2 = studyArgs(scene, backends, dir + "/a2");
+  *(std::find(a2.begin(), a2.end(), "--repetitions") + 1) = "2";
+  a2.insert(a2.end(), {"--shard", "0/2"});
+  ASSERT_EQ(collido(a2, dir).exit_code, 0);
+  const CommandRun mixed = collido({"merge", "--out", dir + "/x", dir + "/a", dir + "/a2"}, dir);
+  EXPECT_EQ(mixed.exit_code, 2) << describe(mixed);
+  EXPECT_NE(mixed.err.find("on different inputs"), std::string::npos) << mixed.err;
 
   const CommandRun not_a_study = collido({"merge", "--out", dir + "/n", dir}, dir);
   EXPECT_EQ(not_a_study.exit_code, 2) << describe(not_a_study);

@@ -1,6 +1,7 @@
 // Input files: checked for kind and size before anything reads them.
 #include <collido/mesh/input_file.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdlib>
 #include <filesystem>
@@ -12,6 +13,8 @@ namespace collido {
 namespace {
 
 constexpr std::uint64_t kMebibyte = 1024ull * 1024ull;
+
+thread_local InputFileRecorder* active_recorder = nullptr;
 constexpr std::uint64_t kDefaultLimitMebibytes = 1024;
 
 Status refuse(const std::string& path, const std::string& problem) {
@@ -60,7 +63,24 @@ Status checkInputFile(const std::string& path, const std::string& what) {
                             ", more than the input limit of " + mebibytes(limit) +
                             " (raise it with COLLIDO_MAX_INPUT_MB or collido --max-input-mb)");
   }
+  if (active_recorder != nullptr) active_recorder->add(path);
   return Status();
+}
+
+InputFileRecorder::InputFileRecorder() : enclosing_(active_recorder) {
+  active_recorder = this;
+}
+
+InputFileRecorder::~InputFileRecorder() {
+  active_recorder = enclosing_;
+  if (enclosing_ != nullptr) {
+    for (const std::string& file : files_)
+      enclosing_->add(file);
+  }
+}
+
+void InputFileRecorder::add(const std::string& path) {
+  if (std::find(files_.begin(), files_.end(), path) == files_.end()) files_.push_back(path);
 }
 
 Result<std::string> readInputFile(const std::string& path, const std::string& what) {

@@ -20,6 +20,7 @@
 #include <nlohmann/json.hpp>
 
 #include <collido/frep/polygonize.h>
+#include <collido/mesh/input_file.h>
 #include <collido/mesh/mesh_io.h>
 #include <collido/mesh/procedural.h>
 #include <collido/scene/scene.h>
@@ -909,11 +910,15 @@ bool Scene::hasGeneratedShapes() const {
 }
 
 Result<Scene> loadScene(const std::string& path, const SceneLoadOptions& options) {
+  const InputFileRecorder inputs;
   Result<std::string> text = readInputFile(path, "scene file");
   if (!text.ok()) return text.status();
   Result<Scene> scene =
       parseScene(text.value(), path, std::filesystem::path(path).parent_path().string(), options);
-  if (scene.ok()) scene.value().path = path;
+  if (scene.ok()) {
+    scene.value().path = path;
+    scene.value().input_files = inputs.files();
+  }
   return scene;
 }
 

@@ -40,9 +40,11 @@ std::string fileSafe(const std::string& text) {
 }
 
 std::string makeId(const Combination& c) {
-  const std::string key = c.scene_path + "\n" + c.scene_name + "\n" + exactNumber(c.resolution) +
-                          "\n" + c.backend + "\n" + needsModeName(c.needs) + "\n" +
-                          std::to_string(c.limit);
+  std::string key = c.scene_path + "\n" + c.scene_name + "\n" + exactNumber(c.resolution) + "\n" +
+                    c.backend + "\n" + needsModeName(c.needs) + "\n" + std::to_string(c.limit);
+  if (!c.scene_digest.empty() || !c.plugin_identity.empty() || c.repetitions != 0) {
+    key += "\n" + c.scene_digest + "\n" + c.plugin_identity + "\n" + std::to_string(c.repetitions);
+  }
   char hash[9];
   std::snprintf(hash, sizeof hash, "%08x", fingerprint(key));
   std::string readable = fileSafe(c.scene_name + "~" + c.backend);
@@ -51,6 +53,15 @@ std::string makeId(const Combination& c) {
 }
 
 }  // namespace
+
+Combination withInputs(Combination c, const std::string& scene_digest,
+                       const std::string& plugin_identity, int repetitions) {
+  c.scene_digest = scene_digest;
+  c.plugin_identity = plugin_identity;
+  c.repetitions = repetitions;
+  c.id = makeId(c);
+  return c;
+}
 
 std::string Combination::settingText() const {
   std::string text;
@@ -132,6 +143,9 @@ nlohmann::json combinationToJson(const Combination& c) {
                          {"needs", needsModeName(c.needs)},
                          {"limit", c.limit}};
   if (!c.category.empty()) json["category"] = c.category;
+  if (!c.scene_digest.empty()) json["scene_digest"] = c.scene_digest;
+  if (!c.plugin_identity.empty()) json["plugin"] = c.plugin_identity;
+  if (c.repetitions != 0) json["repetitions"] = c.repetitions;
   return json;
 }
 
@@ -149,6 +163,10 @@ Result<Combination> combinationFromJson(const nlohmann::json& json) {
     c.limit = json.at("limit").get<std::uint64_t>();
     // Written only for stress scenes (and absent from studies made before the stress suite).
     c.category = json.value("category", std::string());
+    // Absent from studies made before combinations carried their inputs.
+    c.scene_digest = json.value("scene_digest", std::string());
+    c.plugin_identity = json.value("plugin", std::string());
+    c.repetitions = json.value("repetitions", 0);
     return c;
   } catch (const nlohmann::json::exception& e) {
     return Status(StatusCode::kInvalidArgument, std::string("combination: ") + e.what());

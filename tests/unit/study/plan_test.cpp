@@ -126,6 +126,25 @@ TEST(PlanStudy, IdsTellApartResolutionsThatPrintAlike) {
   EXPECT_NE(plan[0].id, plan[1].id);
 }
 
+// The inputs a combination's answers depend on are part of its id: a changed mesh, plugin
+// version or repetition count gives another id, so results never mix across them.
+TEST(PlanStudy, IdsFollowTheInputs) {
+  const Combination c = planStudy({kScenes[0]}, {"obbtree"}, Sweep{}).front();
+  const Combination with = withInputs(c, "digest1", "obbtree 0.4", 5);
+  EXPECT_NE(with.id, c.id);
+  EXPECT_EQ(withInputs(c, "digest1", "obbtree 0.4", 5).id, with.id);
+  EXPECT_NE(withInputs(c, "digest2", "obbtree 0.4", 5).id, with.id);
+  EXPECT_NE(withInputs(c, "digest1", "obbtree 0.5", 5).id, with.id);
+  EXPECT_NE(withInputs(c, "digest1", "obbtree 0.4", 3).id, with.id);
+  EXPECT_EQ(with.label(), c.label());  // people see the same combination
+  const Result<Combination> back = combinationFromJson(combinationToJson(with));
+  ASSERT_TRUE(back.ok()) << back.status().message();
+  EXPECT_EQ(back.value().scene_digest, "digest1");
+  EXPECT_EQ(back.value().plugin_identity, "obbtree 0.4");
+  EXPECT_EQ(back.value().repetitions, 5);
+  EXPECT_EQ(back.value().id, with.id);
+}
+
 TEST(Combination, LabelAndSettingTextShowOnlyWhatDiffers) {
   Combination c;
   c.scene_name = "bunny_vs_bunny";

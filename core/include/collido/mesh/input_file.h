@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include <collido/status.h>
 
@@ -20,5 +21,27 @@ Status checkInputFile(const std::string& path, const std::string& what);
 /// The whole of an input file after checkInputFile; running out of memory while reading it is an
 /// error naming the file, not a bare std::bad_alloc.
 Result<std::string> readInputFile(const std::string& path, const std::string& what);
+
+/// While one is alive on a thread, every file checkInputFile passes on that thread is listed in
+/// it: a scene's loader gathers this way every file the scene was read from (the scene file, its
+/// meshes, recordings and tracks), which a study fingerprints. Nested recorders pass their files
+/// on to the enclosing one.
+class InputFileRecorder {
+ public:
+  InputFileRecorder();
+  ~InputFileRecorder();
+  InputFileRecorder(const InputFileRecorder&) = delete;
+  InputFileRecorder& operator=(const InputFileRecorder&) = delete;
+
+  /// The files read so far, each once, in the order first read.
+  const std::vector<std::string>& files() const { return files_; }
+
+ private:
+  friend Status checkInputFile(const std::string& path, const std::string& what);
+  void add(const std::string& path);
+
+  InputFileRecorder* enclosing_;
+  std::vector<std::string> files_;
+};
 
 }  // namespace collido

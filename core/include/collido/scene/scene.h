@@ -126,6 +126,9 @@ struct ScenePlacement {
 /// A loaded, fully validated scene: nothing in it can fail later for a reason the file holds.
 struct Scene {
   std::string path;  ///< the file it was read from ("" for scenes built in code)
+  /// Every file it was read from, the scene file first, then its meshes, recordings and tracks
+  /// (InputFileRecorder); what a study fingerprints to notice a changed input.
+  std::vector<std::string> input_files;
   std::string name;
   std::string description;
   std::size_t frames = 1;

@@ -28,6 +28,13 @@ struct Combination {
   /// combination so the robustness matrix can place even a worker that crashed. Not part of the
   /// id: it follows from the scene file.
   std::string category = {};
+  /// What the answers depend on beyond the settings above, part of the id when set (the study
+  /// driver sets them; see withInputs): a digest of every file the scene was read from, the
+  /// plugin's identity ("obbtree 0.4, engine ..."), and the timed calls per frame. A changed
+  /// input then gives another id, so a resumed study never mixes old and new answers.
+  std::string scene_digest = {};
+  std::string plugin_identity = {};
+  int repetitions = 0;
 
   /// "bunny_vs_bunny · obbtree[max_leaf_triangles=4] · every needs · r=0.5 · limit 16", only the
   /// parts that differ from the defaults.
@@ -35,6 +42,10 @@ struct Combination {
   /// The setting beyond the backend text: "", or e.g. "needs=every r=0.5 limit=16".
   std::string settingText() const;
 };
+
+/// `c` with its inputs set and its id made again from them.
+Combination withInputs(Combination c, const std::string& scene_digest,
+                       const std::string& plugin_identity, int repetitions);
 
 /// A scene as the planner sees it.
 struct PlannedScene {
