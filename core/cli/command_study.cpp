@@ -178,6 +178,7 @@ CombinationResult runInWorker(const Combination& c, const ResultStore& store, in
     if (answer.ok()) {
       result.measurements = std::move(answer.value().measurements);
       result.problems = std::move(answer.value().problems);
+      result.backend_rss_bytes = answer.value().backend_rss_bytes;
     } else {
       result.outcome.status = "unfinished";
       result.outcome.log_tail = answer.status().message();

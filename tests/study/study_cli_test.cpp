@@ -196,6 +196,9 @@ TEST(StudyCli, CrashAbortAndHangCostOneCombinationEach) {
     EXPECT_EQ(m.disagreements, 0u);
   }
   EXPECT_GT(obbtree.outcome.peak_rss_bytes, 0u);
+  // The backend's share, apart from the scene and the exact answers the worker held.
+  ASSERT_TRUE(obbtree.backend_rss_bytes.has_value());
+  EXPECT_LT(*obbtree.backend_rss_bytes, obbtree.outcome.peak_rss_bytes);
 
   const CombinationResult& crash = results[1];
   EXPECT_EQ(crash.outcome.status, "crashed");

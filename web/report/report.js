@@ -581,7 +581,8 @@
     const s = section('memory', 'Memory per triangle',
       'Bytes per triangle of the built structures of both objects: what the backend says, and ' +
       'what its build kept on the heap, counted by allocation hooks in the worker ' +
-      '(independent of the backend). The tooltip adds the build peak and the worker\'s peak RSS.');
+      '(independent of the backend). The tooltip adds the build peak and the resident memory ' +
+      'the backend added at its peak, apart from the scene and the exact answers the worker held.');
     const rows = [];
     const seen = new Set();
     for (const r of ok) {
@@ -589,10 +590,10 @@
       if (seen.has(key)) continue;
       seen.add(key);
       rows.push({ label: r.label, scene: r.scene, measure: 'backend figure', bytes: r.bytes_per_triangle,
-        peak_rss_mib: r.peak_rss_mib, heap_peak: r.heap_peak_bytes_per_triangle });
+        rss_mib: r.backend_rss_mib, heap_peak: r.heap_peak_bytes_per_triangle });
       if (r.heap_bytes_per_triangle !== null) {
         rows.push({ label: r.label, scene: r.scene, measure: 'heap kept (hooks)',
-          bytes: r.heap_bytes_per_triangle, peak_rss_mib: r.peak_rss_mib,
+          bytes: r.heap_bytes_per_triangle, rss_mib: r.backend_rss_mib,
           heap_peak: r.heap_peak_bytes_per_triangle });
       }
     }
@@ -612,7 +613,7 @@
             color: { field: 'measure', type: 'nominal', title: null },
             tooltip: [{ field: 'label' }, { field: 'measure' }, { field: 'bytes', format: '.0f' },
               { field: 'heap_peak', title: 'build peak B/tri', format: '.0f' },
-              { field: 'peak_rss_mib', title: 'worker peak RSS (MiB)', format: '.0f' }] } },
+              { field: 'rss_mib', title: 'backend peak RSS (MiB)', format: '.0f' }] } },
         resolve: { scale: { x: 'independent', y: 'independent' } } });
     }
   }

@@ -582,6 +582,22 @@ bool FrameRecord::disagrees(QueryKind kind) const {
   return matched_pairs != oracle_pairs || matched_pairs != reported_pairs;
 }
 
+void precomputeOracleAnswers(OracleCache& oracle, bool distances) {
+  const Scene& scene = oracle.scene();
+  for (const SceneQuery& query : scene.queries) {
+    std::optional<BroadPhase> broad_phase;
+    if (query.isGroup()) broad_phase.emplace(scene, query);
+    const bool distance = distances && query.request.kind == QueryKind::kDistance;
+    for (std::size_t frame = 0; frame < scene.frames; ++frame) {
+      const std::vector<std::pair<std::size_t, std::size_t>> candidates =
+          broad_phase ? broad_phase->pairsAt(frame)
+                      : std::vector<std::pair<std::size_t, std::size_t>>{{query.a, query.b}};
+      for (const auto& [ia, ib] : candidates)
+        (void)oracle.get(ia, ib, frame, distance);
+    }
+  }
+}
+
 RunReport runScenes(const std::vector<Scene>& scenes, const std::vector<BackendSpec>& backends,
                     const RunOptions& options) {
   RunReport report;

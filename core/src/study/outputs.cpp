@@ -108,7 +108,8 @@ std::string benchmarkJson(const std::vector<CombinationResult>& results) {
                     {"build_ms", m.build_ms},
                     {"triangles", m.triangles},
                     {"bytes_per_triangle", static_cast<double>(m.memory_bytes) / triangles},
-                    {"peak_rss_bytes", r.outcome.peak_rss_bytes}};
+                    {"peak_rss_bytes", r.outcome.peak_rss_bytes},
+                    {"backend_rss_bytes", r.residentBytes()}};
       if (m.heap_bytes) {
         entry["heap_bytes_per_triangle"] = static_cast<double>(*m.heap_bytes) / triangles;
       }
@@ -189,7 +190,7 @@ std::string studyTable(const std::vector<CombinationResult>& results) {
            m.finest_disagreements ? std::to_string(*m.finest_disagreements) : "-",
            formatNumber("%.2f", m.build_ms), bytesPerTriangleText(m.memory_bytes, m.triangles),
            m.heap_bytes ? bytesPerTriangleText(*m.heap_bytes, m.triangles) : "n/a",
-           formatNumber("%.0f", static_cast<double>(r.outcome.peak_rss_bytes) / 1048576.0)});
+           formatNumber("%.0f", static_cast<double>(r.residentBytes()) / 1048576.0)});
     }
   }
   std::ostringstream out;

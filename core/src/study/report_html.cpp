@@ -85,6 +85,7 @@ Json row(const CombinationResult& r, const QueryMeasurement& m) {
           {"heap_bytes_per_triangle", nullable(perTriangle(m.heap_bytes, m.triangles))},
           {"heap_peak_bytes_per_triangle", nullable(perTriangle(m.heap_peak_bytes, m.triangles))},
           {"peak_rss_mib", static_cast<double>(r.outcome.peak_rss_bytes) / 1048576.0},
+          {"backend_rss_mib", static_cast<double>(r.residentBytes()) / 1048576.0},
           {"bv_tests", m.counts_bv_tests ? Json(static_cast<double>(bv) / frames) : Json()},
           {"primitive_tests",
            m.counts_primitive_tests ? Json(static_cast<double>(primitive) / frames) : Json()}};

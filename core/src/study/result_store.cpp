@@ -49,7 +49,8 @@ Json resultToJson(const CombinationResult& r) {
             {"peak_rss_bytes", r.outcome.peak_rss_bytes},
             {"log_tail", r.outcome.log_tail}}},
           {"measurements", measurements},
-          {"problems", r.problems}};
+          {"problems", r.problems},
+          {"backend_rss_bytes", r.backend_rss_bytes ? Json(*r.backend_rss_bytes) : Json()}};
 }
 
 Result<CombinationResult> resultFromJson(const Json& json, const std::string& label) {
@@ -78,6 +79,9 @@ Result<CombinationResult> resultFromJson(const Json& json, const std::string& la
       r.measurements.push_back(std::move(measurement).value());
     }
     r.problems = json.at("problems").get<std::vector<std::string>>();
+    // Absent from results stored before backends' memory was measured apart.
+    if (json.contains("backend_rss_bytes") && !json.at("backend_rss_bytes").is_null())
+      r.backend_rss_bytes = json.at("backend_rss_bytes").get<std::size_t>();
     return r;
   } catch (const Json::exception& e) {
     return bad(e.what());

@@ -5,6 +5,7 @@
 #include <collido/runner/runner.h>
 #include <collido/scene/scene.h>
 #include <collido/study/oracle_store.h>
+#include <collido/study/resident_memory.h>
 
 namespace collido::study {
 
@@ -47,14 +48,18 @@ Result<CombinationResult> runCombination(const WorkerRequest& request) {
   std::optional<StoredOracle> finest_stored;
   if (finest_oracle) finest_stored.emplace(request.oracle_directory, *finest_oracle);
 
-  RunReport report = runScene(scene, specs.value().front(), options, oracle,
-                              finest_oracle ? &*finest_oracle : nullptr);
-
-  // Keep what this run added.
+  // The exact answers first, kept at once: their memory is then not charged to the backend.
+  precomputeOracleAnswers(oracle);
+  if (finest_oracle) precomputeOracleAnswers(*finest_oracle, /*distances=*/false);
   stored.keepNew();
   if (finest_stored) finest_stored->keepNew();
 
+  const ResidentPeak backend_memory;
+  RunReport report = runScene(scene, specs.value().front(), options, oracle,
+                              finest_oracle ? &*finest_oracle : nullptr);
+
   CombinationResult result;
+  result.backend_rss_bytes = backend_memory.addedBytes();
   result.combination = c;
   result.measurements = std::move(report.measurements);
   result.problems = std::move(report.problems);

@@ -174,13 +174,16 @@ TEST(MeasurementJson, MissingOrMistypedFieldsAreErrors) {
 }
 
 TEST(ResultJson, RoundTripsOutcomeMeasurementsAndProblems) {
-  const CombinationResult r = testdata::okResult(testdata::combination("obbtree"));
+  CombinationResult r = testdata::okResult(testdata::combination("obbtree"));
+  r.backend_rss_bytes = 3u * 1024u * 1024u;
   const Result<CombinationResult> back = resultFromJson(resultToJson(r), "label.json");
   ASSERT_TRUE(back.ok()) << back.status().message();
   EXPECT_EQ(back.value().combination.id, r.combination.id);
   EXPECT_EQ(back.value().outcome.status, "ok");
   EXPECT_EQ(back.value().outcome.wall_s, r.outcome.wall_s);
   EXPECT_EQ(back.value().outcome.peak_rss_bytes, r.outcome.peak_rss_bytes);
+  EXPECT_EQ(back.value().backend_rss_bytes, r.backend_rss_bytes);
+  EXPECT_EQ(back.value().residentBytes(), 3u * 1024u * 1024u);
   EXPECT_EQ(back.value().problems, r.problems);
   ASSERT_EQ(back.value().measurements.size(), r.measurements.size());
   for (std::size_t i = 0; i < r.measurements.size(); ++i)

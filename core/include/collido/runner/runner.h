@@ -238,6 +238,11 @@ class OracleCache {
 /// oracle (computed once per scene, frame and query, shared by all backends) and times it.
 /// Backends that cannot answer a query are recorded as skipped, failures as failed; nothing is
 /// silently dropped.
+/// Asks `oracle` every answer a run of its scene will (each query, frame and object pair the
+/// shared broad phase gives, with distances for distance queries when `distances`), so that a
+/// worker can compute them before the backend's memory is measured rather than during it.
+void precomputeOracleAnswers(OracleCache& oracle, bool distances = true);
+
 RunReport runScenes(const std::vector<Scene>& scenes, const std::vector<BackendSpec>& backends,
                     const RunOptions& options);
 

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -33,6 +34,13 @@ struct CombinationResult {
   WorkerOutcome outcome;
   std::vector<QueryMeasurement> measurements;  ///< empty unless the worker finished
   std::vector<std::string> problems;
+  /// The resident memory the backend added at its peak while it built and answered, over what
+  /// the worker held before (scene, oracle answers): the backend's own share (ResidentPeak).
+  /// Absent when the worker did not finish or the kernel could not reset the peak.
+  std::optional<std::size_t> backend_rss_bytes;
+
+  /// The memory figure tables show: the backend's own share, else the worker's peak.
+  std::size_t residentBytes() const { return backend_rss_bytes.value_or(outcome.peak_rss_bytes); }
 };
 
 nlohmann::json resultToJson(const CombinationResult& result);
