@@ -60,6 +60,11 @@ test('the view draws the scene and each backend\'s answers as the result file ha
     assert.equal(await page.evaluate(() => document.body.getAttribute('data-ready')), 'true',
       problems.join('\n'));
 
+    // It opens at the first frame where the first query's exact answer has contact.
+    const contactAt = results.measurements[0].frames.findIndex((f) => f.oracle_intersecting);
+    assert.equal((await page.evaluate(() => window.collidoView.state())).frame,
+      Math.max(0, contactAt));
+
     // Not blank: the meshes cover a good part of the canvas.
     const first = await page.evaluate(() => window.collidoView.pixels());
     assert.ok(first.drawn > 0.02 * first.width * first.height,

@@ -248,7 +248,7 @@ async function main() {
   const ui = {
     query: byId('query'), backend: byId('backend'), mode: byId('mode'), frame: byId('frame'),
     label: byId('frame-label'), play: byId('play'), prev: byId('prev'), next: byId('next'),
-    focus: byId('focus'), whole: byId('whole'),
+    focus: byId('focus'), whole: byId('whole'), xray: byId('xray'),
     legend: byId('legend'),
     verdicts: byId('verdicts'), picked: byId('picked'),
   };
@@ -391,7 +391,8 @@ async function main() {
         const missed = r.oracle_pairs - r.matched_pairs;
         const extra = r.reported_pairs - r.matched_pairs;
         if (r.disagrees === undefined) wrong = missed > 0 || extra > 0;
-        verdict = `${r.reported_pairs} of ${r.oracle_pairs} exact; ${missed} missed, ${extra} extra`;
+        verdict = `found ${r.matched_pairs} of ${r.oracle_pairs} exact pairs; ${missed} missed, ` +
+          `${extra} extra (${r.reported_pairs} reported)`;
       } else if (query.kind === 'distance') {
         const d = r.pairs.map((p) => (p.distance ? p.distance.value : NaN));
         const exact = r.pairs.map((p) => (p.oracle_distance ? p.oracle_distance.value : NaN));
@@ -599,10 +600,36 @@ async function main() {
     queries: () => data.queries.map((q) => q.name),
   };
 
+  // X-ray: every mesh see-through, so triangles inside another mesh show their colours.
+  ui.xray.addEventListener('change', () => {
+    for (const o of objects) {
+      for (const s of o.states) {
+        s.mesh.material.transparent = ui.xray.checked;
+        s.mesh.material.opacity = ui.xray.checked ? 0.3 : 1;
+        s.mesh.material.depthWrite = !ui.xray.checked;
+        s.mesh.material.needsUpdate = true;
+      }
+    }
+    render();
+  });
+
   resize();
   applyPoses(0);
   fit();
-  setFrame(0);
+  // Open where something happens: the first frame whose exact answer to the first query has
+  // contact (any backend's answers carry the oracle's).
+  const firstContact = () => {
+    const query = data.queries[0];
+    for (let frame = 0; query && frame < frames; ++frame) {
+      for (const backend of data.backends) {
+        const found = frameAnswers(backend, query.name, frame);
+        const r = found && found.record;
+        if (r && (r.oracle_pairs > 0 || (r.pairs || []).some((p) => p.oracle_intersecting))) return frame;
+      }
+    }
+    return 0;
+  };
+  setFrame(firstContact());
   document.body.setAttribute('data-ready', 'true');
 }
 

@@ -83,6 +83,18 @@ Json markersJson(const SceneObject& object) {
   return {{"layout", layout}, {"observed", observed}, {"lost", lost}, {"source", tracking.source}};
 }
 
+// A mesh file as the scene names it (meshes/bunny.obj), not by where this machine keeps it: the
+// page may be shared, and an absolute path says nothing to its reader.
+std::string sourceRelativeToScene(const Scene& scene, const std::string& source) {
+  if (scene.path.empty() || source.empty() || source.find('/') == std::string::npos) return source;
+  std::error_code ec;
+  const std::filesystem::path base =
+      std::filesystem::absolute(std::filesystem::path(scene.path).parent_path(), ec);
+  const std::filesystem::path relative =
+      std::filesystem::absolute(source, ec).lexically_normal().lexically_relative(base);
+  return ec || relative.empty() ? source : relative.string();
+}
+
 Json objectJson(const Scene& scene, const SceneObject& object, GeometryBuffer& buffer) {
   Json states = Json::array();
   for (std::size_t s = 0; s < object.stateCount(); ++s) {
@@ -112,7 +124,7 @@ Json objectJson(const Scene& scene, const SceneObject& object, GeometryBuffer& b
   }
   return {{"name", object.name},
           {"parent", object.parent ? Json(*object.parent) : Json(nullptr)},
-          {"source", object.report.source},
+          {"source", sourceRelativeToScene(scene, object.report.source)},
           {"states", std::move(states)},
           {"schedule", std::move(schedule)},
           {"deformed", std::move(deformed)},

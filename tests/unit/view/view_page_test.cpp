@@ -208,6 +208,16 @@ TEST(ViewPage, CarriesTheScenesMeshesPosesAndAnswers) {
   EXPECT_EQ(data["queries"][0]["side_b"], Json::array({1, 2}));
 }
 
+// A page may be shared: meshes are named as the scene names them, not by this machine's paths.
+TEST(ViewPage, MeshesAreNamedRelativeToTheScene) {
+  const Result<Scene> scene = loadScene(test::sourcePath("scenes/bunny_vs_bunny.json"));
+  ASSERT_TRUE(scene.ok()) << scene.status().toString();
+  const Result<std::string> page = view::renderViewPage(scene.value(), {}, fakeWebDirectory());
+  ASSERT_TRUE(page.ok()) << page.status().toString();
+  const Json data = Json::parse(between(page.value(), "<data>", "</data>"));
+  EXPECT_EQ(data["objects"][0]["source"], "meshes/bunny.obj");
+}
+
 TEST(ViewPage, AMissingLibraryIsNamedWithHowToGetIt) {
   const std::string web = fakeWebDirectory();
   std::filesystem::remove(std::filesystem::path(web) / "node_modules/three/build/three.core.js");
