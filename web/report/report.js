@@ -30,8 +30,10 @@
     const holder = el('div', { class: 'chart', 'data-view': name });
     parent.appendChild(holder);
     spec.$schema = 'https://vega.github.io/schema/vega-lite/v6.json';
-    spec.config = Object.assign({ font: 'system-ui, sans-serif', axis: { labelFontSize: 11 } },
-      spec.config || {});
+    // Labels that would touch are dropped (with no gap, "2,000" and "3,000" read "2,0003,000").
+    spec.config = Object.assign({ font: 'system-ui, sans-serif',
+      axis: { labelFontSize: 11, labelOverlap: 'greedy', labelSeparation: 6 } }, spec.config || {});
+    tidyLogAxes(spec);
     pending.push(vegaEmbed(holder, spec, { actions: { export: true, source: false, compiled: false,
       editor: false }, renderer: 'svg' })
       .then(() => holder.setAttribute('data-rendered', 'true'))
@@ -41,6 +43,19 @@
         console.error('chart ' + name + ' failed: ' + e);
       }));
     return holder;
+  }
+  // Log axes label every power's multiples; short labels ("2000", "0.5") and greedy dropping
+  // keep them apart.
+  function tidyLogAxes(node) {
+    if (Array.isArray(node)) { node.forEach(tidyLogAxes); return; }
+    if (!node || typeof node !== 'object') return;
+    if (node.scale && node.scale.type === 'log' && node.field) {
+      node.axis = Object.assign({ format: '~g', labelOverlap: 'greedy', labelSeparation: 6 },
+        node.axis || {});
+    }
+    for (const key of Object.keys(node)) {
+      if (key !== 'data') tidyLogAxes(node[key]);
+    }
   }
   function table(parent, header, rows, classes) {
     const t = el('table');
@@ -125,13 +140,17 @@
           { data: { values: front }, mark: { type: 'line', interpolate: 'step-after', color: '#888',
             strokeDash: [4, 3] },
             encoding: { x: { field: 'median_us', type: 'quantitative', scale: { type: 'log' } },
-              y: { field: 'error_rate', type: 'quantitative' } } },
+              y: { field: 'error_rate', type: 'quantitative',
+                scale: { domain: [0, Math.max(0.05, ...points.map((p) => p.error_rate || 0))] } } } },
           { data: { values: points }, mark: { type: 'point', filled: true, size: 70 },
             encoding: {
               x: { field: 'median_us', type: 'quantitative', scale: { type: 'log' },
                 title: 'median time per query (µs)' },
+              // At least 0-5%: a scene where every setting is exact shows a 0% axis, not a
+              // single "0.000000" tick.
               y: { field: 'error_rate', type: 'quantitative', title: 'share of frames wrong',
-                scale: { domainMin: 0 } },
+                scale: { domain: [0, Math.max(0.05, ...points.map((p) => p.error_rate || 0))] },
+                axis: { format: '.0%' } },
               color: colour, shape: { field: 'kind', type: 'nominal', title: 'query' },
               tooltip: [{ field: 'label' }, { field: 'median_us', format: '.1f' },
                 { field: 'p99_us', format: '.1f' }, { field: 'error_rate', format: '.3f' },
@@ -656,6 +675,18 @@
           layer: [{ mark: { type: 'line', point: true },
             encoding: { detail: { field: 'series' },
               tooltip: [{ field: 'label' }, { field: 'triangles' }, { field: 'median_us', format: '.1f' }] } }] });
+        chart(box, 'scaling-memory:' + name, {
+          title: name + ' · memory', width: 360, height: 240, data: { values: rows },
+          encoding: { x: { field: 'triangles', type: 'quantitative', scale: { type: 'log' },
+            title: 'triangles (both objects)' },
+          y: { field: 'bytes_per_triangle', type: 'quantitative', scale: { type: 'log' },
+            title: 'bytes per triangle (backend figure)' },
+          color: { field: 'backend_only', type: 'nominal', title: 'backend' } },
+          layer: [{ mark: { type: 'line', point: true },
+            encoding: { detail: { field: 'series' },
+              tooltip: [{ field: 'label' }, { field: 'triangles' },
+                { field: 'bytes_per_triangle', format: '.0f' },
+                { field: 'backend_rss_mib', title: 'backend peak RSS (MiB)', format: '.1f' }] } }] });
       }
       table(s, ['scene · query', 'backend', 'sizes', 'time exponent', 'B/tri exponent'], exponents,
         ['', '', 'num', 'num', 'num']);
@@ -736,9 +767,14 @@
 
   // --- 7. before / after ----------------------------------------------------------------------
   {
+    // Two identical runs on a 2-core machine differed by -43% to +67% on one setting: a ratio
+    // within this factor either way is noise, not a finding.
+    const NOISE = 1.75;
     const s = section('comparison', 'Against a baseline',
       'The ratio of median times against an earlier study of the same settings ' +
-      '(collido report DIR --baseline OLD): below 1 is faster now. Changes in error are listed.');
+      '(collido report DIR --baseline OLD): below 1 is faster now. Only a change beyond a factor ' +
+      `${NOISE} either way is coloured (green faster, red slower); within it is grey, since two ` +
+      'identical runs on a 2-core machine differed by up to that. Changes in error are listed.');
     if (!data.baseline_rows || data.baseline_rows.length === 0) {
       empty(s, 'No baseline given: run collido report DIR --baseline EARLIER_DIR.');
     } else {
@@ -762,6 +798,8 @@
         chart(box, 'comparison', {
           data: { values: ratios }, width: 420, height: { step: 16 },
           facet: { row: { field: 'scene', type: 'nominal', title: null } },
+          // Each scene lists only the settings that ran on it.
+          resolve: { scale: { y: 'independent' } },
           spec: { width: 420, height: { step: 16 },
             layer: [
               { mark: { type: 'rule', color: '#888', strokeDash: [4, 3] },
@@ -772,7 +810,8 @@
                   x: { field: 'ratio', type: 'quantitative', scale: { type: 'log' },
                     title: 'now / before (median time)' },
                   shape: { field: 'query', type: 'nominal' },
-                  color: { condition: { test: 'datum.ratio > 1', value: '#b3261e' }, value: '#1b7f3b' },
+                  color: { condition: [{ test: `datum.ratio > ${NOISE}`, value: '#b3261e' },
+                    { test: `datum.ratio < ${1 / NOISE}`, value: '#1b7f3b' }], value: '#9a9a9a' },
                   tooltip: [{ field: 'label' }, { field: 'query' }, { field: 'before', format: '.1f' },
                     { field: 'now', format: '.1f' }, { field: 'ratio', format: '.3f' }] } }] } });
         if (changes.length) {

@@ -81,6 +81,27 @@ test('every chart of the report renders without console errors', async () => {
       const shown = await page.$eval('#' + id, (n) => n.textContent);
       assert.ok(shown.includes(text), `section ${id} does not show "${text}"`);
     }
+    // Log axes keep their labels apart, and no axis shows a lone "0.000000".
+    const crowded = await page.$$eval('.chart svg', (svgs) => {
+      const found = [];
+      for (const svg of svgs) {
+        for (const axis of svg.querySelectorAll('.role-axis-label')) {
+          const boxes = [...axis.querySelectorAll('text')].filter((t) => t.getAttribute('opacity') !== '0')
+            .map((t) => t.getBoundingClientRect()).filter((b) => b.width > 0);
+          for (let i = 1; i < boxes.length; ++i) {
+            const a = boxes[i - 1];
+            const b = boxes[i];
+            const apart = a.right <= b.left || b.right <= a.left || a.bottom <= b.top || b.bottom <= a.top;
+            if (!apart) found.push(svg.closest('[data-view]').getAttribute('data-view'));
+          }
+        }
+      }
+      return found;
+    });
+    assert.deepEqual(crowded, [], `axis labels overlap in ${crowded.join(', ')}`);
+    const zeros = await page.$$eval('.role-axis-label text', (ts) => ts.map((t) => t.textContent)
+      .filter((t) => /^0\.0{4,}$/.test(t)));
+    assert.deepEqual(zeros, [], 'an axis shows a long zero tick');
     assert.deepEqual(problems, [], problems.join('\n'));
   } finally {
     await browser.close();
