@@ -18,6 +18,7 @@ struct RunArguments {
   std::string json_path;
   std::string oracle_directory;
   int repetitions = 5;
+  std::string protocol = "repeated";
   bool quiet = false;
   bool fail_on_disagreement = false;
 };
@@ -78,6 +79,7 @@ int run(const RunArguments& args, const PluginOptions& plugin_options) {
   }
   RunOptions options;
   options.repetitions = args.repetitions;
+  options.protocol = parseTimingProtocol(args.protocol).value_or(TimingProtocol::kRepeated);
   if (!args.quiet) options.progress = [](const std::string& line) { std::cerr << line << "\n"; };
   // runScenes, with each scene's oracle answers read from and kept in the store when one is named.
   RunReport report;
@@ -128,6 +130,11 @@ void addRunCommand(CLI::App& app, const PluginOptions& plugins, int& exit_code) 
                    "keep the exact answers in this folder (a study's store): answers stored "
                    "there for an identical scene are read, not computed, and new ones added")
       ->check(CLI::ExistingDirectory | CLI::NonexistentPath);
+  command
+      ->add_option("--protocol", args->protocol,
+                   "timing protocol: repeated (each frame's calls back to back, the default) or "
+                   "cycled (each timed call on another frame than the last; docs/STUDY.md)")
+      ->check(CLI::IsMember({"repeated", "cycled"}));
   command->add_option("--repetitions", args->repetitions, "timed calls per frame and query")
       ->check(CLI::Range(1, 1000000));
   command->add_flag("--quiet", args->quiet, "no progress lines on stderr");

@@ -52,6 +52,7 @@ struct StudyArguments {
   int repetitions = 0;
   bool quiet = false;
   std::string expected_times;
+  std::string protocol;
   double plugin_timeout_s = kPluginLoadTimeoutS;
 };
 
@@ -240,6 +241,7 @@ std::string changedInputs(const std::vector<Combination>& before,
   std::set<std::string> scenes;
   std::set<std::string> plugins;
   std::set<std::string> repetitions;
+  std::set<std::string> protocols;
   for (const Combination& c : now) {
     const auto found = earlier.find(c.label());
     if (found == earlier.end()) return "";
@@ -249,6 +251,9 @@ std::string changedInputs(const std::vector<Combination>& before,
       plugins.insert("'" + (old.plugin_identity.empty() ? "?" : old.plugin_identity) + "' -> '" +
                      c.plugin_identity + "'");
     }
+    const auto named = [](const std::string& p) { return p.empty() ? std::string("repeated") : p; };
+    if (named(old.protocol) != named(c.protocol))
+      protocols.insert(named(old.protocol) + " -> " + named(c.protocol));
     if (old.repetitions != c.repetitions) {
       repetitions.insert(std::to_string(old.repetitions) + " -> " + std::to_string(c.repetitions));
     }
@@ -266,6 +271,7 @@ std::string changedInputs(const std::vector<Combination>& before,
   add("the files (scene file or meshes) of", scenes);
   add("plugin", plugins);
   add("repetitions", repetitions);
+  add("timing protocol", protocols);
   return text;
 }
 
@@ -339,12 +345,14 @@ int runStudy(const StudyArguments& args, const PluginOptions& plugins) {
   }
   const int repetitions = args.repetitions > 0 ? args.repetitions : sweep.repetitions.value_or(5);
   const double timeout_s = args.timeout_s > 0 ? args.timeout_s : sweep.timeout_s.value_or(600.0);
+  const std::string protocol =
+      !args.protocol.empty() ? args.protocol : sweep.protocol.value_or("repeated");
   std::vector<Combination> whole =
       study::planStudy(scenes, settings, sweep, onlyScenes(sweep, scenes));
   for (Combination& c : whole) {
     const std::string& digest = scene_digests.at(c.scene_path);
     const std::string identity = pluginIdentity(found, c.backend);
-    c = study::withInputs(std::move(c), digest, identity, repetitions);
+    c = study::withInputs(std::move(c), digest, identity, repetitions, protocol);
   }
   const std::vector<Combination> plan = study::shardOf(whole, shard_index, shard_count);
 
@@ -659,6 +667,11 @@ void addStudyCommands(CLI::App& app, const PluginOptions& plugins, int& exit_cod
                    "seconds a plugin may take to load, in a process of its own, before it counts "
                    "as hanging and is skipped (default 30)")
       ->check(CLI::PositiveNumber);
+  command
+      ->add_option("--protocol", args->protocol,
+                   "timing protocol: repeated (each frame's calls back to back, the default) or "
+                   "cycled (each timed call on another frame than the last; docs/STUDY.md)")
+      ->check(CLI::IsMember({"repeated", "cycled"}));
   command->add_option("--expected-times", args->expected_times,
                       "an earlier study folder or its times.json: the expected time printed at "
                       "the start and the progress estimate come from its wall times");

@@ -588,6 +588,7 @@ TEST(StudyCli, SweepFileSetsTheGrid) {
     "resolutions": [1, 0.5],
     "limits": [2],
     "repetitions": 2,
+    "protocol": "cycled",
     "timeout_s": 60})");
   const CommandRun run =
       collido({"study", writeSmallScene(dir), "--sweep", sweep, "--out", out}, dir);
@@ -605,6 +606,7 @@ TEST(StudyCli, SweepFileSetsTheGrid) {
     for (const QueryMeasurement& m : r.measurements) {
       EXPECT_EQ(m.status, "ok");
       EXPECT_EQ(m.times_us.size(), 3u * 2u);  // the sweep's repetitions
+      EXPECT_EQ(m.protocol, "cycled");
       EXPECT_EQ(m.disagreements, 0u);
       EXPECT_EQ(m.finest_disagreements.has_value(), r.combination.resolution != 1.0);
       if (m.kind == QueryKind::kAllPairs) {

@@ -115,6 +115,7 @@ Json measurementToJson(const QueryMeasurement& m) {
           {"heap_peak_bytes", optionalJson(m.heap_peak_bytes)},
           {"heap_allocations", optionalJson(m.heap_allocations)},
           {"heap_probe", m.heap_probe},
+          {"protocol", m.protocol},
           {"times_us", m.times_us},
           {"frames", frames}};
 }
@@ -139,6 +140,7 @@ Result<QueryMeasurement> measurementFromJson(const Json& j) {
     m.heap_peak_bytes = optionalFrom<std::size_t>(j, "heap_peak_bytes");
     m.heap_allocations = optionalFrom<std::uint64_t>(j, "heap_allocations");
     m.heap_probe = j.value("heap_probe", "");
+    m.protocol = j.value("protocol", "repeated");  // before there was a choice
     m.times_us = j.at("times_us").get<std::vector<double>>();
     for (const Json& frame : j.at("frames"))
       m.frames.push_back(frameFrom(frame));

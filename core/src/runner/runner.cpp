@@ -226,6 +226,54 @@ void say(const RunOptions& options, const std::string& line) {
   if (options.progress) options.progress(line);
 }
 
+// The cycled protocol's timed passes: each pass asks every frame once, in order, so that no
+// call finds the previous one's data in cache. A deforming object is updated to each frame
+// first, untimed. Each frame's median is over its calls; times_us holds every call.
+void timeCycled(const Scene& scene, const SceneQuery& query,
+                const std::vector<std::size_t>& objects,
+                const std::map<std::size_t, std::vector<BuiltModel>>& models,
+                BackendInstance& backend,
+                const std::vector<std::vector<std::pair<std::size_t, std::size_t>>>& candidates,
+                int repetitions, QueryMeasurement& m) {
+  std::vector<std::vector<double>> times(m.frames.size());
+  QueryResult result;
+  for (int rep = 0; rep < repetitions && m.ok(); ++rep) {
+    for (std::size_t k = 0; k < m.frames.size() && m.ok(); ++k) {
+      const std::size_t frame = m.frames[k].frame;
+      const auto modelAt = [&](std::size_t i) {
+        return models.at(i)[scene.objects[i].stateAt(frame)].handle;
+      };
+      for (std::size_t i : objects) {
+        if (scene.objects[i].deformation == nullptr) continue;
+        if (Status s =
+                backend.update(modelAt(i), scene.objects[i].shapeAt(frame)->vertices, nullptr);
+            !s.ok()) {
+          m.status = "failed: frame " + std::to_string(frame) + ": update " +
+                     scene.objects[i].name + ": " + s.toString();
+        }
+      }
+      if (!m.ok()) break;
+      const Clock::time_point start = Clock::now();
+      Status s;
+      for (const auto& [ia, ib] : candidates[k]) {
+        s = backend.query(modelAt(ia), scene.objects[ia].poseAt(frame), modelAt(ib),
+                          scene.objects[ib].poseAt(frame), query.request, result);
+        if (!s.ok()) break;
+      }
+      const Clock::time_point stop = Clock::now();
+      if (!s.ok()) {
+        m.status = "failed: frame " + std::to_string(frame) + ": " + s.toString();
+        break;
+      }
+      times[k].push_back(microseconds(stop - start));
+    }
+  }
+  for (std::size_t k = 0; k < m.frames.size(); ++k) {
+    m.frames[k].median_us = quantile(times[k], 0.5);
+    m.times_us.insert(m.times_us.end(), times[k].begin(), times[k].end());
+  }
+}
+
 void runSceneOnBackend(const Scene& scene, const BackendSpec& spec, OracleCache& oracle,
                        OracleCache* finest_oracle, const RunOptions& options, RunReport& report) {
   const std::string label = spec.label();
@@ -293,6 +341,7 @@ void runSceneOnBackend(const Scene& scene, const BackendSpec& spec, OracleCache&
     m.scene = scene.name;
     m.query = query.name;
     m.kind = query.request.kind;
+    m.protocol = timingProtocolName(options.protocol);
     if (!builds_meshes) {
       m.status =
           "skipped: " + label + " builds no triangle meshes (the scene's objects are meshes)";
@@ -352,6 +401,7 @@ void runSceneOnBackend(const Scene& scene, const BackendSpec& spec, OracleCache&
       if (truth_oracle) truth_broad_phase.emplace(truth_scene, query);
     }
     QueryResult result;
+    std::vector<std::vector<std::pair<std::size_t, std::size_t>>> frame_candidates;
     for (std::size_t frame = 0; frame < scene.frames && m.ok(); ++frame) {
       const std::vector<std::pair<std::size_t, std::size_t>> candidates =
           broad_phase ? broad_phase->pairsAt(frame)
@@ -438,7 +488,9 @@ void runSceneOnBackend(const Scene& scene, const BackendSpec& spec, OracleCache&
       }
 
       std::vector<double> frame_times;
-      for (int rep = 0; rep < options.repetitions && m.ok(); ++rep) {
+      const int repetitions =
+          options.protocol == TimingProtocol::kRepeated ? options.repetitions : 0;
+      for (int rep = 0; rep < repetitions && m.ok(); ++rep) {
         const Clock::time_point start = Clock::now();
         Status s;
         for (const auto& [ia, ib] : candidates) {
@@ -457,7 +509,11 @@ void runSceneOnBackend(const Scene& scene, const BackendSpec& spec, OracleCache&
         record.floor_us = floorMicroseconds(true_pairs, options.repetitions);
       m.times_us.insert(m.times_us.end(), frame_times.begin(), frame_times.end());
       m.frames.push_back(record);
+      frame_candidates.push_back(candidates);
       if (options.frame_progress) options.frame_progress(++frames_done, frames_total);
+    }
+    if (options.protocol == TimingProtocol::kCycled && m.ok()) {
+      timeCycled(scene, query, objects, models, backend, frame_candidates, options.repetitions, m);
     }
     summariseMeasurement(m);
     report.measurements.push_back(std::move(m));
@@ -580,6 +636,16 @@ bool FrameRecord::disagrees(QueryKind kind) const {
   // A truncated answer is right when every pair it gives is real and some were left out.
   if (truncated) return matched_pairs != reported_pairs || reported_pairs >= oracle_pairs;
   return matched_pairs != oracle_pairs || matched_pairs != reported_pairs;
+}
+
+const char* timingProtocolName(TimingProtocol protocol) {
+  return protocol == TimingProtocol::kCycled ? "cycled" : "repeated";
+}
+
+std::optional<TimingProtocol> parseTimingProtocol(const std::string& name) {
+  if (name == "repeated") return TimingProtocol::kRepeated;
+  if (name == "cycled") return TimingProtocol::kCycled;
+  return std::nullopt;
 }
 
 void precomputeOracleAnswers(OracleCache& oracle, bool distances) {

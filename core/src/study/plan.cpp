@@ -45,6 +45,7 @@ std::string makeId(const Combination& c) {
   if (!c.scene_digest.empty() || !c.plugin_identity.empty() || c.repetitions != 0) {
     key += "\n" + c.scene_digest + "\n" + c.plugin_identity + "\n" + std::to_string(c.repetitions);
   }
+  if (!c.protocol.empty() && c.protocol != "repeated") key += "\n" + c.protocol;
   char hash[9];
   std::snprintf(hash, sizeof hash, "%08x", fingerprint(key));
   std::string readable = fileSafe(c.scene_name + "~" + c.backend);
@@ -55,10 +56,12 @@ std::string makeId(const Combination& c) {
 }  // namespace
 
 Combination withInputs(Combination c, const std::string& scene_digest,
-                       const std::string& plugin_identity, int repetitions) {
+                       const std::string& plugin_identity, int repetitions,
+                       const std::string& protocol) {
   c.scene_digest = scene_digest;
   c.plugin_identity = plugin_identity;
   c.repetitions = repetitions;
+  c.protocol = protocol;
   c.id = makeId(c);
   return c;
 }
@@ -146,6 +149,7 @@ nlohmann::json combinationToJson(const Combination& c) {
   if (!c.scene_digest.empty()) json["scene_digest"] = c.scene_digest;
   if (!c.plugin_identity.empty()) json["plugin"] = c.plugin_identity;
   if (c.repetitions != 0) json["repetitions"] = c.repetitions;
+  if (!c.protocol.empty()) json["protocol"] = c.protocol;
   return json;
 }
 
@@ -167,6 +171,7 @@ Result<Combination> combinationFromJson(const nlohmann::json& json) {
     c.scene_digest = json.value("scene_digest", std::string());
     c.plugin_identity = json.value("plugin", std::string());
     c.repetitions = json.value("repetitions", 0);
+    c.protocol = json.value("protocol", std::string());
     return c;
   } catch (const nlohmann::json::exception& e) {
     return Status(StatusCode::kInvalidArgument, std::string("combination: ") + e.what());

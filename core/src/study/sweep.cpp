@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include <collido/mesh/input_file.h>
+#include <collido/runner/runner.h>
 #include <collido/scene/json_document.h>
 
 namespace collido::study {
@@ -118,7 +119,9 @@ std::vector<double> readResolutions(const Checker& c, const Json& node, const st
 }
 
 Sweep readSweep(const Checker& c, const Json& root) {
-  c.allowKeys(root, "", {"backends", "resolutions", "needs", "limits", "repetitions", "timeout_s"});
+  c.allowKeys(
+      root, "",
+      {"backends", "resolutions", "needs", "limits", "repetitions", "timeout_s", "protocol"});
   Sweep sweep;
   if (root.contains("backends")) {
     const Json& list = c.nonEmptyArray(root.at("backends"), "/backends");
@@ -168,6 +171,13 @@ Sweep readSweep(const Checker& c, const Json& root) {
       c.fail("/repetitions", "expected a whole number from 1 to 1000000");
     }
     sweep.repetitions = value.get<int>();
+  }
+  if (root.contains("protocol")) {
+    const Json& value = root.at("protocol");
+    if (!value.is_string() || !parseTimingProtocol(value.get<std::string>())) {
+      c.fail("/protocol", R"(expected "repeated" or "cycled")");
+    }
+    sweep.protocol = value.get<std::string>();
   }
   if (root.contains("timeout_s")) {
     const Json& value = root.at("timeout_s");

@@ -38,6 +38,8 @@ Result<CombinationResult> runCombination(const WorkerRequest& request) {
 
   RunOptions options;
   options.repetitions = request.repetitions;
+  if (const std::optional<TimingProtocol> protocol = parseTimingProtocol(c.protocol))
+    options.protocol = *protocol;
   options.build_every_need = c.needs == NeedsMode::kEvery;
   options.frame_progress = request.progress;
   // The exact answers of this scene may be stored already by an earlier combination.

@@ -39,8 +39,25 @@ Result<std::vector<BackendSpec>> resolveBackends(
     const std::vector<std::shared_ptr<PluginLibrary>>& plugins);
 
 /// How a run measures.
+/// How the timed calls of a query are ordered (docs/STUDY.md, "Timing protocols").
+enum class TimingProtocol {
+  /// Per frame: one untimed call (the answer checked), then `repetitions` timed calls on that
+  /// same frame. Its data stays in cache: the best case.
+  kRepeated,
+  /// One untimed pass over every frame (answers checked), then `repetitions` passes that time one
+  /// call per frame, each on another frame than the last, as a physics step meets them;
+  /// deforming objects are updated to each frame, untimed, before its call.
+  kCycled,
+};
+
+/// "repeated" or "cycled".
+const char* timingProtocolName(TimingProtocol protocol);
+/// The protocol of that name, or nullopt.
+std::optional<TimingProtocol> parseTimingProtocol(const std::string& name);
+
 struct RunOptions {
-  int repetitions = 5;  ///< timed calls per frame and query, after one untimed warm-up call
+  int repetitions = 5;  ///< timed calls per frame and query (see `protocol`)
+  TimingProtocol protocol = TimingProtocol::kRepeated;
   /// Build every object for every query kind the backend answers, not only the ones the scene
   /// asks of it: shows what building only the needed structures saves.
   bool build_every_need = false;
@@ -138,7 +155,8 @@ struct QueryMeasurement {
   QueryKind kind = QueryKind::kBoolean;
   std::string status = "ok";  ///< "ok", or "skipped: <why>" / "failed: <why>"
   std::vector<FrameRecord> frames;
-  std::vector<double> times_us;  ///< every timed call
+  std::vector<double> times_us;       ///< every timed call
+  std::string protocol = "repeated";  ///< how they were ordered (timingProtocolName)
   double median_us = 0.0;
   double p90_us = 0.0;
   double p99_us = 0.0;

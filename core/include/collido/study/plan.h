@@ -35,6 +35,9 @@ struct Combination {
   std::string scene_digest = {};
   std::string plugin_identity = {};
   int repetitions = 0;
+  /// The timing protocol ("repeated", "cycled"; TimingProtocol); "" for studies made before
+  /// there was a choice, which timed repeated.
+  std::string protocol = {};
 
   /// "bunny_vs_bunny · obbtree[max_leaf_triangles=4] · every needs · r=0.5 · limit 16", only the
   /// parts that differ from the defaults.
@@ -45,7 +48,8 @@ struct Combination {
 
 /// `c` with its inputs set and its id made again from them.
 Combination withInputs(Combination c, const std::string& scene_digest,
-                       const std::string& plugin_identity, int repetitions);
+                       const std::string& plugin_identity, int repetitions,
+                       const std::string& protocol = "");
 
 /// A scene as the planner sees it.
 struct PlannedScene {

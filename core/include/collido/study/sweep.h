@@ -43,6 +43,8 @@ struct Sweep {
   std::vector<std::uint64_t> limits{0};
   std::optional<int> repetitions;
   std::optional<double> timeout_s;
+  /// "repeated" or "cycled" (TimingProtocol); unset: --protocol, else repeated.
+  std::optional<std::string> protocol;
 
   /// The resolutions to run `scene` at.
   const std::vector<double>& resolutionsOf(const std::string& scene) const;
