@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -36,6 +37,9 @@ using study::Combination;
 // How long a plugin may take to load (its static constructors, the engine's start-up) before it
 // counts as hanging: generous, since a cold disk can take seconds.
 constexpr double kPluginLoadTimeoutS = 30.0;
+
+// How often a running study remakes its outputs (table, records, summary) from what is stored.
+constexpr std::chrono::seconds kOutputsRefresh{30};
 
 using study::CombinationResult;
 using study::ResultStore;
@@ -441,6 +445,7 @@ int runStudy(const StudyArguments& args, const PluginOptions& plugins) {
   study::StudyProgress progress(std::cerr, todo.size(), !args.quiet && isatty(STDERR_FILENO) != 0);
   progress.setExpected(estimate.seconds);
   bool interrupted = false;
+  std::chrono::steady_clock::time_point outputs_made = std::chrono::steady_clock::now();
   for (std::size_t i = 0; i < todo.size(); ++i) {
     const Combination& c = *todo[i];
     progress.start(i, c.label());
@@ -455,8 +460,14 @@ int runStudy(const StudyArguments& args, const PluginOptions& plugins) {
       return 2;
     }
     if (!args.quiet) progress.finish(outcomeText(result));
-    Result<std::vector<CombinationResult>> all = store.readAll();
-    if (all.ok()) (void)study::writeStudyOutputs(store.directory(), all.value());
+    // The outputs are made from every stored result: remade after each combination, a study of
+    // n combinations did O(n^2) work. While it runs they are refreshed at most every 30 s (a
+    // running study can be looked at), and made once more at the end.
+    if (std::chrono::steady_clock::now() - outputs_made > kOutputsRefresh) {
+      Result<std::vector<CombinationResult>> all = store.readAll();
+      if (all.ok()) (void)study::writeStudyOutputs(store.directory(), all.value());
+      outputs_made = std::chrono::steady_clock::now();
+    }
     if (stop.requested().load()) {
       interrupted = true;
       break;
