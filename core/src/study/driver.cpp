@@ -1,0 +1,464 @@
+// The study driver: plans backends x scenes x settings, runs each combination in a worker
+// process (the collido executable in worker mode), and stores each finished combination
+// atomically, so a crash costs one combination and an interrupted study resumes where it
+// stopped. collido study and collido merge only parse their arguments and call it.
+#include <collido/study/driver.h>
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include <collido/mesh/input_file.h>
+#include <collido/runner/digest.h>
+#include <collido/study/expected_time.h>
+#include <collido/study/folder_lock.h>
+#include <collido/study/outputs.h>
+#include <collido/study/plugin_probe.h>
+#include <collido/study/progress.h>
+#include <collido/study/result_store.h>
+#include <collido/study/stop_signals.h>
+#include <collido/study/sweep.h>
+#include <collido/study/worker_process.h>
+
+namespace collido::study {
+namespace {
+
+// How often a running study remakes its outputs (table, records, summary) from what is stored.
+constexpr std::chrono::seconds kOutputsRefresh{30};
+
+// The backend settings to run: the sweep's (restricted to the variants --backends names, plus
+// any --backends entry the sweep does not mention), else --backends, else every variant found.
+std::vector<std::string> backendSettings(const StudyRequest& args, const Sweep& sweep,
+                                         const PluginProbe& found) {
+  std::vector<std::string> settings;
+  std::set<std::string> named;
+  for (const std::string& text : args.backends) {
+    Result<std::pair<std::string, std::map<std::string, std::string>>> parsed =
+        parseBackendText(text);
+    named.insert(parsed.ok() ? parsed.value().first : text);
+  }
+  std::set<std::string> swept;
+  for (const SweepBackend& backend : sweep.backends) {
+    swept.insert(backend.variant);
+    if (!named.empty() && named.count(backend.variant) == 0) continue;
+    for (const std::string& setting : backend.settings())
+      settings.push_back(setting);
+  }
+  for (const std::string& text : args.backends) {
+    Result<std::pair<std::string, std::map<std::string, std::string>>> parsed =
+        parseBackendText(text);
+    if (!parsed.ok() || swept.count(parsed.value().first) == 0) settings.push_back(text);
+  }
+  if (settings.empty() && args.backends.empty() && sweep.backends.empty())
+    settings = found.variantNames();
+  return settings;
+}
+
+// Per setting from a sweep entry with "scenes", the scenes it runs on; a setting that an
+// unrestricted entry also gives runs everywhere. Names matching no scene of the study are
+// warned about (a typo would otherwise drop the setting silently).
+std::map<std::string, std::set<std::string>> onlyScenes(const Sweep& sweep,
+                                                        const std::vector<PlannedScene>& scenes,
+                                                        std::ostream& err) {
+  std::map<std::string, std::set<std::string>> only;
+  std::set<std::string> everywhere;
+  std::set<std::string> names;
+  for (const PlannedScene& scene : scenes)
+    names.insert(scene.name);
+  for (const SweepBackend& backend : sweep.backends) {
+    for (const std::string& setting : backend.settings()) {
+      if (backend.scenes.empty()) {
+        everywhere.insert(setting);
+      } else {
+        only[setting].insert(backend.scenes.begin(), backend.scenes.end());
+      }
+    }
+    for (const std::string& scene : backend.scenes) {
+      if (names.count(scene) == 0) {
+        err << "warning: sweep: " << backend.variant << " names scene '" << scene
+            << "', which is not among the scenes studied\n";
+      }
+    }
+  }
+  for (const std::string& setting : everywhere)
+    only.erase(setting);
+  return only;
+}
+
+// Runs one combination in a worker and reads its answer back.
+CombinationResult runInWorker(const Combination& c, const ResultStore& store, int repetitions,
+                              double timeout_s, const std::string& plugin_file,
+                              const StudyRequest& request, StudyProgress& progress,
+                              const std::atomic<bool>& stop) {
+  const std::string request_path = store.scratchPath(c.id + ".request");
+  const std::string answer_path = store.scratchPath(c.id);
+  std::filesystem::remove(answer_path);
+  CombinationResult result;
+  result.combination = c;
+  if (Status s = writeFileAtomically(request_path, combinationToJson(c).dump()); !s.ok()) {
+    result.outcome.status = "failed";
+    result.outcome.log_tail = s.message();
+    return result;
+  }
+  WorkerLaunch launch;
+  launch.executable = request.executable;
+  // The worker loads only the plugin its backend comes from: another plugin that misbehaves
+  // while loading cannot cost this combination.
+  launch.arguments = {"--no-default-plugins", "--plugin",
+                      std::filesystem::absolute(plugin_file).string()};
+  for (const std::string& a :
+       {std::string("worker"), std::string("--request"), request_path, std::string("--out"),
+        answer_path, std::string("--repetitions"), std::to_string(repetitions),
+        std::string("--oracle-cache"), store.directory() + "/oracle"}) {
+    launch.arguments.push_back(a);
+  }
+  launch.environment = request.worker_environment;
+  launch.log_path = store.logPath(c.id);
+  launch.timeout_s = timeout_s;
+  launch.stop = &stop;
+  launch.on_progress = [&progress](std::size_t done, std::size_t total) {
+    progress.frames(done, total);
+  };
+  launch.on_tick = [&progress] { progress.tick(); };
+  result.outcome = runWorkerProcess(launch);
+  if (result.outcome.ok()) {
+    std::ifstream in(answer_path, std::ios::binary);
+    std::stringstream text;
+    text << in.rdbuf();
+    Result<CombinationResult> answer = Result<CombinationResult>(
+        Status(StatusCode::kInvalidArgument, answer_path + ": the worker wrote no answer"));
+    try {
+      if (in) answer = resultFromJson(nlohmann::json::parse(text.str()), answer_path);
+    } catch (const nlohmann::json::exception& e) {
+      answer = Status(StatusCode::kInvalidArgument, answer_path + ": " + e.what());
+    }
+    if (answer.ok()) {
+      result.measurements = std::move(answer.value().measurements);
+      result.problems = std::move(answer.value().problems);
+      result.backend_rss_bytes = answer.value().backend_rss_bytes;
+    } else {
+      result.outcome.status = "unfinished";
+      result.outcome.log_tail = answer.status().message();
+    }
+  }
+  std::filesystem::remove(answer_path);
+  std::filesystem::remove(request_path);
+  return result;
+}
+
+std::string outcomeText(const CombinationResult& r) {
+  if (!r.outcome.ok()) {
+    std::string text = r.outcome.status;
+    if (!r.outcome.signal_name.empty()) text += " (" + r.outcome.signal_name + ")";
+    if (r.outcome.status == "failed") text += " (exit " + std::to_string(r.outcome.exit_code) + ")";
+    return text;
+  }
+  std::size_t disagreements = 0;
+  std::size_t failed = 0;
+  for (const QueryMeasurement& m : r.measurements) {
+    disagreements += m.disagreements;
+    failed += m.status.rfind("failed", 0) == 0 ? 1 : 0;
+  }
+  std::string text = "ok in " + formatDuration(r.outcome.wall_s);
+  if (disagreements != 0) text += ", " + std::to_string(disagreements) + " wrong answers";
+  if (failed != 0) text += ", " + std::to_string(failed) + " failed queries";
+  return text;
+}
+
+// A digest of every file the scene was read from (its content, in the order read).
+Result<std::string> inputsDigest(const Scene& scene) {
+  Digest digest;
+  for (const std::string& file : scene.input_files) {
+    Result<std::string> bytes = readInputFile(file, "input file");
+    if (!bytes.ok()) return bytes.status();
+    digest.text(bytes.value());
+  }
+  return digest.hex();
+}
+
+// "obbtree 0.4, engine OBB tree 0.4": what a change of plugin or engine version shows in.
+std::string pluginIdentity(const PluginProbe& found, const std::string& backend) {
+  Result<std::pair<std::string, std::map<std::string, std::string>>> parsed =
+      parseBackendText(backend);
+  const ProbedPlugin* plugin = parsed.ok() ? found.offering(parsed.value().first) : nullptr;
+  if (plugin == nullptr) return "";
+  return plugin->name + " " + plugin->version + ", engine " + plugin->engine_name + " " +
+         plugin->engine_version;
+}
+
+// Why the same combinations (by label) now have other ids: which scenes' files, plugins or
+// repetitions changed; "" when the combinations themselves differ.
+std::string changedInputs(const std::vector<Combination>& before,
+                          const std::vector<Combination>& now) {
+  std::map<std::string, const Combination*> earlier;
+  for (const Combination& c : before)
+    earlier[c.label()] = &c;
+  if (earlier.size() != now.size()) return "";
+  std::set<std::string> scenes;
+  std::set<std::string> plugins;
+  std::set<std::string> repetitions;
+  std::set<std::string> protocols;
+  for (const Combination& c : now) {
+    const auto found = earlier.find(c.label());
+    if (found == earlier.end()) return "";
+    const Combination& old = *found->second;
+    if (old.scene_digest != c.scene_digest) scenes.insert(c.scene_name);
+    if (old.plugin_identity != c.plugin_identity) {
+      plugins.insert("'" + (old.plugin_identity.empty() ? "?" : old.plugin_identity) + "' -> '" +
+                     c.plugin_identity + "'");
+    }
+    const auto named = [](const std::string& p) { return p.empty() ? std::string("repeated") : p; };
+    if (named(old.protocol) != named(c.protocol))
+      protocols.insert(named(old.protocol) + " -> " + named(c.protocol));
+    if (old.repetitions != c.repetitions) {
+      repetitions.insert(std::to_string(old.repetitions) + " -> " + std::to_string(c.repetitions));
+    }
+  }
+  std::string text;
+  const auto add = [&text](const std::string& what, const std::set<std::string>& items) {
+    if (items.empty()) return;
+    text += (text.empty() ? "" : "; ") + what;
+    bool first = true;
+    for (const std::string& item : items) {
+      text += (first ? " " : ", ") + item;
+      first = false;
+    }
+  };
+  add("the files (scene file or meshes) of", scenes);
+  add("plugin", plugins);
+  add("repetitions", repetitions);
+  add("timing protocol", protocols);
+  return text;
+}
+
+// The plugins, each looked at by a child process (a scratch folder of its own holds their
+// answers), so that none is loaded into the driver.
+PluginProbe probeInChildren(const StudyRequest& request) {
+  const PluginCandidates candidates =
+      pluginCandidates(request.plugin_paths, request.default_plugins);
+  std::error_code ec;
+  const std::filesystem::path scratch =
+      std::filesystem::temp_directory_path(ec) / ("collido_plugins_" + std::to_string(getpid()));
+  std::filesystem::create_directories(scratch, ec);
+  PluginProbe probe =
+      probePlugins(request.executable, candidates, request.plugin_timeout_s, scratch.string());
+  std::filesystem::remove_all(scratch, ec);
+  return probe;
+}
+
+int runStudyImpl(const StudyRequest& args, std::ostream& out, std::ostream& err) {
+  Sweep sweep;
+  if (!args.sweep_path.empty()) {
+    Result<Sweep> loaded = loadSweep(args.sweep_path);
+    if (!loaded.ok()) {
+      err << "error: " << loaded.status().message() << "\n";
+      return 2;
+    }
+    sweep = std::move(loaded).value();
+  }
+  std::vector<PlannedScene> scenes;
+  std::map<std::string, std::string> scene_digests;  // by the planned path
+  for (const std::string& path : args.scenes) {
+    Result<Scene> scene = loadScene(path);
+    if (!scene.ok()) {
+      err << "error: " << scene.status().message() << "\n";
+      return 2;
+    }
+    scenes.push_back({std::filesystem::absolute(path).lexically_normal().string(),
+                      scene.value().name, scene.value().hasGeneratedShapes(),
+                      scene.value().category});
+    Result<std::string> digest = inputsDigest(scene.value());
+    if (!digest.ok()) {
+      err << "error: " << digest.status().message() << "\n";
+      return 2;
+    }
+    scene_digests[scenes.back().path] = digest.value();
+  }
+  const PluginProbe found = probeInChildren(args);
+  for (const std::string& problem : found.problems)
+    err << "warning: " << problem << "\n";
+  const std::vector<std::string> settings = backendSettings(args, sweep, found);
+  Result<std::vector<std::string>> plugin_files = pluginFilesOf(settings, found);
+  if (!plugin_files.ok()) {
+    err << "error: " << plugin_files.status().message() << "\n";
+    return 2;
+  }
+  std::map<std::string, std::string> plugin_file_of;
+  for (std::size_t i = 0; i < settings.size(); ++i)
+    plugin_file_of[settings[i]] = plugin_files.value()[i];
+  if (settings.empty()) {
+    err << "error: no backends to run (build the plugins or pass --plugin)\n";
+    return 2;
+  }
+  std::size_t shard_index = 0;
+  std::size_t shard_count = 1;
+  if (!args.shard.empty()) {
+    Result<std::pair<std::size_t, std::size_t>> shard = parseShard(args.shard);
+    if (!shard.ok()) {
+      err << "error: " << shard.status().message() << "\n";
+      return 2;
+    }
+    std::tie(shard_index, shard_count) = shard.value();
+  }
+  const int repetitions = args.repetitions > 0 ? args.repetitions : sweep.repetitions.value_or(5);
+  const double timeout_s = args.timeout_s > 0 ? args.timeout_s : sweep.timeout_s.value_or(600.0);
+  const std::string protocol =
+      !args.protocol.empty() ? args.protocol : sweep.protocol.value_or("repeated");
+  std::vector<Combination> whole =
+      planStudy(scenes, settings, sweep, onlyScenes(sweep, scenes, err));
+  for (Combination& c : whole) {
+    const std::string& digest = scene_digests.at(c.scene_path);
+    const std::string identity = pluginIdentity(found, c.backend);
+    c = withInputs(std::move(c), digest, identity, repetitions, protocol);
+  }
+  const std::vector<Combination> plan = shardOf(whole, shard_index, shard_count);
+
+  // One driver per folder: a second one on the same --out would delete the first one's scratch
+  // files and store results under its plan. Held until this function returns.
+  Result<FolderLock> lock = FolderLock::acquire(args.out);
+  if (!lock.ok()) {
+    err << "error: " << lock.status().message() << "\n";
+    return 2;
+  }
+  const ResultStore store(args.out);
+  Result<std::vector<Combination>> stored_plan = store.readPlan();
+  if (!stored_plan.ok()) {
+    err << "error: " << stored_plan.status().message() << "\n";
+    return 2;
+  }
+  if (!stored_plan.value().empty()) {
+    if (!args.resume) {
+      err << "error: " << args.out
+          << " already holds a study; pass --resume to continue it, or another --out\n";
+      return 2;
+    }
+    std::set<std::string> before;
+    for (const Combination& c : stored_plan.value())
+      before.insert(c.id);
+    std::set<std::string> now;
+    for (const Combination& c : plan)
+      now.insert(c.id);
+    if (before != now) {
+      const std::string changed = changedInputs(stored_plan.value(), plan);
+      if (!changed.empty()) {
+        err << "error: " << args.out << ": the inputs changed since this study started (" << changed
+            << "); its stored results would mix with new ones. Start it afresh in another "
+               "--out, or remove the folder\n";
+      } else {
+        err << "error: " << args.out
+            << " holds a different study (other scenes, backends, sweep or shard); resume "
+               "with the same arguments, or choose another --out\n";
+      }
+      return 2;
+    }
+  }
+  if (Status s = store.prepare(); !s.ok()) {
+    err << "error: " << s.message() << "\n";
+    return 2;
+  }
+  if (Status s = store.writePlan(plan); !s.ok()) {
+    err << "error: " << s.message() << "\n";
+    return 2;
+  }
+
+  std::vector<const Combination*> todo;
+  for (const Combination& c : plan) {
+    if (args.resume && store.has(c.id)) {
+      if (!args.retry_failed) continue;
+      std::ifstream in(store.resultPath(c.id));
+      std::stringstream text;
+      text << in.rdbuf();
+      try {
+        Result<CombinationResult> stored =
+            resultFromJson(nlohmann::json::parse(text.str()), store.resultPath(c.id));
+        if (stored.ok() && stored.value().outcome.ok()) continue;
+      } catch (const nlohmann::json::exception&) {
+        // unreadable: run it again
+      }
+    }
+    todo.push_back(&c);
+  }
+  CombinationTimes times;
+  if (!args.expected_times.empty()) {
+    Result<CombinationTimes> loaded = loadCombinationTimes(args.expected_times);
+    if (loaded.ok()) {
+      times = std::move(loaded).value();
+    } else {  // an estimate is a courtesy: without one the study still runs
+      err << "warning: " << loaded.status().message() << "; no expected time\n";
+    }
+  }
+  const TimeEstimate estimate = estimateTimes(todo, times);
+  err << startLine(plan.size(), todo.size(), estimate, shard_count > 1 ? args.shard : "", args.out)
+      << "\n";
+
+  // Ctrl-C, SIGTERM or a lost session stops the running worker; what finished stays stored.
+  const StopOnSignals stop;
+  StudyProgress progress(err, todo.size(), !args.quiet && args.interactive);
+  progress.setExpected(estimate.seconds);
+  bool interrupted = false;
+  std::chrono::steady_clock::time_point outputs_made = std::chrono::steady_clock::now();
+  for (std::size_t i = 0; i < todo.size(); ++i) {
+    const Combination& c = *todo[i];
+    progress.start(i, c.label());
+    CombinationResult result =
+        runInWorker(c, store, repetitions, timeout_s, plugin_file_of.at(c.backend), args, progress,
+                    stop.requested());
+    if (result.outcome.status == "interrupted") {
+      interrupted = true;
+      break;
+    }
+    if (Status s = store.write(result); !s.ok()) {
+      err << "\nerror: " << s.message() << "\n";
+      return 2;
+    }
+    if (!args.quiet) progress.finish(outcomeText(result));
+    // The outputs are made from every stored result: remade after each combination, a study of
+    // n combinations did O(n^2) work. While it runs they are refreshed at most every 30 s (a
+    // running study can be looked at), and made once more at the end.
+    if (std::chrono::steady_clock::now() - outputs_made > kOutputsRefresh) {
+      Result<std::vector<CombinationResult>> all = store.readAll();
+      if (all.ok()) (void)writeStudyOutputs(store.directory(), all.value());
+      outputs_made = std::chrono::steady_clock::now();
+    }
+    if (stop.requested().load()) {
+      interrupted = true;
+      break;
+    }
+  }
+
+  Result<std::vector<CombinationResult>> all = store.readAll();
+  if (!all.ok()) {
+    err << "error: " << all.status().message() << "\n";
+    return 2;
+  }
+  if (Status s = writeStudyOutputs(store.directory(), all.value()); !s.ok()) {
+    err << "error: " << s.message() << "\n";
+    return 2;
+  }
+  if (interrupted) {
+    err << "\nstudy interrupted: " << all.value().size() << " of " << plan.size()
+        << " combinations are stored; continue with the same command and --resume\n";
+    return 130;
+  }
+  out << studyTable(all.value());
+  const bool robustness =
+      std::filesystem::exists(std::filesystem::path(store.directory()) / "robustness.txt");
+  err << "results: " << store.directory() << "/{table.txt,records.jsonl,summary.json"
+      << (robustness ? ",robustness.txt" : "") << "}\n";
+  return 0;
+}
+
+}  // namespace
+
+int runStudy(const StudyRequest& request, std::ostream& out, std::ostream& err) {
+  return runStudyImpl(request, out, err);
+}
+
+}  // namespace collido::study
