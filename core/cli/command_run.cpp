@@ -102,7 +102,7 @@ int run(const RunArguments& args, const PluginOptions& plugin_options) {
   bool failed = !report.problems.empty();
   bool disagreed = false;
   for (const QueryMeasurement& m : report.measurements) {
-    failed = failed || m.status.rfind("failed", 0) == 0;
+    failed = failed || m.status.failed();
     disagreed = disagreed || m.disagreements != 0;
   }
   if (failed) return 1;

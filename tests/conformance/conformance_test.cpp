@@ -465,8 +465,8 @@ TEST_P(SceneAnswers, MatchTheOracleOrTheRecordedExpectations) {
   std::string skipped;
   std::string recorded;
   for (const QueryMeasurement& m : report.measurements) {
-    if (m.status.rfind("skipped", 0) == 0) {
-      skipped += (skipped.empty() ? "" : "; ") + m.query + " " + m.status;
+    if (m.status.skipped()) {
+      skipped += (skipped.empty() ? "" : "; ") + m.query + " " + m.status.text();
       continue;
     }
     ASSERT_TRUE(m.ok()) << m.query << ": " << m.status;

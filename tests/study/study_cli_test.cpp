@@ -339,8 +339,8 @@ TEST(StudyCli, ExitThrowAndWrongAnswersAreRecorded) {
   EXPECT_EQ(threw.outcome.status, "ok");
   ASSERT_EQ(threw.measurements.size(), 2u);
   for (const QueryMeasurement& m : threw.measurements) {
-    EXPECT_EQ(m.status.rfind("failed: ", 0), 0u) << m.status;
-    EXPECT_NE(m.status.find("throws on purpose"), std::string::npos) << m.status;
+    EXPECT_TRUE(m.status.failed()) << m.status;
+    EXPECT_NE(m.status.reason().find("throws on purpose"), std::string::npos) << m.status;
   }
 
   const CombinationResult& wrong = results["misbehaving:wrong"];

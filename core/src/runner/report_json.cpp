@@ -84,7 +84,7 @@ Json measurementToJson(const QueryMeasurement& m) {
           {"scene", m.scene},
           {"query", m.query},
           {"kind", queryKindName(m.kind)},
-          {"status", m.status},
+          {"status", m.status.text()},
           {"median_us", m.median_us},
           {"p90_us", m.p90_us},
           {"p99_us", m.p99_us},
@@ -130,7 +130,7 @@ Result<QueryMeasurement> measurementFromJson(const Json& j) {
     const std::optional<QueryKind> parsed = parseQueryKind(kind);
     if (!parsed) return Status(StatusCode::kInvalidArgument, "unknown query kind '" + kind + "'");
     m.kind = *parsed;
-    m.status = j.at("status").get<std::string>();
+    m.status = MeasurementStatus::fromText(j.at("status").get<std::string>());
     m.counts_bv_tests = j.value("counts_bv_tests", false);
     m.counts_primitive_tests = j.value("counts_primitive_tests", false);
     m.build_ms = j.at("build_ms").get<double>();

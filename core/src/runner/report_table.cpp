@@ -33,8 +33,8 @@ std::string formatRunTable(const RunReport& report) {
                               : std::string()));
     }
     if (!m.ok()) {
-      notes.push_back(m.backend + " / " + m.scene + " / " + m.query + ": " + m.status);
-      rows.push_back({m.backend, m.scene, m.query, m.status.substr(0, m.status.find(':'))});
+      notes.push_back(m.backend + " / " + m.scene + " / " + m.query + ": " + m.status.text());
+      rows.push_back({m.backend, m.scene, m.query, m.status.skipped() ? "skipped" : "failed"});
       continue;
     }
     if (m.max_distance_error) {

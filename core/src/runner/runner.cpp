@@ -248,8 +248,8 @@ void timeCycled(const Scene& scene, const SceneQuery& query,
         if (Status s =
                 backend.update(modelAt(i), scene.objects[i].shapeAt(frame)->vertices, nullptr);
             !s.ok()) {
-          m.status = "failed: frame " + std::to_string(frame) + ": update " +
-                     scene.objects[i].name + ": " + s.toString();
+          m.status = MeasurementStatus::failed("frame " + std::to_string(frame) + ": update " +
+                                               scene.objects[i].name + ": " + s.toString());
         }
       }
       if (!m.ok()) break;
@@ -262,7 +262,8 @@ void timeCycled(const Scene& scene, const SceneQuery& query,
       }
       const Clock::time_point stop = Clock::now();
       if (!s.ok()) {
-        m.status = "failed: frame " + std::to_string(frame) + ": " + s.toString();
+        m.status =
+            MeasurementStatus::failed("frame " + std::to_string(frame) + ": " + s.toString());
         break;
       }
       times[k].push_back(microseconds(stop - start));
@@ -277,7 +278,7 @@ void timeCycled(const Scene& scene, const SceneQuery& query,
 void runSceneOnBackend(const Scene& scene, const BackendSpec& spec, OracleCache& oracle,
                        OracleCache* finest_oracle, const RunOptions& options, RunReport& report) {
   const std::string label = spec.label();
-  const auto record_all = [&](const std::string& status) {
+  const auto record_all = [&](const MeasurementStatus& status) {
     for (const SceneQuery& q : scene.queries) {
       QueryMeasurement m;
       m.backend = label;
@@ -292,7 +293,7 @@ void runSceneOnBackend(const Scene& scene, const BackendSpec& spec, OracleCache&
       BackendInstance::create(spec.library, spec.variant, spec.options);
   if (!created.ok()) {
     report.problems.push_back(created.status().message());
-    record_all("failed: " + created.status().message());
+    record_all(MeasurementStatus::failed(created.status().message()));
     return;
   }
   BackendInstance& backend = *created.value();
@@ -343,21 +344,22 @@ void runSceneOnBackend(const Scene& scene, const BackendSpec& spec, OracleCache&
     m.kind = query.request.kind;
     m.protocol = timingProtocolName(options.protocol);
     if (!builds_meshes) {
-      m.status =
-          "skipped: " + label + " builds no triangle meshes (the scene's objects are meshes)";
+      m.status = MeasurementStatus::skipped(
+          label + " builds no triangle meshes (the scene's objects are meshes)");
       report.measurements.push_back(m);
       continue;
     }
     if (!caps.queries.contains(query.request.kind)) {
-      m.status = std::string("skipped: ") + label + " does not answer " +
-                 queryKindName(query.request.kind) + " queries";
+      m.status = MeasurementStatus::skipped(label + " does not answer " +
+                                            queryKindName(query.request.kind) + " queries");
       report.measurements.push_back(m);
       continue;
     }
     const std::vector<std::size_t> objects = query.objects();
     const auto deforms = [&](std::size_t i) { return scene.objects[i].deformation != nullptr; };
     if (!caps.update && std::any_of(objects.begin(), objects.end(), deforms)) {
-      m.status = "skipped: " + label + " does not update models (the scene deforms an object)";
+      m.status = MeasurementStatus::skipped(
+          label + " does not update models (the scene deforms an object)");
       report.measurements.push_back(m);
       continue;
     }
@@ -368,7 +370,7 @@ void runSceneOnBackend(const Scene& scene, const BackendSpec& spec, OracleCache&
       }
     }
     if (!build_error.empty()) {
-      m.status = "failed: build: " + build_error;
+      m.status = MeasurementStatus::failed("build: " + build_error);
       report.measurements.push_back(m);
       continue;
     }
@@ -422,8 +424,8 @@ void runSceneOnBackend(const Scene& scene, const BackendSpec& spec, OracleCache&
         const Status s = backend.update(modelAt(i), shapes[i]->vertices, &work);
         const Clock::time_point stop = Clock::now();
         if (!s.ok()) {
-          m.status = "failed: frame " + std::to_string(frame) + ": update " +
-                     scene.objects[i].name + ": " + s.toString();
+          m.status = MeasurementStatus::failed("frame " + std::to_string(frame) + ": update " +
+                                               scene.objects[i].name + ": " + s.toString());
           break;
         }
         record.update_us = record.update_us.value_or(0.0) + microseconds(stop - start);
@@ -442,7 +444,8 @@ void runSceneOnBackend(const Scene& scene, const BackendSpec& spec, OracleCache&
       std::vector<WorldTrianglePair> true_pairs;
       for (const auto& [ia, ib] : candidates) {
         if (Status s = ask(ia, ib); !s.ok()) {
-          m.status = "failed: frame " + std::to_string(frame) + ": " + s.toString();
+          m.status =
+              MeasurementStatus::failed("frame " + std::to_string(frame) + ": " + s.toString());
           break;
         }
         const SceneObject& a = scene.objects[ia];
@@ -499,7 +502,8 @@ void runSceneOnBackend(const Scene& scene, const BackendSpec& spec, OracleCache&
         }
         const Clock::time_point stop = Clock::now();
         if (!s.ok()) {
-          m.status = "failed: frame " + std::to_string(frame) + ": " + s.toString();
+          m.status =
+              MeasurementStatus::failed("frame " + std::to_string(frame) + ": " + s.toString());
           break;
         }
         frame_times.push_back(microseconds(stop - start));

@@ -105,7 +105,7 @@ std::string viewAnswersJson(const Scene& scene, const RunReport& report,
     }
     queries.push_back({{"name", m.query},
                        {"kind", queryKindName(m.kind)},
-                       {"status", m.status},
+                       {"status", m.status.text()},
                        {"disagreements", m.disagreements},
                        {"frames", std::move(frames)}});
   }

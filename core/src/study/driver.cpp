@@ -164,7 +164,7 @@ std::string outcomeText(const CombinationResult& r) {
   std::size_t failed = 0;
   for (const QueryMeasurement& m : r.measurements) {
     disagreements += m.disagreements;
-    failed += m.status.rfind("failed", 0) == 0 ? 1 : 0;
+    failed += m.status.failed() ? 1 : 0;
   }
   std::string text = "ok in " + formatDuration(r.outcome.wall_s);
   if (disagreements != 0) text += ", " + std::to_string(disagreements) + " wrong answers";

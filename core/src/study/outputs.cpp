@@ -174,9 +174,9 @@ std::string studyTable(const std::vector<CombinationResult>& results) {
     for (const QueryMeasurement& m : tableMeasurements(r)) {
       if (!m.ok()) {
         rows.push_back({c.backend, c.settingText(), c.scene_name, m.query,
-                        m.status.substr(0, m.status.find(':'))});
-        if (m.status.rfind("failed", 0) == 0)
-          failures.push_back(c.label() + " / " + m.query + ": " + m.status);
+                        m.status.skipped() ? "skipped" : "failed"});
+        if (m.status.failed())
+          failures.push_back(c.label() + " / " + m.query + ": " + m.status.text());
         continue;
       }
       const bool pairs = m.kind == QueryKind::kAllPairs;

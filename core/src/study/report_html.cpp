@@ -53,7 +53,7 @@ Json row(const CombinationResult& r, const QueryMeasurement& m) {
           {"limit", c.limit},
           {"query", m.query},
           {"kind", queryKindName(m.kind)},
-          {"status", m.status},
+          {"status", m.status.text()},
           {"frames", m.frames.size()},
           {"median_us", m.median_us},
           {"p90_us", m.p90_us},
@@ -120,8 +120,8 @@ Json failuresOf(const std::vector<CombinationResult>& results) {
     }
     for (const QueryMeasurement& m : tableMeasurements(r)) {
       std::string what;
-      std::string detail = m.status;
-      if (m.status.rfind("skipped", 0) == 0) {
+      std::string detail = m.status.text();
+      if (m.status.skipped()) {
         what = "unsupported";
       } else if (!m.ok()) {
         what = "failed";

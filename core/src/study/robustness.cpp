@@ -146,12 +146,12 @@ std::vector<QueryMeasurement> tableMeasurements(const CombinationResult& result)
     const std::size_t i = static_cast<std::size_t>(found - merged.begin());
     QueryMeasurement& all = *found;
     ++cases[i];
-    if (m.status.rfind("failed", 0) == 0) {
-      if (failed[i]++ == 0) first_failure[i] = m.query + ": " + m.status;
+    if (m.status.failed()) {
+      if (failed[i]++ == 0) first_failure[i] = m.query + ": " + m.status.text();
     }
     // A skipped kind is skipped for every case alike; a measured one keeps "ok" unless one
     // case failed (said below).
-    if (m.ok()) all.status = "ok";
+    if (m.ok()) all.status = MeasurementStatus();
     for (FrameRecord f : m.frames) {
       f.frame = all.frames.size();
       all.frames.push_back(f);
@@ -177,8 +177,9 @@ std::vector<QueryMeasurement> tableMeasurements(const CombinationResult& result)
     QueryMeasurement& all = merged[i];
     all.query = std::string(queryKindName(all.kind)) + ", " + std::to_string(cases[i]) + " cases";
     if (failed[i] != 0) {
-      all.status = "failed: " + std::to_string(failed[i]) + " of " + std::to_string(cases[i]) +
-                   " cases, first " + first_failure[i];
+      all.status =
+          MeasurementStatus::failed(std::to_string(failed[i]) + " of " + std::to_string(cases[i]) +
+                                    " cases, first " + first_failure[i]);
     }
     summariseMeasurement(all);
   }
@@ -258,7 +259,7 @@ std::vector<RobustnessCell> robustnessMatrix(const std::vector<CombinationResult
                                    : m.kind == QueryKind::kAllPairs ? cell.all_pairs
                                                                     : cell.distance;
       if (m.kind == QueryKind::kBoolean) ++cell.cases;
-      if (m.status.rfind("skipped", 0) == 0) {
+      if (m.status.skipped()) {
         ++answers.unsupported;
       } else if (!m.ok()) {
         ++answers.failed;

@@ -154,7 +154,7 @@ TEST(StudyTable, NoSavingsWithoutAPairAndNoFailuresWhenAllFinish) {
 
 TEST(StudyTable, FailedQueriesAreListedAsFailures) {
   CombinationResult r = testdata::okResult(testdata::combination("ode"));
-  r.measurements[1].status = "failed: frame 0: engine failure: out of cheese";
+  r.measurements[1].status = MeasurementStatus::failed("frame 0: engine failure: out of cheese");
   const std::string table = studyTable({r});
   const std::size_t failures = table.find("\nFailures:\n");
   ASSERT_NE(failures, std::string::npos) << table;

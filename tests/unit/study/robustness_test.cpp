@@ -70,7 +70,7 @@ CombinationResult answering(const Combination& c, const Answer (&booleans)[3],
     } else {
       QueryMeasurement skipped = measurement(c.backend, i, QueryKind::kAllPairs, pairs[i]);
       skipped.frames.clear();
-      skipped.status = "skipped: " + c.backend + " does not answer all_pairs queries";
+      skipped.status = MeasurementStatus::skipped(c.backend + " does not answer all_pairs queries");
       r.measurements.push_back(skipped);
     }
     r.measurements.push_back(measurement(c.backend, i, QueryKind::kBoolean, booleans[i]));
@@ -239,13 +239,13 @@ TEST(TableMeasurements, OneMeasurementPerKindForStressScenes) {
 
   const std::vector<QueryMeasurement> ode = tableMeasurements(results[3]);
   ASSERT_EQ(ode.size(), 2u);
-  EXPECT_EQ(ode[0].status.rfind("skipped", 0), 0u) << ode[0].status;
+  EXPECT_TRUE(ode[0].status.skipped()) << ode[0].status;
   EXPECT_TRUE(ode[1].ok());
 
   CombinationResult one_failed = results[0];
-  one_failed.measurements[1].status = "failed: frame 0: engine failure";
+  one_failed.measurements[1].status = MeasurementStatus::failed("frame 0: engine failure");
   const std::vector<QueryMeasurement> failed = tableMeasurements(one_failed);
-  EXPECT_EQ(failed[1].status.rfind("failed: 1 of 3 cases", 0), 0u) << failed[1].status;
+  EXPECT_EQ(failed[1].status.text().rfind("failed: 1 of 3 cases", 0), 0u) << failed[1].status;
 
   // Ordinary scenes are shown query by query, as measured.
   const CombinationResult ordinary = testdata::okResult(testdata::combination("obbtree"));

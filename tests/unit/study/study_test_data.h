@@ -103,7 +103,7 @@ inline QueryMeasurement skippedMeasurement(const std::string& backend) {
   m.scene = "tori";
   m.query = "all_pairs";
   m.kind = QueryKind::kAllPairs;
-  m.status = "skipped: " + backend + " does not answer all_pairs queries";
+  m.status = MeasurementStatus::skipped(backend + " does not answer all_pairs queries");
   summariseMeasurement(m);
   return m;
 }

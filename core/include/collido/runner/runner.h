@@ -14,6 +14,7 @@
 #include <collido/oracle/exact_oracle.h>
 #include <collido/query.h>
 #include <collido/runner/contact_score.h>
+#include <collido/runner/measurement_status.h>
 #include <collido/scene/scene.h>
 
 namespace collido {
@@ -153,7 +154,7 @@ struct QueryMeasurement {
   std::string scene;
   std::string query;
   QueryKind kind = QueryKind::kBoolean;
-  std::string status = "ok";  ///< "ok", or "skipped: <why>" / "failed: <why>"
+  MeasurementStatus status;  ///< ok, skipped (by design) or failed, with the reason
   std::vector<FrameRecord> frames;
   std::vector<double> times_us;       ///< every timed call
   std::string protocol = "repeated";  ///< how they were ordered (timingProtocolName)
@@ -202,7 +203,7 @@ struct QueryMeasurement {
   std::optional<std::uint64_t> heap_allocations;  ///< objects queried, calls in build (hooks)
   std::string heap_probe;                         ///< which probe measured: heapProbeName()
 
-  bool ok() const { return status == "ok"; }
+  bool ok() const { return status.ok(); }
 };
 
 /// Everything a run measured.
