@@ -28,6 +28,7 @@ if $full; then
   out=build/release/study_full
   scenes=(scenes/*.json scenes/stress/*.json)
   sweep=scenes/sweeps/broad.json
+  times=scenes/sweeps/broad.times.json
   frep_resolutions=16,32,64,128
 else
   out=build/release/study
@@ -37,12 +38,13 @@ else
           scenes/station_docking{,_clearance,_tracked}.json
           scenes/{deforming_tori,sheet_over_bunny}.json scenes/scaling_spheres.json)
   sweep=scenes/sweeps/default.json
+  times=scenes/sweeps/default.times.json
   frep_resolutions=16,32,64
 fi
 previous=$out.previous
-# The expected time comes from the last run's wall times, else from the times measured for the
-# default study on a 2-core machine (scenes/sweeps/default.times.json).
-expected=scenes/sweeps/default.times.json
+# The expected time comes from the last run's wall times, else from those measured for this sweep
+# on a 2-core machine (scenes/sweeps/*.times.json).
+expected=$times
 if [[ -f "$previous/times.json" ]]; then expected=$previous/times.json; fi
 study=(build/release/collido study "${scenes[@]}" --sweep "$sweep" --out "$out"
        --expected-times "$expected")
