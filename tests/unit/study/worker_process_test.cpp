@@ -177,9 +177,9 @@ TEST(RunWorkerProcess, StopRequestKillsTheWorkerAsInterrupted) {
 TEST(RunWorkerProcess, AWorkerDiesWithItsDriver) {
   const std::string dir = test::makeTempDirectory("worker_orphan");
   const std::string pid_file = dir + "/worker.pid";
-  WorkerLaunch launch = shell("echo $$ > " + pid_file + ".part; mv " + pid_file + ".part " +
-                                  pid_file + "; exec sleep 30",
-                              "worker_orphan");
+  WorkerLaunch launch = shell(
+      "echo $$ > " + pid_file + ".part; mv " + pid_file + ".part " + pid_file + "; exec sleep 30",
+      "worker_orphan");
   const pid_t driver = fork();
   if (driver == 0) {
     (void)runWorkerProcess(launch);
