@@ -226,6 +226,18 @@ void say(const RunOptions& options, const std::string& line) {
   if (options.progress) options.progress(line);
 }
 
+// One timed call of a frame: every candidate object pair asked once, in microseconds, or the
+// failure that stopped it. Both timing protocols time frames this way.
+template <typename Ask>
+Result<double> timeFrameCall(const std::vector<std::pair<std::size_t, std::size_t>>& candidates,
+                             const Ask& ask) {
+  const Clock::time_point start = Clock::now();
+  for (const auto& [ia, ib] : candidates) {
+    if (Status s = ask(ia, ib); !s.ok()) return s;
+  }
+  return microseconds(Clock::now() - start);
+}
+
 // The cycled protocol's timed passes: each pass asks every frame once, in order, so that no
 // call finds the previous one's data in cache. A deforming object is updated to each frame
 // first, untimed. Each frame's median is over its calls; times_us holds every call.
@@ -253,20 +265,16 @@ void timeCycled(const Scene& scene, const SceneQuery& query,
         }
       }
       if (!m.ok()) break;
-      const Clock::time_point start = Clock::now();
-      Status s;
-      for (const auto& [ia, ib] : candidates[k]) {
-        s = backend.query(modelAt(ia), scene.objects[ia].poseAt(frame), modelAt(ib),
-                          scene.objects[ib].poseAt(frame), query.request, result);
-        if (!s.ok()) break;
-      }
-      const Clock::time_point stop = Clock::now();
-      if (!s.ok()) {
-        m.status =
-            MeasurementStatus::failed("frame " + std::to_string(frame) + ": " + s.toString());
+      const Result<double> took = timeFrameCall(candidates[k], [&](std::size_t ia, std::size_t ib) {
+        return backend.query(modelAt(ia), scene.objects[ia].poseAt(frame), modelAt(ib),
+                             scene.objects[ib].poseAt(frame), query.request, result);
+      });
+      if (!took.ok()) {
+        m.status = MeasurementStatus::failed("frame " + std::to_string(frame) + ": " +
+                                             took.status().toString());
         break;
       }
-      times[k].push_back(microseconds(stop - start));
+      times[k].push_back(took.value());
     }
   }
   for (std::size_t k = 0; k < m.frames.size(); ++k) {
@@ -494,19 +502,13 @@ void runSceneOnBackend(const Scene& scene, const BackendSpec& spec, OracleCache&
       const int repetitions =
           options.protocol == TimingProtocol::kRepeated ? options.repetitions : 0;
       for (int rep = 0; rep < repetitions && m.ok(); ++rep) {
-        const Clock::time_point start = Clock::now();
-        Status s;
-        for (const auto& [ia, ib] : candidates) {
-          s = ask(ia, ib);
-          if (!s.ok()) break;
-        }
-        const Clock::time_point stop = Clock::now();
-        if (!s.ok()) {
-          m.status =
-              MeasurementStatus::failed("frame " + std::to_string(frame) + ": " + s.toString());
+        const Result<double> took = timeFrameCall(candidates, ask);
+        if (!took.ok()) {
+          m.status = MeasurementStatus::failed("frame " + std::to_string(frame) + ": " +
+                                               took.status().toString());
           break;
         }
-        frame_times.push_back(microseconds(stop - start));
+        frame_times.push_back(took.value());
       }
       record.median_us = quantile(frame_times, 0.5);
       if (query.request.kind == QueryKind::kAllPairs && m.ok())
