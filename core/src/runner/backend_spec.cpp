@@ -45,6 +45,15 @@ Result<std::pair<std::string, std::map<std::string, std::string>>> parseBackendT
   return out;
 }
 
+Status unknownBackend(const std::string& variant, const std::vector<std::string>& known) {
+  std::string list;
+  for (const std::string& name : known)
+    list += (list.empty() ? "" : ", ") + name;
+  return Status(
+      StatusCode::kInvalidArgument,
+      "no plugin offers backend '" + variant + "' (found: " + (list.empty() ? "none" : list) + ")");
+}
+
 Result<std::vector<BackendSpec>> resolveBackends(
     const std::vector<std::string>& texts,
     const std::vector<std::shared_ptr<PluginLibrary>>& plugins) {
@@ -58,14 +67,12 @@ Result<std::vector<BackendSpec>> resolveBackends(
       return plugin->hasVariant(variant);
     });
     if (found == plugins.end()) {
-      std::string known;
+      std::vector<std::string> known;
       for (const auto& plugin : plugins) {
         for (const VariantInfo& v : plugin->variants())
-          known += (known.empty() ? "" : ", ") + v.name;
+          known.push_back(v.name);
       }
-      return Status(StatusCode::kInvalidArgument,
-                    "no plugin offers backend '" + variant +
-                        "' (found: " + (known.empty() ? "none" : known) + ")");
+      return unknownBackend(variant, known);
     }
     specs.push_back(BackendSpec{*found, variant, options});
   }

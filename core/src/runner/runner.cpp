@@ -182,6 +182,14 @@ void addAnswer(const FrameRecord& one, FrameRecord& frame) {
   }
 }
 
+// The object pairs a query asks in `frame`: its pair, or those of a group the shared broad phase
+// keeps. The run and the oracle's precomputation must ask the same ones.
+std::vector<std::pair<std::size_t, std::size_t>> objectPairsAt(
+    const std::optional<BroadPhase>& broad_phase, const SceneQuery& query, std::size_t frame) {
+  if (broad_phase) return broad_phase->pairsAt(frame);
+  return {{query.a, query.b}};
+}
+
 // Whether another version of the scene (the finest meshes, the true poses) intersects in
 // `frame`: for a group query, whether any pair does (that scene's own broad phase picks the
 // candidates).
@@ -414,8 +422,7 @@ void runSceneOnBackend(const Scene& scene, const BackendSpec& spec, OracleCache&
     std::vector<std::vector<std::pair<std::size_t, std::size_t>>> frame_candidates;
     for (std::size_t frame = 0; frame < scene.frames && m.ok(); ++frame) {
       const std::vector<std::pair<std::size_t, std::size_t>> candidates =
-          broad_phase ? broad_phase->pairsAt(frame)
-                      : std::vector<std::pair<std::size_t, std::size_t>>{{query.a, query.b}};
+          objectPairsAt(broad_phase, query, frame);
       FrameRecord record;
       record.frame = frame;
       record.object_pairs = candidates.size();
@@ -662,8 +669,7 @@ void precomputeOracleAnswers(OracleCache& oracle, bool distances) {
     const bool distance = distances && query.request.kind == QueryKind::kDistance;
     for (std::size_t frame = 0; frame < scene.frames; ++frame) {
       const std::vector<std::pair<std::size_t, std::size_t>> candidates =
-          broad_phase ? broad_phase->pairsAt(frame)
-                      : std::vector<std::pair<std::size_t, std::size_t>>{{query.a, query.b}};
+          objectPairsAt(broad_phase, query, frame);
       for (const auto& [ia, ib] : candidates)
         (void)oracle.get(ia, ib, frame, distance);
     }

@@ -136,14 +136,7 @@ Result<std::vector<std::string>> pluginFilesOf(const std::vector<std::string>& b
         parseBackendText(text);
     if (!parsed.ok()) return parsed.status();
     const ProbedPlugin* plugin = probe.offering(parsed.value().first);
-    if (plugin == nullptr) {
-      std::string known;
-      for (const std::string& name : probe.variantNames())
-        known += (known.empty() ? "" : ", ") + name;
-      return Status(StatusCode::kInvalidArgument,
-                    "no plugin offers backend '" + parsed.value().first +
-                        "' (found: " + (known.empty() ? "none" : known) + ")");
-    }
+    if (plugin == nullptr) return unknownBackend(parsed.value().first, probe.variantNames());
     files.push_back(plugin->path);
   }
   return files;

@@ -33,6 +33,9 @@ struct BackendSpec {
 Result<std::pair<std::string, std::map<std::string, std::string>>> parseBackendText(
     const std::string& text);
 
+/// The error for a backend variant no plugin offers, listing the `known` ones.
+Status unknownBackend(const std::string& variant, const std::vector<std::string>& known);
+
 /// Picks, for each text, the plugin offering that variant. Errors name the unknown variant and
 /// list the known ones.
 Result<std::vector<BackendSpec>> resolveBackends(
