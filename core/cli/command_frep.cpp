@@ -16,6 +16,7 @@
 #include <collido/runner/runner.h>
 #include <collido/runner/statistics.h>
 #include <collido/runner/text_table.h>
+#include <collido/runner/timed_calls.h>
 #include <collido/scene/frep_file.h>
 #include <collido/study/result_store.h>
 
@@ -129,11 +130,13 @@ int runFrep(const FrepArguments& args, const PluginOptions& plugin_options) {
       std::vector<double> ms;
       frep::CollisionResult result;
       try {
-        for (int rep = 0; rep < args.repetitions; ++rep) {
-          const Clock::time_point start = Clock::now();
+        // The runner's repeated protocol: one untimed call (the answer shown), then timed ones.
+        const Result<std::vector<double>> timed = timeRepeated(args.repetitions, [&] {
           result = frep::collide(*a, *b, options);
-          ms.push_back(millisecondsSince(start));
-        }
+          return Status();
+        });
+        for (const double us : timed.value())
+          ms.push_back(us * 1e-3);
       } catch (const std::invalid_argument& error) {
         std::cerr << "error: " << args.file << ": " << pairName(file, p) << ": " << error.what()
                   << "\n";
@@ -252,13 +255,15 @@ int runFrep(const FrepArguments& args, const PluginOptions& plugin_options) {
               QueryRequest request;
               request.kind = QueryKind::kBoolean;
               QueryResult answer;
+              Result<std::vector<double>> timed = timeRepeated(args.repetitions, [&] {
+                return backend.query(models[0], Pose::Identity(), models[1], Pose::Identity(),
+                                     request, answer);
+              });
               std::vector<double> us;
-              for (int rep = 0; rep < args.repetitions && failure.empty(); ++rep) {
-                const Clock::time_point start = Clock::now();
-                const Status s = backend.query(models[0], Pose::Identity(), models[1],
-                                               Pose::Identity(), request, answer);
-                us.push_back(millisecondsSince(start) * 1e3);
-                if (!s.ok()) failure = s.message();
+              if (timed.ok()) {
+                us = std::move(timed).value();
+              } else {
+                failure = timed.status().message();
               }
               if (failure.empty()) {
                 const std::string outcome = outcomeOf(truth[f][p], answer.intersecting);
@@ -348,7 +353,9 @@ void addFrepCommand(CLI::App& app, const PluginOptions& plugins, int& exit_code)
   command->add_option("file", args->file, "FRep file (JSON, see docs/frep.md)")->required();
   command->add_option("--precision", args->precision, "octree cell size (default: the file's)")
       ->check(CLI::PositiveNumber);
-  command->add_option("--repetitions", args->repetitions, "timed runs (median reported)")
+  command
+      ->add_option("--repetitions", args->repetitions,
+                   "timed calls, after one untimed call (median reported)")
       ->check(CLI::Range(1, 1000));
   command
       ->add_option("--backends", args->backends,

@@ -22,6 +22,7 @@
 #include <collido/runner/heap_probe.h>
 #include <collido/runner/runner.h>
 #include <collido/runner/statistics.h>
+#include <collido/runner/timed_calls.h>
 #include <collido/scene/broad_phase.h>
 
 namespace collido {
@@ -239,11 +240,12 @@ void say(const RunOptions& options, const std::string& line) {
 template <typename Ask>
 Result<double> timeFrameCall(const std::vector<std::pair<std::size_t, std::size_t>>& candidates,
                              const Ask& ask) {
-  const Clock::time_point start = Clock::now();
-  for (const auto& [ia, ib] : candidates) {
-    if (Status s = ask(ia, ib); !s.ok()) return s;
-  }
-  return microseconds(Clock::now() - start);
+  return timeCall([&]() -> Status {
+    for (const auto& [ia, ib] : candidates) {
+      if (Status s = ask(ia, ib); !s.ok()) return s;
+    }
+    return {};
+  });
 }
 
 // The cycled protocol's timed passes: each pass asks every frame once, in order, so that no
