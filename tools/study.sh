@@ -2,10 +2,11 @@
 # The default study, a few minutes once built: installs what is missing, builds Release, and runs
 # the headline scenes (dense, flat, docking, deforming, one scaling point) with one or two
 # settings per backend family (scenes/sweeps/default.json), each combination in its own worker
-# process, every answer checked against the exact oracle. Then compares the NURBS distance
-# backends on scenes/surfaces/ (collido surface-distance) and the FRep collision test against
-# polygonized meshes on scenes/frep/ (collido frep), writes each studied scene's 3D view
-# (views/), and writes the dashboard. It ends by printing the "OBB tree against the field" table
+# process, every answer checked against the exact oracle; in the same study the NURBS distance
+# backends on scenes/surfaces/ (as collido surface-distance compares them) and the FRep collision
+# test against polygonized meshes on scenes/frep/ (as collido frep does), the seed method and each
+# backend in a worker of its own (the sweep's "surfaces" and "frep"). Then it writes each studied
+# scene's 3D view (views/) and the dashboard. It ends by printing the "OBB tree against the field" table
 # and the dashboard's path. Results: build/release/study/ (table.txt, records.jsonl,
 # summary.json, times.json, views/, report.html).
 #
@@ -29,7 +30,6 @@ if $full; then
   scenes=(scenes/*.json scenes/stress/*.json)
   sweep=scenes/sweeps/broad.json
   times=scenes/sweeps/broad.times.json
-  frep_resolutions=16,32,64,128
 else
   out=build/release/study
   # The headline: dense overlaps, flat and touching CAD parts, docking, deformation, scaling.
@@ -39,15 +39,14 @@ else
           scenes/{deforming_tori,sheet_over_bunny}.json scenes/scaling_spheres.json)
   sweep=scenes/sweeps/default.json
   times=scenes/sweeps/default.times.json
-  frep_resolutions=16,32,64
 fi
 previous=$out.previous
 # The expected time comes from the last run's wall times, else from those measured for this sweep
 # on a 2-core machine (scenes/sweeps/*.times.json).
 expected=$times
 if [[ -f "$previous/times.json" ]]; then expected=$previous/times.json; fi
-study=(build/release/collido study "${scenes[@]}" --sweep "$sweep" --out "$out"
-       --expected-times "$expected")
+study=(build/release/collido study "${scenes[@]}" --surfaces scenes/surfaces/*.json
+       --frep scenes/frep/*.json --sweep "$sweep" --out "$out" --expected-times "$expected")
 
 if [[ -f "$out/plan.json" && ! -f "$out/.complete" ]]; then
   # Interrupted earlier: finish it. A different plan (scenes or sweep changed) starts afresh.
@@ -67,45 +66,6 @@ else
   "${study[@]}" "${study_arguments[@]}" > /dev/null
 fi
 touch "$out/.complete"
-# NURBS surfaces: each surface file's pair, by the seed method and OpenCASCADE (where built) on
-# the surfaces and by mesh backends on tessellations, against the certified distance; one
-# process per file, so a crashing engine loses only that file's comparison.
-surface_backends=nurbs:hull,nurbs:box,obbtree,obbtree[max_leaf_triangles=4],fcl:rss,fcl:obbrss
-# (grep reads everything: with -q it would stop early and pipefail would see collido's SIGPIPE)
-if build/release/collido backends | grep '^  occt:brep_extrema' > /dev/null; then
-  surface_backends+=,occt:brep_extrema,occt:extrema_surface
-fi
-mkdir -p "$out/surfaces"
-surface_files=()
-for file in scenes/surfaces/*.json; do
-  json="$out/surfaces/$(basename "$file")"
-  if build/release/collido surface-distance "$file" --backends "$surface_backends" \
-      --tessellations 8,32,128 --repetitions 3 --json "$json" > "${json%.json}.txt"; then
-    surface_files+=(--surface-distance "$json")
-  else
-    echo "warning: collido surface-distance $file failed (exit $?): see ${json%.json}.txt" >&2
-    if [[ -f "$json" ]]; then
-      surface_files+=(--surface-distance "$json")
-    fi
-  fi
-done
-# FRep solids: each FRep file by the seed's guaranteed octree test, and mesh backends on OpenVDB
-# polygonizations against it, with a ray-cast preview; one process per file.
-mkdir -p "$out/frep"
-frep_files=()
-for file in scenes/frep/*.json; do
-  json="$out/frep/$(basename "$file")"
-  if build/release/collido frep "$file" --backends obbtree,fcl:obb,bullet,ode \
-      --resolutions "$frep_resolutions" --repetitions 3 --json "$json" \
-      --preview "${json%.json}.png" > "${json%.json}.txt"; then
-    frep_files+=(--frep "$json")
-  else
-    echo "warning: collido frep $file failed (exit $?): see ${json%.json}.txt" >&2
-    if [[ -f "$json" ]]; then
-      frep_files+=(--frep "$json")
-    fi
-  fi
-done
 # The studied scenes' 3D views (collido view), each with the backends the study ran on it, linked
 # from the dashboard; one view at a time, each backend in its own process.
 mkdir -p "$out/views"
@@ -121,8 +81,7 @@ baseline=()
 if [[ -f "$previous/.complete" ]]; then
   baseline=(--baseline "$previous")
 fi
-build/release/collido report "$out" "${baseline[@]}" "${surface_files[@]}" "${frep_files[@]}" \
-  -o "$out/report.html" > /dev/null
+build/release/collido report "$out" "${baseline[@]}" -o "$out/report.html" > /dev/null
 # The headline: the OBB tree against the field (the whole table is in table.txt).
 awk '/^The OBB tree against the field/ {show = 1} show && /^$/ {exit} show' "$out/table.txt"
 echo

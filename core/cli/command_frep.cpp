@@ -38,6 +38,7 @@ struct FrepArguments {
   std::string preview_path;
   std::optional<double> preview_time;
   std::vector<int> preview_size{480, 360};
+  bool backends_only = false;  // the seed's answers once, untimed, as the reference only
 };
 
 // The preview: every solid at one frame (the asked time, else the first frame with a collision,
@@ -131,7 +132,8 @@ int runFrep(const FrepArguments& args, const PluginOptions& plugin_options) {
       frep::CollisionResult result;
       try {
         // The runner's repeated protocol: one untimed call (the answer shown), then timed ones.
-        const Result<std::vector<double>> timed = timeRepeated(args.repetitions, [&] {
+        const int repetitions = args.backends_only ? 0 : args.repetitions;
+        const Result<std::vector<double>> timed = timeRepeated(repetitions, [&] {
           result = frep::collide(*a, *b, options);
           return Status();
         });
@@ -148,6 +150,7 @@ int runFrep(const FrepArguments& args, const PluginOptions& plugin_options) {
         return 1;
       }
       truth[f].push_back(result.verdict);
+      if (args.backends_only) continue;
       const std::string verdict = frep::verdictName(result.verdict);
       const std::string& expected = file.expected[p];
       const bool as_expected = expected.empty() || expected == verdict;
@@ -178,11 +181,13 @@ int runFrep(const FrepArguments& args, const PluginOptions& plugin_options) {
       json["seed"].push_back(entry);
     }
   }
-  std::cout << file.name << " (" << args.file << "): guaranteed collision at precision "
-            << formatNumber("%.3g", options.precision) << "\n"
-            << formatTextTable(
-                   {"time", "pair", "verdict", "cells", "depth", "undecided cells", "median ms"},
-                   rows, 2);
+  if (!args.backends_only) {
+    std::cout << file.name << " (" << args.file << "): guaranteed collision at precision "
+              << formatNumber("%.3g", options.precision) << "\n"
+              << formatTextTable(
+                     {"time", "pair", "verdict", "cells", "depth", "undecided cells", "median ms"},
+                     rows, 2);
+  }
 
   if (!args.backends.empty()) {
     const PluginDiscovery found =
@@ -369,6 +374,9 @@ void addFrepCommand(CLI::App& app, const PluginOptions& plugins, int& exit_code)
                       "write a ray-cast picture of the solids (PNG) at the first frame with a "
                       "collision (its witness as a red dot), else the middle frame, or at "
                       "--preview-time");
+  command->add_flag("--backends-only", args->backends_only,
+                    "only the backends: the seed's answers are computed once, untimed, as their "
+                    "reference (how collido study runs each backend in a worker of its own)");
   command->add_option("--preview-time", args->preview_time, "frame time of the preview");
   command->add_option("--preview-size", args->preview_size, "width,height in pixels")
       ->delimiter(',')

@@ -96,7 +96,24 @@ nlohmann::json sceneViews(const std::string& directory, const std::string& outpu
   return views;
 }
 
-int runReport(const ReportArguments& args) {
+// The comparison documents a study wrote beside its results (<study>/<folder>/*.json: collido
+// study --surfaces / --frep), in name order.
+std::vector<std::string> studyComparisons(const std::string& directory, const char* folder) {
+  std::vector<std::string> files;
+  std::error_code ec;
+  for (const auto& entry :
+       std::filesystem::directory_iterator(std::filesystem::path(directory) / folder, ec)) {
+    if (entry.path().extension() == ".json") files.push_back(entry.path().string());
+  }
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+int runReport(ReportArguments args) {
+  // Without explicit files, the study's own surface and FRep comparisons.
+  if (args.surface_distance.empty())
+    args.surface_distance = studyComparisons(args.directory, "surfaces");
+  if (args.frep.empty()) args.frep = studyComparisons(args.directory, "frep");
   Result<std::vector<study::CombinationResult>> results = readStudy(args.directory);
   if (!results.ok()) {
     std::cerr << "error: " << results.status().message() << "\n";
@@ -186,10 +203,10 @@ void addReportCommand(CLI::App& app, int& exit_code) {
                       "pose-error sweeps to show (collido pose-error --json files; repeatable)");
   command->add_option("--surface-distance", args->surface_distance,
                       "NURBS distance comparisons to show (collido surface-distance --json "
-                      "files; repeatable)");
+                      "files; repeatable; default: the study's own, DIRECTORY/surfaces/*.json)");
   command->add_option("--frep", args->frep,
                       "FRep comparisons to show (collido frep --json files, with their --preview "
-                      "pictures; repeatable)");
+                      "pictures; repeatable; default: the study's own, DIRECTORY/frep/*.json)");
   command->callback([args, &exit_code] { exit_code = runReport(*args); });
 }
 

@@ -88,7 +88,15 @@ void addStudyCommands(CLI::App& app, const PluginOptions& plugins, int& exit_cod
       "OUT/table.txt, OUT/records.jsonl, OUT/summary.json (Google Benchmark format) and "
       "OUT/results/. Exit code: 0 done, 2 bad input, 130 interrupted (resume with --resume)");
   auto args = std::make_shared<study::StudyRequest>();
-  command->add_option("scenes", args->scenes, "scene files (JSON)")->required();
+  command->add_option("scenes", args->scenes, "scene files (JSON)");
+  command->add_option("--surfaces", args->surface_files,
+                      "NURBS surface files, each compared as collido surface-distance does: the "
+                      "seed method and every backend setting in workers of their own (the "
+                      "sweep's \"surfaces\" names the settings and tessellations)");
+  command->add_option("--frep", args->frep_files,
+                      "FRep files, each compared as collido frep does: the seed method and every "
+                      "backend setting in workers of their own (the sweep's \"frep\" names the "
+                      "settings and polygonization resolutions)");
   command
       ->add_option("--backends", args->backends,
                    "backends, NAME or NAME[key=value;...]; with --sweep, only these variants")

@@ -33,6 +33,7 @@ struct SurfaceDistanceArguments {
   std::vector<std::string> bounds{"hull", "box"};
   double tolerance = 0.0;  // 0: 1e-6 of the model's size
   bool seed_only = false;
+  bool backends_only = false;  // no seed rows: the backends against the certified reference
   bool levels = false;
   int repetitions = 5;
   std::size_t max_pairs = 200'000;
@@ -90,7 +91,8 @@ int surfaceDistance(const SurfaceDistanceArguments& args, const PluginOptions& p
   std::vector<std::vector<std::string>> rows;
   std::vector<std::vector<std::string>> level_rows;
   std::optional<nurbs::SurfaceDistance> reference;
-  for (const std::string& bound_name : args.bounds) {
+  const std::vector<std::string> no_bounds;
+  for (const std::string& bound_name : args.backends_only ? no_bounds : args.bounds) {
     if (bound_name != "hull" && bound_name != "box") {
       std::cerr << "error: --bounds: '" << bound_name << "' is not hull or box\n";
       return 2;
@@ -143,10 +145,12 @@ int surfaceDistance(const SurfaceDistanceArguments& args, const PluginOptions& p
   }
   std::cout << a->name << " against " << b->name << " (" << args.file << "): model size "
             << formatNumber("%.4g", size) << ", tolerance " << formatNumber("%.3g", tolerance)
-            << "\n"
-            << formatTextTable({"bound", "lower", "upper", "gap", "converged", "pairs bounded",
-                                "pairs opened", "levels", "median ms"},
-                               rows, 1);
+            << "\n";
+  if (!args.backends_only) {
+    std::cout << formatTextTable({"bound", "lower", "upper", "gap", "converged", "pairs bounded",
+                                  "pairs opened", "levels", "median ms"},
+                                 rows, 1);
+  }
   if (args.levels) {
     std::cout << "\nWork per subdivision level:\n"
               << formatTextTable({"bound", "level", "pairs bounded", "pairs opened", "ms"},
@@ -300,6 +304,9 @@ void addSurfaceDistanceCommand(CLI::App& app, const PluginOptions& plugins, int&
                    "stop when upper - lower <= this (default 1e-6 of the model's size)")
       ->check(CLI::NonNegativeNumber);
   command->add_flag("--seed-only", args->seed_only, "only the seed method as published");
+  command->add_flag("--backends-only", args->backends_only,
+                    "only the backends against the certified reference, not the seed's rows (how "
+                    "collido study runs each backend in a worker of its own)");
   command->add_flag("--levels", args->levels, "print the work per subdivision level");
   command->add_option("--max-pairs", args->max_pairs, "patch pairs bounded before giving up");
   command

@@ -635,6 +635,84 @@ TEST(StudyCli, SweepFileSetsTheGrid) {
   EXPECT_FALSE(fs::exists(dir + "/bad/plan.json"));
 }
 
+// Surface and FRep files run as combinations too: the seed method and each backend setting in a
+// worker of its own (a crashing backend costs its own rows only), stored, resumable, joined per
+// file into what collido report shows.
+TEST(StudyCli, SurfaceAndFrepFilesRunInWorkersOfTheirOwn) {
+  const std::string dir = test::makeTempDirectory("study_comparisons");
+  const std::string out = dir + "/study";
+  const std::string sweep = dir + "/sweep.json";
+  test::writeFile(sweep, R"({"repetitions": 1,
+    "surfaces": {"backends": ["nurbs:hull", "obbtree"], "tessellations": [4]},
+    "frep": {"backends": ["obbtree", "misbehaving:crash"], "resolutions": [16]}})");
+  const std::vector<std::string> args = {"study",
+                                         "--surfaces",
+                                         test::sourcePath("scenes/surfaces/saddle_cap.json"),
+                                         "--frep",
+                                         test::sourcePath("scenes/frep/seed_quadric.json"),
+                                         "--sweep",
+                                         sweep,
+                                         "--out",
+                                         out};
+  const CommandRun run = collido(args, dir);
+  ASSERT_EQ(run.exit_code, 0) << describe(run);
+  EXPECT_NE(run.err.find("study: 6 combinations, 6 to run"), std::string::npos) << run.err;
+  const std::vector<CombinationResult> results = readResults(out);
+  ASSERT_EQ(results.size(), 6u);
+  for (const CombinationResult& r : results) {
+    SCOPED_TRACE(r.combination.label());
+    EXPECT_NE(r.combination.kind, InputKind::kScene);
+    EXPECT_TRUE(r.measurements.empty());
+    if (r.combination.backend == "misbehaving:crash") {
+      EXPECT_EQ(r.outcome.status, "crashed");
+      EXPECT_EQ(r.outcome.signal_name, "SIGSEGV");
+    } else {
+      EXPECT_EQ(r.outcome.status, "ok") << r.outcome.log_tail;
+      EXPECT_TRUE(r.comparison.is_object());
+    }
+  }
+
+  const nlohmann::json surfaces =
+      nlohmann::json::parse(readText(out + "/surfaces/saddle_cap.json"));
+  EXPECT_EQ(surfaces.at("seed").size(), 4u);  // hull and box bounds, each with and without descent
+  EXPECT_TRUE(surfaces.contains("reference"));
+  std::map<std::string, nlohmann::json> surface_rows;
+  for (const nlohmann::json& row : surfaces.at("backends"))
+    surface_rows[row.at("backend").get<std::string>()] = row;
+  ASSERT_EQ(surface_rows.size(), 2u) << surfaces.dump(1);
+  EXPECT_EQ(surface_rows["nurbs:hull"].at("segments"), 0);
+  EXPECT_EQ(surface_rows["obbtree"].at("segments"), 4);
+  for (const auto& [backend, row] : surface_rows)
+    EXPECT_EQ(row.at("status"), "ok") << backend;
+
+  const nlohmann::json frep = nlohmann::json::parse(readText(out + "/frep/seed_quadric.json"));
+  EXPECT_FALSE(frep.at("seed").empty());
+  EXPECT_EQ(frep.at("preview_png").get<std::string>().rfind("data:image/png;base64,", 0), 0u);
+  std::map<std::string, nlohmann::json> frep_rows;
+  for (const nlohmann::json& row : frep.at("comparators"))
+    frep_rows[row.at("backend").get<std::string>()] = row;
+  ASSERT_EQ(frep_rows.size(), 2u) << frep.dump(1);
+  EXPECT_EQ(frep_rows["obbtree"].at("status"), "ok");
+  EXPECT_EQ(frep_rows["obbtree"].at("resolution"), 16);
+  EXPECT_EQ(
+      frep_rows["misbehaving:crash"].at("status").get<std::string>().rfind("crashed (SIGSEGV)", 0),
+      0u)
+      << frep_rows["misbehaving:crash"];
+
+  // The dashboard shows the study's own comparisons without naming them.
+  const CommandRun report = collido({"report", out}, dir);
+  ASSERT_EQ(report.exit_code, 0) << describe(report);
+  const std::string page = readText(out + "/report.html");
+  EXPECT_NE(page.find("saddle_cap"), std::string::npos);
+  EXPECT_NE(page.find("crashed (SIGSEGV)"), std::string::npos);
+
+  std::vector<std::string> resume = args;
+  resume.push_back("--resume");
+  const CommandRun again = collido(resume, dir);
+  ASSERT_EQ(again.exit_code, 0) << describe(again);
+  EXPECT_NE(again.err.find("study: 6 combinations, 0 to run"), std::string::npos) << again.err;
+}
+
 TEST(StudyCli, BadArgumentsAreRefused) {
   const std::string dir = test::makeTempDirectory("study_bad");
   const std::string scene = writeSmallScene(dir);
@@ -651,7 +729,21 @@ TEST(StudyCli, BadArgumentsAreRefused) {
   const CommandRun no_scene = collido(studyArgs(dir + "/none.json", "obbtree", dir + "/n"), dir);
   EXPECT_EQ(no_scene.exit_code, 2) << describe(no_scene);
   EXPECT_NE(no_scene.err.find(dir + "/none.json"), std::string::npos) << no_scene.err;
-  for (const char* folder : {"/s", "/u", "/n"})
+  // A surface or FRep file that does not read is refused before anything runs, naming it; so
+  // is a study with nothing to study.
+  test::writeFile(dir + "/broken_frep.json", R"({"name": "x", "solids": 3})");
+  const CommandRun bad_surfaces =
+      collido({"study", "--surfaces", dir + "/none.json", "--out", dir + "/f"}, dir);
+  EXPECT_EQ(bad_surfaces.exit_code, 2) << describe(bad_surfaces);
+  EXPECT_NE(bad_surfaces.err.find(dir + "/none.json"), std::string::npos) << bad_surfaces.err;
+  const CommandRun bad_frep =
+      collido({"study", "--frep", dir + "/broken_frep.json", "--out", dir + "/f"}, dir);
+  EXPECT_EQ(bad_frep.exit_code, 2) << describe(bad_frep);
+  EXPECT_NE(bad_frep.err.find(dir + "/broken_frep.json"), std::string::npos) << bad_frep.err;
+  const CommandRun nothing = collido({"study", "--out", dir + "/f"}, dir);
+  EXPECT_EQ(nothing.exit_code, 2) << describe(nothing);
+  EXPECT_NE(nothing.err.find("no scene, surface or FRep file"), std::string::npos) << nothing.err;
+  for (const char* folder : {"/s", "/u", "/n", "/f"})
     EXPECT_FALSE(fs::exists(dir + folder)) << folder;
 
   // An oracle store that is a file, not a folder, is refused before anything runs, as every

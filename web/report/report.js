@@ -240,8 +240,9 @@
   // --- NURBS surfaces: run time against error (collido surface-distance files) ---------------
   {
     const s = section('surfaces', 'NURBS surfaces: run time against error',
-      'From collido surface-distance comparisons (collido report --surface-distance FILE; ' +
-      'tools/study.sh runs every scenes/surfaces file): per surface pair, each backend\'s median ' +
+      'From the study\'s surface files (collido study --surfaces FILE, each backend in a ' +
+      'worker of its own; or collido report --surface-distance F with a collido ' +
+      'surface-distance --json file; tools/study.sh runs every scenes/surfaces file): per surface pair, each backend\'s median ' +
       'time per distance query against its error, measured from the middle of the seed ' +
       'method\'s certified interval (1e-10 of the model\'s size wide), relative to the model\'s ' +
       'size (log scales; an error below 1e-16 is drawn at 1e-16). Surface backends (the seed as ' +
@@ -249,9 +250,8 @@
       '(the label gives the segments per parameter; the tooltip the build time). Below each ' +
       'chart, the seed method\'s work with hull and with box bounds, and the failures.');
     const comparisons = data.surfaces || [];
-    if (comparisons.length === 0) empty(s, 'No surface comparison given (collido ' +
-      'surface-distance FILE --backends ... --json F, then collido report DIR ' +
-      '--surface-distance F).');
+    if (comparisons.length === 0) empty(s, 'No surface comparison in this study (collido ' +
+      'study ... --surfaces FILE, or collido report DIR --surface-distance F).');
     // One colour per backend across every chart.
     const surfaceBackends = [...new Set(comparisons.flatMap((c) => c.backends.map((b) => b.backend)))]
       .sort();
@@ -291,9 +291,10 @@
           'median ms'], seeds);
       }
       const failed = c.backends.filter((b) => b.status !== 'ok');
-      if (failed.length > 0) {
-        s.appendChild(el('ul', {}, failed.map((b) => el('li', { text: b.backend +
-          (b.segments > 0 ? ' @' + b.segments : '') + ': ' + b.status }))));
+      const problems = (c.problems || []).map((p) => el('li', { text: p }));
+      if (failed.length + problems.length > 0) {
+        s.appendChild(el('ul', {}, problems.concat(failed.map((b) => el('li', { text: b.backend +
+          (b.segments > 0 ? ' @' + b.segments : '') + ': ' + b.status })))));
       }
     }
   }
@@ -301,7 +302,8 @@
   // --- FRep solids: guaranteed collision against polygonization (collido frep files) ------------
   {
     const s = section('frep', 'FRep solids: run time against error',
-      'From collido frep comparisons (collido report --frep FILE; tools/study.sh runs every ' +
+      'From the study\'s FRep files (collido study --frep FILE, each backend in a worker of ' +
+      'its own; or collido report --frep F with a collido frep --json file; tools/study.sh runs every ' +
       'scenes/frep file): per FRep file, the seed method\'s guaranteed octree test (frep:octree, ' +
       'never wrong: its answers are the reference) against mesh backends on OpenVDB ' +
       'polygonizations at several grid resolutions. Each point is the time per query (log scale; ' +
@@ -310,8 +312,8 @@
       'octree calls touching within its precision are not counted). Beside each chart, the ' +
       'preview (the witness of the first collision as a red dot) and the octree\'s verdicts.');
     const comparisons = data.frep || [];
-    if (comparisons.length === 0) empty(s, 'No FRep comparison given (collido frep FILE ' +
-      '--backends ... --json F --preview P.png, then collido report DIR --frep F).');
+    if (comparisons.length === 0) empty(s, 'No FRep comparison in this study (collido study ' +
+      '... --frep FILE, or collido report DIR --frep F).');
     const frepBackends = ['frep:octree', ...new Set(comparisons.flatMap(
       (c) => c.comparators.map((b) => b.backend)))].sort();
     for (const c of comparisons) {
@@ -358,9 +360,10 @@
           fmt(median, 3), fmt(seedMs.length ? seedMs[seedMs.length - 1] : null, 3), String(cells),
           String(c.precision)]]);
       const failed = c.comparators.filter((b) => b.status !== 'ok');
-      if (failed.length > 0) {
-        s.appendChild(el('ul', {}, failed.map((b) => el('li', { text: b.backend + ' @' +
-          b.resolution + ': ' + b.status }))));
+      const problems = (c.problems || []).map((p) => el('li', { text: p }));
+      if (failed.length + problems.length > 0) {
+        s.appendChild(el('ul', {}, problems.concat(failed.map((b) => el('li', { text: b.backend +
+          ' @' + b.resolution + ': ' + b.status })))));
       }
     }
   }

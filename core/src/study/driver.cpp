@@ -17,11 +17,14 @@
 
 #include <collido/mesh/input_file.h>
 #include <collido/runner/digest.h>
+#include <collido/scene/frep_file.h>
+#include <collido/scene/surface_file.h>
 #include <collido/study/expected_time.h>
 #include <collido/study/folder_lock.h>
 #include <collido/study/outputs.h>
 #include <collido/study/plugin_probe.h>
 #include <collido/study/progress.h>
+#include <collido/study/report_html.h>
 #include <collido/study/result_store.h>
 #include <collido/study/stop_signals.h>
 #include <collido/study/sweep.h>
@@ -92,6 +95,61 @@ std::map<std::string, std::set<std::string>> onlyScenes(const Sweep& sweep,
   return only;
 }
 
+// The command a surface or FRep combination's worker runs: the file's own command for one
+// backend (against the seed's certified answers, computed untimed), or for the seed method alone.
+std::vector<std::string> comparisonCommand(const Combination& c, int repetitions,
+                                           const std::string& answer_path,
+                                           const std::string& preview_path) {
+  const bool surfaces = c.kind == InputKind::kSurfaces;
+  std::vector<std::string> command = {surfaces ? "surface-distance" : "frep",
+                                      c.scene_path,
+                                      "--repetitions",
+                                      std::to_string(repetitions),
+                                      "--json",
+                                      answer_path};
+  if (c.backend == kSeedMethod) {
+    if (!surfaces) command.insert(command.end(), {"--preview", preview_path});
+    return command;
+  }
+  std::string grid;
+  for (const int size : c.grid)
+    grid += (grid.empty() ? "" : ",") + std::to_string(size);
+  command.insert(command.end(), {"--backends-only", "--backends", c.backend,
+                                 surfaces ? "--tessellations" : "--resolutions", grid});
+  return command;
+}
+
+// A surface or FRep worker's answer (its command's --json), kept whatever its exit code: a seed
+// whose answers differ from the file's expected ones exits 1 and still shows them. Its preview
+// picture goes inline, so the answer does not depend on a file in the scratch folder.
+void readComparison(const std::string& answer_path, const std::string& preview_path,
+                    CombinationResult& result) {
+  std::ifstream in(answer_path, std::ios::binary);
+  if (!in) {
+    if (result.outcome.ok()) {
+      result.outcome.status = "unfinished";
+      result.outcome.log_tail = answer_path + ": the worker wrote no answer";
+    }
+    return;
+  }
+  std::stringstream text;
+  text << in.rdbuf();
+  try {
+    result.comparison = nlohmann::json::parse(text.str());
+  } catch (const nlohmann::json::exception& e) {
+    result.outcome.status = "unfinished";
+    result.outcome.log_tail = answer_path + ": " + e.what();
+    return;
+  }
+  if (result.comparison.contains("preview")) {
+    result.comparison.erase("preview");
+    std::ifstream picture(preview_path, std::ios::binary);
+    const std::string bytes((std::istreambuf_iterator<char>(picture)),
+                            std::istreambuf_iterator<char>());
+    if (!bytes.empty()) result.comparison["preview_png"] = "data:image/png;base64," + base64(bytes);
+  }
+}
+
 // Runs one combination in a worker and reads its answer back.
 CombinationResult runInWorker(const Combination& c, const ResultStore& store, int repetitions,
                               double timeout_s, const std::string& plugin_file,
@@ -110,15 +168,25 @@ CombinationResult runInWorker(const Combination& c, const ResultStore& store, in
   WorkerLaunch launch;
   launch.executable = request.executable;
   // The worker loads only the plugin its backend comes from: another plugin that misbehaves
-  // while loading cannot cost this combination.
-  launch.arguments = {"--no-default-plugins", "--plugin",
-                      std::filesystem::absolute(plugin_file).string()};
-  for (const std::string& a :
-       {std::string("worker"), std::string("--request"), request_path, std::string("--out"),
-        answer_path, std::string("--repetitions"), std::to_string(repetitions),
-        std::string("--oracle-cache"), store.directory() + "/oracle"}) {
-    launch.arguments.push_back(a);
+  // while loading cannot cost this combination. A seed method needs none.
+  launch.arguments = {"--no-default-plugins"};
+  if (!plugin_file.empty()) {
+    launch.arguments.push_back("--plugin");
+    launch.arguments.push_back(std::filesystem::absolute(plugin_file).string());
   }
+  const std::string preview_path = store.scratchPath(c.id + ".png");
+  const std::vector<std::string> command =
+      c.kind == InputKind::kScene ? std::vector<std::string>{"worker",
+                                                             "--request",
+                                                             request_path,
+                                                             "--out",
+                                                             answer_path,
+                                                             "--repetitions",
+                                                             std::to_string(repetitions),
+                                                             "--oracle-cache",
+                                                             store.directory() + "/oracle"}
+                                  : comparisonCommand(c, repetitions, answer_path, preview_path);
+  launch.arguments.insert(launch.arguments.end(), command.begin(), command.end());
   launch.environment = request.worker_environment;
   launch.log_path = store.logPath(c.id);
   launch.timeout_s = timeout_s;
@@ -128,7 +196,9 @@ CombinationResult runInWorker(const Combination& c, const ResultStore& store, in
   };
   launch.on_tick = [&progress] { progress.tick(); };
   result.outcome = runWorkerProcess(launch);
-  if (result.outcome.ok()) {
+  if (c.kind != InputKind::kScene) {
+    readComparison(answer_path, preview_path, result);
+  } else if (result.outcome.ok()) {
     std::ifstream in(answer_path, std::ios::binary);
     std::stringstream text;
     text << in.rdbuf();
@@ -150,6 +220,7 @@ CombinationResult runInWorker(const Combination& c, const ResultStore& store, in
   }
   std::filesystem::remove(answer_path);
   std::filesystem::remove(request_path);
+  std::filesystem::remove(preview_path);
   return result;
 }
 
@@ -181,6 +252,34 @@ Result<std::string> inputsDigest(const Scene& scene) {
     digest.text(bytes.value());
   }
   return digest.hex();
+}
+
+// The digest of one input file's content.
+Result<std::string> fileDigest(const std::string& path, const char* what) {
+  Result<std::string> bytes = readInputFile(path, what);
+  if (!bytes.ok()) return bytes.status();
+  Digest digest;
+  digest.text(bytes.value());
+  return digest.hex();
+}
+
+// The settings a kind of comparison runs: its sweep entry's, else the mesh settings; a setting
+// no plugin offers is left out with a warning (OpenCASCADE is optional, and a sweep may name it).
+std::vector<std::string> comparisonSettings(const SweepComparison& sweep,
+                                            const std::vector<std::string>& mesh_settings,
+                                            const PluginProbe& found, const char* what,
+                                            std::ostream& err) {
+  std::vector<std::string> settings;
+  for (const std::string& text : sweep.backends.empty() ? mesh_settings : sweep.backends) {
+    Result<std::pair<std::string, std::map<std::string, std::string>>> parsed =
+        parseBackendText(text);
+    if (parsed.ok() && found.offering(parsed.value().first) != nullptr) {
+      settings.push_back(text);
+    } else {
+      err << "warning: " << what << ": no plugin offers '" << text << "'; left out\n";
+    }
+  }
+  return settings;
 }
 
 // "obbtree 0.4, engine OBB tree 0.4": what a change of plugin or engine version shows in.
@@ -263,6 +362,10 @@ int runStudyImpl(const StudyRequest& args, std::ostream& out, std::ostream& err)
     }
     sweep = std::move(loaded).value();
   }
+  if (args.scenes.empty() && args.surface_files.empty() && args.frep_files.empty()) {
+    err << "error: no scene, surface or FRep file to study\n";
+    return 2;
+  }
   std::vector<PlannedScene> scenes;
   std::map<std::string, std::string> scene_digests;  // by the planned path
   for (const std::string& path : args.scenes) {
@@ -281,18 +384,56 @@ int runStudyImpl(const StudyRequest& args, std::ostream& out, std::ostream& err)
     }
     scene_digests[scenes.back().path] = digest.value();
   }
+  // NURBS surface and FRep files, checked now so that bad input stops the study before it starts.
+  std::vector<PlannedScene> surface_files;
+  std::vector<PlannedScene> frep_files;
+  for (const auto& [paths, kind] : {std::make_pair(&args.surface_files, InputKind::kSurfaces),
+                                    std::make_pair(&args.frep_files, InputKind::kFrep)}) {
+    for (const std::string& path : *paths) {
+      Status loaded;
+      if (kind == InputKind::kSurfaces) {
+        if (Result<std::vector<NamedSurface>> file = loadSurfaces(path); !file.ok())
+          loaded = file.status();
+      } else if (Result<FrepFile> file = loadFrepFile(path); !file.ok()) {
+        loaded = file.status();
+      }
+      if (!loaded.ok()) {
+        err << "error: " << loaded.message() << "\n";
+        return 2;
+      }
+      Result<std::string> digest =
+          fileDigest(path, kind == InputKind::kSurfaces ? "surface file" : "FRep file");
+      if (!digest.ok()) {
+        err << "error: " << digest.status().message() << "\n";
+        return 2;
+      }
+      const std::string planned = std::filesystem::absolute(path).lexically_normal().string();
+      (kind == InputKind::kSurfaces ? surface_files : frep_files)
+          .push_back({planned, std::filesystem::path(path).stem().string()});
+      scene_digests[planned] = digest.value();
+    }
+  }
   const PluginProbe found = probeInChildren(args);
   for (const std::string& problem : found.problems)
     err << "warning: " << problem << "\n";
   const std::vector<std::string> settings = backendSettings(args, sweep, found);
-  Result<std::vector<std::string>> plugin_files = pluginFilesOf(settings, found);
+  const std::vector<std::string> surface_settings =
+      surface_files.empty() ? std::vector<std::string>()
+                            : comparisonSettings(sweep.surfaces, settings, found, "surfaces", err);
+  const std::vector<std::string> frep_settings =
+      frep_files.empty() ? std::vector<std::string>()
+                         : comparisonSettings(sweep.frep, settings, found, "frep", err);
+  std::vector<std::string> every_setting = settings;
+  every_setting.insert(every_setting.end(), surface_settings.begin(), surface_settings.end());
+  every_setting.insert(every_setting.end(), frep_settings.begin(), frep_settings.end());
+  Result<std::vector<std::string>> plugin_files = pluginFilesOf(every_setting, found);
   if (!plugin_files.ok()) {
     err << "error: " << plugin_files.status().message() << "\n";
     return 2;
   }
   std::map<std::string, std::string> plugin_file_of;
-  for (std::size_t i = 0; i < settings.size(); ++i)
-    plugin_file_of[settings[i]] = plugin_files.value()[i];
+  for (std::size_t i = 0; i < every_setting.size(); ++i)
+    plugin_file_of[every_setting[i]] = plugin_files.value()[i];
   if (settings.empty()) {
     err << "error: no backends to run (build the plugins or pass --plugin)\n";
     return 2;
@@ -317,6 +458,18 @@ int runStudyImpl(const StudyRequest& args, std::ostream& out, std::ostream& err)
     const std::string& digest = scene_digests.at(c.scene_path);
     const std::string identity = pluginIdentity(found, c.backend);
     c = withInputs(std::move(c), digest, identity, repetitions, protocol);
+  }
+  // Surfaces and FRep files: a single input per frame, timed by the repeated protocol whatever
+  // the study's (docs/STUDY.md, "Timing protocols").
+  for (std::vector<Combination> comparisons :
+       {planComparisons(surface_files, InputKind::kSurfaces, surface_settings, sweep.surfaces.grid),
+        planComparisons(frep_files, InputKind::kFrep, frep_settings, sweep.frep.grid)}) {
+    for (Combination& c : comparisons) {
+      const std::string identity =
+          c.backend == kSeedMethod ? std::string() : pluginIdentity(found, c.backend);
+      const std::string digest = scene_digests.at(c.scene_path);
+      whole.push_back(withInputs(std::move(c), digest, identity, repetitions, "repeated"));
+    }
   }
   const std::vector<Combination> plan = shardOf(whole, shard_index, shard_count);
 
@@ -407,9 +560,11 @@ int runStudyImpl(const StudyRequest& args, std::ostream& out, std::ostream& err)
   for (std::size_t i = 0; i < todo.size(); ++i) {
     const Combination& c = *todo[i];
     progress.start(i, c.label());
+    const auto plugin_file = plugin_file_of.find(c.backend);
     CombinationResult result =
-        runInWorker(c, store, repetitions, timeout_s, plugin_file_of.at(c.backend), args, progress,
-                    stop.requested());
+        runInWorker(c, store, repetitions, timeout_s,
+                    plugin_file == plugin_file_of.end() ? std::string() : plugin_file->second, args,
+                    progress, stop.requested());
     if (result.outcome.status == "interrupted") {
       interrupted = true;
       break;

@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include <collido/runner/text_table.h>
+#include <collido/study/comparison_files.h>
 #include <collido/study/contact_table.h>
 #include <collido/study/deform_table.h>
 #include <collido/study/expected_time.h>
@@ -278,6 +279,7 @@ Status writeStudyOutputs(const std::string& directory,
       !s.ok()) {
     return s;
   }
+  if (Status s = writeComparisonFiles(directory, results); !s.ok()) return s;
   if (const std::string robustness = robustnessReport(results); !robustness.empty()) {
     if (Status s = writeFileAtomically((folder / "robustness.txt").string(), robustness); !s.ok()) {
       return s;

@@ -46,14 +46,40 @@ std::string makeId(const Combination& c) {
     key += "\n" + c.scene_digest + "\n" + c.plugin_identity + "\n" + std::to_string(c.repetitions);
   }
   if (!c.protocol.empty() && c.protocol != "repeated") key += "\n" + c.protocol;
+  if (c.kind != InputKind::kScene) {
+    key += std::string("\n") + inputKindName(c.kind);
+    for (const int size : c.grid)
+      key += " " + std::to_string(size);
+  }
   char hash[9];
   std::snprintf(hash, sizeof hash, "%08x", fingerprint(key));
-  std::string readable = fileSafe(c.scene_name + "~" + c.backend);
+  std::string readable =
+      fileSafe((c.kind == InputKind::kScene ? "" : std::string(inputKindName(c.kind)) + "~") +
+               c.scene_name + "~" + c.backend);
   if (readable.size() > 80) readable.resize(80);
   return readable + "~" + hash;
 }
 
 }  // namespace
+
+const char* inputKindName(InputKind kind) {
+  switch (kind) {
+    case InputKind::kScene:
+      return "scene";
+    case InputKind::kSurfaces:
+      return "surfaces";
+    case InputKind::kFrep:
+      return "frep";
+  }
+  return "scene";
+}
+
+std::optional<InputKind> parseInputKind(const std::string& name) {
+  for (const InputKind kind : {InputKind::kScene, InputKind::kSurfaces, InputKind::kFrep}) {
+    if (name == inputKindName(kind)) return kind;
+  }
+  return std::nullopt;
+}
 
 Combination withInputs(Combination c, const std::string& scene_digest,
                        const std::string& plugin_identity, int repetitions,
@@ -77,7 +103,9 @@ std::string Combination::settingText() const {
 
 std::string Combination::label() const {
   const std::string setting = settingText();
-  return scene_name + " · " + backend + (setting.empty() ? "" : " · " + setting);
+  const std::string kind_text =
+      kind == InputKind::kScene ? "" : std::string(" · ") + inputKindName(kind);
+  return scene_name + " · " + backend + (setting.empty() ? "" : " · " + setting) + kind_text;
 }
 
 std::vector<Combination> planStudy(
@@ -105,6 +133,27 @@ std::vector<Combination> planStudy(
           }
         }
       }
+    }
+  }
+  return plan;
+}
+
+std::vector<Combination> planComparisons(const std::vector<PlannedScene>& files, InputKind kind,
+                                         const std::vector<std::string>& backends,
+                                         const std::vector<int>& grid) {
+  std::vector<Combination> plan;
+  for (const PlannedScene& file : files) {
+    std::vector<std::string> settings{kSeedMethod};
+    settings.insert(settings.end(), backends.begin(), backends.end());
+    for (const std::string& backend : settings) {
+      Combination c;
+      c.kind = kind;
+      c.scene_path = file.path;
+      c.scene_name = file.name;
+      c.backend = backend;
+      if (backend != kSeedMethod) c.grid = grid;
+      c.id = makeId(c);
+      plan.push_back(std::move(c));
     }
   }
   return plan;
@@ -150,6 +199,10 @@ nlohmann::json combinationToJson(const Combination& c) {
   if (!c.plugin_identity.empty()) json["plugin"] = c.plugin_identity;
   if (c.repetitions != 0) json["repetitions"] = c.repetitions;
   if (!c.protocol.empty()) json["protocol"] = c.protocol;
+  if (c.kind != InputKind::kScene) {
+    json["kind"] = inputKindName(c.kind);
+    json["grid"] = c.grid;
+  }
   return json;
 }
 
@@ -172,6 +225,11 @@ Result<Combination> combinationFromJson(const nlohmann::json& json) {
     c.plugin_identity = json.value("plugin", std::string());
     c.repetitions = json.value("repetitions", 0);
     c.protocol = json.value("protocol", std::string());
+    // Absent for mesh scenes (and from studies made before surfaces and FRep joined them).
+    const std::optional<InputKind> kind = parseInputKind(json.value("kind", std::string("scene")));
+    if (!kind) return Status(StatusCode::kInvalidArgument, "combination: unknown kind");
+    c.kind = *kind;
+    c.grid = json.value("grid", std::vector<int>());
     return c;
   } catch (const nlohmann::json::exception& e) {
     return Status(StatusCode::kInvalidArgument, std::string("combination: ") + e.what());

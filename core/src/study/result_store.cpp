@@ -38,19 +38,21 @@ Json resultToJson(const CombinationResult& r) {
   Json measurements = Json::array();
   for (const QueryMeasurement& m : r.measurements)
     measurements.push_back(measurementToJson(m));
-  return {{"collidoscope_combination", 1},
-          {"combination", combinationToJson(r.combination)},
-          {"outcome",
-           {{"status", r.outcome.status},
-            {"exit_code", r.outcome.exit_code},
-            {"signal", r.outcome.signal},
-            {"signal_name", r.outcome.signal_name},
-            {"wall_s", r.outcome.wall_s},
-            {"peak_rss_bytes", r.outcome.peak_rss_bytes},
-            {"log_tail", r.outcome.log_tail}}},
-          {"measurements", measurements},
-          {"problems", r.problems},
-          {"backend_rss_bytes", r.backend_rss_bytes ? Json(*r.backend_rss_bytes) : Json()}};
+  Json json = {{"collidoscope_combination", 1},
+               {"combination", combinationToJson(r.combination)},
+               {"outcome",
+                {{"status", r.outcome.status},
+                 {"exit_code", r.outcome.exit_code},
+                 {"signal", r.outcome.signal},
+                 {"signal_name", r.outcome.signal_name},
+                 {"wall_s", r.outcome.wall_s},
+                 {"peak_rss_bytes", r.outcome.peak_rss_bytes},
+                 {"log_tail", r.outcome.log_tail}}},
+               {"measurements", measurements},
+               {"problems", r.problems},
+               {"backend_rss_bytes", r.backend_rss_bytes ? Json(*r.backend_rss_bytes) : Json()}};
+  if (!r.comparison.is_null()) json["comparison"] = r.comparison;
+  return json;
 }
 
 Result<CombinationResult> resultFromJson(const Json& json, const std::string& label) {
@@ -82,6 +84,10 @@ Result<CombinationResult> resultFromJson(const Json& json, const std::string& la
     // Absent from results stored before backends' memory was measured apart.
     if (json.contains("backend_rss_bytes") && !json.at("backend_rss_bytes").is_null())
       r.backend_rss_bytes = json.at("backend_rss_bytes").get<std::size_t>();
+    if (json.contains("comparison")) {
+      r.comparison = json.at("comparison");
+      if (!r.comparison.is_object()) return bad("/comparison: expected an object");
+    }
     return r;
   } catch (const Json::exception& e) {
     return bad(e.what());

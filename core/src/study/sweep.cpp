@@ -118,11 +118,43 @@ std::vector<double> readResolutions(const Checker& c, const Json& node, const st
   return resolutions;
 }
 
+// {"backends": ["obbtree", ...], "<grid_key>": [8, 32]}: a SweepComparison; `grid_key` names the
+// grid sizes ("tessellations", "resolutions"), each a whole number from `low` to 1024.
+void readComparison(const Checker& c, const Json& node, const std::string& where,
+                    const char* grid_key, int low, SweepComparison& comparison) {
+  c.allowKeys(node, where, {"backends", grid_key});
+  if (node.contains("backends")) {
+    const std::string backends_at = at(where, "backends");
+    const Json& list = c.nonEmptyArray(node.at("backends"), backends_at);
+    for (std::size_t i = 0; i < list.size(); ++i) {
+      if (!list[i].is_string() || list[i].get<std::string>().empty())
+        c.fail(at(backends_at, i), "expected a backend setting such as \"obbtree\"");
+      comparison.backends.push_back(list[i].get<std::string>());
+    }
+  }
+  if (node.contains(grid_key)) {
+    const std::string grid_at = at(where, grid_key);
+    const Json& list = c.nonEmptyArray(node.at(grid_key), grid_at);
+    comparison.grid.clear();
+    for (std::size_t i = 0; i < list.size(); ++i) {
+      if (!list[i].is_number_integer() || list[i].get<long long>() < low ||
+          list[i].get<long long>() > 1024) {
+        c.fail(at(grid_at, i), "expected a whole number from " + std::to_string(low) + " to 1024");
+      }
+      comparison.grid.push_back(list[i].get<int>());
+    }
+  }
+}
+
 Sweep readSweep(const Checker& c, const Json& root) {
-  c.allowKeys(
-      root, "",
-      {"backends", "resolutions", "needs", "limits", "repetitions", "timeout_s", "protocol"});
+  c.allowKeys(root, "",
+              {"backends", "resolutions", "needs", "limits", "repetitions", "timeout_s", "protocol",
+               "surfaces", "frep"});
   Sweep sweep;
+  if (root.contains("surfaces"))
+    readComparison(c, root.at("surfaces"), "/surfaces", "tessellations", 1, sweep.surfaces);
+  if (root.contains("frep"))
+    readComparison(c, root.at("frep"), "/frep", "resolutions", 2, sweep.frep);
   if (root.contains("backends")) {
     const Json& list = c.nonEmptyArray(root.at("backends"), "/backends");
     for (std::size_t i = 0; i < list.size(); ++i)

@@ -148,6 +148,32 @@ TEST(Sweep, ErrorsNameLabelPointerAndProblem) {
 }
 
 // As in scene files, a repeated key is refused rather than the last one silently counting.
+TEST(Sweep, SurfaceAndFrepEntriesNameSettingsAndGrids) {
+  const Result<Sweep> parsed = parseSweep(R"({
+    "surfaces": {"backends": ["nurbs:hull", "obbtree[max_leaf_triangles=4]"],
+                 "tessellations": [8, 32]},
+    "frep": {"resolutions": [16]}})",
+                                          kLabel);
+  ASSERT_TRUE(parsed.ok()) << parsed.status().message();
+  EXPECT_EQ(parsed.value().surfaces.backends,
+            (std::vector<std::string>{"nurbs:hull", "obbtree[max_leaf_triangles=4]"}));
+  EXPECT_EQ(parsed.value().surfaces.grid, (std::vector<int>{8, 32}));
+  EXPECT_TRUE(parsed.value().frep.backends.empty());  // the study's mesh settings
+  EXPECT_EQ(parsed.value().frep.grid, (std::vector<int>{16}));
+  const Result<Sweep> defaults = parseSweep("{}", kLabel);
+  ASSERT_TRUE(defaults.ok());
+  EXPECT_EQ(defaults.value().surfaces.grid, (std::vector<int>{8, 32, 128}));
+  EXPECT_EQ(defaults.value().frep.grid, (std::vector<int>{16, 32, 64}));
+
+  expectError(R"({"surfaces": {"tessellations": [0]}})", "/surfaces/tessellations/0",
+              "whole number from 1 to 1024");
+  expectError(R"({"frep": {"resolutions": [1]}})", "/frep/resolutions/0",
+              "whole number from 2 to 1024");
+  expectError(R"({"frep": {"backends": [3]}})", "/frep/backends/0", "backend setting");
+  expectError(R"({"surfaces": {"segments": [8]}})", "/surfaces", "unknown key 'segments'");
+  expectError(R"({"frep": []})", "/frep", "expected an object");
+}
+
 TEST(Sweep, ARepeatedKeyIsRefused) {
   expectError(R"({"backends": ["obbtree"], "backends": ["ode"]})", "/backends",
               "duplicate key 'backends'");

@@ -8,11 +8,13 @@ namespace collido::study {
 
 /// What a study is asked to do (collido study's arguments), and how its workers start.
 struct StudyRequest {
-  std::vector<std::string> scenes;    ///< scene files
-  std::vector<std::string> backends;  ///< NAME or NAME[key=value;...]; with a sweep, a filter
-  std::string sweep_path;             ///< "" for none
-  std::string out;                    ///< the study folder
-  std::string shard;                  ///< "I/N", or "" for the whole study
+  std::vector<std::string> scenes;         ///< scene files
+  std::vector<std::string> surface_files;  ///< NURBS surface files (collido surface-distance)
+  std::vector<std::string> frep_files;     ///< FRep files (collido frep)
+  std::vector<std::string> backends;       ///< NAME or NAME[key=value;...]; with a sweep, a filter
+  std::string sweep_path;                  ///< "" for none
+  std::string out;                         ///< the study folder
+  std::string shard;                       ///< "I/N", or "" for the whole study
   bool resume = false;
   bool retry_failed = false;
   double timeout_s = 0.0;          ///< 0: the sweep's, else 600

@@ -3,6 +3,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <set>
 #include <string>
 #include <utility>
@@ -15,9 +16,23 @@
 
 namespace collido::study {
 
+/// What a combination measures, and so which command its worker runs: a mesh scene (the
+/// runner), a NURBS surface file (collido surface-distance) or an FRep file (collido frep).
+enum class InputKind { kScene, kSurfaces, kFrep };
+
+/// "scene", "surfaces" or "frep".
+const char* inputKindName(InputKind kind);
+std::optional<InputKind> parseInputKind(const std::string& name);
+
+/// The backend text of a surface or FRep file's own seed method (no plugin).
+inline constexpr const char* kSeedMethod = "seed";
+
 /// One unit of a study: one scene at one resolution on one backend setting, run by one worker.
 struct Combination {
   std::string id;  ///< stable, file-name safe, unique within a plan
+  InputKind kind = InputKind::kScene;
+  /// Surfaces: the tessellations (segments per side); FRep: the polygonization resolutions.
+  std::vector<int> grid = {};
   std::string scene_path;
   std::string scene_name;
   double resolution = 1.0;
@@ -65,6 +80,12 @@ struct PlannedScene {
 std::vector<Combination> planStudy(
     const std::vector<PlannedScene>& scenes, const std::vector<std::string>& backends,
     const Sweep& sweep, const std::map<std::string, std::set<std::string>>& only_scenes = {});
+
+/// A surface or FRep file's combinations: its seed method (kSeedMethod), then each backend
+/// setting, each with the grid sizes the backend's meshes are made at.
+std::vector<Combination> planComparisons(const std::vector<PlannedScene>& files, InputKind kind,
+                                         const std::vector<std::string>& backends,
+                                         const std::vector<int>& grid);
 
 /// The part of a plan that shard `index` of `count` runs (every count-th combination from
 /// `index`, so each shard gets a fair mix of cheap and dear ones).

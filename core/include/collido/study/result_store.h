@@ -38,6 +38,9 @@ struct CombinationResult {
   /// the worker held before (scene, oracle answers): the backend's own share (ResidentPeak).
   /// Absent when the worker did not finish or the kernel could not reset the peak.
   std::optional<std::size_t> backend_rss_bytes;
+  /// Surface and FRep combinations: what their command wrote with --json (collido
+  /// surface-distance, collido frep), for this one setting; null for mesh scenes.
+  nlohmann::json comparison;
 
   /// The memory figure tables show: the backend's own share, else the worker's peak.
   std::size_t residentBytes() const { return backend_rss_bytes.value_or(outcome.peak_rss_bytes); }

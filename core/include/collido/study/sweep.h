@@ -32,6 +32,13 @@ struct SweepBackend {
   std::vector<std::string> settings() const;
 };
 
+/// The backend settings and grid sizes for a study's NURBS surface files (grid: tessellations,
+/// segments per side) or FRep files (grid: polygonization cells along the longest side).
+struct SweepComparison {
+  std::vector<std::string> backends;  ///< backend texts; empty: the study's mesh settings
+  std::vector<int> grid;
+};
+
 /// The settings a study sweeps (format: docs/STUDY.md). Every list has at least one entry.
 struct Sweep {
   std::vector<SweepBackend> backends;    ///< empty: every variant found (or --backends)
@@ -45,6 +52,9 @@ struct Sweep {
   std::optional<double> timeout_s;
   /// "repeated" or "cycled" (TimingProtocol); unset: --protocol, else repeated.
   std::optional<std::string> protocol;
+  /// "surfaces" and "frep": how the study's surface and FRep files are compared.
+  SweepComparison surfaces{{}, {8, 32, 128}};
+  SweepComparison frep{{}, {16, 32, 64}};
 
   /// The resolutions to run `scene` at.
   const std::vector<double>& resolutionsOf(const std::string& scene) const;
