@@ -19,6 +19,7 @@
 #include <collido/study/deform_table.h>
 #include <collido/study/expected_time.h>
 #include <collido/study/field_table.h>
+#include <collido/study/figures.h>
 #include <collido/study/robustness.h>
 #include <collido/study/tracking_table.h>
 
@@ -47,10 +48,6 @@ std::string hostName() {
   char name[256] = {};
   if (gethostname(name, sizeof name - 1) != 0) return "";
   return name;
-}
-
-double perQuery(std::uint64_t total, std::size_t frames) {
-  return frames == 0 ? 0.0 : static_cast<double>(total) / static_cast<double>(frames);
 }
 
 }  // namespace
@@ -84,7 +81,6 @@ std::string benchmarkJson(const std::vector<CombinationResult>& results) {
     for (const QueryMeasurement& m : tableMeasurements(r)) {
       if (!m.ok()) continue;
       const std::string name = benchmarkName(r.combination, m);
-      const double triangles = m.triangles == 0 ? 1.0 : static_cast<double>(m.triangles);
       Json entry = {{"name", name},
                     {"family_index", benchmarks.size()},
                     {"per_family_instance_index", 0},
@@ -96,38 +92,13 @@ std::string benchmarkJson(const std::vector<CombinationResult>& results) {
                     {"iterations", m.times_us.size()},
                     {"real_time", m.median_us},
                     {"cpu_time", m.median_us},
-                    {"time_unit", "us"},
-                    {"p90_us", m.p90_us},
-                    {"p99_us", m.p99_us},
-                    {"max_us", m.max_us},
-                    {"frames", m.frames.size()},
-                    {"disagreements", m.disagreements},
-                    {"false_negatives", m.false_negatives},
-                    {"false_positives", m.false_positives},
-                    {"recall", m.recall},
-                    {"precision", m.precision},
-                    {"build_ms", m.build_ms},
-                    {"triangles", m.triangles},
-                    {"bytes_per_triangle", static_cast<double>(m.memory_bytes) / triangles},
-                    {"peak_rss_bytes", r.outcome.peak_rss_bytes},
-                    {"backend_rss_bytes", r.residentBytes()}};
-      if (m.heap_bytes) {
-        entry["heap_bytes_per_triangle"] = static_cast<double>(*m.heap_bytes) / triangles;
+                    {"time_unit", "us"}};
+      // Every summary figure the measurement has, as a counter.
+      for (const Figure& figure : measurementFigures()) {
+        if ((figure.uses & kInSummary) == 0u) continue;
+        const nlohmann::json value = figure.value(r, m);
+        if (!value.is_null()) entry[figure.name] = value;
       }
-      if (m.finest_disagreements) entry["finest_disagreements"] = *m.finest_disagreements;
-      std::uint64_t bv = 0;
-      std::uint64_t primitive = 0;
-      for (const FrameRecord& f : m.frames) {
-        bv += f.bv_tests;
-        primitive += f.primitive_tests;
-      }
-      if (m.counts_bv_tests) entry["bv_tests"] = perQuery(bv, m.frames.size());
-      if (m.counts_primitive_tests) {
-        entry["primitive_tests"] = perQuery(primitive, m.frames.size());
-      }
-      if (m.floor_ratio) entry["floor_ratio"] = *m.floor_ratio;
-      if (m.update_median_us) entry["update_median_us"] = *m.update_median_us;
-      if (m.contact) entry["contact"] = contactScoreJson<Json>(*m.contact);
       benchmarks.push_back(entry);
     }
   }

@@ -9,6 +9,7 @@
 #include <set>
 #include <sstream>
 
+#include <collido/study/figures.h>
 #include <collido/study/html_page.h>
 #include <collido/study/robustness.h>
 
@@ -17,78 +18,32 @@ namespace {
 
 using Json = nlohmann::json;
 
-Json nullable(const std::optional<double>& value) {
-  return value ? Json(*value) : Json();
-}
-
-std::optional<double> perTriangle(const std::optional<std::size_t>& bytes, std::size_t triangles) {
-  if (!bytes || triangles == 0) return std::nullopt;
-  return static_cast<double>(*bytes) / static_cast<double>(triangles);
-}
-
 std::string backendLabel(const Combination& c) {
   const std::string setting = c.settingText();
   return setting.empty() ? c.backend : c.backend + " " + setting;
 }
 
+// A dashboard row: the setting, scene and query, then every figure the dashboard shows.
 Json row(const CombinationResult& r, const QueryMeasurement& m) {
   const Combination& c = r.combination;
-  const double frames = m.frames.empty() ? 1.0 : static_cast<double>(m.frames.size());
-  std::uint64_t bv = 0;
-  std::uint64_t primitive = 0;
-  for (const FrameRecord& f : m.frames) {
-    bv += f.bv_tests;
-    primitive += f.primitive_tests;
-  }
   const std::size_t variant_end = c.backend.find('[');
-  return {{"key", c.backend + "|" + c.settingText() + "|" + c.scene_name + "|" + m.query},
-          {"label", backendLabel(c)},
-          {"backend", c.backend},
-          {"variant", c.backend.substr(0, variant_end)},
-          {"setting", c.settingText()},
-          {"scene", c.scene_name},
-          {"category", c.category},
-          {"resolution", c.resolution},
-          {"needs", needsModeName(c.needs)},
-          {"limit", c.limit},
-          {"query", m.query},
-          {"kind", queryKindName(m.kind)},
-          {"status", m.status.text()},
-          {"frames", m.frames.size()},
-          {"median_us", m.median_us},
-          {"p90_us", m.p90_us},
-          {"p99_us", m.p99_us},
-          {"max_us", m.max_us},
-          {"disagreements", m.disagreements},
-          {"error_rate", static_cast<double>(m.disagreements) / frames},
-          {"false_negatives", m.false_negatives},
-          {"false_positives", m.false_positives},
-          {"recall", m.recall},
-          {"precision", m.precision},
-          {"max_distance_error", nullable(m.max_distance_error)},
-          {"max_relative_distance_error", nullable(m.max_relative_distance_error)},
-          {"contacts_per_frame",
-           m.contact ? Json(static_cast<double>(m.contact->contacts) / frames) : Json()},
-          {"contact_position_error", m.contact ? nullable(m.contact->position_error) : Json()},
-          {"contact_surface_error", m.contact ? nullable(m.contact->surface_error) : Json()},
-          {"contact_normal_error_deg", m.contact ? nullable(m.contact->normal_error_deg) : Json()},
-          {"contact_depth_error", m.contact ? nullable(m.contact->depth_error) : Json()},
-          {"contact_coverage", m.contact ? nullable(m.contact->coverage) : Json()},
-          {"contact_false_pairs", m.contact ? Json(m.contact->false_pairs) : Json()},
-          {"finest_error_rate", m.finest_disagreements
-                                    ? Json(static_cast<double>(*m.finest_disagreements) / frames)
-                                    : Json()},
-          {"build_ms", m.build_ms},
-          {"triangles", m.triangles},
-          {"bytes_per_triangle",
-           m.triangles == 0 ? 0.0 : static_cast<double>(m.memory_bytes) / m.triangles},
-          {"heap_bytes_per_triangle", nullable(perTriangle(m.heap_bytes, m.triangles))},
-          {"heap_peak_bytes_per_triangle", nullable(perTriangle(m.heap_peak_bytes, m.triangles))},
-          {"peak_rss_mib", static_cast<double>(r.outcome.peak_rss_bytes) / 1048576.0},
-          {"backend_rss_mib", static_cast<double>(r.residentBytes()) / 1048576.0},
-          {"bv_tests", m.counts_bv_tests ? Json(static_cast<double>(bv) / frames) : Json()},
-          {"primitive_tests",
-           m.counts_primitive_tests ? Json(static_cast<double>(primitive) / frames) : Json()}};
+  Json row = {{"key", c.backend + "|" + c.settingText() + "|" + c.scene_name + "|" + m.query},
+              {"label", backendLabel(c)},
+              {"backend", c.backend},
+              {"variant", c.backend.substr(0, variant_end)},
+              {"setting", c.settingText()},
+              {"scene", c.scene_name},
+              {"category", c.category},
+              {"resolution", c.resolution},
+              {"needs", needsModeName(c.needs)},
+              {"limit", c.limit},
+              {"query", m.query},
+              {"kind", queryKindName(m.kind)},
+              {"status", m.status.text()}};
+  for (const Figure& figure : measurementFigures()) {
+    if ((figure.uses & kInDashboard) != 0u) row[figure.name] = figure.value(r, m);
+  }
+  return row;
 }
 
 Json rowsOf(const std::vector<CombinationResult>& results) {

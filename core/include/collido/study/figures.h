@@ -1,0 +1,30 @@
+#pragma once
+
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include <collido/study/result_store.h>
+
+namespace collido::study {
+
+/// Where a figure is shown.
+enum FigureUse : unsigned {
+  kInSummary = 1u,    ///< a counter of summary.json (Google Benchmark's format)
+  kInDashboard = 2u,  ///< a key of the dashboard's rows (collido report)
+};
+
+/// One figure of a (combination, measurement) as the outputs show it, listed once for all of
+/// them: its name, where it is shown, and its value — null where the backend, the scene or the
+/// query gives none (summary.json then leaves it out; the dashboard shows a gap).
+struct Figure {
+  const char* name;
+  unsigned uses;
+  nlohmann::json (*value)(const CombinationResult& result, const QueryMeasurement& m);
+};
+
+/// Every figure, in output order. A new figure is one entry here (and its computation in the
+/// runner's summary, summariseMeasurement), and it reaches summary.json and the dashboard.
+const std::vector<Figure>& measurementFigures();
+
+}  // namespace collido::study
