@@ -24,7 +24,8 @@ for argument in "$@"; do
 done
 tools/install_deps.sh
 tools/web_deps.sh
-tools/configure.sh release --target collido collido_plugins
+# The conformance kit too: `collido conformance PLUGIN.so` runs it on a plugin of your own.
+tools/configure.sh release --target collido collido_plugins collido_conformance
 if $full; then
   out=build/release/study_full
   scenes=(scenes/*.json scenes/stress/*.json)

@@ -1,4 +1,6 @@
 #include <iostream>
+#include <string>
+#include <vector>
 
 #include <collido/host/backend_instance.h>
 #include <collido/host/plugin_library.h>
@@ -8,9 +10,12 @@
 namespace collido::cli {
 namespace {
 
+// Lists what loaded on stdout and every problem on stderr: a plugin that did not load, or a
+// variant that cannot be created, makes the exit code 1 (a script or CI notices).
 int listBackends(const PluginOptions& options) {
   const PluginDiscovery found = discoverPlugins(options.paths, !options.no_defaults);
-  if (found.plugins.empty()) std::cout << "No plugins found.\n";
+  std::vector<std::string> problems = found.problems;
+  if (found.plugins.empty()) problems.push_back("no plugins found");
   for (const auto& plugin : found.plugins) {
     const CollidoPluginTable& t = plugin->table();
     std::cout << plugin->name() << " " << t.plugin_version << " (" << t.engine_name << " "
@@ -21,6 +26,7 @@ int listBackends(const PluginOptions& options) {
           BackendInstance::create(plugin, variant.name);
       if (!instance.ok()) {
         std::cout << "    cannot create: " << instance.status().message() << "\n";
+        problems.push_back(variant.name + ": cannot create: " + instance.status().message());
         continue;
       }
       const Capabilities& caps = instance.value()->capabilities();
@@ -35,16 +41,18 @@ int listBackends(const PluginOptions& options) {
       if (!caps.notes.empty()) std::cout << "    notes: " << caps.notes << "\n";
     }
   }
-  for (const std::string& problem : found.problems)
-    std::cout << "problem: " << problem << "\n";
-  return found.plugins.empty() ? 1 : 0;
+  for (const std::string& problem : problems)
+    std::cerr << "problem: " << problem << "\n";
+  return problems.empty() ? 0 : 1;
 }
 
 }  // namespace
 
 void addBackendsCommand(CLI::App& app, const PluginOptions& plugins, int& exit_code) {
   CLI::App* command = app.add_subcommand(
-      "backends", "List the backend plugins found, their variants, versions and capabilities");
+      "backends",
+      "List the backend plugins found, their variants, versions and capabilities. Exit code 1, "
+      "with the problems on stderr, when a plugin could not be loaded or a variant created");
   command->callback([&plugins, &exit_code] { exit_code = listBackends(plugins); });
 }
 

@@ -1,5 +1,6 @@
 // collido conformance PLUGIN.so: runs the conformance kit (the collido_conformance executable
-// beside this one) against one plugin file and prints a pass/skip/fail table.
+// beside this one) against one plugin file, shows each check as it ends, and prints a
+// pass/skip/fail table with every failure of every check.
 #include <fcntl.h>
 #include <spawn.h>
 #include <sys/wait.h>
@@ -34,20 +35,22 @@ struct ConformanceArguments {
   std::string write_expectations_dir;
   std::string scenes_dir;
   std::string variant;
+  std::string log;  // where to keep the kit's own output ("": not kept)
 };
 
-// Runs `argv` with stdout and stderr into `log`; returns the exit status, or -signal.
+// Runs `argv` with its stdout on ours (the kit's progress lines) and its stderr into `log`;
+// returns the exit status, or -signal.
 int runTo(const std::vector<std::string>& argv, const std::string& log) {
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, log.c_str(),
+  posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, log.c_str(),
                                    O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
   std::vector<char*> args;
   args.reserve(argv.size() + 1);
   for (const std::string& a : argv)
     args.push_back(const_cast<char*>(a.c_str()));
   args.push_back(nullptr);
+  std::cout.flush();
   pid_t pid = 0;
   const int spawned = posix_spawn(&pid, args[0], &actions, nullptr, args.data(), environ);
   posix_spawn_file_actions_destroy(&actions);
@@ -58,21 +61,24 @@ int runTo(const std::vector<std::string>& argv, const std::string& log) {
   return WEXITSTATUS(status);
 }
 
-// The first line of a failure message that says something: GoogleTest puts "file:line" first.
-std::string firstLine(const std::string& text) {
+// A failure message without GoogleTest's "file:line" and "Failed" lines, one string per line.
+std::vector<std::string> messageLines(const std::string& text) {
+  std::vector<std::string> out;
   std::istringstream lines(text);
   std::string line;
   while (std::getline(lines, line)) {
     const bool location = line.rfind('/', 0) == 0 && line.find(' ') == std::string::npos;
-    if (!line.empty() && !location && line != "Failed") return line;
+    if (!line.empty() && !location && line != "Failed") out.push_back(line);
   }
-  return text;
+  if (out.empty()) out.push_back(text);
+  return out;
 }
 
 struct Row {
   std::string check;
   std::string result;
   std::string detail;
+  std::vector<std::string> more;  ///< the lines of every further failure message
 };
 
 std::vector<Row> readReport(const std::string& path) {
@@ -91,7 +97,16 @@ std::vector<Row> readReport(const std::string& path) {
       row.check = suite_name + "." + test.value("name", "");
       if (test.contains("failures")) {
         row.result = "FAIL";
-        row.detail = firstLine(test["failures"][0].value("failure", ""));
+        // Every failure of the check (a scene reports each query that failed), in full.
+        for (const auto& failure : test["failures"]) {
+          for (const std::string& line : messageLines(failure.value("failure", ""))) {
+            if (row.detail.empty()) {
+              row.detail = line;
+            } else {
+              row.more.push_back(line);
+            }
+          }
+        }
       } else if (test.value("result", "") == "SKIPPED") {
         row.result = "skip";
         row.detail = test.value("detail", "");
@@ -110,7 +125,8 @@ int runConformance(const ConformanceArguments& args) {
   const std::string kit = (here.empty() ? std::string(".") : here) + "/collido_conformance";
   if (!fs::exists(kit)) {
     std::cerr << "error: the conformance kit is not built (" << kit
-              << "); configure with COLLIDO_BUILD_TESTS=ON\n";
+              << "); build it with cmake --build <build folder> --target collido_conformance "
+                 "(tools/study.sh does)\n";
     return 2;
   }
   std::error_code ec;
@@ -120,7 +136,7 @@ int runConformance(const ConformanceArguments& args) {
   const std::string json = (work / "report.json").string();
   const std::string log = (work / "kit.log").string();
   std::vector<std::string> argv = {kit, "--plugin=" + fs::absolute(args.plugin).string(),
-                                   "--gtest_output=json:" + json};
+                                   "--gtest_output=json:" + json, "--progress"};
   if (!args.expectations_dir.empty()) argv.push_back("--expectations-dir=" + args.expectations_dir);
   if (!args.write_expectations_dir.empty()) {
     argv.push_back("--write-expectations-dir=" + args.write_expectations_dir);
@@ -129,11 +145,23 @@ int runConformance(const ConformanceArguments& args) {
   if (!args.variant.empty()) argv.push_back("--variant=" + args.variant);
   const int status = runTo(argv, log);
   const std::vector<Row> rows = readReport(json);
+  // The kit's own output is kept only where asked; the folder goes either way.
+  std::string kept_log;
+  if (!args.log.empty()) {
+    fs::copy_file(log, args.log, fs::copy_options::overwrite_existing, ec);
+    if (!ec) kept_log = args.log;
+  }
+  const auto clean_up = [&work] {
+    std::error_code ignored;
+    fs::remove_all(work, ignored);
+  };
   if (rows.empty()) {
     std::ifstream in(log);
     std::cerr << "error: the kit produced no report (exit " << status << "):\n" << in.rdbuf();
+    clean_up();
     return status < 0 ? 1 : (status == 0 ? 1 : status);
   }
+  clean_up();
   std::size_t width = 5;
   for (const Row& r : rows)
     width = std::max(width, r.check.size());
@@ -143,10 +171,12 @@ int runConformance(const ConformanceArguments& args) {
     ++totals[r.result];
     std::cout << r.check << std::string(width - r.check.size(), ' ') << "  " << r.result
               << std::string(6 - r.result.size(), ' ') << "  " << r.detail << "\n";
+    for (const std::string& line : r.more)
+      std::cout << std::string(width + 10, ' ') << line << "\n";
   }
   std::cout << "\n"
             << totals["pass"] << " passed, " << totals["skip"] << " skipped, " << totals["FAIL"]
-            << " failed; full output: " << log << "\n";
+            << " failed" << (kept_log.empty() ? "" : "; the kit's output: " + kept_log) << "\n";
   if (status < 0) std::cout << "the kit died of signal " << -status << "\n";
   return totals["FAIL"] == 0 && status == 0 ? 0 : 1;
 }
@@ -168,7 +198,10 @@ void addConformanceCommand(CLI::App& app, int& exit_code) {
   command->add_option("--write-expectations-dir", args->write_expectations_dir,
                       "write the measured disagreements there, for review");
   command->add_option("--scenes-dir", args->scenes_dir, "scenes to run (default: the bundled)");
-  command->add_option("--variant", args->variant, "test only this variant of the plugin");
+  command->add_option("--variant", args->variant,
+                      "test only this variant of the plugin, NAME or 'NAME[key=value;...]' with "
+                      "backend options");
+  command->add_option("--log", args->log, "keep the kit's own output (GoogleTest's) in this file");
   command->callback([args, &exit_code] { exit_code = runConformance(*args); });
 }
 

@@ -1,8 +1,10 @@
 // collido_conformance: the plugin conformance kit.
-//   collido_conformance --plugin=PATH.so [--plugin=...] [--variant=NAME]
+//   collido_conformance --plugin=PATH.so [--plugin=...] [--variant='NAME[key=value;...]']
 //                       [--expectations-dir=DIR] [--write-expectations-dir=DIR] [--scenes-dir=DIR]
 //                       [--oracle-cache=DIR | --fill-oracle-cache=DIR]
-//                       [--skip-scenes=STEM,STEM...] [GoogleTest flags]
+//                       [--skip-scenes=STEM,STEM...] [--progress] [GoogleTest flags]
+// --progress replaces GoogleTest's output with one line per check as it ends ("[3/40] check:
+// pass"), which collido conformance shows while the kit runs.
 // Every variant of every plugin given is run through the whole suite (conformance_test.cpp).
 // --skip-scenes leaves bundled scenes out (the sanitizer build leaves the heaviest ones to the
 // Release run: tests/conformance/CMakeLists.txt).
@@ -12,12 +14,15 @@
 #include <cstring>
 #include <filesystem>
 #include <iostream>
+#include <map>
 #include <set>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
+
+#include <collido/runner/runner.h>
 
 #include "conformance_target.h"
 #include "scene_cases.h"
@@ -44,6 +49,24 @@ std::string gtestName(const std::string& text) {
 
 namespace {
 
+// One line per finished check on stdout: "[done/total] suite.check: pass|FAIL|skip".
+class ProgressPrinter final : public ::testing::EmptyTestEventListener {
+ public:
+  void OnTestProgramStart(const ::testing::UnitTest& unit) override {
+    total_ = unit.test_to_run_count();
+  }
+  void OnTestEnd(const ::testing::TestInfo& test) override {
+    const ::testing::TestResult& result = *test.result();
+    const char* outcome = result.Skipped() ? "skip" : (result.Failed() ? "FAIL" : "pass");
+    std::cout << "[" << ++done_ << "/" << total_ << "] " << test.test_suite_name() << "."
+              << test.name() << ": " << outcome << std::endl;
+  }
+
+ private:
+  int total_ = 0;
+  int done_ = 0;
+};
+
 bool takeValue(const char* arg, const char* flag, std::string& out) {
   const std::size_t n = std::strlen(flag);
   if (std::strncmp(arg, flag, n) != 0 || arg[n] != '=') return false;
@@ -61,6 +84,7 @@ int main(int argc, char** argv) {
   std::string oracle_cache;
   std::string fill_oracle_cache;
   std::set<std::string> skipped_scenes;
+  bool progress = false;
   settings().expectations_dir = COLLIDO_SOURCE_DIR "/tests/conformance/expectations";
   settings().scenes_dir = COLLIDO_SOURCE_DIR "/scenes";
   std::vector<char*> rest = {argv[0]};
@@ -80,6 +104,8 @@ int main(int argc, char** argv) {
       oracle_cache = value;
     } else if (takeValue(argv[i], "--fill-oracle-cache", value)) {
       fill_oracle_cache = value;
+    } else if (std::strcmp(argv[i], "--progress") == 0) {
+      progress = true;
     } else if (takeValue(argv[i], "--skip-scenes", value)) {
       std::stringstream names(value);
       for (std::string name; std::getline(names, name, ',');) {
@@ -93,6 +119,18 @@ int main(int argc, char** argv) {
     std::cerr << "collido_conformance: give at least one --plugin=PATH\n";
     return 2;
   }
+  // --variant='name[key=value;...]': one variant, with options.
+  std::map<std::string, std::string> variant_options;
+  if (!only_variant.empty()) {
+    collido::Result<std::pair<std::string, std::map<std::string, std::string>>> parsed =
+        collido::parseBackendText(only_variant);
+    if (!parsed.ok()) {
+      std::cerr << "collido_conformance: --variant: " << parsed.status().message() << "\n";
+      return 2;
+    }
+    only_variant = parsed.value().first;
+    variant_options = parsed.value().second;
+  }
   for (const std::string& path : plugins) {
     collido::Result<std::shared_ptr<collido::PluginLibrary>> library =
         collido::PluginLibrary::open(path);
@@ -102,7 +140,7 @@ int main(int argc, char** argv) {
     }
     for (const collido::VariantInfo& v : library.value()->variants()) {
       if (!only_variant.empty() && v.name != only_variant) continue;
-      targets().push_back(Target{library.value(), v.name, gtestName(v.name)});
+      targets().push_back(Target{library.value(), v.name, gtestName(v.name), variant_options});
     }
   }
   if (targets().empty()) {
@@ -122,6 +160,11 @@ int main(int argc, char** argv) {
   int rest_count = static_cast<int>(rest.size());
   rest.push_back(nullptr);  // argv[argc] is null, and GoogleTest moves it along with the flags
   ::testing::InitGoogleTest(&rest_count, rest.data());
+  if (progress) {
+    ::testing::TestEventListeners& listeners = ::testing::UnitTest::GetInstance()->listeners();
+    delete listeners.Release(listeners.default_result_printer());
+    listeners.Append(new ProgressPrinter);  // GoogleTest owns it
+  }
   const int failed = RUN_ALL_TESTS();
   if (!fill_oracle_cache.empty()) {
     if (collido::Status s = storeOracleAnswers(fill_oracle_cache); !s.ok()) {

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -13,6 +14,7 @@ struct Target {
   std::shared_ptr<PluginLibrary> library;
   std::string variant;
   std::string test_name;  ///< the variant as a GoogleTest name ("fcl_obb")
+  std::map<std::string, std::string> options = {};  ///< from --variant 'name[key=value;...]'
 };
 
 /// Where the kit reads and writes, from the command line.

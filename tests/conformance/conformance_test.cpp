@@ -44,7 +44,7 @@ namespace {
 
 std::unique_ptr<BackendInstance> createInstance(const Target& target) {
   Result<std::unique_ptr<BackendInstance>> instance =
-      BackendInstance::create(target.library, target.variant);
+      BackendInstance::create(target.library, target.variant, target.options);
   EXPECT_TRUE(instance.ok()) << instance.status().message();
   return instance.ok() ? std::move(instance).value() : nullptr;
 }
@@ -450,13 +450,35 @@ class SceneAnswers : public ::testing::TestWithParam<std::tuple<std::size_t, std
  protected:
   const Target& target() const { return targets()[std::get<0>(GetParam())]; }
   const SceneCase& scene() const { return sceneCases()[std::get<1>(GetParam())]; }
+  std::string viewCommand() const;
 };
+
+// The command whose page shows, frame by frame, the triangle pairs the backend and the oracle
+// disagree on (docs/VIEW.md).
+std::string SceneAnswers::viewCommand() const {
+  if (scene().path.empty()) {
+    return "this scene is one of the kit's own (tests/conformance/scene_cases.cpp); write it to "
+           "a file and run collido view on it";
+  }
+  std::string backend = target().variant;
+  if (!target().options.empty()) {
+    backend += "[";
+    bool first = true;
+    for (const auto& [key, value] : target().options) {
+      backend.append(first ? "" : ";").append(key).append("=").append(value);
+      first = false;
+    }
+    backend += "]";
+  }
+  return "collido --plugin " + target().library->path() + " view " + scene().path +
+         " --backends '" + backend + "' -o view.html";
+}
 
 TEST_P(SceneAnswers, MatchTheOracleOrTheRecordedExpectations) {
   Result<Expectations> expectations =
       loadExpectations(settings().expectations_dir, target().variant);
   ASSERT_TRUE(expectations.ok()) << expectations.status().message();
-  const BackendSpec spec{target().library, target().variant, {}};
+  const BackendSpec spec{target().library, target().variant, target().options};
   RunOptions options;
   options.repetitions = 0;  // answers only; timing belongs to the study
   const RunReport report = runScene(*scene().scene, spec, options, *scene().oracle);
@@ -469,7 +491,11 @@ TEST_P(SceneAnswers, MatchTheOracleOrTheRecordedExpectations) {
       skipped += (skipped.empty() ? "" : "; ") + m.query + " " + m.status.text();
       continue;
     }
-    ASSERT_TRUE(m.ok()) << m.query << ": " << m.status;
+    // Every query's failure is reported, not only the first one's.
+    if (!m.ok()) {
+      ADD_FAILURE() << m.query << ": " << m.status;
+      continue;
+    }
     ++answered;
     const std::string key = scene().name + "/" + m.query;
     const Disagreement measured = disagreementOf(m);
@@ -487,7 +513,8 @@ TEST_P(SceneAnswers, MatchTheOracleOrTheRecordedExpectations) {
           << (expectations.value().file.empty() ? "no expectations file: must be exact"
                                                 : expectations.value().file)
           << ")\n  A comparator's changed count is a finding to review; update the file only "
-             "after reading the differing frames (collido run --json).";
+             "after looking at the differing triangle pairs, frame by frame: "
+          << viewCommand();
   }
   if (answered == 0) COLLIDO_KIT_SKIP("no query of this scene is answered: " + skipped);
   if (!recorded.empty() || !skipped.empty()) RecordProperty("detail", recorded + skipped);

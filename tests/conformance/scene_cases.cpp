@@ -96,10 +96,11 @@ Status loadSceneCases(const std::string& directory, const std::set<std::string>&
             directory + ": --skip-scenes names no scene file '" + *not_found.begin() + ".json'"};
   }
   std::sort(files.begin(), files.end());
-  const auto add = [](Result<Scene> scene) -> Status {
+  const auto add = [](Result<Scene> scene, const std::string& path) -> Status {
     if (!scene.ok()) return scene.status();
     SceneCase c;
     c.name = scene.value().name;
+    c.path = path;
     c.test_name = gtestName(c.name);
     c.scene = std::make_shared<const Scene>(std::move(scene).value());
     c.oracle = std::make_shared<OracleCache>(*c.scene);
@@ -107,10 +108,10 @@ Status loadSceneCases(const std::string& directory, const std::set<std::string>&
     return {};
   };
   for (const std::string& file : files) {
-    if (Status s = add(loadScene(file)); !s.ok()) return s;
+    if (Status s = add(loadScene(file), file); !s.ok()) return s;
   }
   for (const char* text : kKitScenes) {
-    if (Status s = add(parseScene(text, "conformance kit scene", directory)); !s.ok()) return s;
+    if (Status s = add(parseScene(text, "conformance kit scene", directory), ""); !s.ok()) return s;
   }
   return {};
 }

@@ -15,6 +15,7 @@ namespace collido::conformance {
 struct SceneCase {
   std::string name;       ///< the scene's name, used in expectation keys
   std::string test_name;  ///< as a GoogleTest name
+  std::string path;       ///< the scene file; empty for the kit's own generated scenes
   std::shared_ptr<const Scene> scene;
   /// The oracle's answers on `scene`, shared by every variant the kit tests (computed once).
   std::shared_ptr<OracleCache> oracle;

@@ -713,6 +713,48 @@ TEST(StudyCli, SurfaceAndFrepFilesRunInWorkersOfTheirOwn) {
   EXPECT_NE(again.err.find("study: 6 combinations, 0 to run"), std::string::npos) << again.err;
 }
 
+// The conformance kit as a plugin author meets it: progress while it runs, every failing query
+// of a scene, the command that shows the differing pairs, backend options through --variant,
+// and no scratch folder left behind.
+TEST(ConformanceCli, ShowsProgressEveryFailureAndTheViewCommand) {
+  const std::string dir = test::makeTempDirectory("conformance_cli");
+  fs::create_directories(dir + "/scenes");
+  writeSmallScene(dir + "/scenes");
+  const std::string plugin =
+      std::string(COLLIDO_TEST_PLUGIN_DIR) + "/libcollido_plugin_misbehaving.so";
+  const auto scratch = [] {
+    std::set<std::string> folders;
+    for (const fs::directory_entry& entry : fs::directory_iterator(fs::temp_directory_path())) {
+      if (entry.path().filename().string().rfind("collido_conformance_", 0) == 0)
+        folders.insert(entry.path().string());
+    }
+    return folders;
+  };
+  const std::set<std::string> before = scratch();
+  const CommandRun wrong = collido({"conformance", plugin, "--variant", "misbehaving:wrong",
+                                    "--scenes-dir", dir + "/scenes", "--log", dir + "/kit.txt"},
+                                   dir);
+  EXPECT_EQ(wrong.exit_code, 1) << describe(wrong);
+  EXPECT_NE(wrong.out.find("[1/"), std::string::npos) << wrong.out;
+  // Both queries of the linked scene fail, each shown.
+  EXPECT_NE(wrong.out.find("linked/pairs: measured"), std::string::npos) << wrong.out;
+  EXPECT_NE(wrong.out.find("linked/hit: measured"), std::string::npos) << wrong.out;
+  EXPECT_NE(wrong.out.find(" view " + dir + "/scenes/linked.json --backends 'misbehaving:wrong'"),
+            std::string::npos)
+      << wrong.out;
+  EXPECT_TRUE(fs::exists(dir + "/kit.txt"));
+  EXPECT_EQ(scratch(), before);
+
+  // Options reach the backend: an unknown one is refused by every check that builds.
+  const CommandRun options =
+      collido({"conformance", plugin, "--variant", "misbehaving:exact[no_such_option=1]",
+               "--scenes-dir", dir + "/scenes"},
+              dir);
+  EXPECT_EQ(options.exit_code, 1) << describe(options);
+  EXPECT_NE(options.out.find("no_such_option"), std::string::npos) << options.out;
+  EXPECT_EQ(scratch(), before);
+}
+
 TEST(StudyCli, BadArgumentsAreRefused) {
   const std::string dir = test::makeTempDirectory("study_bad");
   const std::string scene = writeSmallScene(dir);
