@@ -58,15 +58,8 @@ std::string recordsJsonLines(const std::vector<CombinationResult>& results) {
     const Combination& c = r.combination;
     for (const QueryMeasurement& m : r.measurements) {
       for (const FrameRecord& f : m.frames) {
-        Json line = {{"combination", c.id},
-                     {"backend", c.backend},
-                     {"scene", c.scene_name},
-                     {"category", c.category},
-                     {"resolution", c.resolution},
-                     {"needs", needsModeName(c.needs)},
-                     {"limit", c.limit},
-                     {"query", m.query},
-                     {"kind", queryKindName(m.kind)}};
+        Json line = {{"combination", c.id}};
+        line.update(measurementIdentity<Json>(c, m));
         line.update(frameRecordJson<Json>(f, m));
         out << line.dump() << "\n";
       }

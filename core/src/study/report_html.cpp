@@ -27,19 +27,12 @@ std::string backendLabel(const Combination& c) {
 Json row(const CombinationResult& r, const QueryMeasurement& m) {
   const Combination& c = r.combination;
   const std::size_t variant_end = c.backend.find('[');
-  Json row = {{"key", c.backend + "|" + c.settingText() + "|" + c.scene_name + "|" + m.query},
+  Json row = measurementIdentity<Json>(c, m);
+  row.update({{"key", c.backend + "|" + c.settingText() + "|" + c.scene_name + "|" + m.query},
               {"label", backendLabel(c)},
-              {"backend", c.backend},
               {"variant", c.backend.substr(0, variant_end)},
               {"setting", c.settingText()},
-              {"scene", c.scene_name},
-              {"category", c.category},
-              {"resolution", c.resolution},
-              {"needs", needsModeName(c.needs)},
-              {"limit", c.limit},
-              {"query", m.query},
-              {"kind", queryKindName(m.kind)},
-              {"status", m.status.text()}};
+              {"status", m.status.text()}});
   for (const Figure& figure : measurementFigures()) {
     if ((figure.uses & kInDashboard) != 0u) row[figure.name] = figure.value(r, m);
   }

@@ -23,6 +23,15 @@ struct Figure {
   nlohmann::json (*value)(const CombinationResult& result, const QueryMeasurement& m);
 };
 
+/// The fields that name a measurement's setting, scene and query: the start of every
+/// records.jsonl line and of every dashboard row (JsonT: nlohmann::json or ordered_json).
+template <typename JsonT>
+JsonT measurementIdentity(const Combination& c, const QueryMeasurement& m) {
+  return {{"backend", c.backend},       {"scene", c.scene_name},           {"category", c.category},
+          {"resolution", c.resolution}, {"needs", needsModeName(c.needs)}, {"limit", c.limit},
+          {"query", m.query},           {"kind", queryKindName(m.kind)}};
+}
+
 /// Every figure, in output order. A new figure is one entry here (and its computation in the
 /// runner's summary, summariseMeasurement), and it reaches summary.json and the dashboard.
 const std::vector<Figure>& measurementFigures();
