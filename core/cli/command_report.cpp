@@ -73,21 +73,26 @@ Result<std::vector<study::CombinationResult>> readStudy(const std::string& direc
   return study::ResultStore(directory).readAll();
 }
 
+// The files of `folder` with `extension` (".html"), in name order; none when it does not exist.
+std::vector<std::string> filesIn(const std::filesystem::path& folder, const char* extension) {
+  std::vector<std::string> files;
+  std::error_code ec;
+  for (const auto& entry : std::filesystem::directory_iterator(folder, ec)) {
+    if (entry.path().extension() == extension) files.push_back(entry.path().string());
+  }
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
 // The scenes' 3D views beside the study (<study>/views/<scene>.html, made by collido view; see
 // tools/study.sh), linked relative to the report so the pair can be moved together.
 nlohmann::json sceneViews(const std::string& directory, const std::string& output) {
   nlohmann::json views = nlohmann::json::array();
-  const std::filesystem::path folder = std::filesystem::path(directory) / "views";
-  std::error_code ec;
-  if (!std::filesystem::is_directory(folder, ec)) return views;
-  std::vector<std::filesystem::path> pages;
-  for (const auto& entry : std::filesystem::directory_iterator(folder, ec)) {
-    if (entry.path().extension() == ".html") pages.push_back(entry.path());
-  }
-  std::sort(pages.begin(), pages.end());
   const std::filesystem::path from =
       std::filesystem::absolute(std::filesystem::path(output)).parent_path();
-  for (const std::filesystem::path& page : pages) {
+  std::error_code ec;
+  for (const std::filesystem::path page :
+       filesIn(std::filesystem::path(directory) / "views", ".html")) {
     views.push_back(
         {{"scene", page.stem().string()},
          {"href",
@@ -96,24 +101,12 @@ nlohmann::json sceneViews(const std::string& directory, const std::string& outpu
   return views;
 }
 
-// The comparison documents a study wrote beside its results (<study>/<folder>/*.json: collido
-// study --surfaces / --frep), in name order.
-std::vector<std::string> studyComparisons(const std::string& directory, const char* folder) {
-  std::vector<std::string> files;
-  std::error_code ec;
-  for (const auto& entry :
-       std::filesystem::directory_iterator(std::filesystem::path(directory) / folder, ec)) {
-    if (entry.path().extension() == ".json") files.push_back(entry.path().string());
-  }
-  std::sort(files.begin(), files.end());
-  return files;
-}
-
 int runReport(ReportArguments args) {
-  // Without explicit files, the study's own surface and FRep comparisons.
-  if (args.surface_distance.empty())
-    args.surface_distance = studyComparisons(args.directory, "surfaces");
-  if (args.frep.empty()) args.frep = studyComparisons(args.directory, "frep");
+  // Without explicit files, the comparisons the study wrote beside its results (collido study
+  // --surfaces / --frep).
+  const std::filesystem::path study(args.directory);
+  if (args.surface_distance.empty()) args.surface_distance = filesIn(study / "surfaces", ".json");
+  if (args.frep.empty()) args.frep = filesIn(study / "frep", ".json");
   Result<std::vector<study::CombinationResult>> results = readStudy(args.directory);
   if (!results.ok()) {
     std::cerr << "error: " << results.status().message() << "\n";

@@ -11,22 +11,13 @@ using Json = nlohmann::json;
 
 // How a worker that left no answer ended, with the last line of its log: what the row shows.
 std::string workerEnd(const WorkerOutcome& outcome) {
-  std::string text = outcome.status;
-  if (!outcome.signal_name.empty()) text += " (" + outcome.signal_name + ")";
-  if (outcome.status == "failed") text += " (exit " + std::to_string(outcome.exit_code) + ")";
+  std::string text = outcome.text();
   std::string tail = outcome.log_tail;
   while (!tail.empty() && (tail.back() == '\n' || tail.back() == ' '))
     tail.pop_back();
   if (const std::size_t line = tail.rfind('\n'); line != std::string::npos)
     tail = tail.substr(line + 1);
   if (!tail.empty()) text += ": " + tail;
-  return text;
-}
-
-std::string gridText(const std::vector<int>& grid) {
-  std::string text;
-  for (const int size : grid)
-    text += (text.empty() ? "" : ",") + std::to_string(size);
   return text;
 }
 
@@ -98,7 +89,7 @@ std::map<std::string, Json> comparisonDocuments(const std::vector<CombinationRes
           if (kind == InputKind::kSurfaces) {
             row["segments"] = 0;
           } else {
-            row["resolution"] = gridText(c.grid);
+            row["resolution"] = c.gridText();
           }
           document[rows].push_back(row);
         }

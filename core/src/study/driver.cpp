@@ -95,11 +95,25 @@ std::map<std::string, std::set<std::string>> onlyScenes(const Sweep& sweep,
   return only;
 }
 
-// The command a surface or FRep combination's worker runs: the file's own command for one
-// backend (against the seed's certified answers, computed untimed), or for the seed method alone.
-std::vector<std::string> comparisonCommand(const Combination& c, int repetitions,
-                                           const std::string& answer_path,
-                                           const std::string& preview_path) {
+// What a combination's worker runs (after the plugin options): a mesh scene's worker mode, or a
+// surface or FRep file's own command for one backend (against the seed's certified answers,
+// computed untimed) or for the seed method alone.
+std::vector<std::string> workerCommand(const Combination& c, int repetitions,
+                                       const std::string& request_path,
+                                       const std::string& answer_path,
+                                       const std::string& preview_path,
+                                       const std::string& oracle_directory) {
+  if (c.kind == InputKind::kScene) {
+    return {"worker",
+            "--request",
+            request_path,
+            "--out",
+            answer_path,
+            "--repetitions",
+            std::to_string(repetitions),
+            "--oracle-cache",
+            oracle_directory};
+  }
   const bool surfaces = c.kind == InputKind::kSurfaces;
   std::vector<std::string> command = {surfaces ? "surface-distance" : "frep",
                                       c.scene_path,
@@ -111,11 +125,8 @@ std::vector<std::string> comparisonCommand(const Combination& c, int repetitions
     if (!surfaces) command.insert(command.end(), {"--preview", preview_path});
     return command;
   }
-  std::string grid;
-  for (const int size : c.grid)
-    grid += (grid.empty() ? "" : ",") + std::to_string(size);
   command.insert(command.end(), {"--backends-only", "--backends", c.backend,
-                                 surfaces ? "--tessellations" : "--resolutions", grid});
+                                 surfaces ? "--tessellations" : "--resolutions", c.gridText()});
   return command;
 }
 
@@ -175,17 +186,8 @@ CombinationResult runInWorker(const Combination& c, const ResultStore& store, in
     launch.arguments.push_back(std::filesystem::absolute(plugin_file).string());
   }
   const std::string preview_path = store.scratchPath(c.id + ".png");
-  const std::vector<std::string> command =
-      c.kind == InputKind::kScene ? std::vector<std::string>{"worker",
-                                                             "--request",
-                                                             request_path,
-                                                             "--out",
-                                                             answer_path,
-                                                             "--repetitions",
-                                                             std::to_string(repetitions),
-                                                             "--oracle-cache",
-                                                             store.directory() + "/oracle"}
-                                  : comparisonCommand(c, repetitions, answer_path, preview_path);
+  const std::vector<std::string> command = workerCommand(
+      c, repetitions, request_path, answer_path, preview_path, store.directory() + "/oracle");
   launch.arguments.insert(launch.arguments.end(), command.begin(), command.end());
   launch.environment = request.worker_environment;
   launch.log_path = store.logPath(c.id);
@@ -225,12 +227,7 @@ CombinationResult runInWorker(const Combination& c, const ResultStore& store, in
 }
 
 std::string outcomeText(const CombinationResult& r) {
-  if (!r.outcome.ok()) {
-    std::string text = r.outcome.status;
-    if (!r.outcome.signal_name.empty()) text += " (" + r.outcome.signal_name + ")";
-    if (r.outcome.status == "failed") text += " (exit " + std::to_string(r.outcome.exit_code) + ")";
-    return text;
-  }
+  if (!r.outcome.ok()) return r.outcome.text();
   std::size_t disagreements = 0;
   std::size_t failed = 0;
   for (const QueryMeasurement& m : r.measurements) {
@@ -243,23 +240,14 @@ std::string outcomeText(const CombinationResult& r) {
   return text;
 }
 
-// A digest of every file the scene was read from (its content, in the order read).
-Result<std::string> inputsDigest(const Scene& scene) {
+// A digest of the content of `files`, in order (a scene's: every file it was read from).
+Result<std::string> filesDigest(const std::vector<std::string>& files, const char* what) {
   Digest digest;
-  for (const std::string& file : scene.input_files) {
-    Result<std::string> bytes = readInputFile(file, "input file");
+  for (const std::string& file : files) {
+    Result<std::string> bytes = readInputFile(file, what);
     if (!bytes.ok()) return bytes.status();
     digest.text(bytes.value());
   }
-  return digest.hex();
-}
-
-// The digest of one input file's content.
-Result<std::string> fileDigest(const std::string& path, const char* what) {
-  Result<std::string> bytes = readInputFile(path, what);
-  if (!bytes.ok()) return bytes.status();
-  Digest digest;
-  digest.text(bytes.value());
   return digest.hex();
 }
 
@@ -377,7 +365,7 @@ int runStudyImpl(const StudyRequest& args, std::ostream& out, std::ostream& err)
     scenes.push_back({std::filesystem::absolute(path).lexically_normal().string(),
                       scene.value().name, scene.value().hasGeneratedShapes(),
                       scene.value().category});
-    Result<std::string> digest = inputsDigest(scene.value());
+    Result<std::string> digest = filesDigest(scene.value().input_files, "input file");
     if (!digest.ok()) {
       err << "error: " << digest.status().message() << "\n";
       return 2;
@@ -402,7 +390,7 @@ int runStudyImpl(const StudyRequest& args, std::ostream& out, std::ostream& err)
         return 2;
       }
       Result<std::string> digest =
-          fileDigest(path, kind == InputKind::kSurfaces ? "surface file" : "FRep file");
+          filesDigest({path}, kind == InputKind::kSurfaces ? "surface file" : "FRep file");
       if (!digest.ok()) {
         err << "error: " << digest.status().message() << "\n";
         return 2;

@@ -101,6 +101,13 @@ std::string Combination::settingText() const {
   return text;
 }
 
+std::string Combination::gridText() const {
+  std::string text;
+  for (const int size : grid)
+    text += (text.empty() ? "" : ",") + std::to_string(size);
+  return text;
+}
+
 std::string Combination::label() const {
   const std::string setting = settingText();
   const std::string kind_text =

@@ -34,6 +34,13 @@ Result<Json> readJsonFile(const std::string& path) {
 
 }  // namespace
 
+std::string WorkerOutcome::text() const {
+  std::string text = status;
+  if (!signal_name.empty()) text += " (" + signal_name + ")";
+  if (status == "failed") text += " (exit " + std::to_string(exit_code) + ")";
+  return text;
+}
+
 Json resultToJson(const CombinationResult& r) {
   Json measurements = Json::array();
   for (const QueryMeasurement& m : r.measurements)

@@ -59,6 +59,8 @@ struct Combination {
   std::string label() const;
   /// The setting beyond the backend text: "", or e.g. "needs=every r=0.5 limit=16".
   std::string settingText() const;
+  /// The grid sizes as their commands take them: "8,32,128" ("" without a grid).
+  std::string gridText() const;
 };
 
 /// `c` with its inputs set and its id made again from them.

@@ -26,6 +26,8 @@ struct WorkerOutcome {
   std::string log_tail;            ///< the end of its stderr, for failures
 
   bool ok() const { return status == "ok"; }
+  /// How it ended, for people: "ok", "crashed (SIGSEGV)", "failed (exit 2)", "timeout", ...
+  std::string text() const;
 };
 
 /// Everything one combination produced.
