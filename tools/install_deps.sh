@@ -23,7 +23,7 @@ if ! command -v node >/dev/null 2>&1 || ! command -v npm >/dev/null 2>&1; then
 fi
 for option in "$@"; do
   case "$option" in
-    --ci) packages+=(clang libclang-rt-14-dev clang-format clang-tidy) ;;
+    --ci) packages+=(clang libclang-rt-14-dev clang-format clang-tidy dpkg-dev) ;;
     --slvs) packages+=(libslvs1-dev) ;;
     *) echo "usage: tools/install_deps.sh [--ci] [--slvs]" >&2; exit 2 ;;
   esac

@@ -190,7 +190,8 @@ void addReportCommand(CLI::App& app, int& exit_code) {
   command->add_option("--baseline", args->baseline,
                       "an earlier study folder to compare with (before/after)");
   command->add_option("--web", args->web,
-                      "the front-end folder (default: $COLLIDO_WEB_DIR, else the source web/)");
+                      "the front-end folder (default: $COLLIDO_WEB_DIR, else the "
+                      "install's share/collido/web, else the source web/)");
   command->add_option("--title", args->title, "the page's title (default: the folder's name)");
   command->add_option("--pose-error", args->pose_error,
                       "pose-error sweeps to show (collido pose-error --json files; repeatable)");

@@ -9,6 +9,7 @@
 #include <memory>
 #include <sstream>
 
+#include <collido/host/install_layout.h>
 #include <collido/study/driver.h>
 #include <collido/study/plugin_probe.h>
 #include <collido/study/result_store.h>
@@ -22,13 +23,15 @@ namespace {
 using study::Combination;
 using study::CombinationResult;
 
-// LD_PRELOAD for the allocation hooks, when they were built beside this executable.
+// LD_PRELOAD for the allocation hooks, when they were built beside this executable or installed
+// with it.
 std::vector<std::string> workerEnvironment() {
 #ifdef COLLIDO_HEAP_HOOKS_FILE
-  const std::filesystem::path hooks =
-      std::filesystem::path(executableDirectory()) / COLLIDO_HEAP_HOOKS_FILE;
-  std::error_code ec;
-  if (std::filesystem::is_regular_file(hooks, ec)) {
+  for (const std::string& folder : {executableDirectory(), installedLibraryDirectory()}) {
+    if (folder.empty()) continue;
+    const std::filesystem::path hooks = std::filesystem::path(folder) / COLLIDO_HEAP_HOOKS_FILE;
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(hooks, ec)) continue;
     const char* existing = std::getenv("LD_PRELOAD");
     return {"LD_PRELOAD=" + hooks.string() +
             (existing != nullptr && *existing != '\0' ? std::string(":") + existing : "")};

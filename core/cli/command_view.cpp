@@ -259,7 +259,9 @@ void addViewCommands(CLI::App& app, const PluginOptions& plugins, int& exit_code
       ->add_option("--resolution", args->resolution,
                    "scales the generated shapes' sample counts (as collido study's sweeps do)")
       ->check(CLI::PositiveNumber);
-  command->add_option("--web", args->web, "the front-end folder (default: the source tree's web/)");
+  command->add_option("--web", args->web,
+                      "the front-end folder (default: $COLLIDO_WEB_DIR, else the "
+                      "install's share/collido/web, else the source web/)");
   command->add_flag("--quiet", args->quiet, "no progress on stderr");
   command->callback([args, &plugins, &exit_code] { exit_code = view(*args, plugins); });
 

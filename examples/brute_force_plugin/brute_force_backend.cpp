@@ -3,7 +3,7 @@
 // separating-axis test (two face normals, nine edge cross products, and the six in-plane edge
 // normals for coplanar pairs). It has no precomputed structure, so update() just copies the new
 // positions. Run the conformance kit on it:
-//   collido conformance build/release/examples/libcollido_example_brute_force.so
+//   collido conformance build/release/examples/libbrute_force.so
 #include <algorithm>
 #include <array>
 #include <cmath>

@@ -22,6 +22,7 @@
 
 #include <gtest/gtest.h>
 
+#include <collido/host/install_layout.h>
 #include <collido/runner/runner.h>
 
 #include "conformance_target.h"
@@ -85,8 +86,15 @@ int main(int argc, char** argv) {
   std::string fill_oracle_cache;
   std::set<std::string> skipped_scenes;
   bool progress = false;
-  settings().expectations_dir = COLLIDO_SOURCE_DIR "/tests/conformance/expectations";
-  settings().scenes_dir = COLLIDO_SOURCE_DIR "/scenes";
+  // Installed, the kit reads the installed scenes and expectations; in the build tree, the
+  // source's.
+  if (const std::string installed = collido::installedDataDirectory(); !installed.empty()) {
+    settings().expectations_dir = installed + "/conformance/expectations";
+    settings().scenes_dir = installed + "/scenes";
+  } else {
+    settings().expectations_dir = COLLIDO_SOURCE_DIR "/tests/conformance/expectations";
+    settings().scenes_dir = COLLIDO_SOURCE_DIR "/scenes";
+  }
   std::vector<char*> rest = {argv[0]};
   for (int i = 1; i < argc; ++i) {
     std::string value;

@@ -9,6 +9,7 @@
 #include <set>
 #include <sstream>
 
+#include <collido/host/install_layout.h>
 #include <collido/study/figures.h>
 #include <collido/study/html_page.h>
 #include <collido/study/robustness.h>
@@ -185,6 +186,9 @@ Json reportData(const std::vector<CombinationResult>& results,
 std::string webDirectory(const std::string& explicit_directory) {
   if (!explicit_directory.empty()) return explicit_directory;
   if (const char* env = std::getenv("COLLIDO_WEB_DIR"); env != nullptr && *env != '\0') return env;
+  if (const std::string installed = installedDataDirectory(); !installed.empty()) {
+    return installed + "/web";
+  }
 #ifdef COLLIDO_WEB_SOURCE_DIR
   return COLLIDO_WEB_SOURCE_DIR;
 #else

@@ -18,7 +18,7 @@ nlohmann::json reportData(const std::vector<CombinationResult>& results,
                           const std::vector<CombinationResult>& baseline, const std::string& title);
 
 /// Where the dashboard's front-end lives: `explicit_directory` if given, else $COLLIDO_WEB_DIR,
-/// else the source tree's web/ folder this build came from.
+/// else an install's share/collido/web, else the source tree's web/ folder this build came from.
 std::string webDirectory(const std::string& explicit_directory);
 
 /// One self-contained HTML page (opens offline): the template, style, Vega, Vega-Lite,
