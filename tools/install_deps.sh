@@ -3,7 +3,8 @@
 # Run as root on Debian 12 (bookworm). Usage: tools/install_deps.sh [--ci] [--slvs]  (--ci adds
 # the linters CI runs: clang-format, clang-tidy; and clang with its runtime libraries for the fuzz
 # targets: libclang-rt-14-dev holds libFuzzer and clang's sanitizer runtimes, which clang only
-# recommends; --slvs adds SolveSpace's libslvs, GPL-3, for the optional constraint-solver
+# recommends; dpkg-dev (the Debian package's dependencies) and slurm-wlm with munge (the one-node
+# cluster the Slurm test starts); --slvs adds SolveSpace's libslvs, GPL-3, for the optional constraint-solver
 # comparator only, tools/slvs_comparison.sh). Chromium is for the dashboard's browser test;
 # Node.js and npm (when the machine has none) fetch the dashboard's front-end from the npm
 # registry (tools/web_deps.sh).
@@ -23,7 +24,7 @@ if ! command -v node >/dev/null 2>&1 || ! command -v npm >/dev/null 2>&1; then
 fi
 for option in "$@"; do
   case "$option" in
-    --ci) packages+=(clang libclang-rt-14-dev clang-format clang-tidy dpkg-dev) ;;
+    --ci) packages+=(clang libclang-rt-14-dev clang-format clang-tidy dpkg-dev slurm-wlm munge) ;;
     --slvs) packages+=(libslvs1-dev) ;;
     *) echo "usage: tools/install_deps.sh [--ci] [--slvs]" >&2; exit 2 ;;
   esac

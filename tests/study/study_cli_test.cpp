@@ -510,15 +510,20 @@ TEST(StudyCli, ShardsMergeIntoTheWholeStudy) {
   const std::string scene = writeSmallScene(dir);
   const std::string backends = "obbtree,misbehaving:exact,misbehaving:wrong";
   std::vector<std::string> a = studyArgs(scene, backends, dir + "/a");
-  a.insert(a.end(), {"--shard", "0/2"});
+  // One oracle store for both shards, as on a cluster's shared filesystem.
+  a.insert(a.end(), {"--shard", "0/2", "--oracle-store", dir + "/store"});
   std::vector<std::string> b = studyArgs(scene, backends, dir + "/b");
-  b.insert(b.end(), {"--shard", "1/2"});
+  b.insert(b.end(), {"--shard", "1/2", "--oracle-store", dir + "/store"});
   const CommandRun run_a = collido(a, dir);
   ASSERT_EQ(run_a.exit_code, 0) << describe(run_a);
   EXPECT_NE(run_a.err.find("study: 2 combinations in shard 0/2"), std::string::npos) << run_a.err;
   const CommandRun run_b = collido(b, dir);
   ASSERT_EQ(run_b.exit_code, 0) << describe(run_b);
   EXPECT_NE(run_b.err.find("study: 1 combinations in shard 1/2"), std::string::npos) << run_b.err;
+  // The scene's exact answers were kept once, in the store given, not in either shard's folder.
+  EXPECT_EQ(jsonFilesIn(dir + "/store").size(), 1u);
+  EXPECT_FALSE(fs::exists(dir + "/a/oracle"));
+  EXPECT_FALSE(fs::exists(dir + "/b/oracle"));
 
   const CommandRun merged = collido({"merge", "--out", dir + "/m", dir + "/a", dir + "/b"}, dir);
   ASSERT_EQ(merged.exit_code, 0) << describe(merged);

@@ -186,8 +186,12 @@ CombinationResult runInWorker(const Combination& c, const ResultStore& store, in
     launch.arguments.push_back(std::filesystem::absolute(plugin_file).string());
   }
   const std::string preview_path = store.scratchPath(c.id + ".png");
-  const std::vector<std::string> command = workerCommand(
-      c, repetitions, request_path, answer_path, preview_path, store.directory() + "/oracle");
+  const std::string oracle_directory =
+      request.oracle_directory.empty()
+          ? store.directory() + "/oracle"
+          : std::filesystem::absolute(request.oracle_directory).string();
+  const std::vector<std::string> command =
+      workerCommand(c, repetitions, request_path, answer_path, preview_path, oracle_directory);
   launch.arguments.insert(launch.arguments.end(), command.begin(), command.end());
   launch.environment = request.worker_environment;
   launch.log_path = store.logPath(c.id);

@@ -104,11 +104,16 @@ Result<CombinationResult> resultFromJson(const Json& json, const std::string& la
 // Write-to-temporary, flush to disk, rename over the target: a reader, a study killed mid-write
 // or a machine that loses power sees the previous file or the new one whole, never a mix. The
 // temporary's name is unique to the process and the call, so two writers of one path never share
-// it (one's rename would publish the other's half-written text); a failed write removes it.
+// it (one's rename would publish the other's half-written text), also from processes on other
+// machines that share the folder (the shards of a study on a cluster); a failed write removes it.
 Status writeFileAtomically(const std::string& path, const std::string& text) {
   static std::atomic<unsigned long> serial{0};
-  const std::string temporary =
-      path + ".partial." + std::to_string(::getpid()) + "." + std::to_string(serial.fetch_add(1));
+  static const std::string host = [] {
+    char name[256] = {};
+    return ::gethostname(name, sizeof(name) - 1) == 0 ? std::string(name) : std::string("host");
+  }();
+  const std::string temporary = path + ".partial." + host + "." + std::to_string(::getpid()) + "." +
+                                std::to_string(serial.fetch_add(1));
   const auto failed = [&](const std::string& what, int error) {
     ::unlink(temporary.c_str());
     return Status(StatusCode::kInvalidArgument, what + ": " + std::strerror(error));

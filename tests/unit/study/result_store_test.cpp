@@ -254,7 +254,7 @@ int runWithFileSizeLimit(rlim_t limit_bytes, bool killed_at_limit,
 
 // A write that fails half-way (the disk full after 4 KiB of 64) leaves the previous file as it
 // was, and removes its temporary:
-// "<dir>/out.json.partial.<pid>.<n>: cannot be written: File too large"
+// "<dir>/out.json.partial.<host>.<pid>.<n>: cannot be written: File too large"
 TEST(WriteFileAtomically, AFailedWriteLeavesThePreviousFileAndNoTemporary) {
   const std::string dir = test::makeTempDirectory("atomic_full");
   const std::string path = dir + "/out.json";

@@ -15,6 +15,9 @@ struct StudyRequest {
   std::string sweep_path;                  ///< "" for none
   std::string out;                         ///< the study folder
   std::string shard;                       ///< "I/N", or "" for the whole study
+  /// Where the oracle's answers are kept (study/oracle_store.h); "": OUT/oracle. Shards given
+  /// one folder on a shared filesystem reuse each other's answers.
+  std::string oracle_directory;
   bool resume = false;
   bool retry_failed = false;
   double timeout_s = 0.0;          ///< 0: the sweep's, else 600
