@@ -57,32 +57,33 @@ command -v sbatch > /dev/null || { echo "error: sbatch not found (not a Slurm su
 mkdir -p "$out/logs"
 out=$(realpath "$out")
 
-# The tasks run in the submitting folder (relative scene paths keep their meaning); every
-# argument is quoted into the script as given.
+# The tasks run in the submitting folder (relative scene paths keep their meaning); every path
+# and argument is quoted into the scripts as given.
 quoted_arguments=$(printf ' %q' "${study_arguments[@]}")
+q_out=$(printf '%q' "$out")
+q_collido=$(printf '%q' "$collido")
 cat > "$out/study.sbatch" <<SBATCH
 #!/usr/bin/env bash
 #SBATCH --job-name=collido-study
 #SBATCH --array=0-$((shards - 1))
 #SBATCH --cpus-per-task=1
 #SBATCH --chdir=$(printf '%q' "$PWD")
-#SBATCH --output=$(printf '%q' "$out")/logs/shard-%a.log
+#SBATCH --output=$q_out/logs/shard-%a.log
 set -euo pipefail
-$(printf '%q' "$collido") study${quoted_arguments} \\
+$q_collido study${quoted_arguments} \\
   --shard "\$SLURM_ARRAY_TASK_ID/\$SLURM_ARRAY_TASK_COUNT" \\
-  --out $(printf '%q' "$out")/shard-"\$SLURM_ARRAY_TASK_ID" \\
-  --oracle-store $(printf '%q' "$out")/oracle --resume --quiet
+  --out $q_out/shard-"\$SLURM_ARRAY_TASK_ID" --oracle-store $q_out/oracle --resume --quiet
 SBATCH
 cat > "$out/merge.sbatch" <<SBATCH
 #!/usr/bin/env bash
 #SBATCH --job-name=collido-merge
 #SBATCH --cpus-per-task=1
-#SBATCH --output=$(printf '%q' "$out")/logs/merge.log
+#SBATCH --output=$q_out/logs/merge.log
 set -euo pipefail
 shopt -s nullglob
-shard_folders=($(printf '%q' "$out")/shard-*)
-$(printf '%q' "$collido") merge --replace --out $(printf '%q' "$out")/all "\${shard_folders[@]}"
-$(printf '%q' "$collido") report $(printf '%q' "$out")/all
+shard_folders=($q_out/shard-*)
+$q_collido merge --replace --out $q_out/all "\${shard_folders[@]}"
+$q_collido report $q_out/all
 SBATCH
 
 study_job=$(sbatch --parsable "${sbatch_options[@]}" "$out/study.sbatch")
