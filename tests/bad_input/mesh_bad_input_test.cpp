@@ -147,8 +147,7 @@ TEST(MeshBadInput, BlankFile) {
   EXPECT_TRUE(rejected(loadMesh(path), {path, "empty"}));
 }
 
-// An empty file of any format says so (CGAL's STL reader read it as no triangles, its OFF and
-// PLY readers gave no reason): "<dir>/empty.stl: the file is empty"
+// An empty file of any format says so: "<dir>/empty.stl: the file is empty"
 TEST(MeshBadInput, EmptyFileOfEveryFormat) {
   for (const char* name : {"empty.stl", "empty.ply", "empty.off", "empty.gltf"}) {
     const std::string path = writeTemp(name, "");
@@ -165,10 +164,9 @@ TEST(MeshBadInput, BinaryGarbageWithObjExtension) {
   EXPECT_TRUE(rejected(loadMesh(path), {path, "binary", "OBJ is a text format"}));
 }
 
-// Binary bytes without a NUL reach CGAL's reader, which quotes the line it cannot read; the
-// quote comes back as printable ASCII, so a message never carries raw bytes (which broke the
-// XML test report before):
-// "<dir>/noise.obj: cannot read it as OBJ (CGAL's reader: error: unrecognized line: ???...)"
+// Binary bytes without a NUL start no OBJ statement; the message quotes them as printable ASCII,
+// so it never carries raw bytes (which broke the XML test report before):
+// "<dir>/noise.obj: line 2: '????????...' starts no OBJ statement"
 TEST(MeshBadInput, BinaryNoiseWithoutNulIsQuotedPrintably) {
   std::string noise = "v 0 0 0\n";
   for (int i = 0; i < 600; ++i)
@@ -206,7 +204,7 @@ TEST(MeshBadInput, BinaryGarbageAsPly) {
 
 // ---- truncated files -------------------------------------------------------------------------
 
-// The second triangle lost its last 30 bytes (CGAL's reader quoted the binary header back):
+// The second triangle lost its last 30 bytes:
 // "<dir>/cut.stl: binary STL cut short: its header declares 2 triangles (184 bytes), but the
 //  file has 154 bytes, room for 1"
 TEST(MeshBadInput, TruncatedBinaryStl) {
@@ -216,7 +214,7 @@ TEST(MeshBadInput, TruncatedBinaryStl) {
                                         "154 bytes", "room for 1"}));
 }
 
-// Cut inside the 84-byte header (CGAL's reader read this as a valid file of no triangles):
+// Cut inside the 84-byte header (not a valid file of no triangles):
 // "<dir>/stub.stl: too short for a binary STL: 40 bytes, but its header and triangle count alone
 //  take 84"
 TEST(MeshBadInput, BinaryStlShorterThanItsHeader) {
@@ -251,9 +249,9 @@ TEST(MeshBadInput, TruncatedAsciiPly) {
   EXPECT_TRUE(rejected(loadMesh(path), {path, "ends early", "'vertex' 2", "of the 3"}));
 }
 
-// Regression (found by mesh_import_fuzz): a list whose signed count reads -1 made CGAL's reader
-// resize a vector to 2^64-1 elements and throw length_error out of loadMesh:
-// "<dir>/negative_list.ply: 'face' 0: the list 'vertex_indices' has a negative length"
+// Regression (found by mesh_import_fuzz): a list whose signed count reads -1 (CGAL's reader, used
+// before, resized a vector to 2^64-1 elements and threw length_error out of loadMesh):
+// "<dir>/negative_list.ply: 'face' 0: the list 'vertex_indices' has a negative length (-1)"
 TEST(MeshBadInput, BinaryPlyNegativeListLength) {
   std::string ply =
       "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\n"
@@ -286,15 +284,14 @@ TEST(MeshBadInput, TruncatedOff) {
   EXPECT_TRUE(rejected(loadMesh(path), {path, "ends early", "2 faces", "ends after 1"}));
 }
 
-// Regression (found by mesh_import_fuzz): a few bytes declaring 225 million faces made CGAL's
-// reader allocate 5 GB for them:
+// Regression (found by mesh_import_fuzz): a few bytes declaring 225 million faces (CGAL's reader,
+// used before, allocated 5 GB for them):
 // "<dir>/huge_count.off: the file ends early: the header declares 0 vertices and 225525203 faces,
 //  more than the 3 characters after it can hold"
 TEST(MeshBadInput, OffCountsBeyondTheFile) {
   const std::string path = writeTemp("huge_count.off", "COFF\n#c\n 0 225525203 5 \x01");
   EXPECT_TRUE(rejected(loadMesh(path), {path, "ends early", "225525203 faces", "characters"}));
-  // The header's last count ends the file (CGAL's colour scanner then read through a null
-  // pointer).
+  // The header's last count ends the file.
   const std::string header_only = writeTemp("header_only.off", "COFF\n# 4 \n50  11  21");
   EXPECT_TRUE(rejected(loadMesh(header_only),
                        {header_only, "ends early", "50 vertices", "11 faces", "the 0 characters"}));
@@ -308,7 +305,7 @@ TEST(MeshBadInput, OffFaceCutShort) {
 }
 
 // The content is a valid OBJ triangle, which assimp would guess from the text; the name decides:
-// "<dir>/mesh.unknownformat: unknown mesh format '.unknownformat' (neither CGAL's obj/off/ply/stl
+// "<dir>/mesh.unknownformat: unknown mesh format '.unknownformat' (neither our obj/off/ply/stl
 //  readers nor assimp read this extension)"
 TEST(MeshBadInput, UnknownExtension) {
   const std::string path =
@@ -381,12 +378,11 @@ TEST(MeshBadInput, BinaryPlyNanCoordinate) {
   EXPECT_TRUE(rejected(loadMesh(path), {path, "vertex 2", "non-finite y"}));
 }
 
-// CGAL's PLY reader refuses the text "nan" without a reason; the data is read again to name it:
-// "<dir>/nan_ascii.ply: vertex 1 has a non-finite y coordinate ('nan')"
+// "<dir>/nan_ascii.ply: line 11: vertex 1 has a non-finite y coordinate ('nan')"
 TEST(MeshBadInput, AsciiPlyNanCoordinate) {
   const std::string path =
       writeTemp("nan_ascii.ply", asciiPlyHeader(3, 1) + "0 0 0\n1 nan 0\n0 1 0\n3 0 1 2\n");
-  EXPECT_TRUE(rejected(loadMesh(path), {path, "vertex 1", "non-finite y", "'nan'"}));
+  EXPECT_TRUE(rejected(loadMesh(path), {path, "line 11", "vertex 1", "non-finite y", "'nan'"}));
 }
 
 // ---- huge coordinates: the limit |x| <= 1e18 (kMaxCoordinate, scenes/README.md) ---------------
@@ -408,14 +404,16 @@ TEST(MeshBadInput, CoordinateNearTheDoubleMaximum) {
   EXPECT_TRUE(rejected(loadMesh(path), {path, "line 3", "vertex 2", "z coordinate", "1e18"}));
 }
 
-// The limit holds in every format; where the reader is CGAL's, the vertex is named (0-based):
-// "<dir>/huge.off: vertex 1 has y coordinate -1e+19, beyond the coordinate limit |y| <= 1e18
-//  (scenes/README.md)"
+// The limit holds in every format; a text format names the line and quotes the number:
+// "<dir>/huge.off: line 4: vertex 1 has y coordinate '-1e19', beyond the coordinate limit
+//  |y| <= 1e18 (scenes/README.md)"
 TEST(MeshBadInput, OffCoordinateBeyondTheLimit) {
   const std::string path = writeTemp("huge.off", "OFF\n3 1 0\n0 0 0\n1 -1e19 0\n0 1 0\n3 0 1 2\n");
-  EXPECT_TRUE(rejected(loadMesh(path), {path, "vertex 1", "y coordinate -1e+19", "1e18"}));
+  EXPECT_TRUE(
+      rejected(loadMesh(path), {path, "line 4", "vertex 1", "y coordinate '-1e19'", "1e18"}));
 }
 
+// A binary format has no text to quote; the mesh's vertex is named with its value:
 // "<dir>/huge.stl: vertex 3 has x coordinate 1.0000000200408773e+20, beyond the coordinate limit
 //  |x| <= 1e18 (scenes/README.md)"
 TEST(MeshBadInput, BinaryStlCoordinateBeyondTheLimit) {
@@ -445,8 +443,7 @@ TEST(MeshBadInput, FaceIndexOutOfRange) {
   EXPECT_TRUE(rejected(loadMesh(path), {path, "line 4", "face 0", "index 4", "3 vertices"}));
 }
 
-// A face index far past the end gets the same message (CGAL's reader has no face or line to
-// offer for it: "error: invalid face index"):
+// A face index far past the end gets the same message:
 // "<dir>/far.obj: line 4: face 0 uses index 99, but the file has 3 vertices (OBJ indices are
 //  1-based)"
 TEST(MeshBadInput, FaceIndexFarOutOfRange) {
@@ -454,7 +451,7 @@ TEST(MeshBadInput, FaceIndexFarOutOfRange) {
   EXPECT_TRUE(rejected(loadMesh(path), {path, "face 0", "99", "3 vertices"}));
 }
 
-// The same in OFF, whose indices are 0-based (CGAL's OFF reader gives no reason at all):
+// The same in OFF, whose indices are 0-based:
 // "<dir>/index.off: line 6: face 0 references vertex 3, but the file has 3 vertices (OFF indices
 //  are 0-based integers)"
 TEST(MeshBadInput, OffFaceIndexOutOfRange) {
@@ -470,8 +467,9 @@ TEST(MeshBadInput, ObjIndexZero) {
   EXPECT_TRUE(rejected(loadMesh(path), {path, "line 4", "face 0", "index 0", "start at 1"}));
 }
 
-// Index 0 with a vertex after the face: still invalid. (CGAL's reader takes 0 as a relative
-// reference, i.e. the next vertex, and loaded this file as the triangle (5,5,5) (0,0,0) (1,0,0).)
+// Index 0 with a vertex after the face: still invalid. (CGAL's reader, used before, took 0 as a
+// relative reference, i.e. the next vertex, and loaded this file as the triangle (5,5,5) (0,0,0)
+// (1,0,0).)
 TEST(MeshBadInput, ObjIndexZeroBeforeLaterVertices) {
   const std::string path =
       writeTemp("zero_later.obj", std::string(kTriangleVertices) + "f 0 1 2\nv 5 5 5\n");
@@ -495,8 +493,8 @@ TEST(MeshBadInput, ObjNegativeIndexCountsOnlyEarlierVertices) {
   EXPECT_TRUE(rejected(loadMesh(path), {path, "face 0", "relative index -4"}));
 }
 
-// A face must not end silently at a token that is no index (CGAL's reader stops reading the face
-// there and keeps what it has):
+// A face must not end silently at a token that is no index (CGAL's reader, used before, stopped
+// reading the face there and kept what it had):
 // "<dir>/malformed.obj: line 4: face 0 has a malformed vertex index 'x'"
 TEST(MeshBadInput, ObjMalformedFaceIndex) {
   const std::string path =
@@ -513,7 +511,7 @@ TEST(MeshBadInput, ObjNegativeIndicesWithinRangeAreAccepted) {
   EXPECT_EQ(mesh.value().triangles.col(0), Eigen::Vector3i(0, 1, 2));
 }
 
-// A binary PLY's indices are read by CGAL; soupToMesh names the face:
+// A binary PLY's face is named by its element index:
 // "<dir>/index.ply: face 1 references vertex 4 (0-based), but the file has 4 vertices"
 TEST(MeshBadInput, PlyFaceIndexOutOfRange) {
   const std::string path = writeTemp("index.ply", binaryPly(kTetCorners, {{0, 1, 2}, {0, 1, 4}}));
@@ -583,9 +581,9 @@ TEST(MeshBadInput, OnlyTwoIndexFacesIsAnError) {
   EXPECT_TRUE(rejected(loadMesh(path), {path, "no triangles"}));
 }
 
-// ---- OFF colours and counts that CGAL's scanner converts unchecked (undefined behaviour) ------
+// ---- OFF colours and counts (CGAL's scanner, used before, converted them unchecked) -----------
 
-// CGAL casts an integer colour to unsigned char:
+// An integer colour is a byte:
 // "<dir>/colour.off: line 4: vertex 1 has colour value 65025 out of range [0, 255]"
 TEST(MeshBadInput, OffColourOutOfRange) {
   const std::string path = writeTemp(
@@ -594,7 +592,7 @@ TEST(MeshBadInput, OffColourOutOfRange) {
       loadMesh(path), {path, "line 4", "vertex 1", "colour value 65025", "out of range [0, 255]"}));
 }
 
-// A colour with a fraction is read as fractions of 1, which CGAL scales by 255:
+// A colour with a fraction is read as fractions of 1:
 // "<dir>/fraction.off: line 6: face 0 has colour value 255 out of range [0, 1] (a colour with a
 //  fraction is read as fractions)"
 TEST(MeshBadInput, CoffFloatColourOutOfRange) {
@@ -604,14 +602,14 @@ TEST(MeshBadInput, CoffFloatColourOutOfRange) {
                        {path, "line 6", "face 0", "colour value 255", "out of range [0, 1]"}));
 }
 
-// One number is an index into CGAL's colour map; a negative one reads before it:
+// One number is an index into a colour map; a negative one is none:
 // "<dir>/map.off: line 6: face 0 has colour-map index -1, out of range [0, 2147483647]"
 TEST(MeshBadInput, OffColourMapIndexOutOfRange) {
   const std::string path = writeTemp("map.off", "COFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2 -1\n");
   EXPECT_TRUE(rejected(loadMesh(path), {path, "line 6", "face 0", "colour-map index -1"}));
 }
 
-// Two numbers make CGAL read a third past the line (the fuzzer's reproducer):
+// Two numbers are no colour (the fuzzer's reproducer; CGAL's scanner read a third past the line):
 // "<dir>/two.off: line 3: vertex 0 has 2 colour numbers; a colour is 1 (a colour-map index), 3 or
 //  4 (RGB, RGBA)"
 TEST(MeshBadInput, OffColourOfTwoNumbers) {
@@ -620,16 +618,16 @@ TEST(MeshBadInput, OffColourOfTwoNumbers) {
   EXPECT_TRUE(rejected(loadMesh(path), {path, "line 3", "vertex 0", "2 colour numbers"}));
 }
 
-// CGAL's OFF polygon-soup reader skips binary colour data, so it would read colours as points:
-// "<dir>/binary.off: COFF BINARY: CGAL's OFF reader does not read binary colour data (it would
-//  take the colours for coordinates)"
+// Binary vertex colours are laid out differently by different writers, so they are refused:
+// "<dir>/binary.off: COFF BINARY: binary colour data is not read (writers disagree on its
+//  layout); write the file as text, or without colours"
 TEST(MeshBadInput, BinaryOffWithColoursIsRefused) {
   const std::string path =
       writeTemp("binary.off", std::string("COFF BINARY\n") + std::string(12, '\0') + "rest");
   EXPECT_TRUE(rejected(loadMesh(path), {path, "COFF BINARY", "binary colour data"}));
 }
 
-// CGAL converts a face's vertex count to size_t:
+// A face's vertex count is a non-negative integer:
 // "<dir>/negative.off: line 6: face 0 has vertex count -3, not a non-negative integer"
 TEST(MeshBadInput, OffNegativeFaceSize) {
   const std::string path = writeTemp("negative.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n-3 0 1 2\n");
@@ -644,7 +642,7 @@ TEST(MeshBadInput, OffNegativeFaceIndex) {
   EXPECT_TRUE(rejected(loadMesh(path), {path, "line 6", "face 0", "references vertex -1"}));
 }
 
-// A homogeneous w of 0 fails an assertion in CGAL's reader:
+// 4OFF divides by the homogeneous w, which must not be 0:
 // "<dir>/w.off: line 3: vertex 0 has homogeneous coordinate w = 0"
 TEST(MeshBadInput, OffHomogeneousZero) {
   const std::string path = writeTemp("w.off", "4OFF\n3 1 0\n0 0 0 0\n1 0 0 1\n0 1 0 1\n3 0 1 2\n");
@@ -661,18 +659,27 @@ TEST(MeshBadInput, OffColoursInRangeAreAccepted) {
   EXPECT_EQ(mesh.value().triangles.cols(), 1);
 }
 
-// CGAL's PLY reader reads a vertex's coordinates only as float or double; any other type failed
-// an assertion in it (the fuzzer's reproducer had "property int32 z"):
-// "<dir>/int_z.ply: header line 6: vertex coordinate 'z' has type 'int32', but CGAL's PLY reader
-//  reads coordinates only as float or double"
-TEST(MeshBadInput, PlyIntegerCoordinate) {
+// Coordinates may have any numeric type (CGAL's PLY reader, used before, read only float and
+// double and failed an assertion on "property int32 z", the fuzzer's reproducer); an integer
+// reads exactly.
+TEST(MeshBadInput, PlyIntegerCoordinateLoads) {
   const std::string path = writeTemp(
       "int_z.ply",
       "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
       "property int32 z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
-      "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
-  EXPECT_TRUE(
-      rejected(loadMesh(path), {path, "header line 6", "'z'", "'int32'", "float or double"}));
+      "0 0 -2147483648\n1 0 0\n0 1 2147483647\n3 0 1 2\n");
+  Result<TriangleMesh> mesh = loadMesh(path);
+  ASSERT_TRUE(mesh.ok()) << mesh.status().message();
+  EXPECT_EQ(mesh.value().vertices(2, 0), -2147483648.0);
+  EXPECT_EQ(mesh.value().vertices(2, 2), 2147483647.0);
+}
+
+// A value that does not fit its declared type is refused, naming the line and the property:
+// "<dir>/range.ply: line 13: 'face' 0: the list 'vertex_indices' has no valid length ('300')"
+TEST(MeshBadInput, PlyValueOutsideItsType) {
+  const std::string path =
+      writeTemp("range.ply", asciiPlyHeader(3, 1) + "0 0 0\n1 0 0\n0 1 0\n300 0 1 2\n");
+  EXPECT_TRUE(rejected(loadMesh(path), {path, "line 13", "'face' 0", "no valid length ('300')"}));
 }
 
 }  // namespace

@@ -2,10 +2,10 @@
 //
 // Why: mesh files come from anywhere (scans, CAD exports, other tools), and a file that does not
 // parse must end as an error naming it, never as a crash of the study.
-// What it checks: the first byte picks the extension (obj, off, ply, stl: the formats CGAL's
-// double-precision readers take, behind our own checks of the text and headers, which refuse what
-// those readers would misread or crash on); the other bytes are the file, written to
-// a temporary folder (removed at exit) and read with loadMesh. Whatever the bytes:
+// What it checks: the first byte picks the extension, so the reader (obj, off, ply, stl: one of
+// our four strict readers, each in every variant it reads, with seeds for each in the corpus);
+// the other bytes are the file, written to a temporary folder (removed at exit) and read with
+// loadMesh. Whatever the bytes:
 //  - no crash, out-of-bounds access, undefined behaviour or leak (ASan, UBSan, LeakSanitizer);
 //  - an error names the file (mesh_io.h promises it);
 //  - a mesh that loads is valid (validateMesh: triangles, finite coordinates, indices in range),

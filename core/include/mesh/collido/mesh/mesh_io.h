@@ -11,7 +11,7 @@ namespace collido {
 /// Reads a mesh file into one triangle mesh, in file order (vertex i and triangle j of the file
 /// are column i and j), validates it and fills `report` when given.
 ///
-/// OBJ, OFF, PLY and STL go through CGAL's polygon-soup readers, which keep double precision;
+/// OBJ, OFF, PLY and STL go through our own strict readers, which keep the file's precision;
 /// every other format assimp reads (glTF/GLB, DAE, 3DS, FBX, ...) goes through assimp, whose
 /// Debian build stores coordinates as 32-bit floats (report->single_precision says so). Faces
 /// with more than three corners are fan-triangulated and counted; points and lines are skipped
