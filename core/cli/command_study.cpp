@@ -112,9 +112,11 @@ void addStudyCommands(CLI::App& app, const PluginOptions& plugins, int& exit_cod
                     "with --resume, also run again combinations that crashed, failed or timed out");
   command->add_option("--shard", args->shard,
                       "run only part I of N (0 <= I < N), e.g. $SLURM_ARRAY_TASK_ID/4");
-  command->add_option("--oracle-store", args->oracle_directory,
-                      "keep the exact oracle's answers in this folder (default: OUT/oracle); "
-                      "shards given one folder on a shared filesystem reuse each other's");
+  command
+      ->add_option("--oracle-store", args->oracle_directory,
+                   "keep the exact oracle's answers in this folder (default: OUT/oracle); "
+                   "shards given one folder on a shared filesystem reuse each other's")
+      ->check(CLI::ExistingDirectory | CLI::NonexistentPath);
   command
       ->add_option("--timeout", args->timeout_s,
                    "seconds a combination may run before its worker is killed (default: the "

@@ -798,6 +798,12 @@ TEST(StudyCli, BadArgumentsAreRefused) {
   const CommandRun file_store = collido({"run", scene, "--oracle-cache", scene}, dir);
   EXPECT_EQ(file_store.exit_code, 2) << describe(file_store);
   EXPECT_NE(file_store.err.find("--oracle-cache"), std::string::npos) << file_store.err;
+  std::vector<std::string> file_study = studyArgs(scene, "obbtree", dir + "/o");
+  file_study.insert(file_study.end(), {"--oracle-store", scene});
+  const CommandRun study_file_store = collido(file_study, dir);
+  EXPECT_EQ(study_file_store.exit_code, 2) << describe(study_file_store);
+  EXPECT_NE(study_file_store.err.find("--oracle-store"), std::string::npos) << study_file_store.err;
+  EXPECT_FALSE(fs::exists(dir + "/o"));
 }
 
 // Plugins are loaded by child processes before the driver uses them: one that crashes or hangs

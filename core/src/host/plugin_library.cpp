@@ -125,7 +125,8 @@ std::vector<std::string> defaultPluginDirectories() {
   const std::string exe_dir = executableDirectory();
   if (!exe_dir.empty()) {
     dirs.push_back(exe_dir + "/plugins");
-    dirs.push_back(exe_dir + "/../lib/collido/plugins");
+    // The install's plugins, named without ".." so that listings show the real path.
+    dirs.push_back((fs::path(exe_dir).parent_path() / "lib" / "collido" / "plugins").string());
   }
   if (const char* env = std::getenv("COLLIDO_PLUGIN_PATH"); env != nullptr) {
     std::stringstream list(env);
