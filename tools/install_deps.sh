@@ -15,7 +15,7 @@ packages=(
   libeigen3-dev libcgal-dev libgmp-dev libmpfr-dev libboost-dev libpng-dev
   libassimp-dev nlohmann-json3-dev libcli11-dev libfccp-dev libxxhash-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  libfcl-dev libbullet-dev libode-dev libtbb-dev
+  libfcl-dev libbullet-dev libode-dev libtbb-dev libembree-dev
   libocct-modeling-algorithms-dev libocct-data-exchange-dev libopenvdb-dev
   chromium
 )
