@@ -265,25 +265,30 @@ class CgalBackend final : public Backend {
                               mapped[1].sup(), mapped[2].sup());
       }
     }
-    world_a_.assign(mesh_a.number_of_vertices(), Point());
-    placed_a_.assign(mesh_a.number_of_vertices(), 0);
-    world_b_.assign(mesh_b.number_of_vertices(), Point());
-    placed_b_.assign(mesh_b.number_of_vertices(), 0);
-    // World corners are made for the candidates' corners only.
-    const auto world = [](const Mesh& mesh, const Transformation& to_world,
-                          std::vector<Point>& points, std::vector<char>& placed,
-                          Mesh::Vertex_index v) -> const Point& {
-      if (placed[v.idx()] == 0) {
-        points[v.idx()] = to_world.transform(mesh.point(v));
-        placed[v.idx()] = 1;
+    // World corners are made for the candidates' corners only; the caches keep their size across
+    // queries, and only the entries this query touched are reset at its end.
+    for (auto* cache : {&world_a_cache_, &world_b_cache_}) {
+      const std::size_t n =
+          cache == &world_a_cache_ ? mesh_a.number_of_vertices() : mesh_b.number_of_vertices();
+      if (cache->points.size() < n) {
+        cache->points.resize(n);
+        cache->placed.resize(n, 0);
       }
-      return points[v.idx()];
+    }
+    const auto world = [](const Mesh& mesh, const Transformation& to_world, WorldCache& cache,
+                          Mesh::Vertex_index v) -> const Point& {
+      if (cache.placed[v.idx()] == 0) {
+        cache.points[v.idx()] = to_world.transform(mesh.point(v));
+        cache.placed[v.idx()] = 1;
+        cache.touched.push_back(v.idx());
+      }
+      return cache.points[v.idx()];
     };
     const auto worldA = [&](Mesh::Vertex_index v) -> const Point& {
-      return world(mesh_a, a_to_world, world_a_, placed_a_, v);
+      return world(mesh_a, a_to_world, world_a_cache_, v);
     };
     const auto worldB = [&](Mesh::Vertex_index v) -> const Point& {
-      return world(mesh_b, b_to_world, world_b_, placed_b_, v);
+      return world(mesh_b, b_to_world, world_b_cache_, v);
     };
     for (Mesh::Face_index f : mesh_b.faces()) {
       Mesh::Vertex_index corners_b[3];
@@ -315,13 +320,23 @@ class CgalBackend final : public Backend {
       }
     }
     result.intersecting = !result.pairs.empty();
+    for (auto* cache : {&world_a_cache_, &world_b_cache_}) {
+      for (std::uint32_t v : cache->touched)
+        cache->placed[v] = 0;
+      cache->touched.clear();
+    }
   }
 
+  /// World corners of one mesh made during a query, by vertex index.
+  struct WorldCache {
+    std::vector<Point> points;
+    std::vector<char> placed;
+    std::vector<std::uint32_t> touched;
+  };
+
   std::vector<CGAL::Bbox_3> boxes_b_;
-  std::vector<Point> world_b_;
-  std::vector<Point> world_a_;
-  std::vector<char> placed_a_;
-  std::vector<char> placed_b_;
+  WorldCache world_a_cache_;
+  WorldCache world_b_cache_;
   std::vector<Tree::Primitive_id> hits_;
 };
 
