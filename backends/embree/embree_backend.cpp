@@ -9,10 +9,15 @@
 //           boxes overlap, and exact::trianglesIntersect (core's, the test the floor times)
 //           decides each on the static mesh's corners and the moving one's mapped corners;
 //   boolean the same, deciding no candidate after the first hit (rtcCollide cannot be stopped);
+//   contacts the all-pairs answer, then per pair core's exact intersection set of the world
+//           triangles (rationals, each point rounded once) and the contact frame, merged and
+//           capped by core's manifold rules (docs/DESIGN.md, "Contact geometry"): Embree has
+//           no contact generation of its own, so this is the reference construction on its pairs;
 //   update  new corners, then a refit of the model's scene (RTC_BUILD_QUALITY_REFIT).
 // The device runs one thread unless the option threads=N asks for more. Embree's device errors
 // become errors naming the backend and Embree's message.
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cmath>
 #include <cstdint>
@@ -25,7 +30,10 @@
 
 #include <embree3/rtcore.h>
 
+#include <collido/oracle/contact_manifold.h>
+#include <collido/oracle/contact_reference.h>
 #include <collido/oracle/double_triangle_test.h>
+#include <collido/oracle/exact_oracle.h>
 #include <collido/plugin_export.h>
 
 namespace collido::embree_backend {
@@ -249,18 +257,21 @@ void onCollisions(void* user, RTCCollision* collisions, unsigned count) {
 
 class EmbreeBackend final : public Backend {
  public:
-  explicit EmbreeBackend(int threads) : device_(threads), threads_(threads) {}
+  EmbreeBackend(int threads, double contact_merge_radius)
+      : device_(threads), threads_(threads), contact_merge_radius_(contact_merge_radius) {}
 
   Capabilities capabilities() const override {
     Capabilities caps;
     caps.shape_kinds = static_cast<std::uint32_t>(ShapeKind::kTriangleMesh);
-    caps.queries = QueryKindSet(QueryKind::kBoolean) | QueryKind::kAllPairs;
+    caps.queries = QueryKindSet(QueryKind::kBoolean) | QueryKind::kAllPairs | QueryKind::kContacts;
     caps.update = true;
     caps.notes =
         "Embree " COLLIDO_EMBREE_VERSION
         " rtcCollide on user-geometry BVHs; the smaller mesh is mapped into the other's frame "
         "(in double) and its BVH built per query, inside the query's time; candidates decided "
-        "by core's exact triangle test; update refits. " +
+        "by core's exact triangle test; contacts from each pair's exact intersection set "
+        "(rationals), merged within contact_merge_radius, capped by keeping the deepest and the "
+        "farthest; update refits. " +
         std::to_string(threads_) + " thread(s). No work counters.";
     return caps;
   }
@@ -304,6 +315,10 @@ class EmbreeBackend final : public Backend {
     std::sort(job.pairs.begin(), job.pairs.end(), [](const TrianglePair& x, const TrianglePair& y) {
       return x.a != y.a ? x.a < y.a : x.b < y.b;
     });
+    if (request.kind == QueryKind::kContacts) {
+      contactsOf(a, pose_a, b, pose_b, job.pairs, request.max_contacts, result);
+      return {};
+    }
     result.pairs = std::move(job.pairs);
     if (request.max_pairs != 0 && result.pairs.size() > request.max_pairs) {
       result.pairs.resize(request.max_pairs);
@@ -313,8 +328,40 @@ class EmbreeBackend final : public Backend {
   }
 
  private:
+  // One contact per pair whose world triangles meet exactly: a pair that only the mapped
+  // corners' rounding made meet has an empty set and gives none.
+  void contactsOf(const EmbreeModel& a, const Pose& pose_a, const EmbreeModel& b,
+                  const Pose& pose_b, const std::vector<TrianglePair>& pairs,
+                  std::uint64_t max_contacts, QueryResult& result) const {
+    const auto cornersOf = [](const EmbreeModel& model, std::int32_t t) {
+      return std::array<Eigen::Vector3d, 3>{
+          model.corners().corner(t, 0), model.corners().corner(t, 1), model.corners().corner(t, 2)};
+    };
+    const auto posed = [](const Pose& pose, const std::array<Eigen::Vector3d, 3>& t) {
+      return std::array<Eigen::Vector3d, 3>{pose * t[0], pose * t[1], pose * t[2]};
+    };
+    result.contacts.clear();
+    result.contacts.reserve(pairs.size());
+    for (const TrianglePair& pair : pairs) {
+      const std::array<Eigen::Vector3d, 3> model_a = cornersOf(a, pair.a);
+      const std::array<Eigen::Vector3d, 3> model_b = cornersOf(b, pair.b);
+      const ExactIntersection set = exactPosedIntersection(model_a, pose_a, model_b, pose_b);
+      if (set.shape == ExactIntersection::Shape::kEmpty) continue;
+      const ContactFrame frame = contactFrame(posed(pose_a, model_a), posed(pose_b, model_b));
+      result.contacts.push_back(
+          Contact{intersectionMean(set), frame.normal, frame.depth, pair.a, pair.b});
+    }
+    result.intersecting = !result.contacts.empty();
+    mergeNearbyContacts(contact_merge_radius_, result.contacts);
+    if (max_contacts != 0 && result.contacts.size() > max_contacts) {
+      keepSpreadContacts(static_cast<std::size_t>(max_contacts), result.contacts);
+      result.truncated = true;
+    }
+  }
+
   Device device_;
   int threads_;
+  double contact_merge_radius_;
   Eigen::Matrix3Xd moved_;
 };
 
@@ -322,9 +369,11 @@ Result<std::unique_ptr<Backend>> create(const std::string& variant, BackendOptio
   // Embree's device takes any thread count; 256 bounds a typo, not a machine.
   const Result<std::int64_t> threads = options.getInt("threads", 1, 1, 256);
   if (!threads.ok()) return threads.status();
+  const Result<double> merge_radius = options.getDouble("contact_merge_radius", 0.0, 0.0, 1e300);
+  if (!merge_radius.ok()) return merge_radius.status();
   if (variant == "embree") {
     return std::unique_ptr<Backend>(
-        std::make_unique<EmbreeBackend>(static_cast<int>(threads.value())));
+        std::make_unique<EmbreeBackend>(static_cast<int>(threads.value()), merge_radius.value()));
   }
   return Status(StatusCode::kInvalidArgument, "embree has no variant '" + variant + "'");
 }
@@ -335,7 +384,10 @@ const PluginInfo& describe() {
       "0.1.0",
       "Embree",
       COLLIDO_EMBREE_VERSION,
-      {{"embree", "Embree's rtcCollide on SIMD BVHs, candidates decided by the exact test"}},
+      {{"embree",
+        "Embree's rtcCollide on SIMD BVHs, candidates decided by the exact test; options threads "
+        "(default 1: Embree's device threads), contact_merge_radius (default 0: contacts closer "
+        "than this merge into the deepest; 0 merges coincident ones only)"}},
       &create};
   return info;
 }

@@ -4,12 +4,10 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <limits>
-#include <numeric>
 #include <optional>
-#include <unordered_map>
 #include <vector>
 
+#include <collido/oracle/contact_manifold.h>
 #include <collido/oracle/contact_reference.h>
 #include <collido/oracle/exact_oracle.h>
 
@@ -222,88 +220,6 @@ std::optional<ExactIntersection> coplanarIntersection(const detail::CoplanarOver
   return set;
 }
 
-// Merges contacts within `radius` of a deeper one (coincident ones when it is 0), deepest
-// first, keeping the pair order otherwise.
-std::uint64_t mergeNearby(double radius, std::vector<TriangleContact>& contacts) {
-  std::vector<std::size_t> order(contacts.size());
-  std::iota(order.begin(), order.end(), std::size_t{0});
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) {
-    return contacts[i].depth > contacts[j].depth;
-  });
-  std::vector<bool> keep(contacts.size(), false);
-  const double cell = radius > 0.0 ? radius : 1.0;
-  const auto key = [&](const Eigen::Vector3d& p, int dx, int dy, int dz) {
-    if (radius == 0.0) return std::array<double, 3>{p.x(), p.y(), p.z()};
-    return std::array<double, 3>{std::floor(p.x() / cell) + dx, std::floor(p.y() / cell) + dy,
-                                 std::floor(p.z() / cell) + dz};
-  };
-  struct KeyHash {
-    std::size_t operator()(const std::array<double, 3>& k) const {
-      const std::hash<double> h;
-      return h(k[0]) ^ (h(k[1]) * 31) ^ (h(k[2]) * 1009);
-    }
-  };
-  std::unordered_map<std::array<double, 3>, std::vector<std::size_t>, KeyHash> kept;
-  std::uint64_t merged = 0;
-  const int reach = radius > 0.0 ? 1 : 0;
-  for (std::size_t i : order) {
-    const Eigen::Vector3d& p = contacts[i].position;
-    bool near = false;
-    for (int dx = -reach; dx <= reach && !near; ++dx) {
-      for (int dy = -reach; dy <= reach && !near; ++dy) {
-        for (int dz = -reach; dz <= reach && !near; ++dz) {
-          const auto found = kept.find(key(p, dx, dy, dz));
-          if (found == kept.end()) continue;
-          for (std::size_t j : found->second) {
-            if ((contacts[j].position - p).norm() <= radius) near = true;
-          }
-        }
-      }
-    }
-    if (near) {
-      ++merged;
-      continue;
-    }
-    keep[i] = true;
-    kept[key(p, 0, 0, 0)].push_back(i);
-  }
-  std::size_t out = 0;
-  for (std::size_t i = 0; i < contacts.size(); ++i) {
-    if (keep[i]) contacts[out++] = contacts[i];
-  }
-  contacts.resize(out);
-  return merged;
-}
-
-// Keeps `count` contacts: the deepest, then repeatedly the one farthest from those kept.
-void keepSpread(std::size_t count, std::vector<TriangleContact>& contacts) {
-  std::size_t first = 0;
-  for (std::size_t i = 1; i < contacts.size(); ++i) {
-    if (contacts[i].depth > contacts[first].depth) first = i;
-  }
-  std::vector<double> gap(contacts.size(), std::numeric_limits<double>::infinity());
-  std::vector<std::size_t> chosen;
-  std::size_t next = first;
-  while (chosen.size() < count) {
-    chosen.push_back(next);
-    gap[next] = -1.0;
-    std::size_t farthest = next;
-    for (std::size_t i = 0; i < contacts.size(); ++i) {
-      if (gap[i] < 0.0) continue;
-      gap[i] = std::min(gap[i], (contacts[i].position - contacts[next].position).norm());
-      if (farthest == next || gap[i] > gap[farthest]) farthest = i;
-    }
-    if (farthest == next) break;
-    next = farthest;
-  }
-  std::sort(chosen.begin(), chosen.end());
-  std::vector<TriangleContact> kept;
-  kept.reserve(chosen.size());
-  for (std::size_t i : chosen)
-    kept.push_back(contacts[i]);
-  contacts.swap(kept);
-}
-
 }  // namespace
 
 std::vector<std::int32_t> leafPositionsOfIds(const ObbTree& tree) {
@@ -364,9 +280,9 @@ void contactsOfPairs(const ObbTree& a, const std::vector<std::int32_t>& position
     contact.triangle_b = pair.b;
     answer.contacts.push_back(contact);
   }
-  answer.merged = mergeNearby(options.merge_radius, answer.contacts);
+  answer.merged = mergeNearbyContacts(options.merge_radius, answer.contacts);
   if (options.max_contacts != 0 && answer.contacts.size() > options.max_contacts) {
-    keepSpread(static_cast<std::size_t>(options.max_contacts), answer.contacts);
+    keepSpreadContacts(static_cast<std::size_t>(options.max_contacts), answer.contacts);
     answer.truncated = true;
   }
 }
