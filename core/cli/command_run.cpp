@@ -50,8 +50,10 @@ void explainCrashes() {
 
 int run(const RunArguments& args, const PluginOptions& plugin_options) {
   std::vector<Scene> scenes;
+  SceneLoadOptions load;
+  if (!args.oracle_directory.empty()) load.placement_store = args.oracle_directory + "/placements";
   for (const std::string& path : args.scenes) {
-    Result<Scene> scene = loadScene(path);
+    Result<Scene> scene = loadScene(path, load);
     if (!scene.ok()) {
       std::cerr << "error: " << scene.status().message() << "\n";
       return 2;

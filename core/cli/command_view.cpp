@@ -1,14 +1,17 @@
 // collido view: a scene's 3D view with every backend's answers, triangle by triangle. Each
 // backend answers in a child process of its own (collido view-answers), so an engine that
-// crashes or hangs loses its own answers only; the exact oracle's answers are kept on disk
-// between them and computed once.
+// crashes or hangs loses its own answers only; the exact oracle's answers are computed once,
+// before the children start (or read from the study's store), and kept on disk between them.
+#include <algorithm>
 #include <atomic>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <memory>
+#include <mutex>
 #include <set>
 #include <sstream>
+#include <thread>
 
 #include <collido/runner/runner.h>
 #include <collido/runner/view_answers.h>
@@ -33,13 +36,17 @@ struct ViewArguments {
   std::string web;
   double timeout_s = 600.0;
   double resolution = 1.0;
+  unsigned jobs = 0;  ///< backends answering at once; 0: one per processor
   bool quiet = false;
 };
 
-// The scene at `resolution`; a bad one is reported on stderr.
-Result<Scene> loadReporting(const std::string& path, double resolution) {
+// The scene at `resolution`, its solved placement kept in `oracle_directory`'s store; a bad one
+// is reported on stderr.
+Result<Scene> loadReporting(const std::string& path, double resolution,
+                            const std::string& oracle_directory) {
   SceneLoadOptions load;
   load.resolution = resolution;
+  if (!oracle_directory.empty()) load.placement_store = oracle_directory + "/placements";
   Result<Scene> scene = loadScene(path, load);
   if (!scene.ok()) std::cerr << "error: " << scene.status().message() << "\n";
   return scene;
@@ -99,7 +106,8 @@ std::string readFile(const std::string& path) {
 
 // One backend's answers, from a child process.
 view::ViewBackend answersOf(const ViewArguments& args, const PluginOptions& plugins,
-                            const std::string& backend, const std::string& work, std::size_t index,
+                            const std::string& backend, const std::string& work,
+                            const std::string& oracle_directory, std::size_t index,
                             const std::atomic<bool>& stop) {
   view::ViewBackend result;
   result.label = backend;
@@ -109,7 +117,7 @@ view::ViewBackend answersOf(const ViewArguments& args, const PluginOptions& plug
   launch.arguments = pluginArguments(plugins);
   for (const std::string& a :
        {std::string("view-answers"), std::string("--scene"), args.scene, std::string("--backend"),
-        backend, std::string("--out"), out, std::string("--oracle-cache"), work + "/oracle",
+        backend, std::string("--out"), out, std::string("--oracle-cache"), oracle_directory,
         std::string("--resolution"), exactText(args.resolution)}) {
     launch.arguments.push_back(a);
   }
@@ -130,7 +138,26 @@ view::ViewBackend answersOf(const ViewArguments& args, const PluginOptions& plug
 }
 
 int view(const ViewArguments& args, const PluginOptions& plugins) {
-  const Result<Scene> scene = loadReporting(args.scene, args.resolution);
+  std::error_code ec;
+  const std::filesystem::path work =
+      std::filesystem::path(args.out).parent_path() /
+      (std::filesystem::path(args.out).filename().string() + ".work");
+  // The work folder (the children's answers, an oracle store of its own) goes with any return.
+  struct RemoveOnReturn {
+    std::filesystem::path folder;
+    ~RemoveOnReturn() {
+      std::error_code ignored;
+      std::filesystem::remove_all(folder, ignored);
+    }
+  } const remove_work{work};
+  // The exact answers (and solved placements) from the study's store when it has them: the study
+  // computed them for the same scene. Else they are computed here once, shared with the children.
+  std::string oracle_directory = (work / "oracle").string();
+  if (!args.results.empty() &&
+      std::filesystem::is_directory(std::filesystem::path(args.results) / "oracle", ec)) {
+    oracle_directory = (std::filesystem::path(args.results) / "oracle").string();
+  }
+  const Result<Scene> scene = loadReporting(args.scene, args.resolution, oracle_directory);
   if (!scene.ok()) return 2;
   std::vector<std::string> backends = args.backends;
   if (backends.empty() && !args.results.empty()) {
@@ -163,33 +190,53 @@ int view(const ViewArguments& args, const PluginOptions& plugins) {
                  "backends' processes\n";
     return 2;
   }
-  std::error_code ec;
-  const std::filesystem::path work =
-      std::filesystem::path(args.out).parent_path() /
-      (std::filesystem::path(args.out).filename().string() + ".work");
   std::filesystem::create_directories(work / "oracle", ec);
   if (ec) {
     std::cerr << "error: " << work.string() << ": " << ec.message() << "\n";
     return 2;
   }
-  // Ctrl-C, SIGTERM or a lost session stops the running backend's process, not only this one.
+  // The exact answers once, before any backend.
+  {
+    OracleCache oracle(scene.value());
+    const study::StoredOracle stored(oracle_directory, oracle);
+    precomputeOracleAnswers(oracle);
+    stored.keepNew();
+  }
+  // Ctrl-C, SIGTERM or a lost session stops the running backends' processes, not only this one.
   const study::StopOnSignals stop;
-  std::vector<view::ViewBackend> answers;
-  for (std::size_t i = 0; i < backends.size(); ++i) {
-    if (!args.quiet) std::cerr << "view: " << backends[i] << "\n";
-    answers.push_back(answersOf(args, plugins, backends[i], work.string(), i, stop.requested()));
-    if (stop.requested().load()) {
-      std::filesystem::remove_all(work, ec);
-      std::cerr << "view interrupted (signal " << stop.signal() << "): nothing written\n";
-      return 130;
+  // Views time nothing, so backends answer side by side, each in its own process.
+  const unsigned processors = std::max(1U, std::thread::hardware_concurrency());
+  const std::size_t jobs =
+      std::min<std::size_t>(backends.size(), args.jobs == 0 ? processors : args.jobs);
+  std::vector<view::ViewBackend> answers(backends.size());
+  std::atomic<std::size_t> next{0};
+  std::mutex output;
+  const auto answerNext = [&] {
+    for (std::size_t i = next++; i < backends.size() && !stop.requested().load(); i = next++) {
+      if (!args.quiet) {
+        const std::lock_guard<std::mutex> lock(output);
+        std::cerr << "view: " << backends[i] << "\n";
+      }
+      answers[i] = answersOf(args, plugins, backends[i], work.string(), oracle_directory, i,
+                             stop.requested());
+      if (!answers[i].problem.empty() && !stop.requested().load()) {
+        const std::lock_guard<std::mutex> lock(output);
+        std::cerr << "warning: " << backends[i] << ": " << answers[i].problem << "\n";
+      }
     }
-    if (!answers.back().problem.empty()) {
-      std::cerr << "warning: " << backends[i] << ": " << answers.back().problem << "\n";
-    }
+  };
+  std::vector<std::thread> threads;
+  for (std::size_t t = 1; t < jobs; ++t)
+    threads.emplace_back(answerNext);
+  answerNext();
+  for (std::thread& t : threads)
+    t.join();
+  if (stop.requested().load()) {
+    std::cerr << "view interrupted (signal " << stop.signal() << "): nothing written\n";
+    return 130;
   }
   Result<std::string> page =
       view::renderViewPage(scene.value(), answers, study::webDirectory(args.web));
-  std::filesystem::remove_all(work, ec);
   if (!page.ok()) {
     std::cerr << "error: " << page.status().message() << "\n";
     return 2;
@@ -212,7 +259,7 @@ struct AnswersArguments {
 
 // The child: one backend's answers on the scene, the oracle's shared through the store.
 int viewAnswers(const AnswersArguments& args, const PluginOptions& plugins) {
-  const Result<Scene> scene = loadReporting(args.scene, args.resolution);
+  const Result<Scene> scene = loadReporting(args.scene, args.resolution, args.oracle_directory);
   if (!scene.ok()) return 2;
   const PluginDiscovery found = discoverPlugins(plugins.paths, !plugins.no_defaults);
   Result<std::vector<BackendSpec>> specs = resolveBackends({args.backend}, found.plugins);
@@ -262,6 +309,11 @@ void addViewCommands(CLI::App& app, const PluginOptions& plugins, int& exit_code
   command->add_option("--web", args->web,
                       "the front-end folder (default: $COLLIDO_WEB_DIR, else the "
                       "install's share/collido/web, else the source web/)");
+  command
+      ->add_option("--jobs", args->jobs,
+                   "backends answering at once, each in its own process (default: one per "
+                   "processor)")
+      ->check(CLI::Range(1U, 256U));
   command->add_flag("--quiet", args->quiet, "no progress on stderr");
   command->callback([args, &plugins, &exit_code] { exit_code = view(*args, plugins); });
 

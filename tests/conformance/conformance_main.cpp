@@ -155,16 +155,21 @@ int main(int argc, char** argv) {
     std::cerr << "collido_conformance: no variant '" << only_variant << "' in the plugins given\n";
     return 2;
   }
-  if (collido::Status s = loadSceneCases(settings().scenes_dir, skipped_scenes); !s.ok()) {
-    std::cerr << "collido_conformance: " << s.message() << "\n";
-    return 2;
-  }
-  if (!oracle_cache.empty()) readStoredOracleAnswers(oracle_cache);
   if (!fill_oracle_cache.empty()) {
     // Answers left by an earlier build (another oracle) must not outlive a failed fill.
     std::error_code ec;
     std::filesystem::remove_all(fill_oracle_cache, ec);
   }
+  // The scenes' solved placements are kept beside the oracle's answers: the filling run solves
+  // them, the other plugins' runs read them.
+  const std::string store = !fill_oracle_cache.empty() ? fill_oracle_cache : oracle_cache;
+  if (collido::Status s = loadSceneCases(settings().scenes_dir, skipped_scenes,
+                                         store.empty() ? "" : store + "/placements");
+      !s.ok()) {
+    std::cerr << "collido_conformance: " << s.message() << "\n";
+    return 2;
+  }
+  if (!oracle_cache.empty()) readStoredOracleAnswers(oracle_cache);
   int rest_count = static_cast<int>(rest.size());
   rest.push_back(nullptr);  // argv[argc] is null, and GoogleTest moves it along with the flags
   ::testing::InitGoogleTest(&rest_count, rest.data());

@@ -80,7 +80,8 @@ Status storeOracleAnswers(const std::string& directory) {
   return {};
 }
 
-Status loadSceneCases(const std::string& directory, const std::set<std::string>& skipped) {
+Status loadSceneCases(const std::string& directory, const std::set<std::string>& skipped,
+                      const std::string& placement_store) {
   std::vector<std::string> files;
   std::set<std::string> not_found = skipped;
   std::error_code ec;
@@ -107,8 +108,10 @@ Status loadSceneCases(const std::string& directory, const std::set<std::string>&
     sceneCases().push_back(std::move(c));
     return {};
   };
+  SceneLoadOptions load;
+  load.placement_store = placement_store;
   for (const std::string& file : files) {
-    if (Status s = add(loadScene(file), file); !s.ok()) return s;
+    if (Status s = add(loadScene(file, load), file); !s.ok()) return s;
   }
   for (const char* text : kKitScenes) {
     if (Status s = add(parseScene(text, "conformance kit scene", directory), ""); !s.ok()) return s;

@@ -28,7 +28,8 @@ std::vector<SceneCase>& sceneCases();
 /// `skipped`, and the kit's own adversarial scenes: linked tori touching exactly, coplanar
 /// overlapping sheets, tori at random poses, and a sphere against a gear. Fails on the first
 /// scene that does not load, and on a skipped name that is no file of `directory`.
-Status loadSceneCases(const std::string& directory, const std::set<std::string>& skipped);
+Status loadSceneCases(const std::string& directory, const std::set<std::string>& skipped,
+                      const std::string& placement_store);
 
 /// Adds to every case's oracle the answers stored in `directory` for that very scene
 /// (study/oracle_store.h: a file per scene fingerprint); a case without a file computes its own.

@@ -582,13 +582,15 @@ TEST(StudyCli, ShardsMergeIntoTheWholeStudy) {
   EXPECT_NE(not_a_study.err.find("no study here"), std::string::npos) << not_a_study.err;
 }
 
-// A sweep file: option grid, needs, resolutions, limits and its own repetitions.
+// A sweep file: option grid, needs, resolutions, limits and its own repetitions; an optional
+// backend no plugin offers is left out with a warning.
 TEST(StudyCli, SweepFileSetsTheGrid) {
   const std::string dir = test::makeTempDirectory("study_sweep");
   const std::string out = dir + "/study";
   const std::string sweep = dir + "/sweep.json";
   test::writeFile(sweep, R"({
-    "backends": [{"variant": "misbehaving:exact", "options": {"build_mib": [0, 1]}}],
+    "backends": [{"variant": "misbehaving:exact", "options": {"build_mib": [0, 1]}},
+                 {"variant": "not_built_here", "optional": true}],
     "needs": ["declared", "every"],
     "resolutions": [1, 0.5],
     "limits": [2],
@@ -599,6 +601,10 @@ TEST(StudyCli, SweepFileSetsTheGrid) {
       collido({"study", writeSmallScene(dir), "--sweep", sweep, "--out", out}, dir);
   ASSERT_EQ(run.exit_code, 0) << describe(run);
   EXPECT_NE(run.err.find("study: 8 combinations, 8 to run"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("warning: sweep: no plugin offers the optional 'not_built_here'; left "
+                         "out"),
+            std::string::npos)
+      << run.err;
   const std::vector<CombinationResult> results = readResults(out);
   ASSERT_EQ(results.size(), 8u);
   std::set<std::string> settings;

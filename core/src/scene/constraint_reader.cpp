@@ -4,12 +4,15 @@
 #include <cmath>
 #include <map>
 #include <memory>
+#include <optional>
 #include <sstream>
+#include <string>
 
 #include <collido/constraints/solve.h>
 #include <collido/oracle/distance_oracle.h>
 
 #include "oracle_separation.h"
+#include "placement_store.h"
 
 namespace collido::scene_reading {
 namespace {
@@ -241,7 +244,8 @@ class BlockReader {
 }  // namespace
 
 void solveSceneConstraints(const Reader& r, const Node& block,
-                           const std::vector<ObjectMotionSource>& sources, Scene& scene) {
+                           const std::vector<ObjectMotionSource>& sources,
+                           const std::string& placement_store, Scene& scene) {
   r.expectObject(block,
                  {"length_scale", "tolerance", "allow_redundant", "fixed", "variables", "list"});
   double largest = 0.0;
@@ -272,17 +276,41 @@ void solveSceneConstraints(const Reader& r, const Node& block,
     meshes.push_back(scene.objects[object].shapeAt(0));
   problem.setSeparationQuery(std::make_shared<OracleSeparation>(meshes));
   const std::vector<constraints::Body> before = problem.bodies();
-  const Result<constraints::SolveReport> report = constraints::solve(problem, options);
-  if (!report.ok()) r.fail(list, "the constraints cannot be met: " + report.status().message());
+
+  // The same block on the same bodies was solved before by another process of this run.
+  std::string stored_path;
+  std::optional<StoredSolve> solve;
+  if (!placement_store.empty()) {
+    PlacementKey key(block.value.dump(), largest);
+    for (std::size_t body = 0; body < before.size(); ++body)
+      key.addBody(before[body].pose, *meshes[body]);
+    stored_path = key.path(placement_store);
+    solve = readStoredSolve(stored_path, before.size(), problem.variables().size(),
+                            reader.clearances().size());
+  }
+  const bool solved_here = !solve;
+  if (solved_here) {
+    const Result<constraints::SolveReport> report = constraints::solve(problem, options);
+    if (!report.ok()) r.fail(list, "the constraints cannot be met: " + report.status().message());
+    solve.emplace();
+    for (const constraints::Body& body : problem.bodies())
+      solve->body_poses.push_back(body.pose);
+    for (const constraints::Variable& variable : problem.variables())
+      solve->variables.push_back(variable.value);
+    solve->equations = report.value().equations;
+    solve->parameters = report.value().parameters;
+    solve->iterations = report.value().iterations;
+    solve->change = report.value().change;
+  }
 
   ScenePlacement placement;
   placement.constraints = static_cast<int>(problem.constraints().size());
-  placement.equations = report.value().equations;
-  placement.parameters = report.value().parameters;
-  placement.iterations = report.value().iterations;
-  placement.change = report.value().change;
+  placement.equations = solve->equations;
+  placement.parameters = solve->parameters;
+  placement.iterations = solve->iterations;
+  placement.change = solve->change;
   for (std::size_t body = 0; body < before.size(); ++body) {
-    const Pose& solved = problem.bodies()[body].pose;
+    const Pose& solved = solve->body_poses[body];
     if (solved.matrix() == before[body].pose.matrix()) continue;
     const std::size_t index = reader.objectOfBody()[body];
     SceneObject& object = scene.objects[index];
@@ -299,17 +327,21 @@ void solveSceneConstraints(const Reader& r, const Node& block,
     placement.moved.push_back(index);
     placement.corrections.push_back(correction);
   }
-  for (const constraints::Variable& variable : problem.variables())
-    placement.variables.emplace_back(variable.name, variable.value);
-  for (int c : reader.clearances()) {
-    const constraints::Constraint& clearance = problem.constraints()[c];
-    const std::size_t a = reader.objectOfBody()[clearance.p.body];
-    const std::size_t b = reader.objectOfBody()[clearance.q.body];
-    const MeshDistance distance =
-        exactMeshDistance(*meshes[clearance.p.body], scene.objects[a].poseAt(0),
-                          *meshes[clearance.q.body], scene.objects[b].poseAt(0));
-    placement.clearances.emplace_back(clearance.name, distance.distance);
+  for (std::size_t v = 0; v < problem.variables().size(); ++v)
+    placement.variables.emplace_back(problem.variables()[v].name, solve->variables[v]);
+  for (std::size_t k = 0; k < reader.clearances().size(); ++k) {
+    const constraints::Constraint& clearance = problem.constraints()[reader.clearances()[k]];
+    if (solved_here) {
+      const std::size_t a = reader.objectOfBody()[clearance.p.body];
+      const std::size_t b = reader.objectOfBody()[clearance.q.body];
+      solve->clearances.push_back(
+          exactMeshDistance(*meshes[clearance.p.body], scene.objects[a].poseAt(0),
+                            *meshes[clearance.q.body], scene.objects[b].poseAt(0))
+              .distance);
+    }
+    placement.clearances.emplace_back(clearance.name, solve->clearances[k]);
   }
+  if (solved_here && !stored_path.empty()) writeStoredSolve(stored_path, *solve);
   scene.placement = std::move(placement);
 }
 

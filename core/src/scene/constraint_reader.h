@@ -27,8 +27,11 @@ struct ObjectMotionSource {
 
 /// Reads `block` (the scene's /constraints), solves it with the exact oracle's distances for
 /// clearances, and moves the objects it changes; fills scene.placement. Errors (bad fields,
-/// unknown objects, a constraint that cannot be met) name the file and JSON path.
+/// unknown objects, a constraint that cannot be met) name the file and JSON path. With a
+/// `placement_store` folder, a solve stored there for the same block and bodies is reused, and
+/// a new one is stored (SceneLoadOptions::placement_store).
 void solveSceneConstraints(const Reader& r, const Node& block,
-                           const std::vector<ObjectMotionSource>& sources, Scene& scene);
+                           const std::vector<ObjectMotionSource>& sources,
+                           const std::string& placement_store, Scene& scene);
 
 }  // namespace collido::scene_reading

@@ -746,7 +746,8 @@ Scene readScene(const Reader& r, const Json& document, const std::string& base_d
   }
 
   if (root.has("constraints")) {
-    scene_reading::solveSceneConstraints(r, root.at("constraints"), sources, scene);
+    scene_reading::solveSceneConstraints(r, root.at("constraints"), sources,
+                                         options.placement_store, scene);
   }
 
   if (!root.has("queries")) r.fail(root, "missing 'queries'");

@@ -38,8 +38,10 @@ constexpr std::chrono::seconds kOutputsRefresh{30};
 
 // The backend settings to run: the sweep's (restricted to the variants --backends names, plus
 // any --backends entry the sweep does not mention), else --backends, else every variant found.
+// An optional sweep entry that no plugin offers is left out with a warning (the GPL-only cgal
+// comparator in a default build).
 std::vector<std::string> backendSettings(const StudyRequest& args, const Sweep& sweep,
-                                         const PluginProbe& found) {
+                                         const PluginProbe& found, std::ostream& err) {
   std::vector<std::string> settings;
   std::set<std::string> named;
   for (const std::string& text : args.backends) {
@@ -51,6 +53,11 @@ std::vector<std::string> backendSettings(const StudyRequest& args, const Sweep& 
   for (const SweepBackend& backend : sweep.backends) {
     swept.insert(backend.variant);
     if (!named.empty() && named.count(backend.variant) == 0) continue;
+    if (backend.optional && found.offering(backend.variant) == nullptr) {
+      err << "warning: sweep: no plugin offers the optional '" << backend.variant
+          << "'; left out\n";
+      continue;
+    }
     for (const std::string& setting : backend.settings())
       settings.push_back(setting);
   }
@@ -360,8 +367,13 @@ int runStudyImpl(const StudyRequest& args, std::ostream& out, std::ostream& err)
   }
   std::vector<PlannedScene> scenes;
   std::map<std::string, std::string> scene_digests;  // by the planned path
+  // Scenes placed by constraints are solved here once; the workers read the stored solve.
+  SceneLoadOptions load;
+  load.placement_store =
+      (args.oracle_directory.empty() ? args.out + "/oracle" : args.oracle_directory) +
+      "/placements";
   for (const std::string& path : args.scenes) {
-    Result<Scene> scene = loadScene(path);
+    Result<Scene> scene = loadScene(path, load);
     if (!scene.ok()) {
       err << "error: " << scene.status().message() << "\n";
       return 2;
@@ -408,7 +420,7 @@ int runStudyImpl(const StudyRequest& args, std::ostream& out, std::ostream& err)
   const PluginProbe found = probeInChildren(args);
   for (const std::string& problem : found.problems)
     err << "warning: " << problem << "\n";
-  const std::vector<std::string> settings = backendSettings(args, sweep, found);
+  const std::vector<std::string> settings = backendSettings(args, sweep, found, err);
   const std::vector<std::string> surface_settings =
       surface_files.empty() ? std::vector<std::string>()
                             : comparisonSettings(sweep.surfaces, settings, found, "surfaces", err);

@@ -70,7 +70,7 @@ std::string optionText(const Checker& c, const Json& value, const std::string& w
 
 SweepBackend readBackend(const Checker& c, const Json& node, const std::string& where) {
   if (node.is_string()) return SweepBackend{node.get<std::string>(), {}, {}};
-  c.allowKeys(node, where, {"variant", "options", "scenes"});
+  c.allowKeys(node, where, {"variant", "options", "scenes", "optional"});
   if (!node.contains("variant") || !node.at("variant").is_string()) {
     c.fail(where, "missing 'variant' (a backend name such as \"fcl:obb\")");
   }
@@ -92,6 +92,10 @@ SweepBackend readBackend(const Checker& c, const Json& node, const std::string& 
       }
       backend.options.emplace_back(item.key(), values);
     }
+  }
+  if (node.contains("optional")) {
+    if (!node.at("optional").is_boolean()) c.fail(at(where, "optional"), "expected true or false");
+    backend.optional = node.at("optional").get<bool>();
   }
   if (node.contains("scenes")) {
     const std::string scenes_at = at(where, "scenes");

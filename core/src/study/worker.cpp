@@ -11,13 +11,18 @@ namespace collido::study {
 
 Result<CombinationResult> runCombination(const WorkerRequest& request) {
   const Combination& c = request.combination;
-  Result<Scene> loaded = loadScene(c.scene_path, SceneLoadOptions{c.resolution});
+  // The scene's solved placement is kept beside the oracle's answers, solved once per study.
+  SceneLoadOptions load{c.resolution};
+  if (!request.oracle_directory.empty())
+    load.placement_store = request.oracle_directory + "/placements";
+  Result<Scene> loaded = loadScene(c.scene_path, load);
   if (!loaded.ok()) return loaded.status();
   Scene scene = std::move(loaded).value();
   std::optional<Scene> finest;
   // Only a coarser mesh is judged against the finest one; a finer one is itself the finest.
   if (c.resolution < 1.0) {
-    Result<Scene> fine = loadScene(c.scene_path);
+    load.resolution = 1.0;
+    Result<Scene> fine = loadScene(c.scene_path, load);
     if (!fine.ok()) return fine.status();
     finest = std::move(fine).value();
     // Motions placed relative to bounding spheres differ a little between resolutions; the

@@ -1,6 +1,7 @@
 // Scenes with a `constraints` block: solved at load with the exact oracle's distances, the
 // correction carried through every frame, the solution written back, and the bundled scenes.
 #include <cmath>
+#include <filesystem>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -79,6 +80,50 @@ TEST(ConstraintScene, SolvesAtLoadAndMovesTheWholeMotion) {
     EXPECT_EQ(scene.objects[object].poses[0].matrix(),
               before.value().objects[object].poses[0].matrix());
   }
+}
+
+// A placement store gives the scene the solve would, bit for bit; another block is solved anew,
+// and a damaged file costs a solve, never a wrong placement.
+TEST(ConstraintScene, AStoredSolveGivesTheSolvedScene) {
+  const std::string store = test::makeTempDirectory("placement_store") + "/placements";
+  SceneLoadOptions stored;
+  stored.placement_store = store;
+  const std::string text = keyframedScene().dump();
+  const Result<Scene> solved = parseScene(text, "s.json", ".");
+  const Result<Scene> first = parseScene(text, "s.json", ".", stored);
+  ASSERT_TRUE(solved.ok() && first.ok()) << first.status().toString();
+  ASSERT_EQ(std::distance(std::filesystem::directory_iterator(store), {}), 1);
+  const std::string file = std::filesystem::directory_iterator(store)->path().string();
+  const auto expectSame = [&](const Scene& scene) {
+    for (std::size_t object = 0; object < 3; ++object) {
+      for (std::size_t f = 0; f < scene.objects[object].poses.size(); ++f) {
+        EXPECT_EQ(scene.objects[object].poses[f].matrix(),
+                  solved.value().objects[object].poses[f].matrix())
+            << "object " << object << ", frame " << f;
+      }
+    }
+    const ScenePlacement& want = *solved.value().placement;
+    const ScenePlacement& got = *scene.placement;
+    EXPECT_EQ(got.moved, want.moved);
+    EXPECT_EQ(got.corrections[0].matrix(), want.corrections[0].matrix());
+    EXPECT_EQ(got.variables, want.variables);
+    EXPECT_EQ(got.clearances, want.clearances);
+    EXPECT_EQ(got.iterations, want.iterations);
+    EXPECT_EQ(got.change, want.change);
+  };
+  const Result<Scene> again = parseScene(text, "s.json", ".", stored);
+  ASSERT_TRUE(again.ok());
+  expectSame(again.value());
+
+  Json other = keyframedScene();
+  other["constraints"]["variables"][0]["value"] = 0.3;
+  ASSERT_TRUE(parseScene(other.dump(), "s.json", ".", stored).ok());
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(store), {}), 2);
+
+  test::writeFile(file, R"({"format": "collido-placement-1", "body_poses": [[1, 2]]})");
+  const Result<Scene> damaged = parseScene(text, "s.json", ".", stored);
+  ASSERT_TRUE(damaged.ok());
+  expectSame(damaged.value());
 }
 
 TEST(ConstraintScene, TheWrittenBackSceneIsAlreadySolved) {

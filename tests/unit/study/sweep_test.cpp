@@ -102,6 +102,16 @@ TEST(Sweep, ABackendMayBeKeptToSomeScenes) {
             (std::vector<std::string>{"deforming_tori", "sheet_over_bunny"}));
 }
 
+TEST(Sweep, ABackendMayBeOptional) {
+  const Result<Sweep> parsed =
+      parseSweep(R"({"backends": ["obbtree", {"variant": "cgal", "optional": true}]})", kLabel);
+  ASSERT_TRUE(parsed.ok()) << parsed.status().message();
+  EXPECT_FALSE(parsed.value().backends[0].optional);
+  EXPECT_TRUE(parsed.value().backends[1].optional);
+  expectError(R"({"backends": [{"variant": "x", "optional": "yes"}]})", "/backends/0/optional",
+              "expected true or false");
+}
+
 TEST(Sweep, ErrorsNameLabelPointerAndProblem) {
   expectError(R"({"backends": [{"variant": "x", "scenes": []}]})", "/backends/0/scenes",
               "at least one entry");

@@ -177,6 +177,11 @@ struct SceneLoadOptions {
   /// The most frames the scene may have ("frames", or without it the longest "poses" list):
   /// every moving object stores one pose per frame.
   std::size_t max_frames = 1000000;
+  /// A folder where solved constraint blocks are kept ("": none): a scene whose block was solved
+  /// before on the same bodies takes the stored solve instead of solving again (the solve asks
+  /// the exact distance oracle many times). Studies keep one beside their oracle store, so each
+  /// worker does not solve the same placement again.
+  std::string placement_store = {};
 };
 
 /// Reads and validates a scene file (format: scenes/README.md). Every error names the file, the

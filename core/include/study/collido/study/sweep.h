@@ -27,6 +27,9 @@ struct SweepBackend {
   /// Only these scenes (by name); empty: every scene. For settings that matter only to some
   /// scenes (a rebuild-on-update option on the deforming ones).
   std::vector<std::string> scenes;
+  /// A backend that only some builds have (a licence opt-in, an optional library): a study
+  /// without its plugin leaves it out with a warning instead of refusing the sweep.
+  bool optional = false;
 
   /// Every setting as backend text: "variant" or "variant[a=1;b=x]", options in file order.
   std::vector<std::string> settings() const;
