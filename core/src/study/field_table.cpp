@@ -9,6 +9,7 @@
 
 #include <collido/runner/text_table.h>
 #include <collido/study/robustness.h>
+#include <collido/study/selection_table.h>
 
 namespace collido::study {
 namespace {
@@ -22,11 +23,6 @@ struct Answer {
   QueryMeasurement measurement;
 };
 
-/// "fcl" for "fcl:obb", "bullet" for "bullet[margin=0]": the plugin a setting belongs to.
-std::string familyOf(const std::string& backend) {
-  return backend.substr(0, backend.find_first_of(":["));
-}
-
 bool runsOnOneThread(const std::string& backend) {
   const auto parsed = parseBackendText(backend);
   if (!parsed.ok()) return true;
@@ -35,23 +31,14 @@ bool runsOnOneThread(const std::string& backend) {
   return threads == options.end() || threads->second == "1" || threads->second == "0";
 }
 
-/// The mean over frames of each frame's median time: the time per query over a whole run of the
-/// scene, dominated by its dense frames (the quantiles in the main table are over every call).
-double meanUs(const QueryMeasurement& m) {
-  if (m.frames.empty()) return 0.0;
-  double total = 0.0;
-  for (const FrameRecord& f : m.frames)
-    total += f.median_us;
-  return total / static_cast<double>(m.frames.size());
-}
-
 /// The fastest of `answers` that `admit` lets in, or none.
 template <typename Admit>
 const Answer* fastest(const std::vector<Answer>& answers, Admit admit) {
   const Answer* best = nullptr;
   for (const Answer& a : answers) {
     if (!admit(a)) continue;
-    if (best == nullptr || meanUs(a.measurement) < meanUs(best->measurement)) best = &a;
+    if (best == nullptr || meanFrameMedianUs(a.measurement) < meanFrameMedianUs(best->measurement))
+      best = &a;
   }
   return best;
 }
@@ -69,14 +56,14 @@ std::string perTruePair(const QueryMeasurement& m, bool counted, std::uint64_t F
 }
 
 std::string timeCell(const QueryMeasurement& m) {
-  std::string text = formatNumber("%.1f", meanUs(m));
+  std::string text = formatNumber("%.1f", meanFrameMedianUs(m));
   if (m.disagreements > 0) text += "!";
   return text;
 }
 
 std::string ratioCell(const QueryMeasurement& theirs, const QueryMeasurement& ours) {
-  if (meanUs(ours) <= 0.0) return "-";
-  return formatNumber("%.2f", meanUs(theirs) / meanUs(ours)) + "x";
+  if (meanFrameMedianUs(ours) <= 0.0) return "-";
+  return formatNumber("%.2f", meanFrameMedianUs(theirs) / meanFrameMedianUs(ours)) + "x";
 }
 
 }  // namespace
@@ -91,7 +78,7 @@ std::string fieldTable(const std::vector<CombinationResult>& results) {
     const Combination& c = r.combination;
     if (!r.outcome.ok() || !c.category.empty() || c.needs != NeedsMode::kDeclared || c.limit != 0)
       continue;
-    const std::string family = familyOf(c.backend);
+    const std::string family = backendFamily(c.backend);
     if (family != kOurs && std::find(families.begin(), families.end(), family) == families.end())
       families.push_back(family);
     for (const QueryMeasurement& m : tableMeasurements(r)) {
@@ -121,11 +108,11 @@ std::string fieldTable(const std::vector<CombinationResult>& results) {
   for (const Key& key : order) {
     const std::vector<Answer>& answers = groups[key];
     const Answer* ours = fastest(answers, [](const Answer& a) {
-      return familyOf(a.backend) == kOurs && a.measurement.disagreements == 0 &&
+      return backendFamily(a.backend) == kOurs && a.measurement.disagreements == 0 &&
              runsOnOneThread(a.backend);
     });
     const bool has_comparator = std::any_of(answers.begin(), answers.end(), [](const Answer& a) {
-      return familyOf(a.backend) != kOurs;
+      return backendFamily(a.backend) != kOurs;
     });
     if (!has_comparator) continue;
     const auto& [scene, resolution, query] = key;
@@ -139,7 +126,7 @@ std::string fieldTable(const std::vector<CombinationResult>& results) {
     }
     const QueryMeasurement& m = ours->measurement;
     row.push_back(ours->backend);
-    row.push_back(formatNumber("%.1f", meanUs(m)));
+    row.push_back(formatNumber("%.1f", meanFrameMedianUs(m)));
     row.push_back(bytesPerTriangleText(m.memory_bytes, m.triangles));
     row.push_back(m.floor_ratio ? formatNumber("%.1f", *m.floor_ratio) : "-");
     row.push_back(perTruePair(m, m.counts_bv_tests, &FrameRecord::bv_tests));
@@ -150,7 +137,8 @@ std::string fieldTable(const std::vector<CombinationResult>& results) {
     };
     if (has_peer) compare(fastest(answers, [](const Answer& a) { return a.backend == kPeer; }));
     for (const std::string& family : families) {
-      compare(fastest(answers, [&](const Answer& a) { return familyOf(a.backend) == family; }));
+      compare(
+          fastest(answers, [&](const Answer& a) { return backendFamily(a.backend) == family; }));
     }
     rows.push_back(row);
   }

@@ -21,6 +21,7 @@
 #include <collido/study/field_table.h>
 #include <collido/study/figures.h>
 #include <collido/study/robustness.h>
+#include <collido/study/selection_table.h>
 #include <collido/study/tracking_table.h>
 
 namespace collido::study {
@@ -115,6 +116,9 @@ std::string benchmarkJson(const std::vector<CombinationResult>& results) {
   // stress scenes, when the study ran any.
   const std::vector<RobustnessCell> robustness = robustnessMatrix(results);
   if (!robustness.empty()) document["robustness_matrix"] = robustnessJson(robustness);
+  // And what to pick per scene and query (the section at the top of table.txt).
+  const std::vector<SceneQueryPicks> picks = whatToPick(results);
+  if (!picks.empty()) document["what_to_pick"] = whatToPickJson(picks, PickBudget{});
   return document.dump(2) + "\n";
 }
 
@@ -159,6 +163,9 @@ std::string studyTable(const std::vector<CombinationResult>& results) {
     }
   }
   std::ostringstream out;
+  if (const std::string picks = whatToPickText(whatToPick(results), PickBudget{}); !picks.empty()) {
+    out << "What to pick (per scene and query):\n" << picks << "\nEvery setting:\n";
+  }
   out << formatTextTable(header, rows, 4);
 
   // What building only the declared needs saves: pairs of combinations differing in needs only.
