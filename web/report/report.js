@@ -122,6 +122,59 @@
     `${ok.length} measured queries, ${wrong} with wrong answers, ${data.failures.length} failures ` +
     `or gaps · generated ${data.generated}`;
 
+  // --- 0. what to pick ------------------------------------------------------------------------
+  {
+    const s = section('what-to-pick', 'What to pick',
+      'Per scene and query, among the settings that answered every frame: the fastest with no ' +
+      'wrong frame, the fastest within the share of wrong frames set here, and the exact one ' +
+      'with the least model memory, each against the best setting of another backend family. ' +
+      'Times are the mean over frames of each frame\'s median. The last column says what the ' +
+      'fastest setting of all costs where it is not exact.');
+    const picks = (data.what_to_pick && data.what_to_pick.picks) || [];
+    if (picks.length === 0) {
+      empty(s, 'No scene with a setting that answered every frame.');
+    } else {
+      const budget = el('input', { type: 'number', min: '0', max: '100', step: '1',
+        value: String(100 * data.what_to_pick.budget.wrong_frame_share), id: 'pick-budget' });
+      s.appendChild(el('label', { text: 'wrong frames allowed (%) ' }, [budget]));
+      const holder = el('div');
+      s.appendChild(holder);
+      const family = (b) => b.split(/[:[]/)[0];
+      const ratio = (a, b) => (a > 0 ? fmt(b / a, 2) + 'x' : '-');
+      // The best of `admitted` by `key`, and the best of another family.
+      const best = (settings, admit, key) => {
+        const admitted = settings.filter(admit).sort((a, b) => key(a) - key(b));
+        if (admitted.length === 0) return null;
+        const chosen = admitted[0];
+        const next = admitted.find((o) => family(o.backend) !== family(chosen.backend));
+        return { chosen: chosen, next: next || null };
+      };
+      const render = () => {
+        const share = Math.max(0, Number(budget.value) || 0) / 100;
+        holder.textContent = '';
+        table(holder, ['scene', 'query', 'fastest exact', 'µs', 'vs next',
+          `fastest within ${fmt(share * 100, 0)}% wrong`, 'µs', 'wrong frames',
+          'smallest exact', 'B/tri', 'vs next', 'what the fastest costs'],
+        picks.map((p) => {
+          const exact = (o) => o.wrong_frames === 0;
+          const f = best(p.settings, exact, (o) => o.mean_us);
+          const w = best(p.settings, (o) => o.wrong_frames <= share * o.frames, (o) => o.mean_us);
+          const m = best(p.settings, exact, (o) => o.bytes_per_triangle);
+          return [p.resolution === 1 ? p.scene : `${p.scene} r=${p.resolution}`, p.query,
+            f ? f.chosen.backend : 'none exact', f ? fmt(f.chosen.mean_us) : '-',
+            f && f.next ? ratio(f.chosen.mean_us, f.next.mean_us) : '-',
+            w ? w.chosen.backend : 'none', w ? fmt(w.chosen.mean_us) : '-',
+            w ? `${w.chosen.wrong_frames} of ${w.chosen.frames}` : '-',
+            m ? m.chosen.backend : 'none exact', m ? fmt(m.chosen.bytes_per_triangle, 0) : '-',
+            m && m.next ? ratio(m.chosen.bytes_per_triangle, m.next.bytes_per_triangle) : '-',
+            p.cost || ''];
+        }));
+      };
+      budget.addEventListener('input', render);
+      render();
+    }
+  }
+
   // --- 1. time against error ------------------------------------------------------------------
   {
     const s = section('time-vs-error', 'Run time against error',

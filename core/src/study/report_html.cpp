@@ -13,6 +13,7 @@
 #include <collido/study/figures.h>
 #include <collido/study/html_page.h>
 #include <collido/study/robustness.h>
+#include <collido/study/selection_table.h>
 
 namespace collido::study {
 namespace {
@@ -180,7 +181,8 @@ Json reportData(const std::vector<CombinationResult>& results,
           {"deforming", deformingOf(results)},
           {"tracking", trackingOf(results)},
           {"failures", failuresOf(results)},
-          {"robustness", robustnessJson(robustnessMatrix(results))}};
+          {"robustness", robustnessJson(robustnessMatrix(results))},
+          {"what_to_pick", whatToPickJson(whatToPick(results), PickBudget{})}};
 }
 
 std::string webDirectory(const std::string& explicit_directory) {

@@ -106,6 +106,13 @@ Json pickJson(const std::optional<Pick>& pick, bool by_memory) {
   return json;
 }
 
+Json settingsJson(const std::vector<PickedSetting>& settings) {
+  Json list = Json::array();
+  for (const PickedSetting& s : settings)
+    list.push_back(settingJson(s));
+  return list;
+}
+
 std::string sceneText(const SceneQueryPicks& p) {
   return p.resolution == 1.0 ? p.scene : p.scene + " r=" + formatNumber("%g", p.resolution);
 }
@@ -145,6 +152,7 @@ std::vector<SceneQueryPicks> whatToPick(const std::vector<CombinationResult>& re
     const std::vector<PickedSetting>& settings = groups[key];
     SceneQueryPicks p;
     std::tie(p.scene, p.resolution, p.query) = key;
+    p.settings = settings;
     p.fastest_exact = bestOf(settings, exact, faster);
     p.fastest_within = bestOf(
         settings,
@@ -244,6 +252,7 @@ Json whatToPickJson(const std::vector<SceneQueryPicks>& picks, const PickBudget&
                     {"fastest_within_budget", pickJson(p.fastest_within, false)},
                     {"smallest_exact", pickJson(p.smallest_exact, true)},
                     {"fastest_per_family", families},
+                    {"settings", settingsJson(p.settings)},
                     {"cost", p.cost.empty() ? Json() : Json(p.cost)}});
   }
   return {{"budget", {{"wrong_frame_share", budget.wrong_frame_share}}}, {"picks", rows}};

@@ -44,6 +44,8 @@ struct SceneQueryPicks {
   std::optional<Pick> fastest_within;  ///< fastest with wrong frames within the budget
   std::optional<Pick> smallest_exact;  ///< least model memory with no wrong frame
   std::vector<PickedSetting> fastest_per_family;
+  /// Every setting considered, in the study's order (the dashboard applies its own budget).
+  std::vector<PickedSetting> settings;
   /// When the fastest setting of all is wrong on some frame and faster than the fastest exact
   /// one (or none is exact): what choosing it costs, for people.
   std::string cost;
