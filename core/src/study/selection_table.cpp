@@ -68,9 +68,9 @@ std::string costLine(const std::vector<PickedSetting>& settings,
   }
   if (fastest == nullptr || exact(*fastest)) return "";
   if (!fastest_exact) {
-    const PickedSetting* fewest = nullptr;
+    const PickedSetting* fewest = fastest;
     for (const PickedSetting& s : settings) {
-      if (fewest == nullptr || s.wrong_frames < fewest->wrong_frames ||
+      if (s.wrong_frames < fewest->wrong_frames ||
           (s.wrong_frames == fewest->wrong_frames && faster(s, *fewest)))
         fewest = &s;
     }
