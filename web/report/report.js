@@ -1,13 +1,30 @@
 // Collidoscope's dashboard: builds the views of `collido report` from the study data inlined in
-// the page, with Vega-Lite. Each chart container gets data-rendered="true" once drawn (or
-// data-error with the reason), which the browser test checks.
+// the page, with Vega-Lite. A chart is drawn when it comes near the window (a full study has
+// hundreds); COLLIDO_REPORT.renderAll() draws every one. Each chart container gets
+// data-rendered="true" once drawn (or data-error with the reason), which the browser test checks;
+// the body gets data-ready="true" once the charts in view are drawn.
 (function () {
   'use strict';
   const data = JSON.parse(document.getElementById('collido-data').textContent);
   const views = document.getElementById('views');
   const toc = document.getElementById('toc');
-  const pending = [];
-  window.COLLIDO_REPORT = { ready: null, errors: [] };
+  const drawing = [];
+  const waiting = new Map();
+  const near = 'IntersectionObserver' in window ? new IntersectionObserver((entries) => {
+    for (const entry of entries) if (entry.isIntersecting) draw(entry.target);
+  }, { rootMargin: '600px 0px' }) : null;
+  function draw(holder) {
+    const start = waiting.get(holder);
+    if (!start) return;
+    waiting.delete(holder);
+    if (near) near.unobserve(holder);
+    drawing.push(start());
+  }
+  window.COLLIDO_REPORT = { ready: null, errors: [],
+    renderAll: () => {
+      for (const holder of [...waiting.keys()]) draw(holder);
+      return Promise.all(drawing);
+    } };
 
   // --- helpers --------------------------------------------------------------------------------
   function el(tag, attrs, children) {
@@ -26,7 +43,7 @@
     toc.appendChild(el('a', { href: '#' + id, text: title }));
     return s;
   }
-  function chart(parent, name, spec) {
+  function chart(parent, name, spec, onView) {
     const holder = el('div', { class: 'chart', 'data-view': name });
     parent.appendChild(holder);
     spec.$schema = 'https://vega.github.io/schema/vega-lite/v6.json';
@@ -34,24 +51,38 @@
     spec.config = Object.assign({ font: 'system-ui, sans-serif',
       axis: { labelFontSize: 11, labelOverlap: 'greedy', labelSeparation: 6 } }, spec.config || {});
     tidyLogAxes(spec);
-    pending.push(vegaEmbed(holder, spec, { actions: { export: true, source: false, compiled: false,
-      editor: false }, renderer: 'svg' })
-      .then(() => holder.setAttribute('data-rendered', 'true'))
-      .catch((e) => {
-        holder.setAttribute('data-error', String(e));
-        window.COLLIDO_REPORT.errors.push(name + ': ' + e);
-        console.error('chart ' + name + ' failed: ' + e);
-      }));
+    holder.classList.add('waiting');
+    waiting.set(holder, () => {
+      // Drawn late: it starts from the filters as they are now.
+      for (const param of spec.params || []) {
+        if (param.name in filterParamOf) param.value = filterState[filterParamOf[param.name]];
+      }
+      return vegaEmbed(holder, spec, { actions: { export: true, source: false, compiled: false,
+        editor: false }, renderer: 'svg' })
+        .then((result) => {
+          holder.classList.remove('waiting');
+          holder.setAttribute('data-rendered', 'true');
+          if (onView) onView(result.view);
+        })
+        .catch((e) => {
+          holder.setAttribute('data-error', String(e));
+          window.COLLIDO_REPORT.errors.push(name + ': ' + e);
+          console.error('chart ' + name + ' failed: ' + e);
+        });
+    });
+    if (near) near.observe(holder); else draw(holder);
     return holder;
   }
-  // Log axes label every power's multiples; short labels ("2000", "0.5") and greedy dropping
-  // keep them apart.
+  // Log axes tick every power's multiples; only 1, 2 and 5 times a power are labelled, in
+  // short form ("2000", "0.5"), and greedy dropping keeps those apart.
+  const LOG_LABEL = 'indexof([1, 2, 5], round(datum.value / pow(10, floor(log(datum.value) / ' +
+    "LN10 + 1e-9)))) >= 0 ? format(datum.value, '~g') : ''";
   function tidyLogAxes(node) {
     if (Array.isArray(node)) { node.forEach(tidyLogAxes); return; }
     if (!node || typeof node !== 'object') return;
-    if (node.scale && node.scale.type === 'log' && node.field) {
-      node.axis = Object.assign({ format: '~g', labelOverlap: 'greedy', labelSeparation: 6 },
-        node.axis || {});
+    if (node.scale && node.scale.type === 'log' && node.field && node.axis !== null) {
+      node.axis = Object.assign({ labelExpr: LOG_LABEL, labelOverlap: 'greedy',
+        labelSeparation: 6 }, node.axis || {});
     }
     for (const key of Object.keys(node)) {
       if (key !== 'data') tidyLogAxes(node[key]);
@@ -85,18 +116,73 @@
     }
     return map;
   };
-  const colour = { field: 'label', type: 'nominal', title: 'backend / setting',
-    legend: { labelLimit: 260 } };
-
-  // The points no other point beats on both time and error (lower is better on each).
-  function paretoFront(points) {
-    const sorted = points.slice().sort((a, b) => a.median_us - b.median_us || a.error_rate - b.error_rate);
-    const front = [];
-    let best = Infinity;
-    for (const p of sorted) {
-      if (p.error_rate < best) { front.push(p); best = p.error_rate; }
+  // --- backend families, chart filters --------------------------------------------------------
+  // A study may hold a hundred settings: charts colour by backend family (a handful), tell the
+  // settings of one family apart by shape, and name them in tooltips and on the Pareto front.
+  const family = (backend) => String(backend).split(/[:[]/)[0];
+  const families = [...new Set(data.rows.map((r) => family(r.backend)))].sort();
+  const familyColour = { field: 'family', type: 'nominal', title: 'backend family',
+    scale: { domain: families, scheme: 'tableau10' } };
+  const SHAPES = ['circle', 'square', 'triangle-up', 'diamond', 'cross', 'triangle-down',
+    'triangle-left', 'triangle-right', 'wedge', 'arrow', 'stroke', 'triangle'];
+  const markerOf = new Map();
+  for (const f of families) {
+    const labels = [...new Set(data.rows.filter((r) => family(r.backend) === f).map((r) => r.label))]
+      .sort();
+    labels.forEach((label, i) => markerOf.set(label, SHAPES[i % SHAPES.length]));
+  }
+  // The same colours everywhere; each legend lists only the families its chart shows.
+  const familyColourOf = (values) => Object.assign({}, familyColour, { legend: {
+    values: families.filter((f) => values.some((v) => v.family === f)) } });
+  // The shape names themselves (no scale, no legend): the tooltip names the setting.
+  const settingShape = { field: 'marker', type: 'nominal', scale: null, legend: null };
+  const rowOf = new Map(data.rows.map((r) => [r.label + '|' + r.scene + '|' + r.query, r]));
+  // What the filters read from a chart's datum: its family, the query kinds it covers
+  // (",boolean,distance,") and whether it is exact on every frame.
+  const tagged = (item, fam, rows) => Object.assign({}, item, { family: fam,
+    marker: markerOf.get(item.label) || 'circle',
+    kinds: ',' + [...new Set(rows.map((r) => r.kind))].join(',') + ',',
+    exact: rows.length > 0 && rows.every((r) => r.status === 'ok' && r.disagreements === 0) });
+  const tagRow = (r) => tagged(r, family(r.backend), [r]);
+  const tagByLookup = (item) => {
+    const r = rowOf.get(item.label + '|' + item.scene + '|' + item.query);
+    return tagged(item, family(r ? r.backend : item.label), r ? [r] : []);
+  };
+  const filterState = { family: 'all', query: 'all', exact: false };
+  const filterParamOf = { family_pick: 'family', query_pick: 'query', exact_only: 'exact' };
+  const keeps = (d) => (filterState.family === 'all' || d.family === filterState.family) &&
+    (filterState.query === 'all' || d.kinds.includes(',' + filterState.query + ',')) &&
+    (!filterState.exact || d.exact);
+  const FILTER_PARAMS = () => [{ name: 'family_pick', value: 'all' },
+    { name: 'query_pick', value: 'all' }, { name: 'exact_only', value: false }];
+  const FILTER = "(family_pick === 'all' || datum.family === family_pick) && " +
+    "(query_pick === 'all' || indexof(datum.kinds, ',' + query_pick + ',') >= 0) && " +
+    '(!exact_only || datum.exact)';
+  const filterable = [];
+  // A chart whose `values` the filters select: its spec gets the parameters and a first
+  // transform; a chart left with nothing to show is hidden.
+  function filteredChart(parent, name, spec, values) {
+    spec.params = FILTER_PARAMS().concat(spec.params || []);
+    spec.transform = [{ filter: FILTER }].concat(spec.transform || []);
+    const entry = { values: values, view: null };
+    entry.holder = chart(parent, name, spec, (view) => { entry.view = view; });
+    filterable.push(entry);
+    return entry.holder;
+  }
+  function applyFilters() {
+    let shown = 0;
+    for (const entry of filterable) {
+      const any = entry.values.some(keeps);
+      entry.holder.style.display = any ? '' : 'none';
+      if (any) shown += 1;
+      // A hidden chart keeps its last selection: an empty one would warn of an empty domain.
+      if (any && entry.view) {
+        entry.view.signal('family_pick', filterState.family).signal('query_pick', filterState.query)
+          .signal('exact_only', filterState.exact).runAsync();
+      }
     }
-    return front;
+    const count = document.getElementById('filter-count');
+    if (count) count.textContent = `${shown} of ${filterable.length} filtered charts shown`;
   }
 
   // Least-squares slope of log(y) on log(x): the exponent of y ~ x^k.
@@ -114,13 +200,59 @@
   }
 
   // --- summary line ---------------------------------------------------------------------------
+  // Three counts that mean different things: what went wrong in the run, what a backend answered
+  // wrongly, and what a backend was never asked because it does not answer that query at all.
   const backends = new Set(data.rows.map((r) => r.label));
   const scenes = new Set(data.rows.map((r) => r.scene));
-  const wrong = ok.filter((r) => r.disagreements > 0).length;
-  document.getElementById('summary').textContent =
-    `${data.title} · ${backends.size} backend settings × ${scenes.size} scenes · ` +
-    `${ok.length} measured queries, ${wrong} with wrong answers, ${data.failures.length} failures ` +
-    `or gaps · generated ${data.generated}`;
+  const realFailures = data.failures.filter((f) => f.what !== 'unsupported' &&
+    f.what !== 'wrong answers');
+  const wrongAnswers = data.failures.filter((f) => f.what === 'wrong answers');
+  const byDesign = data.failures.filter((f) => f.what === 'unsupported');
+  // Once per backend setting, with its reasons ("ode does not answer all_pairs queries").
+  const designGaps = [...groupBy(byDesign, (f) => f.label).values()].map((list) => ({
+    label: list[0].label,
+    reasons: [...new Set(list.map((f) => f.detail.replace(/^skipped: /, '')))],
+    scenes: [...new Set(list.map((f) => f.scene))] }));
+  {
+    const summary = document.getElementById('summary');
+    const link = (href, text, cls) => el('a', { href: href, text: text, class: cls });
+    summary.appendChild(document.createTextNode(`${data.title} · ${backends.size} backend settings` +
+      ` × ${scenes.size} scenes · ${ok.length} measured queries · generated ${data.generated}`));
+    const counts = el('p', { id: 'counts' });
+    counts.appendChild(link('#failures-real', `${realFailures.length} failures`,
+      realFailures.length ? 'count bad' : 'count'));
+    counts.appendChild(document.createTextNode(' (crash, timeout, refused or failed query) · '));
+    counts.appendChild(link('#wrong-answers', `${wrongAnswers.length} queries with wrong answers`,
+      wrongAnswers.length ? 'count bad' : 'count'));
+    counts.appendChild(document.createTextNode(' · '));
+    counts.appendChild(link('#by-design', `${byDesign.length} not run by design`, 'count'));
+    counts.appendChild(document.createTextNode(` (${designGaps.length} backend settings ` +
+      'that do not answer some query kind)'));
+    summary.after(counts);
+  }
+
+  // --- chart filters ----------------------------------------------------------------------------
+  {
+    const select = (id, options) => el('select', { id: id },
+      options.map((o) => el('option', { value: o, text: o })));
+    const familyPick = select('filter-family', ['all'].concat(families));
+    const queryPick = select('filter-query',
+      ['all'].concat([...new Set(data.rows.map((r) => r.kind))].sort()));
+    const exactOnly = el('input', { type: 'checkbox', id: 'filter-exact' });
+    const bar = el('div', { id: 'filters' }, [el('span', { text: 'Charts: ' }),
+      el('label', { text: 'backend family ' }, [familyPick]),
+      el('label', { text: 'query ' }, [queryPick]),
+      el('label', { text: 'exact only ' }, [exactOnly]),
+      el('span', { id: 'filter-count' })]);
+    toc.after(bar);
+    const changed = () => {
+      filterState.family = familyPick.value;
+      filterState.query = queryPick.value;
+      filterState.exact = exactOnly.checked;
+      applyFilters();
+    };
+    for (const control of [familyPick, queryPick, exactOnly]) control.addEventListener('change', changed);
+  }
 
   // --- 0. what to pick ------------------------------------------------------------------------
   {
@@ -128,8 +260,9 @@
       'Per scene and query, among the settings that answered every frame: the fastest with no ' +
       'wrong frame, the fastest within the share of wrong frames set here, and the exact one ' +
       'with the least model memory, each against the best setting of another backend family. ' +
-      'Times are the mean over frames of each frame\'s median. The last column says what the ' +
-      'fastest setting of all costs where it is not exact.');
+      'Times are the mean over frames of each frame\'s median. The line under each row gives ' +
+      'the fastest setting of every family and, where the fastest of all is not exact, what it ' +
+      'costs.');
     const picks = (data.what_to_pick && data.what_to_pick.picks) || [];
     if (picks.length === 0) {
       empty(s, 'No scene with a setting that answered every frame.');
@@ -137,38 +270,62 @@
       const budget = el('input', { type: 'number', min: '0', max: '100', step: '1',
         value: String(100 * data.what_to_pick.budget.wrong_frame_share), id: 'pick-budget' });
       s.appendChild(el('label', { text: 'wrong frames allowed (%) ' }, [budget]));
-      const holder = el('div');
+      const holder = el('div', { class: 'table-scroll' });
       s.appendChild(holder);
-      const family = (b) => b.split(/[:[]/)[0];
       const ratio = (a, b) => (a > 0 ? fmt(b / a, 2) + 'x' : '-');
-      // The best of `admitted` by `key`, and the best of another family.
-      const best = (settings, admit, key) => {
-        const admitted = settings.filter(admit).sort((a, b) => key(a) - key(b));
-        if (admitted.length === 0) return null;
-        const chosen = admitted[0];
-        const next = admitted.find((o) => family(o.backend) !== family(chosen.backend));
-        return { chosen: chosen, next: next || null };
+      const perTriangle = (o) => o.bytes_per_triangle;
+      // The best of `admitted` by `better` (ties keep the earlier setting, as table.txt does),
+      // and the best of another family.
+      const best = (settings, admit, better) => {
+        let chosen = null;
+        for (const o of settings) if (admit(o) && (!chosen || better(o, chosen))) chosen = o;
+        if (!chosen) return null;
+        let next = null;
+        for (const o of settings) {
+          if (admit(o) && family(o.backend) !== family(chosen.backend) && (!next || better(o, next))) {
+            next = o;
+          }
+        }
+        return { chosen: chosen, next: next };
       };
+      const faster = (a, b) => a.mean_us < b.mean_us;
+      const smaller = (a, b) => perTriangle(a) < perTriangle(b) ||
+        (perTriangle(a) === perTriangle(b) && faster(a, b));
+      const wrongText = (o) => `${o.wrong_frames} of ${o.frames}`;
+      const cell = (text, cls, pick) => el('td', Object.assign({ text: text, class: cls || '' },
+        pick ? { 'data-pick': pick } : {}));
+      const header = () => el('tr', {}, ['scene', 'query', 'fastest exact', 'µs', 'vs next',
+        `fastest within ${fmt(Number(budget.value) || 0, 0)}% wrong`, 'µs', 'wrong frames',
+        'smallest exact', 'B/tri', 'vs next'].map((h) => el('th', { text: h })));
       const render = () => {
         const share = Math.max(0, Number(budget.value) || 0) / 100;
         holder.textContent = '';
-        table(holder, ['scene', 'query', 'fastest exact', 'µs', 'vs next',
-          `fastest within ${fmt(share * 100, 0)}% wrong`, 'µs', 'wrong frames',
-          'smallest exact', 'B/tri', 'vs next', 'what the fastest costs'],
-        picks.map((p) => {
+        const t = el('table', { class: 'picks' }, [header()]);
+        for (const p of picks) {
           const exact = (o) => o.wrong_frames === 0;
-          const f = best(p.settings, exact, (o) => o.mean_us);
-          const w = best(p.settings, (o) => o.wrong_frames <= share * o.frames, (o) => o.mean_us);
-          const m = best(p.settings, exact, (o) => o.bytes_per_triangle);
-          return [p.resolution === 1 ? p.scene : `${p.scene} r=${p.resolution}`, p.query,
-            f ? f.chosen.backend : 'none exact', f ? fmt(f.chosen.mean_us) : '-',
-            f && f.next ? ratio(f.chosen.mean_us, f.next.mean_us) : '-',
-            w ? w.chosen.backend : 'none', w ? fmt(w.chosen.mean_us) : '-',
-            w ? `${w.chosen.wrong_frames} of ${w.chosen.frames}` : '-',
-            m ? m.chosen.backend : 'none exact', m ? fmt(m.chosen.bytes_per_triangle, 0) : '-',
-            m && m.next ? ratio(m.chosen.bytes_per_triangle, m.next.bytes_per_triangle) : '-',
-            p.cost || ''];
-        }));
+          const f = best(p.settings, exact, faster);
+          const w = best(p.settings, (o) => o.wrong_frames <= share * o.frames, faster);
+          const m = best(p.settings, exact, smaller);
+          const scene = p.resolution === 1 ? p.scene : `${p.scene} r=${p.resolution}`;
+          t.appendChild(el('tr', { class: 'pick', 'data-scene': scene, 'data-query': p.query }, [
+            cell(scene), cell(p.query),
+            cell(f ? f.chosen.backend : 'none exact', '', 'fastest-exact'),
+            cell(f ? fmt(f.chosen.mean_us) : '-', 'num'),
+            cell(f && f.next ? ratio(f.chosen.mean_us, f.next.mean_us) : '-', 'num'),
+            cell(w ? w.chosen.backend : 'none', '', 'fastest-within'),
+            cell(w ? fmt(w.chosen.mean_us) : '-', 'num'), cell(w ? wrongText(w.chosen) : '-', 'num'),
+            cell(m ? m.chosen.backend : 'none exact', '', 'smallest-exact'),
+            cell(m ? fmt(perTriangle(m.chosen), 0) : '-', 'num'),
+            cell(m && m.next ? ratio(perTriangle(m.chosen), perTriangle(m.next)) : '-', 'num')]));
+          // Under each row: every family's fastest setting, and what the fastest of all costs.
+          const perFamily = (p.fastest_per_family || []).map((o) => `${o.backend} ${fmt(o.mean_us)} µs` +
+            (o.wrong_frames ? ` (wrong on ${wrongText(o)})` : '')).join(' · ');
+          const detail = el('td', { colspan: '11', class: 'pick-detail' });
+          detail.appendChild(el('span', { text: 'fastest per family: ' + perFamily }));
+          if (p.cost) detail.appendChild(el('span', { class: 'cost', text: ' — ' + p.cost }));
+          t.appendChild(el('tr', { class: 'pick-detail' }, [detail]));
+        }
+        holder.appendChild(t);
       };
       budget.addEventListener('input', render);
       render();
@@ -179,62 +336,83 @@
   {
     const s = section('time-vs-error', 'Run time against error',
       'One point per backend setting: median time per query (log scale) against the share of ' +
-      'frames whose answer differs from the exact oracle. The line joins the Pareto front: the ' +
-      'settings no other one beats on both. Points at 0 are exact on every frame of the scene.');
+      'frames whose answer differs from the exact oracle. Colour is the backend family, shape ' +
+      'the setting within it (named in the tooltip). The dashed line joins the Pareto front, ' +
+      'the settings no other one beats on both, each named beside its point; it follows the ' +
+      'filters above. Points at 0% are exact on every frame of the scene.');
     const box = el('div', { class: 'charts' });
     s.appendChild(box);
     const groups = groupBy(ok, (r) => r.scene + ' · ' + r.query);
     if (groups.size === 0) empty(s, 'No measured query.');
-    for (const [name, points] of groups) {
-      const front = paretoFront(points).map((p) => ({ median_us: p.median_us, error_rate: p.error_rate }));
-      chart(box, 'time-vs-error:' + name, {
-        title: name, width: 360, height: 220,
+    for (const [name, rows] of groups) {
+      const points = rows.map(tagRow);
+      const top = Math.max(0.05, ...points.map((p) => p.error_rate || 0));
+      const x = { field: 'median_us', type: 'quantitative', scale: { type: 'log' },
+        title: 'median time per query (µs)' };
+      // At least 0-5%: a scene where every setting is exact shows a 0% axis, not a single
+      // "0.000000" tick; exact points sit on the 0% line.
+      const y = { field: 'error_rate', type: 'quantitative', title: 'share of frames wrong',
+        scale: { domain: [0, top] }, axis: { format: '.0%' } };
+      filteredChart(box, 'time-vs-error:' + name, {
+        title: name, width: 360, height: 220, data: { values: points },
+        // The Pareto front of what the filters leave: in order of time, a point is on it when
+        // its error is below that of every faster point.
+        transform: [
+          { window: [{ op: 'min', field: 'error_rate', as: 'best_before' }],
+            sort: [{ field: 'median_us' }, { field: 'error_rate' }], frame: [null, -1],
+            ignorePeers: true },
+          { calculate: '!isValid(datum.best_before) || datum.error_rate < datum.best_before',
+            as: 'on_front' }],
+        encoding: { x: x, y: y },
         layer: [
-          { data: { values: front }, mark: { type: 'line', interpolate: 'step-after', color: '#888',
-            strokeDash: [4, 3] },
-            encoding: { x: { field: 'median_us', type: 'quantitative', scale: { type: 'log' } },
-              y: { field: 'error_rate', type: 'quantitative',
-                scale: { domain: [0, Math.max(0.05, ...points.map((p) => p.error_rate || 0))] } } } },
-          { data: { values: points }, mark: { type: 'point', filled: true, size: 70 },
-            encoding: {
-              x: { field: 'median_us', type: 'quantitative', scale: { type: 'log' },
-                title: 'median time per query (µs)' },
-              // At least 0-5%: a scene where every setting is exact shows a 0% axis, not a
-              // single "0.000000" tick.
-              y: { field: 'error_rate', type: 'quantitative', title: 'share of frames wrong',
-                scale: { domain: [0, Math.max(0.05, ...points.map((p) => p.error_rate || 0))] },
-                axis: { format: '.0%' } },
-              color: colour, shape: { field: 'kind', type: 'nominal', title: 'query' },
-              tooltip: [{ field: 'label' }, { field: 'median_us', format: '.1f' },
+          { transform: [{ filter: 'datum.on_front' }],
+            mark: { type: 'line', interpolate: 'step-after', color: '#666', strokeDash: [4, 3] } },
+          { mark: { type: 'point', filled: true, size: 70, opacity: 0.85 },
+            encoding: { color: familyColourOf(points), shape: settingShape,
+              tooltip: [{ field: 'label', title: 'setting' }, { field: 'median_us', format: '.1f' },
                 { field: 'p99_us', format: '.1f' }, { field: 'error_rate', format: '.3f' },
                 { field: 'recall', format: '.4f' }, { field: 'precision', format: '.4f' },
-                { field: 'finest_error_rate', format: '.3f' }] } }] });
+                { field: 'finest_error_rate', format: '.3f' }] } },
+          { transform: [{ filter: 'datum.on_front' }],
+            mark: { type: 'text', align: 'left', dx: 7, dy: -7, fontSize: 10, color: '#333' },
+            encoding: { text: { field: 'label' } } }] }, points);
     }
   }
 
-  // Median time (log) against an error (log, floored at 1e-17 so exact answers stay visible):
-  // the chart the distance and contact sections share.
+  // Median time (log) against an error on a symlog scale: linear below 1e-16, logarithmic above,
+  // so an answer exact to the last bit sits on the 0 line instead of at an invented floor. The
+  // chart the distance and contact sections share.
   function timeAgainstErrorChart(box, name, points, error, title, tooltip) {
-    const values = points.map((p) => Object.assign({}, p, {
-      shown_error: Math.max(error(p) === null || error(p) === undefined ? 1e-17 : error(p),
-        1e-17) }));
-    chart(box, name, {
+    const values = points.map((p) => Object.assign(tagRow(p), { shown_error: Math.max(error(p) || 0, 0) }));
+    // Powers of ten from 1e-16 to the first above every error (every other one past seven).
+    const largest = Math.max(...values.map((v) => v.shown_error));
+    let powers = [];
+    for (let e = -16; e <= 0 && (powers.length === 0 || powers[powers.length - 1] < largest); ++e) {
+      powers.push(Number('1e' + e));
+    }
+    if (powers.length > 7) powers = powers.filter((_, i) => (powers.length - 1 - i) % 2 === 0);
+    const top = Math.max(powers[powers.length - 1], largest);
+    const ticks = [0].concat(powers);
+    filteredChart(box, name, {
       title: name.slice(name.indexOf(':') + 1), width: 360, height: 220,
-      data: { values: values }, mark: { type: 'point', filled: true, size: 70 },
+      data: { values: values }, mark: { type: 'point', filled: true, size: 70, opacity: 0.85 },
       encoding: {
         x: { field: 'median_us', type: 'quantitative', scale: { type: 'log' },
           title: 'median time per query (µs)' },
-        y: { field: 'shown_error', type: 'quantitative', scale: { type: 'log' }, title: title },
-        color: colour,
-        tooltip: [{ field: 'label' }, { field: 'median_us', format: '.1f' }].concat(tooltip) } });
+        y: { field: 'shown_error', type: 'quantitative', title: title,
+          scale: { type: 'symlog', constant: 1e-16, domain: [0, top] },
+          axis: { values: ticks, format: '~g', labelOverlap: 'greedy' } },
+        color: familyColourOf(values), shape: settingShape,
+        tooltip: [{ field: 'label', title: 'setting' }, { field: 'median_us', format: '.1f' }]
+          .concat(tooltip) } }, values);
   }
 
   // --- 1b. distances: run time against distance error -----------------------------------------
   {
     const s = section('distance-error', 'Distances: run time against error',
       'Distance queries only: median time per query (log scale) against the largest error of ' +
-      'the reported distance over the frames, relative to the exact distance (log scale; an ' +
-      'answer exact to the last bit is drawn at 1e-17). The share of wrong frames (time against ' +
+      'the reported distance over the frames, relative to the exact distance (symlog scale: ' +
+      'linear below 1e-16, so an answer exact to the last bit is drawn at 0). The share of wrong frames (time against ' +
       'error above) also counts closest points that do not hold together.');
     const box = el('div', { class: 'charts' });
     s.appendChild(box);
@@ -257,8 +435,8 @@
     const s = section('contact-error', 'Contacts: run time against contact error',
       'Contacts queries only, each contact held to the exact contact of its triangle pair ' +
       '(docs/DESIGN.md, "Contact geometry"): median time per query (log scale) against the ' +
-      'largest distance of a contact point to its pair\'s exact intersection set (log scale; ' +
-      'an error below 1e-17 is drawn at 1e-17). The table gives every contact figure.');
+      'largest distance of a contact point to its pair\'s exact intersection set (symlog ' +
+      'scale: linear below 1e-16, so an exact point is drawn at 0). The table gives every contact figure.');
     const box = el('div', { class: 'charts' });
     s.appendChild(box);
     const rows = ok.filter((r) => r.kind === 'contacts' && r.contacts_per_frame !== null &&
@@ -524,13 +702,16 @@
     s.appendChild(box);
     const groups = groupBy(data.times, (t) => t.scene + ' · ' + t.query);
     if (groups.size === 0) empty(s, 'No timed call.');
-    for (const [name, values] of groups) {
-      chart(box, 'time-distribution:' + name, {
+    for (const [name, calls] of groups) {
+      const values = calls.map(tagByLookup);
+      filteredChart(box, 'time-distribution:' + name, {
         title: name, width: 360, height: { step: 18 }, data: { values: values },
-        mark: { type: 'boxplot', extent: 'min-max', size: 12 },
-        encoding: { y: { field: 'label', type: 'nominal', title: null, axis: { labelLimit: 220 } },
-          x: { field: 'us', type: 'quantitative', scale: { type: 'log' }, title: 'time per call (µs)' },
-          color: Object.assign({}, colour, { legend: null }) } });
+        // In a layer: Vega-Lite refuses parameters on a boxplot's own spec.
+        layer: [{ mark: { type: 'boxplot', extent: 'min-max', size: 12 },
+          encoding: { y: { field: 'label', type: 'nominal', title: null, axis: { labelLimit: 220 } },
+            x: { field: 'us', type: 'quantitative', scale: { type: 'log' },
+              title: 'time per call (µs)' },
+            color: Object.assign({}, familyColour, { legend: null }) } }] }, values);
     }
   }
 
@@ -546,7 +727,8 @@
     const groups = groupBy(data.deforming || [], (d) => d.scene + ' · ' + d.query);
     if (groups.size === 0) empty(s, 'No deforming scene in this study (scenes with states or ' +
       '"deform": scenes/README.md).');
-    for (const [name, values] of groups) {
+    for (const [name, frames] of groups) {
+      const values = frames.map(tagByLookup);
       const rows = [];
       for (const v of values) {
         rows.push(Object.assign({}, v, { part: 'update', us: Math.max(v.update_us, 1e-3) }));
@@ -557,22 +739,25 @@
         { mark: { type: 'line', point: false },
           encoding: { x: { field: 'frame', type: 'quantitative', title: 'frame' },
             y: { field: 'us', type: 'quantitative', scale: { type: 'log' }, title: 'µs' },
-            color: colour, strokeDash: { field: 'part', type: 'nominal', title: 'cost' },
+            color: familyColourOf(values), detail: { field: 'label' },
+            strokeDash: { field: 'part', type: 'nominal', title: 'cost' },
             tooltip: [{ field: 'label', title: 'backend' }, { field: 'frame' },
               { field: 'update_us', title: 'update µs', format: '.1f' },
               { field: 'rebuilds', title: 'rebuilds' },
               { field: 'query_us', title: 'query µs', format: '.1f' },
               { field: 'wrong', title: 'wrong answer' }] } }];
-      // Rings on the frames answered wrongly (only when there are some: an empty layer has no
-      // extent to draw).
+      // Rings on the frames answered wrongly; drawn on every point, seen only on those (a layer
+      // the filters could empty would have no extent).
       if (values.some((v) => v.wrong)) {
-        layers.push({ transform: [{ filter: 'datum.wrong && datum.part === "update + query"' }],
-          mark: { type: 'point', shape: 'circle', size: 60, filled: false },
+        layers.push({ mark: { type: 'point', shape: 'circle', size: 60, filled: false },
           encoding: { x: { field: 'frame', type: 'quantitative' },
-            y: { field: 'us', type: 'quantitative', scale: { type: 'log' } }, color: colour } });
+            y: { field: 'us', type: 'quantitative', scale: { type: 'log' } },
+            color: familyColour, detail: { field: 'label' },
+            opacity: { condition: { test: 'datum.wrong && datum.part === "update + query"',
+              value: 1 }, value: 0 } } });
       }
-      chart(box, 'deforming:' + name, {
-        title: name, width: 420, height: 220, data: { values: rows }, layer: layers });
+      filteredChart(box, 'deforming:' + name, {
+        title: name, width: 420, height: 220, data: { values: rows }, layer: layers }, rows);
     }
   }
 
@@ -659,37 +844,32 @@
       '(independent of the backend). The tooltip adds the build peak and the resident memory ' +
       'the backend added at its peak, apart from the scene and the exact answers the worker held.');
     const rows = [];
-    const seen = new Set();
-    for (const r of ok) {
-      const key = r.label + '|' + r.scene;
-      if (seen.has(key)) continue;
-      seen.add(key);
-      rows.push({ label: r.label, scene: r.scene, measure: 'backend figure', bytes: r.bytes_per_triangle,
-        rss_mib: r.backend_rss_mib, heap_peak: r.heap_peak_bytes_per_triangle });
-      if (r.heap_bytes_per_triangle !== null) {
-        rows.push({ label: r.label, scene: r.scene, measure: 'heap kept (hooks)',
-          bytes: r.heap_bytes_per_triangle, rss_mib: r.backend_rss_mib,
-          heap_peak: r.heap_peak_bytes_per_triangle });
-      }
+    for (const [, queries] of groupBy(ok, (r) => r.label + '|' + r.scene)) {
+      const r = queries[0];
+      const bar = (measure, bytes) => tagged({ label: r.label, scene: r.scene, measure: measure,
+        bytes: bytes, rss_mib: r.backend_rss_mib, heap_peak: r.heap_peak_bytes_per_triangle },
+      family(r.backend), queries);
+      rows.push(bar('backend figure', r.bytes_per_triangle));
+      if (r.heap_bytes_per_triangle !== null) rows.push(bar('heap kept (hooks)', r.heap_bytes_per_triangle));
     }
     if (rows.length === 0) {
       empty(s, 'No built structure.');
     } else {
       const box = el('div', { class: 'charts' });
       s.appendChild(box);
-      chart(box, 'memory', {
-        data: { values: rows }, width: 360, height: { step: 12 },
-        // One panel per scene, each listing only the settings run on it, two to a row.
-        facet: { field: 'scene', type: 'nominal', title: null }, columns: 2,
-        spec: { width: 300, height: { step: 10 }, mark: 'bar',
+      // One chart per scene, listing only the settings run on it.
+      for (const [scene, bars] of groupBy(rows, (r) => r.scene)) {
+        filteredChart(box, 'memory:' + scene, {
+          title: scene, data: { values: bars }, width: 300, height: { step: 10 }, mark: 'bar',
           encoding: { y: { field: 'label', type: 'nominal', title: null, axis: { labelLimit: 220 } },
             yOffset: { field: 'measure' },
             x: { field: 'bytes', type: 'quantitative', title: 'bytes per triangle' },
-            color: { field: 'measure', type: 'nominal', title: null },
+            color: familyColourOf(bars),
+            opacity: { field: 'measure', type: 'ordinal', title: null, scale: { range: [1, 0.45] } },
             tooltip: [{ field: 'label' }, { field: 'measure' }, { field: 'bytes', format: '.0f' },
               { field: 'heap_peak', title: 'build peak B/tri', format: '.0f' },
-              { field: 'rss_mib', title: 'backend peak RSS (MiB)', format: '.0f' }] } },
-        resolve: { scale: { x: 'independent', y: 'independent' } } });
+              { field: 'rss_mib', title: 'backend peak RSS (MiB)', format: '.0f' }] } }, bars);
+      }
     }
   }
 
@@ -706,9 +886,7 @@
       // One curve per setting: the label without the resolution, which is the x axis here.
       const series = (r) => r.backend + (r.needs !== 'declared' ? ' needs=' + r.needs : '') +
           (r.limit ? ' limit=' + r.limit : '');
-      for (const r of rows) {
-        curves.push(Object.assign({ family: name, backend_only: r.backend, series: series(r) }, r));
-      }
+      for (const r of rows) curves.push(Object.assign(tagRow(r), { group: name, series: series(r) }));
       for (const [backend, points] of groupBy(rows, series)) {
         exponents.push([name, backend, String(new Set(points.map((p) => p.triangles)).size),
           fmt(fittedExponent(points, 'triangles', 'median_us'), 2),
@@ -721,28 +899,30 @@
     } else {
       const box = el('div', { class: 'charts' });
       s.appendChild(box);
-      for (const [name, rows] of groupBy(curves, (r) => r.family)) {
-        chart(box, 'scaling:' + name, {
+      for (const [name, rows] of groupBy(curves, (r) => r.group)) {
+        filteredChart(box, 'scaling:' + name, {
           title: name, width: 360, height: 240, data: { values: rows },
           encoding: { x: { field: 'triangles', type: 'quantitative', scale: { type: 'log' },
             title: 'triangles (both objects)' },
           y: { field: 'median_us', type: 'quantitative', scale: { type: 'log' }, title: 'median µs' },
-          color: { field: 'backend_only', type: 'nominal', title: 'backend' } },
+          color: familyColourOf(rows) },
           layer: [{ mark: { type: 'line', point: true },
             encoding: { detail: { field: 'series' },
-              tooltip: [{ field: 'label' }, { field: 'triangles' }, { field: 'median_us', format: '.1f' }] } }] });
-        chart(box, 'scaling-memory:' + name, {
+              tooltip: [{ field: 'label' }, { field: 'triangles' }, { field: 'median_us', format: '.1f' }] } }] },
+        rows);
+        filteredChart(box, 'scaling-memory:' + name, {
           title: name + ' · memory', width: 360, height: 240, data: { values: rows },
           encoding: { x: { field: 'triangles', type: 'quantitative', scale: { type: 'log' },
             title: 'triangles (both objects)' },
           y: { field: 'bytes_per_triangle', type: 'quantitative', scale: { type: 'log' },
             title: 'bytes per triangle (backend figure)' },
-          color: { field: 'backend_only', type: 'nominal', title: 'backend' } },
+          color: familyColourOf(rows) },
           layer: [{ mark: { type: 'line', point: true },
             encoding: { detail: { field: 'series' },
               tooltip: [{ field: 'label' }, { field: 'triangles' },
                 { field: 'bytes_per_triangle', format: '.0f' },
-                { field: 'backend_rss_mib', title: 'backend peak RSS (MiB)', format: '.1f' }] } }] });
+                { field: 'backend_rss_mib', title: 'backend peak RSS (MiB)', format: '.1f' }] } }] },
+        rows);
       }
       table(s, ['scene · query', 'backend', 'sizes', 'time exponent', 'B/tri exponent'], exponents,
         ['', '', 'num', 'num', 'num']);
@@ -752,16 +932,33 @@
   // --- 5. failures ----------------------------------------------------------------------------
   {
     const s = section('failures', 'Failures, wrong answers and gaps',
-      'Crashes, timeouts and failed workers (the study went on without them), queries with ' +
-      'answers that differ from the exact oracle, and queries a backend does not answer.');
-    if (data.failures.length === 0) {
-      empty(s, 'None: every backend answered every query, and every answer matched the oracle.');
-    } else {
-      table(s, ['what', 'backend / setting', 'scene', 'query', 'detail'], data.failures.map((f) => {
+      'Three lists: what failed in the run (crashes, timeouts and failed workers, which the study ' +
+      'went on without, and queries that failed or whose input was refused), queries with ' +
+      'answers that differ from the exact oracle, and the queries some backend does not answer ' +
+      'by design, each listed once per backend setting.');
+    const part = (id, title) => {
+      const holder = el('div', { id: id, class: 'part' }, [el('h3', { text: title })]);
+      s.appendChild(holder);
+      return holder;
+    };
+    const failureTable = (holder, list) => table(holder,
+      ['what', 'backend / setting', 'scene', 'query', 'detail'], list.map((f) => {
         const detail = el('div', { text: f.detail });
         if (f.log) detail.appendChild(el('pre', { class: 'log', text: f.log }));
         return [f.what, f.label, f.scene, f.query, detail];
       }), ['bad']);
+    const real = part('failures-real', `Failures (${realFailures.length})`);
+    if (realFailures.length === 0) empty(real, 'None: every worker finished and every query answered.');
+    else failureTable(real, realFailures);
+    const wrong = part('wrong-answers', `Wrong answers (${wrongAnswers.length})`);
+    if (wrongAnswers.length === 0) empty(wrong, 'None: every answer matched the oracle.');
+    else failureTable(wrong, wrongAnswers);
+    const design = part('by-design', `Not run by design (${byDesign.length} queries)`);
+    if (designGaps.length === 0) empty(design, 'None: every backend answers every query asked.');
+    else {
+      table(design, ['backend / setting', 'why', 'queries', 'scenes'], designGaps.map((g) => [g.label,
+        g.reasons.join('; '), String(byDesign.filter((f) => f.label === g.label).length),
+        g.scenes.join(', ')]), ['', '', 'num', '']);
     }
   }
 
@@ -890,7 +1087,10 @@
     ['', '', '', '', 'num', 'num', 'num', 'num', 'num', 'num', 'num', 'num', 'num', 'num']);
   }
 
-  window.COLLIDO_REPORT.ready = Promise.all(pending).then(() => {
+  applyFilters();
+  // The observer reports what is in view at the next frame; ready once those charts are drawn.
+  window.COLLIDO_REPORT.ready = new Promise((resolve) => requestAnimationFrame(() =>
+    setTimeout(resolve, 0))).then(() => Promise.all(drawing)).then(() => {
     document.body.setAttribute('data-ready', 'true');
   });
 })();

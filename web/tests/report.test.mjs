@@ -3,7 +3,7 @@
 // browser from CHROMIUM (default /usr/bin/chromium).
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { existsSync } from 'node:fs';
+import { existsSync, readFileSync } from 'node:fs';
 import { pathToFileURL } from 'node:url';
 import { chromium } from 'playwright-core';
 
@@ -14,6 +14,26 @@ const expectedViews = (process.env.COLLIDO_EXPECT_VIEWS || '').split(',').filter
 // a backend does not answer is labelled so in the matrix, never drawn as zero errors).
 const expectedTexts = (process.env.COLLIDO_EXPECT_SECTION_TEXT || '').split(',').filter(Boolean)
   .map((pair) => pair.split('='));
+// The study's table.txt: its "What to pick" rows must name the settings the page names.
+const tableTxt = process.env.COLLIDO_TABLE_TXT;
+// A bound on the time from opening the page to every chart drawn, for checks on a quiet machine
+// (tools/check_report.sh); the suite's run on a busy CI machine sets none.
+const loadLimitMs = Number(process.env.COLLIDO_REPORT_LOAD_LIMIT_MS || 0);
+const MAX_LEGEND_ENTRIES = 10;
+
+const escapeRegExp = (text) => text.replace(/[.*+?^${}()|[\]\\]/g, '\\$&');
+// The "What to pick" lines of table.txt, between its title and the empty line after the notes.
+function textPicks(text) {
+  const lines = text.split('\n');
+  const start = lines.indexOf('What to pick (per scene and query):');
+  assert.ok(start >= 0, 'table.txt has no "What to pick" section');
+  const rows = [];
+  for (const line of lines.slice(start + 3)) {
+    if (line.startsWith('Per scene and query')) break;
+    rows.push(line);
+  }
+  return rows;
+}
 
 test('every chart of the report renders without console errors', async () => {
   assert.ok(reportPath, 'set COLLIDO_REPORT_HTML to the report to open');
@@ -38,9 +58,23 @@ test('every chart of the report renders without console errors', async () => {
         problems.push(`network request (the report must open offline): ${request.url()}`);
       }
     });
+    const opened = Date.now();
     await page.goto(pathToFileURL(reportPath).href);
     await page.waitForFunction(() => document.body.getAttribute('data-ready') === 'true',
-      null, { timeout: 60000 });
+      null, { timeout: 120000 });
+    const loadMs = Date.now() - opened;
+    console.log(`report ready in ${loadMs} ms`);
+    if (loadLimitMs > 0) {
+      assert.ok(loadMs < loadLimitMs, `the report took ${loadMs} ms to show, over ${loadLimitMs} ms`);
+    }
+    if (process.env.COLLIDO_REPORT_TOP_SCREENSHOT) {
+      await page.setViewportSize({ width: 1400, height: 1000 });
+      await page.screenshot({ path: process.env.COLLIDO_REPORT_TOP_SCREENSHOT });
+    }
+    // The charts further down are drawn as they come into view; draw them all to check them.
+    const drawnAt = Date.now();
+    await page.evaluate(() => window.COLLIDO_REPORT.renderAll());
+    console.log(`every chart drawn ${Date.now() - drawnAt} ms later`);
 
     if (process.env.COLLIDO_REPORT_SCREENSHOT) {
       await page.setViewportSize({ width: 1300, height: 900 });
@@ -77,6 +111,54 @@ test('every chart of the report renders without console errors', async () => {
     for (const link of links) {
       assert.ok(link.startsWith('file:') && existsSync(new URL(link)), `view link ${link} is broken`);
     }
+    // A single offline file: every script, style and picture inline.
+    const external = await page.$$eval('script[src], link[href], img', (nodes) => nodes
+      .map((n) => n.getAttribute('src') || n.getAttribute('href') || '')
+      .filter((url) => !url.startsWith('data:')));
+    assert.deepEqual(external, [], 'the report loads files beside it');
+    // No legend of more than a handful of entries.
+    const legends = await page.$$eval('.chart', (nodes) => nodes.map((n) => ({
+      view: n.getAttribute('data-view'),
+      entries: n.querySelectorAll('.role-legend-symbol path').length })));
+    for (const l of legends) {
+      assert.ok(l.entries <= MAX_LEGEND_ENTRIES, `chart ${l.view} has ${l.entries} legend entries`);
+    }
+    // The header's counts lead to their lists.
+    const countLinks = await page.$$eval('#counts a', (nodes) => nodes.map((n) => n.getAttribute('href')));
+    assert.equal(countLinks.length, 3, 'the header does not give three counts');
+    for (const href of countLinks) {
+      assert.ok(await page.$(href), `the header links to ${href}, which is missing`);
+    }
+    // The page's picks, at the default budget, are table.txt's.
+    if (tableTxt) {
+      const lines = textPicks(readFileSync(tableTxt, 'utf8'));
+      const picks = await page.$$eval('#what-to-pick tr.pick', (rows) => rows.map((r) => ({
+        scene: r.getAttribute('data-scene'), query: r.getAttribute('data-query'),
+        names: ['fastest-exact', 'fastest-within', 'smallest-exact'].map(
+          (k) => r.querySelector(`[data-pick="${k}"]`).textContent) })));
+      assert.equal(picks.length, lines.length, 'the page and table.txt list different scenes');
+      picks.forEach((p, i) => {
+        const [exact, within, smallest] = p.names.map(escapeRegExp);
+        const row = new RegExp(`^${escapeRegExp(p.scene)}\\s+${escapeRegExp(p.query)}\\s+${exact}\\s.*` +
+          `\\s${within}\\s.*\\s${smallest}\\s+\\S+\\s+\\S+$`);
+        assert.match(lines[i], row, `table.txt and the page pick differently for ${p.scene} ${p.query}`);
+      });
+    }
+    // The filters select in every chart without a reload and without a warning.
+    const total = await page.$$eval('.chart', (nodes) => nodes.filter((n) => n.offsetParent !== null).length);
+    const families = await page.$$eval('#filter-family option', (os) => os.map((o) => o.value));
+    await page.selectOption('#filter-family', families[families.length - 1]);
+    await page.check('#filter-exact');
+    await page.selectOption('#filter-query', 'boolean');
+    await page.waitForTimeout(500);
+    const filtered = await page.$$eval('.chart', (nodes) => nodes.filter((n) => n.offsetParent !== null).length);
+    assert.ok(filtered < total, `filtering left every chart (${filtered} of ${total})`);
+    await page.selectOption('#filter-family', 'all');
+    await page.uncheck('#filter-exact');
+    await page.selectOption('#filter-query', 'all');
+    await page.waitForTimeout(500);
+    const restored = await page.$$eval('.chart', (nodes) => nodes.filter((n) => n.offsetParent !== null).length);
+    assert.equal(restored, total, 'clearing the filters did not bring every chart back');
     for (const [id, text] of expectedTexts) {
       const shown = await page.$eval('#' + id, (n) => n.textContent);
       assert.ok(shown.includes(text), `section ${id} does not show "${text}"`);

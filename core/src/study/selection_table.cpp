@@ -189,7 +189,15 @@ std::string whatToPickText(const std::vector<SceneQueryPicks>& picks, const Pick
       "us",    "wrong", "smallest exact", "B/tri", "vs next"};
   std::vector<std::vector<std::string>> rows;
   std::vector<std::string> costs;
+  std::vector<std::string> per_family;
   for (const SceneQueryPicks& p : picks) {
+    std::string line = sceneText(p) + " / " + p.query + ":";
+    for (const PickedSetting& s : p.fastest_per_family) {
+      line += (&s == &p.fastest_per_family.front() ? " " : ", ") + s.backend + " " +
+              formatNumber("%.1f", s.mean_us) + " us";
+      if (s.wrong_frames != 0) line += " (wrong on " + wrongText(s) + ")";
+    }
+    per_family.push_back(line);
     std::vector<std::string> row = {sceneText(p), p.query};
     if (p.fastest_exact) {
       const Pick& f = *p.fastest_exact;
@@ -229,13 +237,15 @@ std::string whatToPickText(const std::vector<SceneQueryPicks>& picks, const Pick
       << formatNumber("%g", budget.wrong_frame_share * 100.0)
       << "% of its frames wrong, and the exact one with the least model memory. Times are the "
          "mean over frames of each frame's median (us per query); 'vs next' = the best other "
-         "backend family's time (or memory) over the pick's. summary.json's what_to_pick also "
-         "lists the fastest setting of every family.\n";
+         "backend family's time (or memory) over the pick's.\n";
   if (!costs.empty()) {
     out << "What the fastest setting of all costs where it is not exact:\n";
     for (const std::string& line : costs)
       out << "  " << line << "\n";
   }
+  out << "The fastest setting of each backend family:\n";
+  for (const std::string& line : per_family)
+    out << "  " << line << "\n";
   return out.str();
 }
 

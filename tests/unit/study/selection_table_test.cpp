@@ -72,6 +72,9 @@ TEST(WhatToPick, FastestSmallestWithinTheBudgetAndPerFamily) {
   EXPECT_NE(text.find("2.00x"), std::string::npos) << text;  // fcl:obb's time over the pick's
   EXPECT_NE(text.find("4.00x"), std::string::npos) << text;  // fcl:obb's memory over the pick's
   EXPECT_NE(text.find("tori / boolean: bullet is 3.00x faster"), std::string::npos) << text;
+  EXPECT_NE(text.find("tori / boolean: obbtree[float_boxes=true] "), std::string::npos) << text;
+  EXPECT_NE(text.find(", bullet "), std::string::npos) << text;
+  EXPECT_NE(text.find(" us (wrong on 1 of 2)"), std::string::npos) << text;
 
   const nlohmann::json json = whatToPickJson(picks, PickBudget{});
   EXPECT_EQ(json.at("budget").at("wrong_frame_share"), 0.05);
