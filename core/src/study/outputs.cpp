@@ -69,7 +69,11 @@ std::string recordsJsonLines(const std::vector<CombinationResult>& results) {
   return out.str();
 }
 
-std::string benchmarkJson(const std::vector<CombinationResult>& results) {
+namespace {
+
+// summary.json's text with the picks computed once for every output.
+std::string benchmarkJsonWith(const std::vector<CombinationResult>& results,
+                              const std::vector<SceneQueryPicks>& picks) {
   Json benchmarks = Json::array();
   for (const CombinationResult& r : results) {
     for (const QueryMeasurement& m : tableMeasurements(r)) {
@@ -117,12 +121,12 @@ std::string benchmarkJson(const std::vector<CombinationResult>& results) {
   const std::vector<RobustnessCell> robustness = robustnessMatrix(results);
   if (!robustness.empty()) document["robustness_matrix"] = robustnessJson(robustness);
   // And what to pick per scene and query (the section at the top of table.txt).
-  const std::vector<SceneQueryPicks> picks = whatToPick(results);
   if (!picks.empty()) document["what_to_pick"] = whatToPickJson(picks, PickBudget{});
   return document.dump(2) + "\n";
 }
 
-std::string studyTable(const std::vector<CombinationResult>& results) {
+std::string studyTableWith(const std::vector<CombinationResult>& results,
+                           const std::vector<SceneQueryPicks>& picks) {
   const std::vector<std::string> header = {
       "backend",    "setting",  "scene", "query",      "frames", "median us", "p90 us",
       "p99 us",     "max us",   "FN",    "FP",         "recall", "precision", "disagree",
@@ -163,8 +167,8 @@ std::string studyTable(const std::vector<CombinationResult>& results) {
     }
   }
   std::ostringstream out;
-  if (const std::string picks = whatToPickText(whatToPick(results), PickBudget{}); !picks.empty()) {
-    out << "What to pick (per scene and query):\n" << picks << "\nEvery setting:\n";
+  if (const std::string text = whatToPickText(picks, PickBudget{}); !text.empty()) {
+    out << "What to pick (per scene and query):\n" << text << "\nEvery setting:\n";
   }
   out << formatTextTable(header, rows, 4);
 
@@ -234,6 +238,16 @@ std::string studyTable(const std::vector<CombinationResult>& results) {
   return out.str();
 }
 
+}  // namespace
+
+std::string benchmarkJson(const std::vector<CombinationResult>& results) {
+  return benchmarkJsonWith(results, whatToPick(results));
+}
+
+std::string studyTable(const std::vector<CombinationResult>& results) {
+  return studyTableWith(results, whatToPick(results));
+}
+
 Status writeStudyOutputs(const std::string& directory,
                          const std::vector<CombinationResult>& results) {
   const std::filesystem::path folder(directory);
@@ -242,7 +256,9 @@ Status writeStudyOutputs(const std::string& directory,
       !s.ok()) {
     return s;
   }
-  if (Status s = writeFileAtomically((folder / "summary.json").string(), benchmarkJson(results));
+  const std::vector<SceneQueryPicks> picks = whatToPick(results);
+  if (Status s = writeFileAtomically((folder / "summary.json").string(),
+                                     benchmarkJsonWith(results, picks));
       !s.ok()) {
     return s;
   }
@@ -256,7 +272,7 @@ Status writeStudyOutputs(const std::string& directory,
       return s;
     }
   }
-  return writeFileAtomically((folder / "table.txt").string(), studyTable(results));
+  return writeFileAtomically((folder / "table.txt").string(), studyTableWith(results, picks));
 }
 
 std::string robustnessReport(const std::vector<CombinationResult>& results) {
