@@ -258,7 +258,8 @@
   {
     const s = section('what-to-pick', 'What to pick',
       'Per scene and query, among the settings that answered every frame: the fastest with no ' +
-      'wrong frame, the fastest within the share of wrong frames set here, and the exact one ' +
+      'wrong frame, the fastest within the share of wrong frames set here (or, for all pairs, ' +
+      'a pair recall and precision set here), and the exact one ' +
       'with the least model memory, each against the best setting of another backend family. ' +
       'Times are the mean over frames of each frame\'s median. The line under each row gives ' +
       'the fastest setting of every family and, where the fastest of all is not exact, what it ' +
@@ -269,7 +270,14 @@
     } else {
       const budget = el('input', { type: 'number', min: '0', max: '100', step: '1',
         value: String(100 * data.what_to_pick.budget.wrong_frame_share), id: 'pick-budget' });
-      s.appendChild(el('label', { text: 'wrong frames allowed (%) ' }, [budget]));
+      // All pairs may instead be held to the pairs: a frame missing one pair of thousands is
+      // "wrong", and a reader may accept that.
+      const pairFloor = el('input', { type: 'number', min: '0', max: '100', step: '0.1',
+        placeholder: 'unset', id: 'pick-pair-floor' });
+      s.appendChild(el('div', { class: 'budget' }, [
+        el('label', { text: 'wrong frames allowed (%) ' }, [budget]),
+        el('label', { text: 'all pairs instead: pair recall and precision at least (%) ' },
+          [pairFloor])]));
       const holder = el('div', { class: 'table-scroll' });
       s.appendChild(holder);
       const ratio = (a, b) => (a > 0 ? fmt(b / a, 2) + 'x' : '-');
@@ -292,29 +300,41 @@
       const smaller = (a, b) => perTriangle(a) < perTriangle(b) ||
         (perTriangle(a) === perTriangle(b) && faster(a, b));
       const wrongText = (o) => `${o.wrong_frames} of ${o.frames}`;
-      const cell = (text, cls, pick) => el('td', Object.assign({ text: text, class: cls || '' },
-        pick ? { 'data-pick': pick } : {}));
+      // A pick's cell names it; its title gives every figure of it and of the runner-up.
+      const figures = (o) => `${fmt(o.mean_us)} µs, ${fmt(perTriangle(o), 0)} B/tri, wrong on ` +
+        wrongText(o) + (o.recall === null || o.recall === undefined ? '' :
+        `, pair recall ${fmt(o.recall, 4)}, precision ${fmt(o.precision, 4)}`);
+      const cell = (text, cls, pick, chosen) => el('td', Object.assign({ text: text,
+        class: cls || '' }, pick ? { 'data-pick': pick } : {}, chosen ? { title:
+        `${chosen.chosen.backend}: ${figures(chosen.chosen)}` + (chosen.next ?
+          `\nnext family: ${chosen.next.backend}: ${figures(chosen.next)}` : '') } : {}));
+      const floorValue = () => (pairFloor.value === '' ? null :
+        Math.min(100, Math.max(0, Number(pairFloor.value))) / 100);
       const header = () => el('tr', {}, ['scene', 'query', 'fastest exact', 'µs', 'vs next',
-        `fastest within ${fmt(Number(budget.value) || 0, 0)}% wrong`, 'µs', 'wrong frames',
-        'smallest exact', 'B/tri', 'vs next'].map((h) => el('th', { text: h })));
+        `fastest within ${fmt(Number(budget.value) || 0, 0)}% wrong` + (floorValue() === null ? '' :
+          ` (all pairs: ≥ ${fmt(100 * floorValue(), 1)}% recall and precision)`), 'µs',
+        'wrong frames', 'smallest exact', 'B/tri', 'vs next'].map((h) => el('th', { text: h })));
       const render = () => {
         const share = Math.max(0, Number(budget.value) || 0) / 100;
+        const floor = floorValue();
+        const withinBudget = (o) => (floor !== null && o.recall !== null && o.recall !== undefined ?
+          o.recall >= floor && o.precision >= floor : o.wrong_frames <= share * o.frames);
         holder.textContent = '';
         const t = el('table', { class: 'picks' }, [header()]);
         for (const p of picks) {
           const exact = (o) => o.wrong_frames === 0;
           const f = best(p.settings, exact, faster);
-          const w = best(p.settings, (o) => o.wrong_frames <= share * o.frames, faster);
+          const w = best(p.settings, withinBudget, faster);
           const m = best(p.settings, exact, smaller);
           const scene = p.resolution === 1 ? p.scene : `${p.scene} r=${p.resolution}`;
           t.appendChild(el('tr', { class: 'pick', 'data-scene': scene, 'data-query': p.query }, [
             cell(scene), cell(p.query),
-            cell(f ? f.chosen.backend : 'none exact', '', 'fastest-exact'),
+            cell(f ? f.chosen.backend : 'none exact', '', 'fastest-exact', f),
             cell(f ? fmt(f.chosen.mean_us) : '-', 'num'),
             cell(f && f.next ? ratio(f.chosen.mean_us, f.next.mean_us) : '-', 'num'),
-            cell(w ? w.chosen.backend : 'none', '', 'fastest-within'),
+            cell(w ? w.chosen.backend : 'none', '', 'fastest-within', w),
             cell(w ? fmt(w.chosen.mean_us) : '-', 'num'), cell(w ? wrongText(w.chosen) : '-', 'num'),
-            cell(m ? m.chosen.backend : 'none exact', '', 'smallest-exact'),
+            cell(m ? m.chosen.backend : 'none exact', '', 'smallest-exact', m),
             cell(m ? fmt(perTriangle(m.chosen), 0) : '-', 'num'),
             cell(m && m.next ? ratio(perTriangle(m.chosen), perTriangle(m.next)) : '-', 'num')]));
           // Under each row: every family's fastest setting, and what the fastest of all costs.
@@ -328,6 +348,7 @@
         holder.appendChild(t);
       };
       budget.addEventListener('input', render);
+      pairFloor.addEventListener('input', render);
       render();
     }
   }

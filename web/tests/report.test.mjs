@@ -144,6 +144,24 @@ test('every chart of the report renders without console errors', async () => {
         assert.match(lines[i], row, `table.txt and the page pick differently for ${p.scene} ${p.query}`);
       });
     }
+    // Holding all pairs to a pair recall and precision of 0% admits every all-pairs setting: the
+    // budget's pick is then the fastest of all.
+    await page.fill('#pick-pair-floor', '0');
+    const floorPicks = await page.evaluate(() => {
+      const data = JSON.parse(document.getElementById('collido-data').textContent);
+      const rows = [...document.querySelectorAll('#what-to-pick tr.pick')];
+      return ((data.what_to_pick && data.what_to_pick.picks) || []).map((p, i) => {
+        const pairs = p.settings.filter((o) => o.recall !== null);
+        if (pairs.length === 0) return null;
+        const fastest = pairs.reduce((a, b) => (b.mean_us < a.mean_us ? b : a));
+        return [p.scene + ' ' + p.query, fastest.backend,
+          rows[i].querySelector('[data-pick="fastest-within"]').textContent];
+      }).filter(Boolean);
+    });
+    for (const [row, expected, shown] of floorPicks) {
+      assert.equal(shown, expected, `with no pair floor, ${row} does not pick its fastest setting`);
+    }
+    await page.fill('#pick-pair-floor', '');
     // The filters select in every chart without a reload and without a warning.
     const total = await page.$$eval('.chart', (nodes) => nodes.filter((n) => n.offsetParent !== null).length);
     const families = await page.$$eval('#filter-family option', (os) => os.map((o) => o.value));

@@ -15,8 +15,18 @@ namespace {
 using Json = nlohmann::json;
 
 PickedSetting settingOf(const std::string& backend, const QueryMeasurement& m) {
-  return {backend,     meanFrameMedianUs(m), m.memory_bytes,
-          m.triangles, m.disagreements,      m.frames.size()};
+  PickedSetting s;
+  s.backend = backend;
+  s.mean_us = meanFrameMedianUs(m);
+  s.memory_bytes = m.memory_bytes;
+  s.triangles = m.triangles;
+  s.wrong_frames = m.disagreements;
+  s.frames = m.frames.size();
+  if (m.kind == QueryKind::kAllPairs) {
+    s.recall = m.recall;
+    s.precision = m.precision;
+  }
+  return s;
 }
 
 bool exact(const PickedSetting& s) {
@@ -89,7 +99,9 @@ Json settingJson(const PickedSetting& s) {
           {"bytes_per_triangle",
            s.triangles == 0 ? Json() : Json(static_cast<double>(s.memory_bytes) / s.triangles)},
           {"wrong_frames", s.wrong_frames},
-          {"frames", s.frames}};
+          {"frames", s.frames},
+          {"recall", s.recall ? Json(*s.recall) : Json()},
+          {"precision", s.precision ? Json(*s.precision) : Json()}};
 }
 
 Json pickJson(const std::optional<Pick>& pick, bool by_memory) {

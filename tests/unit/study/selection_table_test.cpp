@@ -83,6 +83,20 @@ TEST(WhatToPick, FastestSmallestWithinTheBudgetAndPerFamily) {
   EXPECT_DOUBLE_EQ(row.at("fastest_exact").at("runner_up_ratio").get<double>(), 2.0);
   EXPECT_DOUBLE_EQ(row.at("smallest_exact").at("bytes_per_triangle").get<double>(), 50.0);
   EXPECT_EQ(row.at("fastest_per_family").size(), 3u);
+  EXPECT_TRUE(row.at("settings").at(0).at("recall").is_null());  // a boolean query has no pairs
+}
+
+TEST(WhatToPick, AllPairsSettingsCarryTheirPairRecallAndPrecision) {
+  CombinationResult r = setting("bullet", 5.0, 40000, /*wrong=*/true);
+  QueryMeasurement& m = r.measurements.at(0);
+  m.query = "all_pairs";
+  m.kind = QueryKind::kAllPairs;
+  m.recall = 0.9;
+  m.precision = 0.75;
+  const nlohmann::json setting =
+      whatToPickJson(whatToPick({r}), PickBudget{}).at("picks").at(0).at("settings").at(0);
+  EXPECT_DOUBLE_EQ(setting.at("recall").get<double>(), 0.9);
+  EXPECT_DOUBLE_EQ(setting.at("precision").get<double>(), 0.75);
 }
 
 TEST(WhatToPick, AWiderBudgetAdmitsTheFastWrongSetting) {

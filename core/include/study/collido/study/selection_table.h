@@ -26,6 +26,10 @@ struct PickedSetting {
   std::size_t triangles = 0;
   std::size_t wrong_frames = 0;  ///< frames whose answer differed from the oracle's
   std::size_t frames = 0;
+  /// All-pairs queries: the share of the exact pairs reported and of the reported pairs that are
+  /// exact, over every frame (the dashboard's recall and precision budget).
+  std::optional<double> recall;
+  std::optional<double> precision;
 };
 
 /// A choice and the setting it beat: the best other backend family's.
