@@ -53,6 +53,8 @@
     tidyLogAxes(spec);
     holder.classList.add('waiting');
     waiting.set(holder, () => {
+      // Data too large to build for every chart up front is built when the chart is drawn.
+      if (spec.data && typeof spec.data.values === 'function') spec.data.values = spec.data.values();
       // Drawn late: it starts from the filters as they are now.
       for (const param of spec.params || []) {
         if (param.name in filterParamOf) param.value = filterState[filterParamOf[param.name]];
@@ -87,6 +89,21 @@
     for (const key of Object.keys(node)) {
       if (key !== 'data') tidyLogAxes(node[key]);
     }
+  }
+  // A table of many rows is built when it comes near the window (COLLIDO_REPORT.renderAll()
+  // builds it too): thousands of rows would hold up the first screen.
+  function laterTable(parent, header, rows, classes) {
+    if (rows.length < 200) return table(parent, header, rows, classes);
+    const holder = el('div', { class: 'waiting-table', text: `${rows.length} rows` });
+    parent.appendChild(holder);
+    waiting.set(holder, () => {
+      holder.textContent = '';
+      holder.classList.remove('waiting-table');
+      table(holder, header, rows, classes);
+      return Promise.resolve();
+    });
+    if (near) near.observe(holder); else draw(holder);
+    return holder;
   }
   function table(parent, header, rows, classes) {
     const t = el('table');
@@ -484,7 +501,7 @@
       }
     }
     if (lines.length > 0) {
-      table(s, ['scene · query', 'backend / setting', 'median µs', 'contacts/frame', 'point err',
+      laterTable(s, ['scene · query', 'backend / setting', 'median µs', 'contacts/frame', 'point err',
         'surface err', 'normal °', 'depth err', 'coverage', 'false pairs'], lines);
     }
   }
@@ -697,7 +714,7 @@
               encoding: { text: { field: 'text' },
                 color: { condition: { test: 'datum.rate > 0.3', value: '#fff' }, value: '#222' } } }] });
       }
-      table(s, ['backend / setting', 'category', 'cases', 'boolean wrong', 'FN', 'FP',
+      laterTable(s, ['backend / setting', 'category', 'cases', 'boolean wrong', 'FN', 'FP',
         'all-pairs wrong', 'true pairs', 'missed', 'extra', 'distance wrong', 'no answer'],
       cells.map((c) => {
         const b = c.boolean;
@@ -721,18 +738,21 @@
       'median, the whiskers the fastest and slowest call. Long tails are frames with dense contact.');
     const box = el('div', { class: 'charts' });
     s.appendChild(box);
+    // One list of timed calls per measurement; a chart's point per call is made when it draws.
     const groups = groupBy(data.times, (t) => t.scene + ' · ' + t.query);
     if (groups.size === 0) empty(s, 'No timed call.');
-    for (const [name, calls] of groups) {
-      const values = calls.map(tagByLookup);
+    for (const [name, measurements] of groups) {
+      const tagged = measurements.map(tagByLookup);
+      const calls = () => tagged.flatMap((m) => m.us.map((us) => ({ label: m.label,
+        family: m.family, kinds: m.kinds, exact: m.exact, us: us })));
       filteredChart(box, 'time-distribution:' + name, {
-        title: name, width: 360, height: { step: 18 }, data: { values: values },
+        title: name, width: 360, height: { step: 18 }, data: { values: calls },
         // In a layer: Vega-Lite refuses parameters on a boxplot's own spec.
         layer: [{ mark: { type: 'boxplot', extent: 'min-max', size: 12 },
           encoding: { y: { field: 'label', type: 'nominal', title: null, axis: { labelLimit: 220 } },
             x: { field: 'us', type: 'quantitative', scale: { type: 'log' },
               title: 'time per call (µs)' },
-            color: Object.assign({}, familyColour, { legend: null }) } }] }, values);
+            color: Object.assign({}, familyColour, { legend: null }) } }] }, tagged);
     }
   }
 
@@ -962,7 +982,7 @@
       s.appendChild(holder);
       return holder;
     };
-    const failureTable = (holder, list) => table(holder,
+    const failureTable = (holder, list) => laterTable(holder,
       ['what', 'backend / setting', 'scene', 'query', 'detail'], list.map((f) => {
         const detail = el('div', { text: f.detail });
         if (f.log) detail.appendChild(el('pre', { class: 'log', text: f.log }));
@@ -1099,7 +1119,7 @@
   // --- the table ------------------------------------------------------------------------------
   {
     const s = section('table', 'All measurements', 'Every (backend setting, scene, query).');
-    table(s, ['backend / setting', 'scene', 'query', 'status', 'median µs', 'p90', 'p99', 'max',
+    laterTable(s, ['backend / setting', 'scene', 'query', 'status', 'median µs', 'p90', 'p99', 'max',
       'wrong', 'recall', 'precision', 'build ms', 'B/tri', 'B/tri heap'],
     data.rows.map((r) => [r.label, r.scene, r.query, r.status, fmt(r.median_us), fmt(r.p90_us),
       fmt(r.p99_us), fmt(r.max_us), r.status === 'ok' ? String(r.disagreements) : '-',

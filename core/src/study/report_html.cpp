@@ -1,5 +1,6 @@
 #include <collido/study/report_html.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cstdlib>
 #include <ctime>
@@ -103,17 +104,25 @@ Json timesOf(const std::vector<CombinationResult>& results) {
   Json times = Json::array();
   for (const CombinationResult& r : results) {
     for (const QueryMeasurement& m : tableMeasurements(r)) {
-      if (!m.ok()) continue;
-      // Every timed call up to a cap, evenly thinned beyond it: the page stays small while the
-      // shape of each distribution survives.
+      if (!m.ok() || m.times_us.empty()) continue;
+      // Every timed call up to a cap, evenly thinned beyond it, and always the fastest and the
+      // slowest (the box plot's whiskers): the page stays small while the shape of each
+      // distribution survives. One list per measurement, not one object per call.
+      const std::vector<double>& all = m.times_us;
       const std::size_t cap = 600;
-      const std::size_t step = m.times_us.size() > cap ? (m.times_us.size() + cap - 1) / cap : 1;
-      for (std::size_t i = 0; i < m.times_us.size(); i += step) {
-        times.push_back({{"label", backendLabel(r.combination)},
-                         {"scene", r.combination.scene_name},
-                         {"query", m.query},
-                         {"us", m.times_us[i]}});
+      const std::size_t step = all.size() > cap ? (all.size() + cap - 1) / cap : 1;
+      const auto [fastest, slowest] = std::minmax_element(all.begin(), all.end());
+      Json us = Json::array();
+      for (std::size_t i = 0; i < all.size(); i += step)
+        us.push_back(all[i]);
+      if (step > 1) {
+        us.push_back(*fastest);
+        us.push_back(*slowest);
       }
+      times.push_back({{"label", backendLabel(r.combination)},
+                       {"scene", r.combination.scene_name},
+                       {"query", m.query},
+                       {"us", std::move(us)}});
     }
   }
   return times;
