@@ -21,6 +21,7 @@ struct RunArguments {
   std::string protocol = "repeated";
   bool quiet = false;
   bool fail_on_disagreement = false;
+  bool reuse_unchanged = false;
 };
 
 // collido run keeps every backend in this process (one scene loaded once, answers compared in
@@ -82,6 +83,7 @@ int run(const RunArguments& args, const PluginOptions& plugin_options) {
   RunOptions options;
   options.repetitions = args.repetitions;
   options.protocol = parseTimingProtocol(args.protocol).value_or(TimingProtocol::kRepeated);
+  options.reuse_unchanged = args.reuse_unchanged;
   if (!args.quiet) options.progress = [](const std::string& line) { std::cerr << line << "\n"; };
   // runScenes, with each scene's oracle answers read from and kept in the store when one is named.
   RunReport report;
@@ -139,6 +141,9 @@ void addRunCommand(CLI::App& app, const PluginOptions& plugins, int& exit_code) 
       ->check(CLI::IsMember({"repeated", "cycled"}));
   command->add_option("--repetitions", args->repetitions, "timed calls per frame and query")
       ->check(CLI::Range(1, 1000000));
+  command->add_flag("--reuse-unchanged", args->reuse_unchanged,
+                    "answer an object pair with its answer of the frame before when neither "
+                    "object moved, changed state or deformed (still checked against the oracle)");
   command->add_flag("--quiet", args->quiet, "no progress lines on stderr");
   command->add_flag("--fail-on-disagreement", args->fail_on_disagreement,
                     "exit with 3 when any answer differs from the oracle's");

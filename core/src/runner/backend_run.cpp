@@ -9,7 +9,10 @@
 
 #include <algorithm>
 #include <chrono>
+#include <map>
 #include <memory>
+#include <set>
+#include <utility>
 
 #include <collido/host/backend_instance.h>
 #include <collido/runner/statistics.h>
@@ -79,18 +82,45 @@ struct QueryRun {
   }
 };
 
-// Updates the frame's deforming objects to their shapes in it, timing the calls (one per object)
-// into `record` when asked to; fails the measurement when an update fails.
-void updateDeforming(const QueryRun& run, std::size_t frame,
-                     std::map<std::size_t, std::shared_ptr<const TriangleMesh>>& shapes,
-                     FrameRecord* record, QueryMeasurement& m) {
-  for (std::size_t i : run.objects) {
+using Shapes = std::map<std::size_t, std::shared_ptr<const TriangleMesh>>;
+
+// The query's objects' shapes in `frame`.
+Shapes shapesAt(const QueryRun& run, std::size_t frame) {
+  Shapes shapes;
+  for (std::size_t i : run.objects)
     shapes[i] = run.scene.objects[i].shapeAt(frame);
-    if (run.scene.objects[i].deformation == nullptr) continue;
+  return shapes;
+}
+
+// The query's objects that are as they were in the frame before (`before`, empty in frame 0):
+// the same pose, active state and vertices, to the bit.
+std::set<std::size_t> heldObjects(const QueryRun& run, std::size_t frame, const Shapes& now,
+                                  const Shapes& before) {
+  std::set<std::size_t> held;
+  if (frame == 0 || before.empty()) return held;
+  for (std::size_t i : run.objects) {
+    const SceneObject& o = run.scene.objects[i];
+    if (o.poseAt(frame).matrix() != o.poseAt(frame - 1).matrix()) continue;
+    if (o.stateAt(frame) != o.stateAt(frame - 1)) continue;
+    const TriangleMesh& a = *now.at(i);
+    const TriangleMesh& b = *before.at(i);
+    if (&a != &b && a.vertices != b.vertices) continue;
+    held.insert(i);
+  }
+  return held;
+}
+
+// Updates the frame's deforming objects to their `shapes`, but for those `held` as they were
+// (their models have those positions already), timing the calls (one per object) into `record`
+// when asked to; fails the measurement when an update fails.
+void updateDeforming(const QueryRun& run, std::size_t frame, const Shapes& shapes,
+                     const std::set<std::size_t>& held, FrameRecord* record, QueryMeasurement& m) {
+  for (std::size_t i : run.objects) {
+    if (run.scene.objects[i].deformation == nullptr || held.count(i) != 0) continue;
     const Clock::time_point start = Clock::now();
     UpdateCounters work;
     const Status s =
-        run.backend.update(run.modelAt(i, frame), shapes[i]->vertices, record ? &work : nullptr);
+        run.backend.update(run.modelAt(i, frame), shapes.at(i)->vertices, record ? &work : nullptr);
     const Clock::time_point stop = Clock::now();
     if (!s.ok()) {
       m.status = frameFailure(frame, "update " + run.scene.objects[i].name + ": " + s.toString());
@@ -108,36 +138,65 @@ void updateDeforming(const QueryRun& run, std::size_t frame,
   }
 }
 
+// What a frame's timed calls do: the pairs asked (the candidates less the reused ones) and the
+// objects held as they were in the frame before (not updated).
+struct FrameWork {
+  ObjectPairs asked;
+  std::set<std::size_t> held;
+  bool all_reused = false;  ///< every candidate pair took its answer of the frame before
+};
+
+// One timed call of a frame's `work`; a frame whose every pair is reused costs nothing.
+template <typename Ask>
+Result<double> timeFrameWork(const FrameWork& work, const Ask& ask) {
+  if (work.all_reused) return 0.0;
+  return timeFrameCall(work.asked, ask);
+}
+
 // Steps through the query's frames: each frame's shapes (deforming objects updated, timed), the
-// checked call of each candidate object pair (which the observers see), the repeated protocol's
-// timed calls, then the observers' frame figures. Returns each frame's candidates.
-std::vector<ObjectPairs> stepFrames(const QueryRun& run,
-                                    const std::optional<BroadPhase>& broad_phase,
-                                    const std::vector<FrameObserver*>& observers,
-                                    const RunOptions& options, std::size_t& frames_done,
-                                    std::size_t frames_total, QueryMeasurement& m) {
-  std::vector<ObjectPairs> frame_candidates;
+// checked call of each candidate object pair (which the observers see; with
+// RunOptions::reuse_unchanged, a pair of held objects takes its answer of the frame before), the
+// repeated protocol's timed calls, then the observers' frame figures. Returns each frame's work.
+std::vector<FrameWork> stepFrames(const QueryRun& run, const std::optional<BroadPhase>& broad_phase,
+                                  const std::vector<FrameObserver*>& observers,
+                                  const RunOptions& options, std::size_t& frames_done,
+                                  std::size_t frames_total, QueryMeasurement& m) {
+  std::vector<FrameWork> frame_work;
   QueryResult result;
+  Shapes before;
+  std::map<std::pair<std::size_t, std::size_t>, QueryResult> last_answers;
   for (std::size_t frame = 0; frame < run.scene.frames && m.ok(); ++frame) {
     const ObjectPairs candidates = objectPairsAt(broad_phase, run.query, frame);
     FrameRecord record;
     record.frame = frame;
     record.object_pairs = candidates.size();
-    std::map<std::size_t, std::shared_ptr<const TriangleMesh>> shapes;
-    updateDeforming(run, frame, shapes, &record, m);
+    const Shapes shapes = shapesAt(run, frame);
+    FrameWork work;
+    if (options.reuse_unchanged) work.held = heldObjects(run, frame, shapes, before);
+    updateDeforming(run, frame, shapes, work.held, &record, m);
     if (!m.ok()) break;
+    std::map<std::pair<std::size_t, std::size_t>, QueryResult> answers;
     for (const auto& [ia, ib] : candidates) {
-      if (Status s = run.ask(ia, ib, frame, result); !s.ok()) {
+      const auto previous = last_answers.find({ia, ib});
+      const bool reuse =
+          previous != last_answers.end() && work.held.count(ia) != 0 && work.held.count(ib) != 0;
+      if (reuse) {
+        result = previous->second;
+        ++record.reused_pairs;
+      } else if (Status s = run.ask(ia, ib, frame, result); !s.ok()) {
         m.status = frameFailure(frame, s.toString());
         break;
+      } else {
+        work.asked.emplace_back(ia, ib);
       }
+      if (options.reuse_unchanged) answers[{ia, ib}] = result;
       const OracleAnswer& truth =
           run.oracle.get(ia, ib, frame, run.query.request.kind == QueryKind::kDistance);
       const AskedPair asked{frame,
                             ia,
                             ib,
-                            *shapes[ia],
-                            *shapes[ib],
+                            *shapes.at(ia),
+                            *shapes.at(ib),
                             run.scene.objects[ia].poseAt(frame),
                             run.scene.objects[ib].poseAt(frame),
                             run.query.request,
@@ -145,19 +204,22 @@ std::vector<ObjectPairs> stepFrames(const QueryRun& run,
                             truth};
       for (FrameObserver* observer : observers)
         observer->pair(asked, record);
-      record.bv_tests += result.counters.bv_tests;
-      record.primitive_tests += result.counters.primitive_tests;
       m.counts_bv_tests = result.counters.counts_bv_tests;
       m.counts_primitive_tests = result.counters.counts_primitive_tests;
+      if (reuse) continue;  // no work was done for it in this frame
+      record.bv_tests += result.counters.bv_tests;
+      record.primitive_tests += result.counters.primitive_tests;
     }
     if (!m.ok()) break;
+    work.all_reused = !candidates.empty() && record.reused_pairs == candidates.size();
+    last_answers = std::move(answers);
+    before = shapes;
 
     std::vector<double> frame_times;
     const int repetitions = options.protocol == TimingProtocol::kRepeated ? options.repetitions : 0;
     for (int rep = 0; rep < repetitions; ++rep) {
-      const Result<double> took = timeFrameCall(candidates, [&](std::size_t ia, std::size_t ib) {
-        return run.ask(ia, ib, frame, result);
-      });
+      const Result<double> took = timeFrameWork(
+          work, [&](std::size_t ia, std::size_t ib) { return run.ask(ia, ib, frame, result); });
       if (!took.ok()) {
         m.status = frameFailure(frame, took.status().toString());
         break;
@@ -172,28 +234,27 @@ std::vector<ObjectPairs> stepFrames(const QueryRun& run,
     }
     m.times_us.insert(m.times_us.end(), frame_times.begin(), frame_times.end());
     m.frames.push_back(std::move(record));
-    frame_candidates.push_back(candidates);
+    frame_work.push_back(std::move(work));
     if (options.frame_progress) options.frame_progress(++frames_done, frames_total);
   }
-  return frame_candidates;
+  return frame_work;
 }
 
 // The cycled protocol's timed passes: each pass asks every frame once, in order, so that no
 // call finds the previous one's data in cache. A deforming object is updated to each frame
-// first, untimed. Each frame's median is over its calls; times_us holds every call.
-void timeCycled(const QueryRun& run, const std::vector<ObjectPairs>& candidates, int repetitions,
+// first, untimed (not when held as it was in the frame before, which the pass asked just
+// before). Each frame's median is over its calls; times_us holds every call.
+void timeCycled(const QueryRun& run, const std::vector<FrameWork>& work, int repetitions,
                 QueryMeasurement& m) {
   std::vector<std::vector<double>> times(m.frames.size());
   QueryResult result;
   for (int rep = 0; rep < repetitions && m.ok(); ++rep) {
     for (std::size_t k = 0; k < m.frames.size() && m.ok(); ++k) {
       const std::size_t frame = m.frames[k].frame;
-      std::map<std::size_t, std::shared_ptr<const TriangleMesh>> shapes;
-      updateDeforming(run, frame, shapes, nullptr, m);
+      updateDeforming(run, frame, shapesAt(run, frame), work[k].held, nullptr, m);
       if (!m.ok()) break;
-      const Result<double> took = timeFrameCall(candidates[k], [&](std::size_t ia, std::size_t ib) {
-        return run.ask(ia, ib, frame, result);
-      });
+      const Result<double> took = timeFrameWork(
+          work[k], [&](std::size_t ia, std::size_t ib) { return run.ask(ia, ib, frame, result); });
       if (!took.ok()) {
         m.status = frameFailure(frame, took.status().toString());
         break;
@@ -283,10 +344,10 @@ void runSceneOnBackend(const Scene& scene, const BackendSpec& spec, OracleCache&
 
     std::optional<BroadPhase> broad_phase;
     if (query.isGroup()) broad_phase.emplace(scene, query);
-    const std::vector<ObjectPairs> candidates =
+    const std::vector<FrameWork> work =
         stepFrames(run, broad_phase, observers, options, frames_done, frames_total, m);
     if (options.protocol == TimingProtocol::kCycled && m.ok())
-      timeCycled(run, candidates, options.repetitions, m);
+      timeCycled(run, work, options.repetitions, m);
     summariseMeasurement(m);
     report.measurements.push_back(std::move(m));
   }

@@ -60,6 +60,7 @@ void visitFrameFields(Frame& f, bool counts_bv_tests, bool counts_primitive_test
   visit("invalid_pairs", f.invalid_pairs, Absent::kError);
   visit("truncated", f.truncated, Absent::kError);
   visit("object_pairs", f.object_pairs, Absent::kKeep);
+  visit("reused_pairs", f.reused_pairs, Absent::kKeep);
   visit("oracle_distance", f.oracle_distance, Absent::kKeep);
   visit("reported_distance", f.reported_distance, Absent::kKeep);
   visit("distance_below", f.distance_below, Absent::kKeep);

@@ -74,6 +74,11 @@ struct RunOptions {
   /// Keep every frame's answers, the backend's and the oracle's, per object pair asked
   /// (FrameRecord::answers): what `collido view` shows triangle by triangle.
   bool keep_answers = false;
+  /// Answer an object pair with its answer of the frame before when neither object moved,
+  /// changed state or deformed since then (FrameRecord::reused_pairs), as an application that
+  /// knows what it moved would; the reused answer is still checked against the oracle. Off,
+  /// every pair is asked in every frame: the cold figure.
+  bool reuse_unchanged = false;
 };
 
 /// One object pair's answers in a frame, kept with RunOptions::keep_answers.
@@ -135,6 +140,10 @@ struct FrameRecord {
   /// Object pairs asked: 1 for a two-object query; for a group query, the candidates the shared
   /// broad phase passed (every count above is summed over them).
   std::size_t object_pairs = 1;
+  /// With RunOptions::reuse_unchanged: of those, the pairs answered with their answer of the
+  /// frame before, not asked (neither object moved, changed state or deformed). Their time is
+  /// not in this frame's timed calls, and an unchanged deforming object is not updated.
+  std::size_t reused_pairs = 0;
   /// With RunOptions::keep_answers: the answers of every object pair asked, in order.
   std::vector<PairAnswers> answers;
 
