@@ -14,8 +14,14 @@ limit=5000
 screenshot=
 while [[ $# -gt 0 ]]; do
   case $1 in
-    --limit-ms) limit=$2; shift 2 ;;
-    --screenshot) screenshot=$(realpath -m "$2"); shift 2 ;;
+    --limit-ms)
+      if [[ $# -lt 2 || ! $2 =~ ^[0-9]+$ ]]; then
+        echo "error: --limit-ms needs a whole number of milliseconds" >&2; exit 2
+      fi
+      limit=$2; shift 2 ;;
+    --screenshot)
+      if [[ $# -lt 2 ]]; then echo "error: --screenshot needs a file" >&2; exit 2; fi
+      screenshot=$(realpath -m "$2"); shift 2 ;;
     -*) echo "error: unknown option $1" >&2; exit 2 ;;
     *) study=$1; shift ;;
   esac
