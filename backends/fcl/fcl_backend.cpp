@@ -145,6 +145,18 @@ class FclBackend final : public Backend {
  public:
   FclBackend(BoxType type, bool rebuild) : type_(type), rebuild_(rebuild) {}
 
+  // OBBRSS keeps an OBB for collision and an RSS for distance in every node. Where the objects
+  // linked to this one are asked only one of those, the half they never use is not built; the
+  // whole linked set gets the same type, since FCL collides and measures only equal types.
+  BoxType typeFor(const BuildNeeds& needs) const {
+    if (type_ != BoxType::kObbRss || needs.linked_queries.empty()) return type_;
+    const std::uint32_t distance = static_cast<std::uint32_t>(QueryKind::kDistance);
+    const bool measures = (needs.linked_queries.bits() & distance) != 0;
+    const bool collides = (needs.linked_queries.bits() & ~distance) != 0;
+    if (measures && collides) return BoxType::kObbRss;
+    return measures ? BoxType::kRss : BoxType::kObb;
+  }
+
   // FCL's mesh-mesh distance traversal exists for these box types only.
   bool answersDistance() const {
     return type_ == BoxType::kRss || type_ == BoxType::kObbRss || type_ == BoxType::kKios;
@@ -164,9 +176,9 @@ class FclBackend final : public Backend {
     return caps;
   }
 
-  Result<std::unique_ptr<BackendModel>> build(const MeshView& mesh, const BuildNeeds& /*needs*/,
+  Result<std::unique_ptr<BackendModel>> build(const MeshView& mesh, const BuildNeeds& needs,
                                               const StateSibling& /*sibling*/) override {
-    return std::unique_ptr<BackendModel>(makeModel(type_, mesh, rebuild_));
+    return std::unique_ptr<BackendModel>(makeModel(typeFor(needs), mesh, rebuild_));
   }
 
   Status update(BackendModel& model, const Eigen::Ref<const Eigen::Matrix3Xd>& positions,
@@ -177,6 +189,15 @@ class FclBackend final : public Backend {
 
   Status query(BackendModel& a, const Pose& pose_a, BackendModel& b, const Pose& pose_b,
                const QueryRequest& request, QueryResult& result) override {
+    // FCL answers a pair of unequal box types with a warning and no collision, a wrong answer.
+    const fcl::NODE_TYPE type_a = static_cast<FclModel&>(a).geometry().getNodeType();
+    const fcl::NODE_TYPE type_b = static_cast<FclModel&>(b).geometry().getNodeType();
+    if (type_a != type_b) {
+      return {StatusCode::kInvalidArgument,
+              "fcl: the two models have different box types (FCL node types " +
+                  std::to_string(type_a) + " and " + std::to_string(type_b) +
+                  "); build both with the same linked query kinds"};
+    }
     if (request.kind == QueryKind::kDistance) {
       return distance(static_cast<FclModel&>(a), pose_a, static_cast<FclModel&>(b), pose_b, request,
                       result);

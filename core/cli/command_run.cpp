@@ -22,6 +22,7 @@ struct RunArguments {
   bool quiet = false;
   bool fail_on_disagreement = false;
   bool reuse_unchanged = false;
+  bool skip_apart = false;
 };
 
 // collido run keeps every backend in this process (one scene loaded once, answers compared in
@@ -84,6 +85,7 @@ int run(const RunArguments& args, const PluginOptions& plugin_options) {
   options.repetitions = args.repetitions;
   options.protocol = parseTimingProtocol(args.protocol).value_or(TimingProtocol::kRepeated);
   options.reuse_unchanged = args.reuse_unchanged;
+  options.skip_apart_pairs = args.skip_apart;
   if (!args.quiet) options.progress = [](const std::string& line) { std::cerr << line << "\n"; };
   // runScenes, with each scene's oracle answers read from and kept in the store when one is named.
   RunReport report;
@@ -144,6 +146,9 @@ void addRunCommand(CLI::App& app, const PluginOptions& plugins, int& exit_code) 
   command->add_flag("--reuse-unchanged", args->reuse_unchanged,
                     "answer an object pair with its answer of the frame before when neither "
                     "object moved, changed state or deformed (still checked against the oracle)");
+  command->add_flag("--skip-apart", args->skip_apart,
+                    "do not ask a two-object collision query in a frame where the shared broad "
+                    "phase proves the pair apart (group queries always go through it)");
   command->add_flag("--quiet", args->quiet, "no progress lines on stderr");
   command->add_flag("--fail-on-disagreement", args->fail_on_disagreement,
                     "exit with 3 when any answer differs from the oracle's");

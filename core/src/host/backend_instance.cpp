@@ -90,6 +90,7 @@ Result<ModelHandle> BackendInstance::buildShape(const CollidoShapeView& shape,
   c_needs.query_kinds = needs.queries.bits();
   c_needs.flags = needs.deforms ? std::uint32_t{COLLIDO_NEED_DEFORMS} : 0u;
   c_needs.state_of = state_of;
+  c_needs.linked_query_kinds = needs.linked_queries.bits();
   CollidoMessage message{};
   ModelHandle handle = 0;
   if (Status s = fromCode(library_->table().build(instance_, &shape, &c_needs, &handle, &message),

@@ -362,6 +362,12 @@ std::int32_t buildEntry(CollidoInstance* instance, const CollidoShapeView* shape
       sibling.model = other->model.get();
     }
     BuildNeeds build_needs{wanted, deforms};
+    // A host's linked kinds include the model's own; kinds the backend does not answer are
+    // dropped, as a model is never asked them.
+    if (needs->linked_query_kinds != 0) {
+      build_needs.linked_queries =
+          QueryKindSet((needs->linked_query_kinds | wanted.bits()) & caps.queries.bits());
+    }
     Result<std::unique_ptr<BackendModel>> built =
         instance->backend->build(view, build_needs, sibling);
     if (!built.ok()) return report(error, built.status());

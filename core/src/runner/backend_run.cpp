@@ -72,6 +72,7 @@ struct QueryRun {
   const SceneModels& models;
   BackendInstance& backend;
   OracleCache& oracle;
+  std::size_t asked_pairs = 0;  ///< object pairs the query asks about, culled or not
 
   ModelHandle modelAt(std::size_t object, std::size_t frame) const {
     return models.at(object)[scene.objects[object].stateAt(frame)].handle;
@@ -83,6 +84,17 @@ struct QueryRun {
 };
 
 using Shapes = std::map<std::size_t, std::shared_ptr<const TriangleMesh>>;
+
+// The object pairs `query` asks about: its one pair, or those of its group it asks.
+std::size_t askedPairCount(const SceneQuery& query) {
+  if (!query.isGroup()) return 1;
+  std::size_t count = 0;
+  for (std::size_t i = 0; i < query.among.size(); ++i) {
+    for (std::size_t j = i + 1; j < query.among.size(); ++j)
+      count += query.asksPair(query.among[i], query.among[j]) ? 1 : 0;
+  }
+  return count;
+}
 
 // The query's objects' shapes in `frame`.
 Shapes shapesAt(const QueryRun& run, std::size_t frame) {
@@ -170,6 +182,7 @@ std::vector<FrameWork> stepFrames(const QueryRun& run, const std::optional<Broad
     FrameRecord record;
     record.frame = frame;
     record.object_pairs = candidates.size();
+    record.skipped_pairs = run.asked_pairs - candidates.size();
     const Shapes shapes = shapesAt(run, frame);
     FrameWork work;
     if (options.reuse_unchanged) work.held = heldObjects(run, frame, shapes, before);
@@ -315,7 +328,8 @@ void runSceneOnBackend(const Scene& scene, const BackendSpec& spec, OracleCache&
       report.measurements.push_back(m);
       continue;
     }
-    const QueryRun run{scene, query, query.objects(), models, backend, oracle};
+    const QueryRun run{scene,   query,  query.objects(),      models,
+                       backend, oracle, askedPairCount(query)};
     if (const std::string error = buildError(models, run.objects); !error.empty()) {
       m.status = MeasurementStatus::failed("build: " + error);
       report.measurements.push_back(m);
@@ -343,7 +357,11 @@ void runSceneOnBackend(const Scene& scene, const BackendSpec& spec, OracleCache&
     }
 
     std::optional<BroadPhase> broad_phase;
-    if (query.isGroup()) broad_phase.emplace(scene, query);
+    // A distance has an answer however far apart: only collision questions can be culled.
+    if (query.isGroup() ||
+        (options.skip_apart_pairs && query.request.kind != QueryKind::kDistance)) {
+      broad_phase.emplace(scene, query);
+    }
     const std::vector<FrameWork> work =
         stepFrames(run, broad_phase, observers, options, frames_done, frames_total, m);
     if (options.protocol == TimingProtocol::kCycled && m.ok())

@@ -51,8 +51,13 @@ std::optional<BroadPhase> groupBroadPhase(const Scene& scene, const SceneQuery& 
 
 ObjectPairs objectPairsAt(const std::optional<BroadPhase>& broad_phase, const SceneQuery& query,
                           std::size_t frame) {
-  if (broad_phase) return broad_phase->pairsAt(frame);
-  return {{query.a, query.b}};
+  if (!broad_phase) return {{query.a, query.b}};
+  // A two-object query keeps its own order of the pair (the broad phase sorts it).
+  if (!query.isGroup()) {
+    if (broad_phase->pairsAt(frame).empty()) return {};
+    return {{query.a, query.b}};
+  }
+  return broad_phase->pairsAt(frame);
 }
 
 void FrameObserver::pair(const AskedPair& /*asked*/, FrameRecord& /*record*/) {}

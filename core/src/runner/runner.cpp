@@ -43,7 +43,13 @@ void summariseMeasurement(QueryMeasurement& m) {
   m.max_distance_error.reset();
   m.max_relative_distance_error.reset();
   m.contact.reset();
+  m.reused_pairs = 0;
+  m.unasked_frames = 0;
+  m.skipped_pairs = 0;
   for (const FrameRecord& f : m.frames) {
+    m.reused_pairs += f.reused_pairs;
+    m.skipped_pairs += f.skipped_pairs;
+    if (f.reused_pairs > 0 && f.reused_pairs == f.object_pairs) ++m.unasked_frames;
     if (f.contact) {
       if (!m.contact) m.contact.emplace();
       m.contact->add(*f.contact);
@@ -59,7 +65,8 @@ void summariseMeasurement(QueryMeasurement& m) {
     if (f.update_us) updates_us.push_back(*f.update_us);
     if (f.update_work.counted)
       m.update_rebuilds = m.update_rebuilds.value_or(0) + f.update_work.rebuilds;
-    if (f.floor_us) {
+    // A frame with reused pairs timed only the others, so it is held to no floor.
+    if (f.floor_us && f.reused_pairs == 0) {
       timed_with_floor_us += f.median_us;
       floor_us += *f.floor_us;
     }

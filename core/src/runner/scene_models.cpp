@@ -55,8 +55,9 @@ SceneModels buildSceneModels(const Scene& scene, BackendInstance& backend,
   const Capabilities& caps = backend.capabilities();
   for (std::size_t index : scene.queriedObjects()) {
     BuildNeeds needs = scene.needsOf(index);
-    if (options.build_every_need) needs.queries = caps.queries;
+    if (options.build_every_need) needs.queries = needs.linked_queries = caps.queries;
     needs.queries = QueryKindSet(needs.queries.bits() & caps.queries.bits());
+    needs.linked_queries = QueryKindSet(needs.linked_queries.bits() & caps.queries.bits());
     if (needs.queries.empty()) continue;
     const SceneObject& object = scene.objects[index];
     if (options.progress) options.progress(label + ": building " + object.name);

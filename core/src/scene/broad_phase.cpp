@@ -19,7 +19,7 @@ struct WorldBox {
 }  // namespace
 
 BroadPhase::BroadPhase(const Scene& scene, const SceneQuery& query) : scene_(scene), query_(query) {
-  for (std::size_t index : query.among) {
+  for (std::size_t index : query.objects()) {
     const SceneObject& object = scene.objects[index];
     LocalBox box;
     box.object = index;

@@ -848,6 +848,24 @@ BuildNeeds Scene::needsOf(std::size_t object) const {
     if (q.names(object)) needs.queries |= q.request.kind;
   }
   needs.deforms = objects[object].deformation != nullptr;
+  // The objects linked to this one through queries, directly or through others: grown until no
+  // query adds one, so every object of a linked set gets the same kinds.
+  std::vector<bool> linked(objects.size(), false);
+  linked[object] = true;
+  for (bool grew = true; grew;) {
+    grew = false;
+    for (const SceneQuery& q : queries) {
+      const std::vector<std::size_t> named = q.objects();
+      if (std::none_of(named.begin(), named.end(), [&](std::size_t i) { return linked[i]; })) {
+        continue;
+      }
+      needs.linked_queries |= q.request.kind;
+      for (std::size_t i : named) {
+        grew = grew || !linked[i];
+        linked[i] = true;
+      }
+    }
+  }
   return needs;
 }
 

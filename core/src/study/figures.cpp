@@ -96,6 +96,9 @@ const std::vector<Figure>& measurementFigures() {
                     : Json();
        }},
       {"floor_ratio", kBoth, [](R, M m) { return nullable(m.floor_ratio); }},
+      {"reused_pairs", kBoth, [](R, M m) { return Json(m.reused_pairs); }},
+      {"unasked_frames", kBoth, [](R, M m) { return Json(m.unasked_frames); }},
+      {"skipped_pairs", kBoth, [](R, M m) { return Json(m.skipped_pairs); }},
       {"update_median_us", kBoth, [](R, M m) { return nullable(m.update_median_us); }},
       {"build_ms", kBoth, [](R, M m) { return Json(m.build_ms); }},
       {"triangles", kBoth, [](R, M m) { return Json(m.triangles); }},

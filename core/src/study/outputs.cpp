@@ -20,6 +20,7 @@
 #include <collido/study/expected_time.h>
 #include <collido/study/field_table.h>
 #include <collido/study/figures.h>
+#include <collido/study/needs_table.h>
 #include <collido/study/robustness.h>
 #include <collido/study/selection_table.h>
 #include <collido/study/tracking_table.h>
@@ -172,40 +173,10 @@ std::string studyTableWith(const std::vector<CombinationResult>& results,
   }
   out << formatTextTable(header, rows, 4);
 
-  // What building only the declared needs saves: pairs of combinations differing in needs only.
-  std::map<std::string, const CombinationResult*> declared;
-  for (const CombinationResult& r : results) {
-    if (r.outcome.ok() && r.combination.needs == NeedsMode::kDeclared) {
-      Combination key = r.combination;
-      declared[key.scene_name + "|" + key.backend + "|" + std::to_string(key.resolution) + "|" +
-               std::to_string(key.limit)] = &r;
-    }
-  }
-  std::vector<std::vector<std::string>> savings;
-  for (const CombinationResult& every : results) {
-    const Combination& c = every.combination;
-    if (!every.outcome.ok() || c.needs != NeedsMode::kEvery) continue;
-    const auto found = declared.find(c.scene_name + "|" + c.backend + "|" +
-                                     std::to_string(c.resolution) + "|" + std::to_string(c.limit));
-    if (found == declared.end()) continue;
-    const std::vector<QueryMeasurement> declared_measurements = tableMeasurements(*found->second);
-    for (const QueryMeasurement& e : tableMeasurements(every)) {
-      for (const QueryMeasurement& d : declared_measurements) {
-        if (d.query != e.query || !d.ok() || !e.ok()) continue;
-        savings.push_back({c.backend, c.scene_name, d.query, formatNumber("%.2f", d.build_ms),
-                           formatNumber("%.2f", e.build_ms), formatNumber("%.1f", d.median_us),
-                           formatNumber("%.1f", e.median_us),
-                           bytesPerTriangleText(d.memory_bytes, d.triangles),
-                           bytesPerTriangleText(e.memory_bytes, e.triangles)});
-      }
-    }
-  }
-  if (!savings.empty()) {
-    out << "\nBuilding only what the scene needs (declared) against every query kind (every):\n";
-    out << formatTextTable(
-        {"backend", "scene", "query", "build ms declared", "build ms every", "median us declared",
-         "median us every", "B/tri declared", "B/tri every"},
-        savings, 3);
+  if (const std::string needs = needsTable(results); !needs.empty()) {
+    out << "\nWhat the scene's needs save (every against declared and changed, per backend "
+           "setting, scene and query):\n";
+    out << needs;
   }
   if (const std::string field = fieldTable(results); !field.empty()) {
     out << "\nThe OBB tree against the field (single thread, exact answers; per scene and "

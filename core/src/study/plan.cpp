@@ -125,7 +125,7 @@ std::vector<Combination> planStudy(
       for (const std::string& backend : backends) {
         const auto only = only_scenes.find(backend);
         if (only != only_scenes.end() && only->second.count(scene.name) == 0) continue;
-        for (const NeedsMode needs : sweep.needs) {
+        for (const NeedsMode needs : sweep.needsOf(scene.name)) {
           for (const std::uint64_t limit : sweep.limits) {
             Combination c;
             c.scene_path = scene.path;

@@ -122,6 +122,19 @@ std::vector<double> readResolutions(const Checker& c, const Json& node, const st
   return resolutions;
 }
 
+std::vector<NeedsMode> readNeedsModes(const Checker& c, const Json& node,
+                                      const std::string& where) {
+  const Json& list = c.nonEmptyArray(node, where);
+  std::vector<NeedsMode> modes;
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const std::optional<NeedsMode> mode =
+        list[i].is_string() ? parseNeedsMode(list[i].get<std::string>()) : std::nullopt;
+    if (!mode) c.fail(at(where, i), "expected \"declared\", \"changed\" or \"every\"");
+    modes.push_back(*mode);
+  }
+  return modes;
+}
+
 // {"backends": ["obbtree", ...], "<grid_key>": [8, 32]}: a SweepComparison; `grid_key` names the
 // grid sizes ("tessellations", "resolutions"), each a whole number from `low` to 1024.
 void readComparison(const Checker& c, const Json& node, const std::string& where,
@@ -181,13 +194,19 @@ Sweep readSweep(const Checker& c, const Json& root) {
     }
   }
   if (root.contains("needs")) {
-    sweep.needs.clear();
-    const Json& list = c.nonEmptyArray(root.at("needs"), "/needs");
-    for (std::size_t i = 0; i < list.size(); ++i) {
-      const std::optional<NeedsMode> mode =
-          list[i].is_string() ? parseNeedsMode(list[i].get<std::string>()) : std::nullopt;
-      if (!mode) c.fail(at("/needs", i), "expected \"declared\" or \"every\"");
-      sweep.needs.push_back(*mode);
+    const Json& node = root.at("needs");
+    if (node.is_object()) {
+      // {"scene name": [..], "*": [..]}: per scene, "*" for the others.
+      for (const auto& item : node.items()) {
+        std::vector<NeedsMode> list = readNeedsModes(c, item.value(), "/needs/" + item.key());
+        if (item.key() == "*") {
+          sweep.needs = std::move(list);
+        } else {
+          sweep.scene_needs[item.key()] = std::move(list);
+        }
+      }
+    } else {
+      sweep.needs = readNeedsModes(c, node, "/needs");
     }
   }
   if (root.contains("limits")) {
@@ -228,13 +247,27 @@ Sweep readSweep(const Checker& c, const Json& root) {
 }  // namespace
 
 const char* needsModeName(NeedsMode mode) {
-  return mode == NeedsMode::kDeclared ? "declared" : "every";
+  switch (mode) {
+    case NeedsMode::kDeclared:
+      return "declared";
+    case NeedsMode::kChanged:
+      return "changed";
+    case NeedsMode::kEvery:
+      return "every";
+  }
+  return "declared";
 }
 
 std::optional<NeedsMode> parseNeedsMode(const std::string& name) {
   if (name == "declared") return NeedsMode::kDeclared;
+  if (name == "changed") return NeedsMode::kChanged;
   if (name == "every") return NeedsMode::kEvery;
   return std::nullopt;
+}
+
+const std::vector<NeedsMode>& Sweep::needsOf(const std::string& scene) const {
+  const auto found = scene_needs.find(scene);
+  return found == scene_needs.end() ? needs : found->second;
 }
 
 const std::vector<double>& Sweep::resolutionsOf(const std::string& scene) const {

@@ -46,6 +46,8 @@ Result<CombinationResult> runCombination(const WorkerRequest& request) {
   if (const std::optional<TimingProtocol> protocol = parseTimingProtocol(c.protocol))
     options.protocol = *protocol;
   options.build_every_need = c.needs == NeedsMode::kEvery;
+  options.reuse_unchanged = c.needs == NeedsMode::kChanged;
+  options.skip_apart_pairs = c.needs == NeedsMode::kChanged;
   options.frame_progress = request.progress;
   // The exact answers of this scene may be stored already by an earlier combination.
   OracleCache oracle(scene);

@@ -31,7 +31,7 @@ constexpr const char* kScene = R"({"name": "held", "frames": 6, "objects": [
   "queries": [{"name": "held", "a": "a", "b": "b", "kind": "all_pairs"},
               {"name": "pulsing", "a": "a", "b": "c", "kind": "all_pairs"}]})";
 
-RunReport run(const Scene& scene, TimingProtocol protocol, bool reuse) {
+RunReport run(const Scene& scene, TimingProtocol protocol, bool reuse, bool skip_apart = false) {
   Result<std::shared_ptr<PluginLibrary>> library =
       PluginLibrary::open(test::pluginDirectory() + "/libcollido_plugin_obbtree.so");
   EXPECT_TRUE(library.ok()) << library.status().toString();
@@ -39,6 +39,7 @@ RunReport run(const Scene& scene, TimingProtocol protocol, bool reuse) {
   options.repetitions = 3;
   options.protocol = protocol;
   options.reuse_unchanged = reuse;
+  options.skip_apart_pairs = skip_apart;
   return runScene(scene, BackendSpec{library.value(), "obbtree", {}}, options);
 }
 
@@ -71,12 +72,68 @@ TEST(ReuseUnchanged, HeldFramesTakeTheAnswerBeforeAndAgreeWithTheOracle) {
           EXPECT_GT(w.frames[f].median_us, 0.0);
         }
       }
+      // Summed: two reused pairs, both in frames answered without a query; the floor ratio is
+      // that of the asked frames only (the held frames, timed at 0, would lower it).
+      EXPECT_EQ(w.reused_pairs, q == 0 ? 2u : 0u);
+      EXPECT_EQ(w.unasked_frames, q == 0 ? 2u : 0u);
+      EXPECT_EQ(c.unasked_frames, 0u);
+      double timed = 0.0;
+      double floor = 0.0;
+      for (const FrameRecord& f : w.frames) {
+        if (!f.floor_us || f.reused_pairs > 0) continue;
+        timed += f.median_us;
+        floor += *f.floor_us;
+      }
+      // The pulsing pair never meets: no true pair, no floor.
+      ASSERT_EQ(w.floor_ratio.has_value(), q == 0);
+      if (q == 0) {
+        EXPECT_DOUBLE_EQ(*w.floor_ratio, timed / floor);
+      }
       const Result<QueryMeasurement> back = measurementFromJson(measurementToJson(w));
       ASSERT_TRUE(back.ok()) << back.status().message();
       EXPECT_EQ(back.value().frames[3].reused_pairs, q == 0 ? 1u : 0u);
+      EXPECT_EQ(back.value().unasked_frames, w.unasked_frames);
     }
     // The held frames of the first query intersect: reusing is not only reusing "apart".
     EXPECT_GT(warm.measurements[0].frames[3].oracle_pairs, 0u);
+  }
+}
+
+// Two spheres of radius 1, the second at x = 5, 3, then 1.5: apart, apart, overlapping.
+constexpr const char* kApartScene = R"({"name": "apart", "frames": 3, "objects": [
+  {"name": "a", "shape": {"generator": "sphere", "radius": 1, "slices": 12, "stacks": 6}},
+  {"name": "b", "shape": {"generator": "sphere", "radius": 1, "slices": 12, "stacks": 6},
+   "motion": {"poses": [{"translation": [5, 0, 0]}, {"translation": [3, 0, 0]},
+                        {"translation": [1.5, 0, 0]}]}}],
+  "queries": [{"name": "any", "a": "b", "b": "a", "kind": "boolean"},
+              {"name": "pairs", "a": "a", "b": "b", "kind": "all_pairs"},
+              {"name": "gap", "a": "a", "b": "b", "kind": "distance"}]})";
+
+TEST(SkipApart, TwoObjectCollisionQueriesProvenApartAreNotAsked) {
+  const Result<Scene> scene = parseScene(kApartScene, "apart.json", ".");
+  ASSERT_TRUE(scene.ok()) << scene.status().toString();
+  const RunReport cold = run(scene.value(), TimingProtocol::kRepeated, false);
+  const RunReport culled = run(scene.value(), TimingProtocol::kRepeated, false, true);
+  ASSERT_EQ(culled.measurements.size(), 3u);
+  for (std::size_t q = 0; q < 3; ++q) {
+    const QueryMeasurement& c = cold.measurements[q];
+    const QueryMeasurement& k = culled.measurements[q];
+    SCOPED_TRACE(k.query);
+    ASSERT_EQ(k.status, "ok");
+    EXPECT_EQ(k.disagreements, 0u);
+    // A distance has an answer at any gap: never culled.
+    const bool cullable = k.kind != QueryKind::kDistance;
+    EXPECT_EQ(k.skipped_pairs, cullable ? 2u : 0u);
+    EXPECT_EQ(c.skipped_pairs, 0u);
+    for (std::size_t f = 0; f < 3; ++f) {
+      SCOPED_TRACE(f);
+      const bool apart = cullable && f < 2;
+      EXPECT_EQ(k.frames[f].skipped_pairs, apart ? 1u : 0u);
+      EXPECT_EQ(k.frames[f].object_pairs, apart ? 0u : 1u);
+      EXPECT_EQ(k.frames[f].reported_intersecting, c.frames[f].reported_intersecting);
+      EXPECT_EQ(k.frames[f].reported_pairs, c.frames[f].reported_pairs);
+      EXPECT_EQ(k.frames[f].oracle_intersecting, f == 2);
+    }
   }
 }
 

@@ -135,7 +135,7 @@ TEST(StudyTable, RowsSavingsAndFailures) {
   EXPECT_NE(table.find("needs=every"), std::string::npos) << table;
   EXPECT_NE(table.find("skipped"), std::string::npos) << table;
   // The declared/every pair of obbtree on tori gives the savings section.
-  EXPECT_NE(table.find("Building only what the scene needs"), std::string::npos) << table;
+  EXPECT_NE(table.find("What the scene's needs save"), std::string::npos) << table;
   // Both dead workers are in the failures, with their signal or exit code.
   const std::size_t failures = table.find("\nFailures:\n");
   ASSERT_NE(failures, std::string::npos) << table;
@@ -147,7 +147,7 @@ TEST(StudyTable, RowsSavingsAndFailures) {
 
 TEST(StudyTable, NoSavingsWithoutAPairAndNoFailuresWhenAllFinish) {
   const std::string table = studyTable({testdata::okResult(testdata::combination("obbtree"))});
-  EXPECT_EQ(table.find("Building only what the scene needs"), std::string::npos) << table;
+  EXPECT_EQ(table.find("What the scene's needs save"), std::string::npos) << table;
   EXPECT_EQ(table.find("Failures"), std::string::npos) << table;
   EXPECT_NE(table.find("obbtree"), std::string::npos) << table;
 }

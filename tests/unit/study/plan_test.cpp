@@ -31,6 +31,20 @@ std::vector<std::string> idsOf(const std::vector<Combination>& plan) {
   return ids;
 }
 
+// A scene with needs of its own runs those; the others the sweep's list.
+TEST(PlanStudy, NeedsPerScene) {
+  Sweep sweep;
+  sweep.scene_needs["env_rob"] = {NeedsMode::kChanged, NeedsMode::kEvery};
+  const std::vector<Combination> plan = planStudy(kScenes, {"obbtree"}, sweep);
+  ASSERT_EQ(plan.size(), 3u);
+  EXPECT_EQ(plan[0].scene_name, "tori");
+  EXPECT_EQ(plan[0].needs, NeedsMode::kDeclared);
+  EXPECT_EQ(plan[1].needs, NeedsMode::kChanged);
+  EXPECT_EQ(plan[1].settingText(), "needs=changed");
+  EXPECT_EQ(plan[2].needs, NeedsMode::kEvery);
+  EXPECT_NE(plan[1].id, plan[2].id);
+}
+
 TEST(PlanStudy, NestsScenesResolutionsBackendsNeedsLimits) {
   const std::vector<std::string> backends = {"obbtree", "fcl:obb[x=1]"};
   const std::vector<Combination> plan = planStudy(kScenes, backends, fullSweep());

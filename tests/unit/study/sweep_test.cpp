@@ -72,6 +72,16 @@ TEST(Sweep, ValidFileGivesEveryList) {
                                       "obbtree[max_leaf_triangles=4;split=median;margin=true]"}));
 }
 
+// Needs modes per scene, as resolutions: "*" for the scenes not named.
+TEST(Sweep, NeedsPerScene) {
+  const Result<Sweep> parsed = parseSweep(
+      R"({"needs": {"*": ["declared"], "held": ["declared", "changed", "every"]}})", kLabel);
+  ASSERT_TRUE(parsed.ok()) << parsed.status().message();
+  EXPECT_EQ(parsed.value().needsOf("tori"), (std::vector<NeedsMode>{NeedsMode::kDeclared}));
+  EXPECT_EQ(parsed.value().needsOf("held"),
+            (std::vector<NeedsMode>{NeedsMode::kDeclared, NeedsMode::kChanged, NeedsMode::kEvery}));
+}
+
 TEST(Sweep, EmptyObjectKeepsTheDefaults) {
   const Result<Sweep> parsed = parseSweep("{}", kLabel);
   ASSERT_TRUE(parsed.ok()) << parsed.status().message();
@@ -141,8 +151,11 @@ TEST(Sweep, ErrorsNameLabelPointerAndProblem) {
   expectError(R"({"resolutions": [-0.5]})", "/resolutions/0", "positive number");
   expectError(R"({"resolutions": ["1"]})", "/resolutions/0", "positive number");
   expectError(R"({"needs": []})", "/needs", "at least one entry");
-  expectError(R"({"needs": ["declared", "all"]})", "/needs/1", R"("declared" or "every")");
-  expectError(R"({"needs": [1]})", "/needs/0", R"("declared" or "every")");
+  expectError(R"({"needs": ["declared", "all"]})", "/needs/1",
+              R"("declared", "changed" or "every")");
+  expectError(R"({"needs": [1]})", "/needs/0", R"("declared", "changed" or "every")");
+  expectError(R"({"needs": {"tori": ["cold"]}})", "/needs/tori/0", R"("changed" or "every")");
+  expectError(R"({"needs": {"*": []}})", "/needs/*", "at least one entry");
   expectError(R"({"limits": []})", "/limits", "at least one entry");
   expectError(R"({"limits": [0, -1]})", "/limits/1", "whole number >= 0");
   expectError(R"({"limits": [2.5]})", "/limits/0", "whole number >= 0");
@@ -223,9 +236,10 @@ TEST(SweepBackend, SettingsAreTheCartesianProductInOptionOrder) {
 }
 
 TEST(NeedsMode, NamesRoundTrip) {
-  for (const NeedsMode mode : {NeedsMode::kDeclared, NeedsMode::kEvery})
+  for (const NeedsMode mode : {NeedsMode::kDeclared, NeedsMode::kChanged, NeedsMode::kEvery})
     EXPECT_EQ(parseNeedsMode(needsModeName(mode)), mode);
   EXPECT_STREQ(needsModeName(NeedsMode::kDeclared), "declared");
+  EXPECT_STREQ(needsModeName(NeedsMode::kChanged), "changed");
   EXPECT_STREQ(needsModeName(NeedsMode::kEvery), "every");
   EXPECT_FALSE(parseNeedsMode("Every").has_value());
   EXPECT_FALSE(parseNeedsMode("").has_value());

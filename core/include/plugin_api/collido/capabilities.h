@@ -33,6 +33,11 @@ struct Capabilities {
 struct BuildNeeds {
   QueryKindSet queries;  ///< the questions the model will be part of
   bool deforms = false;  ///< update() will be called; rigid models skip refit bookkeeping
+  /// The kinds asked anywhere among the objects linked to this one through queries (directly or
+  /// through others), a superset of `queries`; empty when the host did not say. A backend whose
+  /// model type depends on the kinds picks it by this set, so both models of every pair it will
+  /// be asked about are of one type.
+  QueryKindSet linked_queries{};
 };
 
 class BackendModel;

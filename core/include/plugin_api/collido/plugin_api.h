@@ -27,7 +27,7 @@ extern "C" {
 #endif
 
 /** The interface version; bump it on any change to the structures or functions below. */
-#define COLLIDO_PLUGIN_ABI_VERSION 4u
+#define COLLIDO_PLUGIN_ABI_VERSION 5u
 
 /** The one symbol a plugin shared library exports. */
 #define COLLIDO_PLUGIN_ENTRY_SYMBOL "collido_plugin_table"
@@ -137,6 +137,11 @@ typedef struct CollidoBuildNeeds {
    *  share with it whatever does not depend on vertex positions; the host never releases it
    *  before this model's last use, but the backend must not rely on it outliving this model. */
   CollidoModelHandle state_of;
+  /** CollidoQueryKind bits asked anywhere among the objects linked to this one through queries
+   *  (directly or through others), or 0 when the host does not say. A backend whose model type
+   *  depends on the kinds picks it by these bits, so the two models of every pair it is asked
+   *  about are of one type. (Added in interface version 5.) */
+  uint32_t linked_query_kinds;
 } CollidoBuildNeeds;
 
 /** A rigid transform: world = rotation * model + translation. */

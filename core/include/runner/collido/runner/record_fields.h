@@ -61,6 +61,7 @@ void visitFrameFields(Frame& f, bool counts_bv_tests, bool counts_primitive_test
   visit("truncated", f.truncated, Absent::kError);
   visit("object_pairs", f.object_pairs, Absent::kKeep);
   visit("reused_pairs", f.reused_pairs, Absent::kKeep);
+  visit("skipped_pairs", f.skipped_pairs, Absent::kKeep);
   visit("oracle_distance", f.oracle_distance, Absent::kKeep);
   visit("reported_distance", f.reported_distance, Absent::kKeep);
   visit("distance_below", f.distance_below, Absent::kKeep);
@@ -121,6 +122,9 @@ void visitMeasurementSummary(const QueryMeasurement& m, Visit&& visit) {
   visit("recall", m.recall);
   visit("precision", m.precision);
   visit("floor_ratio", m.floor_ratio);
+  visit("reused_pairs", m.reused_pairs);
+  visit("unasked_frames", m.unasked_frames);
+  visit("skipped_pairs", m.skipped_pairs);
   visit("update_median_us", m.update_median_us);
   visit("update_rebuilds", m.update_rebuilds);
 }

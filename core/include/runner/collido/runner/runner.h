@@ -79,6 +79,11 @@ struct RunOptions {
   /// knows what it moved would; the reused answer is still checked against the oracle. Off,
   /// every pair is asked in every frame: the cold figure.
   bool reuse_unchanged = false;
+  /// Put two-object queries other than distance through the shared broad phase too: a pair
+  /// whose world boxes are apart in a frame is not asked (its answer is "apart", which the
+  /// oracle check still holds it to) and counts in FrameRecord::skipped_pairs. Group queries
+  /// always go through it. Off, every two-object pair is asked in every frame.
+  bool skip_apart_pairs = false;
 };
 
 /// One object pair's answers in a frame, kept with RunOptions::keep_answers.
@@ -137,13 +142,17 @@ struct FrameRecord {
   std::optional<ContactScore> contact;
   std::uint64_t bv_tests = 0;
   std::uint64_t primitive_tests = 0;
-  /// Object pairs asked: 1 for a two-object query; for a group query, the candidates the shared
-  /// broad phase passed (every count above is summed over them).
+  /// Object pairs asked: 1 for a two-object query (0 where RunOptions::skip_apart_pairs culled
+  /// it); for a group query, the candidates the shared broad phase passed (every count above is
+  /// summed over them).
   std::size_t object_pairs = 1;
   /// With RunOptions::reuse_unchanged: of those, the pairs answered with their answer of the
   /// frame before, not asked (neither object moved, changed state or deformed). Their time is
   /// not in this frame's timed calls, and an unchanged deforming object is not updated.
   std::size_t reused_pairs = 0;
+  /// Object pairs the query asks about that the shared broad phase proved apart in this frame,
+  /// so were not asked (group queries; two-object ones with RunOptions::skip_apart_pairs).
+  std::size_t skipped_pairs = 0;
   /// With RunOptions::keep_answers: the answers of every object pair asked, in order.
   std::vector<PairAnswers> answers;
 
@@ -200,9 +209,16 @@ struct QueryMeasurement {
   double precision = 1.0;  ///< kAllPairs: matched / reported pairs over all frames (1 if none)
   bool counts_bv_tests = false;
   bool counts_primitive_tests = false;
-  /// kAllPairs: the frames' median times summed over their floors summed (frames with a floor);
-  /// 1 would be an answer that costs one exact triangle test per true pair and nothing else.
+  /// kAllPairs: the frames' median times summed over their floors summed (frames with a floor
+  /// whose every pair was asked); 1 would be an answer that costs one exact triangle test per
+  /// true pair and nothing else.
   std::optional<double> floor_ratio;
+  /// With RunOptions::reuse_unchanged: FrameRecord::reused_pairs summed over the frames, and the
+  /// frames answered without asking the backend anything (every candidate pair reused).
+  std::size_t reused_pairs = 0;
+  std::size_t unasked_frames = 0;
+  /// FrameRecord::skipped_pairs summed over the frames.
+  std::size_t skipped_pairs = 0;
   /// With deforming objects: the median over frames of FrameRecord::update_us.
   std::optional<double> update_median_us;
   /// With deforming objects, where the backend counts: structures it rebuilt over all frames.

@@ -21,7 +21,8 @@ namespace collido {
 /// oracle finds intersecting is never culled.
 class BroadPhase {
  public:
-  /// `query` must be a group query of `scene`; both must outlive this object.
+  /// `query` is a query of `scene` (a group query, or a two-object one: its one pair); both must
+  /// outlive this object.
   BroadPhase(const Scene& scene, const SceneQuery& query);
 
   /// Candidate pairs in `frame` (those the query asks: across its two sets, for a query of

@@ -11,11 +11,13 @@
 
 namespace collido::study {
 
-/// What each object is built for: the scene's own queries, or every query kind the backend
-/// answers (to show what building only the needed structures saves).
-enum class NeedsMode { kDeclared, kEvery };
+/// What each object is built for and what each frame asks: the scene's own queries; those, and
+/// only the pairs that changed since the frame before (RunOptions::reuse_unchanged); or every
+/// query kind the backend answers, every pair every frame (the cold figure that shows what the
+/// other two save).
+enum class NeedsMode { kDeclared, kChanged, kEvery };
 
-/// "declared" or "every".
+/// "declared", "changed" or "every".
 const char* needsModeName(NeedsMode mode);
 std::optional<NeedsMode> parseNeedsMode(const std::string& name);
 
@@ -48,7 +50,9 @@ struct Sweep {
   std::vector<double> resolutions{1.0};  ///< for scenes with no entry below
   /// Per scene name: its own resolutions (a sweep may size one scene family for scaling).
   std::map<std::string, std::vector<double>> scene_resolutions;
-  std::vector<NeedsMode> needs{NeedsMode::kDeclared};
+  std::vector<NeedsMode> needs{NeedsMode::kDeclared};  ///< for scenes with no entry below
+  /// Per scene name: its own needs modes (a sweep may compare them on a few scenes only).
+  std::map<std::string, std::vector<NeedsMode>> scene_needs;
   /// Caps on all-pairs and contacts answers (max_pairs / max_contacts); 0 keeps the scene's.
   std::vector<std::uint64_t> limits{0};
   std::optional<int> repetitions;
@@ -61,6 +65,8 @@ struct Sweep {
 
   /// The resolutions to run `scene` at.
   const std::vector<double>& resolutionsOf(const std::string& scene) const;
+  /// The needs modes to run `scene` with.
+  const std::vector<NeedsMode>& needsOf(const std::string& scene) const;
 };
 
 /// Reads a sweep; every error names `label`, the JSON path and the problem.
