@@ -49,7 +49,9 @@ void summariseMeasurement(QueryMeasurement& m) {
   for (const FrameRecord& f : m.frames) {
     m.reused_pairs += f.reused_pairs;
     m.skipped_pairs += f.skipped_pairs;
-    if (f.reused_pairs > 0 && f.reused_pairs == f.object_pairs) ++m.unasked_frames;
+    // Nothing asked, yet answered: every pair reused or culled by the broad phase.
+    if (f.reused_pairs == f.object_pairs && f.reused_pairs + f.skipped_pairs > 0)
+      ++m.unasked_frames;
     if (f.contact) {
       if (!m.contact) m.contact.emplace();
       m.contact->add(*f.contact);

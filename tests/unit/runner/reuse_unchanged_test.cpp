@@ -124,6 +124,7 @@ TEST(SkipApart, TwoObjectCollisionQueriesProvenApartAreNotAsked) {
     // A distance has an answer at any gap: never culled.
     const bool cullable = k.kind != QueryKind::kDistance;
     EXPECT_EQ(k.skipped_pairs, cullable ? 2u : 0u);
+    EXPECT_EQ(k.unasked_frames, cullable ? 2u : 0u);
     EXPECT_EQ(c.skipped_pairs, 0u);
     for (std::size_t f = 0; f < 3; ++f) {
       SCOPED_TRACE(f);

@@ -214,7 +214,8 @@ struct QueryMeasurement {
   /// true pair and nothing else.
   std::optional<double> floor_ratio;
   /// With RunOptions::reuse_unchanged: FrameRecord::reused_pairs summed over the frames, and the
-  /// frames answered without asking the backend anything (every candidate pair reused).
+  /// frames answered without asking the backend anything (every pair reused, or culled by the
+  /// shared broad phase).
   std::size_t reused_pairs = 0;
   std::size_t unasked_frames = 0;
   /// FrameRecord::skipped_pairs summed over the frames.
