@@ -124,6 +124,9 @@
     (Number(Number(x).toFixed(digits === undefined ? 1 : digits)) || 0)
       .toFixed(digits === undefined ? 1 : digits);
   const ok = data.rows.filter((r) => r.status === 'ok');
+  // Settings run with needs "changed" time only the pairs they asked (a reused frame times at 0):
+  // their medians are not comparable with the others', so they are shown in the needs section only.
+  const charted = ok.filter((r) => r.needs !== 'changed');
   const groupBy = (items, key) => {
     const map = new Map();
     for (const item of items) {
@@ -380,7 +383,7 @@
       'filters above. Points at 0% are exact on every frame of the scene.');
     const box = el('div', { class: 'charts' });
     s.appendChild(box);
-    const groups = groupBy(ok, (r) => r.scene + ' · ' + r.query);
+    const groups = groupBy(charted, (r) => r.scene + ' · ' + r.query);
     if (groups.size === 0) empty(s, 'No measured query.');
     for (const [name, rows] of groups) {
       const points = rows.map(tagRow);
@@ -454,7 +457,7 @@
       'error above) also counts closest points that do not hold together.');
     const box = el('div', { class: 'charts' });
     s.appendChild(box);
-    const rows = ok.filter((r) => r.kind === 'distance' && r.max_distance_error !== null &&
+    const rows = charted.filter((r) => r.kind === 'distance' && r.max_distance_error !== null &&
       r.max_distance_error !== undefined);
     const groups = groupBy(rows, (r) => r.scene + ' · ' + r.query);
     if (groups.size === 0) empty(s, 'No measured distance query.');
@@ -477,7 +480,7 @@
       'scale: linear below 1e-16, so an exact point is drawn at 0). The table gives every contact figure.');
     const box = el('div', { class: 'charts' });
     s.appendChild(box);
-    const rows = ok.filter((r) => r.kind === 'contacts' && r.contacts_per_frame !== null &&
+    const rows = charted.filter((r) => r.kind === 'contacts' && r.contacts_per_frame !== null &&
       r.contacts_per_frame !== undefined);
     const groups = groupBy(rows, (r) => r.scene + ' · ' + r.query);
     if (groups.size === 0) empty(s, 'No measured contacts query.');
@@ -743,8 +746,9 @@
     if (groups.size === 0) empty(s, 'No timed call.');
     for (const [name, measurements] of groups) {
       const tagged = measurements.map(tagByLookup);
-      const calls = () => tagged.flatMap((m) => m.us.map((us) => ({ label: m.label,
-        family: m.family, kinds: m.kinds, exact: m.exact, us: us })));
+      // A frame answered without a query (needs "changed") made no call: its 0 is left out.
+      const calls = () => tagged.flatMap((m) => m.us.filter((us) => us > 0).map((us) => ({
+        label: m.label, family: m.family, kinds: m.kinds, exact: m.exact, us: us })));
       filteredChart(box, 'time-distribution:' + name, {
         title: name, width: 360, height: { step: 18 }, data: { values: calls },
         // In a layer: Vega-Lite refuses parameters on a boxplot's own spec.
@@ -885,7 +889,7 @@
       '(independent of the backend). The tooltip adds the build peak and the resident memory ' +
       'the backend added at its peak, apart from the scene and the exact answers the worker held.');
     const rows = [];
-    for (const [, queries] of groupBy(ok, (r) => r.label + '|' + r.scene)) {
+    for (const [, queries] of groupBy(charted, (r) => r.label + '|' + r.scene)) {
       const r = queries[0];
       const bar = (measure, bytes) => tagged({ label: r.label, scene: r.scene, measure: measure,
         bytes: bytes, rss_mib: r.backend_rss_mib, heap_peak: r.heap_peak_bytes_per_triangle },
@@ -919,7 +923,7 @@
     const s = section('scaling', 'Scaling',
       'Median time per query and memory against the number of triangles (log-log), for scenes ' +
       'run at several resolutions. The table gives the fitted exponent k of time ~ n^k.');
-    const families = groupBy(ok, (r) => r.scene + ' · ' + r.query);
+    const families = groupBy(charted, (r) => r.scene + ' · ' + r.query);
     const curves = [];
     const exponents = [];
     for (const [name, rows] of families) {
