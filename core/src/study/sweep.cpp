@@ -163,6 +163,24 @@ void readComparison(const Checker& c, const Json& node, const std::string& where
   }
 }
 
+// A list for every scene, or {"scene name": [..], "*": [..]}: per scene, "*" for the others.
+template <typename T, typename Read>
+void readPerScene(const Json& node, const std::string& where, Read read, const Checker& c,
+                  std::vector<T>& every_scene, std::map<std::string, std::vector<T>>& per_scene) {
+  if (!node.is_object()) {
+    every_scene = read(c, node, where);
+    return;
+  }
+  for (const auto& item : node.items()) {
+    std::vector<T> list = read(c, item.value(), where + "/" + item.key());
+    if (item.key() == "*") {
+      every_scene = std::move(list);
+    } else {
+      per_scene[item.key()] = std::move(list);
+    }
+  }
+}
+
 Sweep readSweep(const Checker& c, const Json& root) {
   c.allowKeys(root, "",
               {"backends", "resolutions", "needs", "limits", "repetitions", "timeout_s", "protocol",
@@ -178,37 +196,11 @@ Sweep readSweep(const Checker& c, const Json& root) {
       sweep.backends.push_back(readBackend(c, list[i], at("/backends", i)));
   }
   if (root.contains("resolutions")) {
-    const Json& node = root.at("resolutions");
-    if (node.is_object()) {
-      // {"scene name": [..], "*": [..]}: per scene, "*" for the others.
-      for (const auto& item : node.items()) {
-        std::vector<double> list = readResolutions(c, item.value(), "/resolutions/" + item.key());
-        if (item.key() == "*") {
-          sweep.resolutions = std::move(list);
-        } else {
-          sweep.scene_resolutions[item.key()] = std::move(list);
-        }
-      }
-    } else {
-      sweep.resolutions = readResolutions(c, node, "/resolutions");
-    }
+    readPerScene(root.at("resolutions"), "/resolutions", readResolutions, c, sweep.resolutions,
+                 sweep.scene_resolutions);
   }
-  if (root.contains("needs")) {
-    const Json& node = root.at("needs");
-    if (node.is_object()) {
-      // {"scene name": [..], "*": [..]}: per scene, "*" for the others.
-      for (const auto& item : node.items()) {
-        std::vector<NeedsMode> list = readNeedsModes(c, item.value(), "/needs/" + item.key());
-        if (item.key() == "*") {
-          sweep.needs = std::move(list);
-        } else {
-          sweep.scene_needs[item.key()] = std::move(list);
-        }
-      }
-    } else {
-      sweep.needs = readNeedsModes(c, node, "/needs");
-    }
-  }
+  if (root.contains("needs"))
+    readPerScene(root.at("needs"), "/needs", readNeedsModes, c, sweep.needs, sweep.scene_needs);
   if (root.contains("limits")) {
     sweep.limits.clear();
     const Json& list = c.nonEmptyArray(root.at("limits"), "/limits");

@@ -2,12 +2,11 @@
 // answers as asking, the held frames untimed and unworked, a deforming object always asked.
 #include <gtest/gtest.h>
 
-#include <collido/host/plugin_library.h>
 #include <collido/runner/measurement_json.h>
 #include <collido/runner/runner.h>
 #include <collido/scene/scene.h>
 
-#include "support/test_paths.h"
+#include "support/runs/run_plugin.h"
 
 namespace collido {
 namespace {
@@ -32,15 +31,11 @@ constexpr const char* kScene = R"({"name": "held", "frames": 6, "objects": [
               {"name": "pulsing", "a": "a", "b": "c", "kind": "all_pairs"}]})";
 
 RunReport run(const Scene& scene, TimingProtocol protocol, bool reuse, bool skip_apart = false) {
-  Result<std::shared_ptr<PluginLibrary>> library =
-      PluginLibrary::open(test::pluginDirectory() + "/libcollido_plugin_obbtree.so");
-  EXPECT_TRUE(library.ok()) << library.status().toString();
-  RunOptions options;
-  options.repetitions = 3;
+  RunOptions options = test::repeated(3);
   options.protocol = protocol;
   options.reuse_unchanged = reuse;
   options.skip_apart_pairs = skip_apart;
-  return runScene(scene, BackendSpec{library.value(), "obbtree", {}}, options);
+  return test::runPlugin(scene, "obbtree", "obbtree", options);
 }
 
 TEST(ReuseUnchanged, HeldFramesTakeTheAnswerBeforeAndAgreeWithTheOracle) {

@@ -2,12 +2,11 @@
 // `repetitions` passes, with deforming objects updated to each frame first.
 #include <gtest/gtest.h>
 
-#include <collido/host/plugin_library.h>
 #include <collido/runner/measurement_json.h>
 #include <collido/runner/runner.h>
 #include <collido/scene/scene.h>
 
-#include "support/test_paths.h"
+#include "support/runs/run_plugin.h"
 
 namespace collido {
 namespace {
@@ -24,13 +23,9 @@ constexpr const char* kScene = R"({"name": "rings", "frames": 4, "objects": [
               {"name": "hit", "a": "a", "b": "b", "kind": "boolean"}]})";
 
 RunReport run(const Scene& scene, TimingProtocol protocol) {
-  Result<std::shared_ptr<PluginLibrary>> library =
-      PluginLibrary::open(test::pluginDirectory() + "/libcollido_plugin_obbtree.so");
-  EXPECT_TRUE(library.ok()) << library.status().toString();
-  RunOptions options;
-  options.repetitions = 3;
+  RunOptions options = test::repeated(3);
   options.protocol = protocol;
-  return runScene(scene, BackendSpec{library.value(), "obbtree", {}}, options);
+  return test::runPlugin(scene, "obbtree", "obbtree", options);
 }
 
 TEST(TimingProtocol, CycledTimesEveryFrameAndAnswersAlike) {

@@ -10,12 +10,11 @@
 
 #include <gtest/gtest.h>
 
-#include <collido/host/plugin_library.h>
 #include <collido/mesh/procedural.h>
 #include <collido/oracle/exact_oracle.h>
 #include <collido/runner/runner.h>
 
-#include "support/test_paths.h"
+#include "support/runs/run_plugin.h"
 
 namespace collido {
 namespace {
@@ -152,12 +151,7 @@ TEST(BroadPhase, CullsSeparatedObjectsAndReportsOverlapsOnce) {
 // matches the oracle on every frame, and each frame records how many object pairs it asked.
 TEST(GroupQuery, TheObbTreeMatchesTheOracleOnARandomPile) {
   Scene scene = randomPile(12, 3, 2.0, 11);
-  Result<std::shared_ptr<PluginLibrary>> library =
-      PluginLibrary::open(test::pluginDirectory() + "/libcollido_plugin_obbtree.so");
-  ASSERT_TRUE(library.ok()) << library.status().toString();
-  RunOptions options;
-  options.repetitions = 1;
-  const RunReport report = runScene(scene, BackendSpec{library.value(), "obbtree", {}}, options);
+  const RunReport report = test::runPlugin(scene, "obbtree", "obbtree", test::repeated(1));
   ASSERT_EQ(report.measurements.size(), 1u);
   const QueryMeasurement& m = report.measurements[0];
   ASSERT_TRUE(m.ok()) << m.status;

@@ -7,9 +7,9 @@
 
 #include <gtest/gtest.h>
 
-#include <collido/host/plugin_library.h>
 #include <collido/runner/runner.h>
 
+#include "support/runs/run_plugin.h"
 #include "support/test_paths.h"
 
 namespace collido {
@@ -71,13 +71,7 @@ TEST(DeformableScene, BundledScenesDeformEveryFrame) {
 
 RunReport runBackend(const Scene& scene, const std::string& plugin, const std::string& variant,
                      const std::map<std::string, std::string>& backend_options = {}) {
-  Result<std::shared_ptr<PluginLibrary>> library =
-      PluginLibrary::open(test::pluginDirectory() + "/libcollido_plugin_" + plugin + ".so");
-  EXPECT_TRUE(library.ok()) << library.status().message();
-  if (!library.ok()) return {};
-  RunOptions options;
-  options.repetitions = 1;
-  return runScene(scene, BackendSpec{library.value(), variant, backend_options}, options);
+  return test::runPlugin(scene, plugin, variant, test::repeated(1), backend_options);
 }
 
 RunReport runObbTree(const Scene& scene) {

@@ -13,10 +13,10 @@
 #include <gtest/gtest.h>
 #include <Eigen/Geometry>
 
-#include <collido/host/plugin_library.h>
 #include <collido/runner/runner.h>
 #include <collido/scene/broad_phase.h>
 
+#include "support/runs/run_plugin.h"
 #include "support/test_paths.h"
 
 namespace collido {
@@ -280,12 +280,7 @@ TEST(SceneHierarchy, ASubtreeQueryAnswersTheUnionOfItsPairs) {
   EXPECT_TRUE(subtrees.asksPair(3, 1));
   EXPECT_EQ(scene.queries[1].name, "module_a-module_b all_pairs");
 
-  Result<std::shared_ptr<PluginLibrary>> library =
-      PluginLibrary::open(test::pluginDirectory() + "/libcollido_plugin_obbtree.so");
-  ASSERT_TRUE(library.ok()) << library.status().toString();
-  RunOptions options;
-  options.repetitions = 1;
-  const RunReport report = runScene(scene, BackendSpec{library.value(), "obbtree", {}}, options);
+  const RunReport report = test::runPlugin(scene, "obbtree", "obbtree", test::repeated(1));
   ASSERT_EQ(report.measurements.size(), 5u);
   for (const QueryMeasurement& m : report.measurements)
     ASSERT_TRUE(m.ok()) << m.status;

@@ -12,13 +12,13 @@
 
 #include <gtest/gtest.h>
 
-#include <collido/host/plugin_library.h>
 #include <collido/pose/pose_error.h>
 #include <collido/runner/runner.h>
 #include <collido/scene/marker_tracks_file.h>
 #include <collido/scene/scene.h>
 #include <collido/scene/tracking_summary.h>
 
+#include "support/runs/run_plugin.h"
 #include "support/test_paths.h"
 
 namespace collido {
@@ -227,13 +227,7 @@ TEST(MarkerScene, OutlierRejectionKeepsThePoseClose) {
 TEST(MarkerScene, DockingTrackingErrorIsCountedAgainstTheTruePoses) {
   const Result<Scene> scene = loadScene(test::sourcePath("scenes/station_docking_tracked.json"));
   ASSERT_TRUE(scene.ok()) << scene.status().message();
-  Result<std::shared_ptr<PluginLibrary>> library =
-      PluginLibrary::open(test::pluginDirectory() + "/libcollido_plugin_obbtree.so");
-  ASSERT_TRUE(library.ok()) << library.status().message();
-  RunOptions options;
-  options.repetitions = 1;
-  const RunReport report =
-      runScene(scene.value(), BackendSpec{library.value(), "obbtree", {}}, options);
+  const RunReport report = test::runPlugin(scene.value(), "obbtree", "obbtree", test::repeated(1));
   ASSERT_EQ(report.measurements.size(), 3u);
   for (const QueryMeasurement& m : report.measurements) {
     SCOPED_TRACE(m.query);

@@ -8,10 +8,9 @@
 
 #include <gtest/gtest.h>
 
-#include <collido/host/plugin_library.h>
 #include <collido/runner/runner.h>
 
-#include "support/test_paths.h"
+#include "support/runs/run_plugin.h"
 
 namespace collido {
 namespace {
@@ -64,14 +63,9 @@ TEST(SceneNeeds, LinkedKindsSpreadThroughSharedObjects) {
 
 #ifdef COLLIDO_HAS_FCL
 RunReport runObbRss(const Scene& scene, bool every) {
-  Result<std::shared_ptr<PluginLibrary>> library =
-      PluginLibrary::open(test::pluginDirectory() + "/libcollido_plugin_fcl.so");
-  EXPECT_TRUE(library.ok()) << library.status().message();
-  if (!library.ok()) return {};
-  RunOptions options;
-  options.repetitions = 1;
+  RunOptions options = test::repeated(1);
   options.build_every_need = every;
-  return runScene(scene, BackendSpec{library.value(), "fcl:obbrss", {}}, options);
+  return test::runPlugin(scene, "fcl", "fcl:obbrss", options);
 }
 
 // FCL's OBBRSS keeps an OBB and an RSS per node; objects linked only to collision queries get

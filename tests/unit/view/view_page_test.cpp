@@ -15,11 +15,11 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include <collido/host/plugin_library.h>
 #include <collido/runner/runner.h>
 #include <collido/runner/view_answers.h>
 #include <collido/study/report_html.h>
 
+#include "support/runs/run_plugin.h"
 #include "support/test_paths.h"
 
 namespace collido {
@@ -45,13 +45,9 @@ Scene loadTestScene() {
 }
 
 RunReport runObbTree(const Scene& scene) {
-  Result<std::shared_ptr<PluginLibrary>> library =
-      PluginLibrary::open(test::pluginDirectory() + "/libcollido_plugin_obbtree.so");
-  EXPECT_TRUE(library.ok()) << library.status().toString();
-  RunOptions options;
-  options.repetitions = 1;
+  RunOptions options = test::repeated(1);
   options.keep_answers = true;
-  return runScene(scene, BackendSpec{library.value(), "obbtree", {}}, options);
+  return test::runPlugin(scene, "obbtree", "obbtree", options);
 }
 
 TEST(ViewAnswers, KeptPairsAreTheRunsCounts) {
