@@ -128,7 +128,13 @@ int runReport(ReportArguments args) {
   const std::string output = args.output.empty()
                                  ? (std::filesystem::path(args.directory) / "report.html").string()
                                  : args.output;
-  nlohmann::json data = study::reportData(results.value(), baseline, title);
+  Result<std::vector<study::NotApplicable>> not_applicable =
+      study::ResultStore(args.directory).readNotApplicable();
+  if (!not_applicable.ok()) {
+    std::cerr << "error: " << not_applicable.status().message() << "\n";
+    return 2;
+  }
+  nlohmann::json data = study::reportData(results.value(), baseline, title, not_applicable.value());
   data["pose_error"] = nlohmann::json::array();
   for (const std::string& path : args.pose_error) {
     Result<nlohmann::json> sweep =

@@ -160,17 +160,19 @@ void addStudyCommands(CLI::App& app, const PluginOptions& plugins, int& exit_cod
   info->group("");
   auto info_file = std::make_shared<std::string>();
   auto info_out = std::make_shared<std::string>();
+  auto info_settings = std::make_shared<std::vector<std::string>>();
   info->add_option("file", *info_file)->required();
   info->add_option("--out", *info_out)->required();
-  info->callback([info_file, info_out, &exit_code] {
+  info->add_option("--setting", *info_settings);  // backend texts with options, each created
+  info->callback([info_file, info_out, info_settings, &exit_code] {
     Result<std::shared_ptr<PluginLibrary>> plugin = PluginLibrary::open(*info_file);
     if (!plugin.ok()) {
       std::cerr << "error: " << plugin.status().message() << "\n";
       exit_code = 2;
       return;
     }
-    const Status written =
-        study::writeFileAtomically(*info_out, study::pluginInfoJson(*plugin.value()).dump());
+    const Status written = study::writeFileAtomically(
+        *info_out, study::pluginInfoJson(plugin.value(), *info_settings).dump());
     if (!written.ok()) std::cerr << "error: " << written.message() << "\n";
     exit_code = written.ok() ? 0 : 2;
   });

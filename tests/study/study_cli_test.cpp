@@ -582,6 +582,54 @@ TEST(StudyCli, ShardsMergeIntoTheWholeStudy) {
   EXPECT_NE(not_a_study.err.find("no study here"), std::string::npos) << not_a_study.err;
 }
 
+// A setting that answers none of the kinds a scene asks is not planned there, its options
+// probed as well, and the table lists it once; a setting that cannot be created is planned, and
+// its worker says why.
+TEST(StudyCli, SettingsThatAnswerNothingAskedAreNotPlanned) {
+  const std::string dir = test::makeTempDirectory("study_not_applicable");
+  const std::string out = dir + "/study";
+  const std::string scene = dir + "/clearance.json";
+  test::writeFile(scene, R"({
+    "name": "clearance",
+    "frames": 2,
+    "objects": [
+      {"name": "a", "shape": {"generator": "sphere", "radius": 1, "slices": 8, "stacks": 4}},
+      {"name": "b", "shape": {"generator": "sphere", "radius": 1, "slices": 8, "stacks": 4},
+       "pose": {"translation": [3, 0, 0]}}
+    ],
+    "queries": [{"name": "gap", "a": "a", "b": "b", "kind": "distance"}]})");
+  const CommandRun run =
+      collido(studyArgs(scene,
+                        "obbtree,misbehaving:exact,misbehaving:exact[build_mib=1],"
+                        "misbehaving:exact[build_mib=5000]",
+                        out),
+              dir);
+  ASSERT_EQ(run.exit_code, 0) << describe(run);
+  EXPECT_NE(run.err.find("study: 2 combinations, 2 to run"), std::string::npos) << run.err;
+  const std::map<std::string, CombinationResult> results = byBackend(readResults(out));
+  ASSERT_EQ(results.size(), 2u);
+  EXPECT_EQ(results.at("obbtree").outcome.status, "ok");
+  const CombinationResult& refused = results.at("misbehaving:exact[build_mib=5000]");
+  ASSERT_EQ(refused.measurements.size(), 1u);
+  EXPECT_NE(refused.measurements[0].status.text().find("build_mib = '5000'"), std::string::npos)
+      << refused.measurements[0].status.text();
+
+  const Result<std::vector<NotApplicable>> left_out = ResultStore(out).readNotApplicable();
+  ASSERT_TRUE(left_out.ok()) << left_out.status().message();
+  ASSERT_EQ(left_out.value().size(), 2u);
+  EXPECT_EQ(left_out.value()[0].backend, "misbehaving:exact");
+  EXPECT_EQ(left_out.value()[1].backend, "misbehaving:exact[build_mib=1]");
+  EXPECT_EQ(left_out.value()[1].reason(), "answers boolean, all_pairs; the scene asks distance");
+  const std::string table = readText(out + "/table.txt");
+  EXPECT_EQ(run.out, table);
+  const std::size_t section = table.find("Not applicable, so not planned");
+  ASSERT_NE(section, std::string::npos) << table;
+  EXPECT_NE(table.find("misbehaving:exact[build_mib=1]  boolean, all_pairs  clearance (distance)",
+                       section),
+            std::string::npos)
+      << table;
+}
+
 // A sweep file: option grid, needs, resolutions, limits and its own repetitions; an optional
 // backend no plugin offers is left out with a warning.
 TEST(StudyCli, SweepFileSetsTheGrid) {

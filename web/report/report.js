@@ -233,6 +233,8 @@
     label: list[0].label,
     reasons: [...new Set(list.map((f) => f.detail.replace(/^skipped: /, '')))],
     scenes: [...new Set(list.map((f) => f.scene))] }));
+  // Settings the plan left out on a scene: they answer none of the kinds it asks.
+  const notApplicable = data.not_applicable || [];
   {
     const summary = document.getElementById('summary');
     const link = (href, text, cls) => el('a', { href: href, text: text, class: cls });
@@ -248,6 +250,11 @@
     counts.appendChild(link('#by-design', `${byDesign.length} not run by design`, 'count'));
     counts.appendChild(document.createTextNode(` (${designGaps.length} backend settings ` +
       'that do not answer some query kind)'));
+    if (notApplicable.length) {
+      counts.appendChild(document.createTextNode(' · '));
+      counts.appendChild(link('#not-applicable', `${notApplicable.length} not applicable`, 'count'));
+      counts.appendChild(document.createTextNode(' (setting and scene pairs not planned)'));
+    }
     summary.after(counts);
   }
 
@@ -980,7 +987,8 @@
       'Three lists: what failed in the run (crashes, timeouts and failed workers, which the study ' +
       'went on without, and queries that failed or whose input was refused), queries with ' +
       'answers that differ from the exact oracle, and the queries some backend does not answer ' +
-      'by design, each listed once per backend setting.');
+      'by design, each listed once per backend setting; then the settings not planned on a ' +
+      'scene at all, since they answer none of the kinds it asks.');
     const part = (id, title) => {
       const holder = el('div', { id: id, class: 'part' }, [el('h3', { text: title })]);
       s.appendChild(holder);
@@ -1004,6 +1012,16 @@
       table(design, ['backend / setting', 'why', 'queries', 'scenes'], designGaps.map((g) => [g.label,
         g.reasons.join('; '), String(byDesign.filter((f) => f.label === g.label).length),
         g.scenes.join(', ')]), ['', '', 'num', '']);
+    }
+    const notPlanned = part('not-applicable', `Not applicable (${notApplicable.length} setting ` +
+      'and scene pairs not planned)');
+    if (notApplicable.length === 0) {
+      empty(notPlanned, 'None: no setting was left out of a scene as not applicable.');
+    } else {
+      const groups = [...groupBy(notApplicable, (n) => n.backend).values()];
+      table(notPlanned, ['backend / setting', 'why', 'scenes'], groups.map((list) => [list[0].backend,
+        [...new Set(list.map((n) => n.why))].join('; '), list.map((n) => n.scene).join(', ')]),
+        ['', '', '']);
     }
   }
 

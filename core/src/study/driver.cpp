@@ -336,19 +336,46 @@ std::string changedInputs(const std::vector<Combination>& before,
   return text;
 }
 
-// The plugins, each looked at by a child process (a scratch folder of its own holds their
-// answers), so that none is loaded into the driver.
+// A scratch folder for the probe children's answers, removed with it.
+class ProbeScratch {
+ public:
+  ProbeScratch() {
+    std::error_code ec;
+    path_ =
+        (std::filesystem::temp_directory_path(ec) / ("collido_plugins_" + std::to_string(getpid())))
+            .string();
+    std::filesystem::create_directories(path_, ec);
+  }
+  ProbeScratch(const ProbeScratch&) = delete;
+  ProbeScratch& operator=(const ProbeScratch&) = delete;
+  ~ProbeScratch() {
+    std::error_code ec;
+    std::filesystem::remove_all(path_, ec);
+  }
+  const std::string& path() const { return path_; }
+
+ private:
+  std::string path_;
+};
+
+// The plugins, each looked at by a child process, so that none is loaded into the driver.
 PluginProbe probeInChildren(const StudyRequest& request) {
   const PluginCandidates candidates =
       pluginCandidates(request.plugin_paths, request.default_plugins);
-  std::error_code ec;
-  const std::filesystem::path scratch =
-      std::filesystem::temp_directory_path(ec) / ("collido_plugins_" + std::to_string(getpid()));
-  std::filesystem::create_directories(scratch, ec);
-  PluginProbe probe =
-      probePlugins(request.executable, candidates, request.plugin_timeout_s, scratch.string());
-  std::filesystem::remove_all(scratch, ec);
-  return probe;
+  const ProbeScratch scratch;
+  return probePlugins(request.executable, candidates, request.plugin_timeout_s, scratch.path());
+}
+
+// What each mesh setting answers, so the plan leaves out those a scene cannot use.
+SettingAbilities abilitiesInChildren(const StudyRequest& request, const PluginProbe& found,
+                                     const std::vector<std::string>& settings, std::ostream& err) {
+  const ProbeScratch scratch;
+  std::vector<std::string> problems;
+  SettingAbilities abilities = probeSettings(request.executable, found, settings,
+                                             request.plugin_timeout_s, scratch.path(), problems);
+  for (const std::string& problem : problems)
+    err << "warning: " << problem << "\n";
+  return abilities;
 }
 
 int runStudyImpl(const StudyRequest& args, std::ostream& out, std::ostream& err) {
@@ -378,9 +405,12 @@ int runStudyImpl(const StudyRequest& args, std::ostream& out, std::ostream& err)
       err << "error: " << scene.status().message() << "\n";
       return 2;
     }
+    QueryKindSet asked;
+    for (const SceneQuery& query : scene.value().queries)
+      asked |= query.request.kind;
     scenes.push_back({std::filesystem::absolute(path).lexically_normal().string(),
                       scene.value().name, scene.value().hasGeneratedShapes(),
-                      scene.value().category});
+                      scene.value().category, asked});
     Result<std::string> digest = filesDigest(scene.value().input_files, "input file");
     if (!digest.ok()) {
       err << "error: " << digest.status().message() << "\n";
@@ -456,8 +486,11 @@ int runStudyImpl(const StudyRequest& args, std::ostream& out, std::ostream& err)
   const double timeout_s = args.timeout_s > 0 ? args.timeout_s : sweep.timeout_s.value_or(600.0);
   const std::string protocol =
       !args.protocol.empty() ? args.protocol : sweep.protocol.value_or("repeated");
-  std::vector<Combination> whole =
-      planStudy(scenes, settings, sweep, onlyScenes(sweep, scenes, err));
+  const std::map<std::string, std::set<std::string>> only_scenes = onlyScenes(sweep, scenes, err);
+  const SettingAbilities abilities = abilitiesInChildren(args, found, settings, err);
+  std::vector<Combination> whole = planStudy(scenes, settings, sweep, only_scenes, abilities);
+  const std::vector<NotApplicable> not_applicable =
+      notApplicable(scenes, settings, only_scenes, abilities);
   for (Combination& c : whole) {
     const std::string& digest = scene_digests.at(c.scene_path);
     const std::string identity = pluginIdentity(found, c.backend);
@@ -520,7 +553,7 @@ int runStudyImpl(const StudyRequest& args, std::ostream& out, std::ostream& err)
     err << "error: " << s.message() << "\n";
     return 2;
   }
-  if (Status s = store.writePlan(plan); !s.ok()) {
+  if (Status s = store.writePlan(plan, not_applicable); !s.ok()) {
     err << "error: " << s.message() << "\n";
     return 2;
   }
@@ -606,7 +639,7 @@ int runStudyImpl(const StudyRequest& args, std::ostream& out, std::ostream& err)
         << " combinations are stored; continue with the same command and --resume\n";
     return 130;
   }
-  out << studyTable(all.value());
+  out << studyTable(all.value(), not_applicable);
   const bool robustness =
       std::filesystem::exists(std::filesystem::path(store.directory()) / "robustness.txt");
   err << "results: " << store.directory() << "/{table.txt,records.jsonl,summary.json"

@@ -32,6 +32,9 @@ int mergeImpl(const std::string& out_dir, const std::vector<std::string>& inputs
   std::set<std::string> planned;
   std::map<std::string, std::pair<std::string, std::string>> label_source;  // label: id, folder
   std::map<std::string, CombinationResult> results;
+  // Every shard lists the whole study's settings not applicable; each pair is kept once.
+  std::vector<NotApplicable> not_applicable;
+  std::set<std::pair<std::string, std::string>> not_applicable_seen;
   for (const std::string& input : inputs) {
     const ResultStore shard(input);
     Result<std::vector<Combination>> shard_plan = shard.readPlan();
@@ -40,6 +43,15 @@ int mergeImpl(const std::string& out_dir, const std::vector<std::string>& inputs
       err << "error: " << (shard_plan.ok() ? shard_results.status() : shard_plan.status()).message()
           << "\n";
       return 2;
+    }
+    Result<std::vector<NotApplicable>> shard_not_applicable = shard.readNotApplicable();
+    if (!shard_not_applicable.ok()) {
+      err << "error: " << shard_not_applicable.status().message() << "\n";
+      return 2;
+    }
+    for (NotApplicable& n : shard_not_applicable.value()) {
+      if (not_applicable_seen.emplace(n.backend, n.scene).second)
+        not_applicable.push_back(std::move(n));
     }
     if (shard_plan.value().empty() && shard_results.value().empty()) {
       err << "error: " << input << ": no study here (no plan.json, no results/)\n";
@@ -100,7 +112,7 @@ int mergeImpl(const std::string& out_dir, const std::vector<std::string>& inputs
     }
     merged.push_back(result);
   }
-  if (Status s = store.writePlan(plan); !s.ok()) {
+  if (Status s = store.writePlan(plan, not_applicable); !s.ok()) {
     err << "error: " << s.message() << "\n";
     return 2;
   }
@@ -108,7 +120,7 @@ int mergeImpl(const std::string& out_dir, const std::vector<std::string>& inputs
     err << "error: " << s.message() << "\n";
     return 2;
   }
-  out << studyTable(merged);
+  out << studyTable(merged, not_applicable);
   const std::size_t missing = plan.size() - merged.size();
   err << "merged " << merged.size() << " of " << plan.size() << " planned combinations into "
       << out_dir << (missing != 0 ? " (" + std::to_string(missing) + " not run yet)" : "") << "\n";

@@ -127,7 +127,8 @@ std::string benchmarkJsonWith(const std::vector<CombinationResult>& results,
 }
 
 std::string studyTableWith(const std::vector<CombinationResult>& results,
-                           const std::vector<SceneQueryPicks>& picks) {
+                           const std::vector<SceneQueryPicks>& picks,
+                           const std::vector<NotApplicable>& not_applicable) {
   const std::vector<std::string> header = {
       "backend",    "setting",  "scene", "query",      "frames", "median us", "p90 us",
       "p99 us",     "max us",   "FN",    "FP",         "recall", "precision", "disagree",
@@ -172,6 +173,11 @@ std::string studyTableWith(const std::vector<CombinationResult>& results,
     out << "What to pick (per scene and query):\n" << text << "\nEvery setting:\n";
   }
   out << formatTextTable(header, rows, 4);
+  if (const std::string text = notApplicableText(not_applicable); !text.empty()) {
+    out << "\nNot applicable, so not planned (the setting answers none of the query kinds the "
+           "scene asks):\n"
+        << text;
+  }
 
   if (const std::string needs = needsTable(results); !needs.empty()) {
     out << "\nWhat the scene's needs save (every against declared and changed, per backend "
@@ -215,13 +221,16 @@ std::string benchmarkJson(const std::vector<CombinationResult>& results) {
   return benchmarkJsonWith(results, whatToPick(results));
 }
 
-std::string studyTable(const std::vector<CombinationResult>& results) {
-  return studyTableWith(results, whatToPick(results));
+std::string studyTable(const std::vector<CombinationResult>& results,
+                       const std::vector<NotApplicable>& not_applicable) {
+  return studyTableWith(results, whatToPick(results), not_applicable);
 }
 
 Status writeStudyOutputs(const std::string& directory,
                          const std::vector<CombinationResult>& results) {
   const std::filesystem::path folder(directory);
+  Result<std::vector<NotApplicable>> not_applicable = ResultStore(directory).readNotApplicable();
+  if (!not_applicable.ok()) return not_applicable.status();
   if (Status s =
           writeFileAtomically((folder / "records.jsonl").string(), recordsJsonLines(results));
       !s.ok()) {
@@ -243,7 +252,8 @@ Status writeStudyOutputs(const std::string& directory,
       return s;
     }
   }
-  return writeFileAtomically((folder / "table.txt").string(), studyTableWith(results, picks));
+  return writeFileAtomically((folder / "table.txt").string(),
+                             studyTableWith(results, picks, not_applicable.value()));
 }
 
 std::string robustnessReport(const std::vector<CombinationResult>& results) {

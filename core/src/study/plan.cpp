@@ -60,6 +60,13 @@ std::string makeId(const Combination& c) {
   return readable + "~" + hash;
 }
 
+// Whether `only_scenes` lets `backend` run on `scene` (a setting it does not name runs anywhere).
+bool onlyAllows(const std::map<std::string, std::set<std::string>>& only_scenes,
+                const std::string& backend, const std::string& scene) {
+  const auto only = only_scenes.find(backend);
+  return only == only_scenes.end() || only->second.count(scene) != 0;
+}
+
 }  // namespace
 
 const char* inputKindName(InputKind kind) {
@@ -115,16 +122,25 @@ std::string Combination::label() const {
   return scene_name + " · " + backend + (setting.empty() ? "" : " · " + setting) + kind_text;
 }
 
-std::vector<Combination> planStudy(
-    const std::vector<PlannedScene>& scenes, const std::vector<std::string>& backends,
-    const Sweep& sweep, const std::map<std::string, std::set<std::string>>& only_scenes) {
+bool applies(const PlannedScene& scene, const std::string& backend,
+             const SettingAbilities& abilities) {
+  const auto known = abilities.find(backend);
+  if (known == abilities.end() || scene.queries.empty()) return true;
+  const SettingAbility& ability = known->second;
+  return ability.builds_meshes && (ability.queries.bits() & scene.queries.bits()) != 0;
+}
+
+std::vector<Combination> planStudy(const std::vector<PlannedScene>& scenes,
+                                   const std::vector<std::string>& backends, const Sweep& sweep,
+                                   const std::map<std::string, std::set<std::string>>& only_scenes,
+                                   const SettingAbilities& abilities) {
   std::vector<Combination> plan;
   for (const PlannedScene& scene : scenes) {
     for (const double resolution : sweep.resolutionsOf(scene.name)) {
       if (resolution != 1.0 && !scene.has_generated_shapes) continue;
       for (const std::string& backend : backends) {
-        const auto only = only_scenes.find(backend);
-        if (only != only_scenes.end() && only->second.count(scene.name) == 0) continue;
+        if (!onlyAllows(only_scenes, backend, scene.name)) continue;
+        if (!applies(scene, backend, abilities)) continue;
         for (const NeedsMode needs : sweep.needsOf(scene.name)) {
           for (const std::uint64_t limit : sweep.limits) {
             Combination c;
@@ -143,6 +159,21 @@ std::vector<Combination> planStudy(
     }
   }
   return plan;
+}
+
+std::vector<NotApplicable> notApplicable(
+    const std::vector<PlannedScene>& scenes, const std::vector<std::string>& backends,
+    const std::map<std::string, std::set<std::string>>& only_scenes,
+    const SettingAbilities& abilities) {
+  std::vector<NotApplicable> list;
+  for (const PlannedScene& scene : scenes) {
+    for (const std::string& backend : backends) {
+      if (!onlyAllows(only_scenes, backend, scene.name) || applies(scene, backend, abilities))
+        continue;
+      list.push_back({backend, scene.name, scene.queries, abilities.at(backend)});
+    }
+  }
+  return list;
 }
 
 std::vector<Combination> planComparisons(const std::vector<PlannedScene>& files, InputKind kind,

@@ -7,11 +7,23 @@
 #include <set>
 #include <sstream>
 
+#include <collido/host/backend_instance.h>
 #include <collido/runner/runner.h>
 #include <collido/study/worker_process.h>
 
 namespace collido::study {
 namespace {
+
+// What an instance answers, as the probe child writes it.
+nlohmann::json abilityJson(const Capabilities& caps) {
+  return {{"query_kinds", caps.queries.bits()},
+          {"builds_meshes", caps.buildsShape(ShapeKind::kTriangleMesh)}};
+}
+
+SettingAbility abilityFromJson(const nlohmann::json& json) {
+  return {QueryKindSet(json.at("query_kinds").get<std::uint32_t>()),
+          json.at("builds_meshes").get<bool>()};
+}
 
 Result<ProbedPlugin> probedFromJson(const std::string& text, const std::string& file) {
   try {
@@ -22,9 +34,15 @@ Result<ProbedPlugin> probedFromJson(const std::string& text, const std::string& 
     plugin.version = json.at("version").get<std::string>();
     plugin.engine_name = json.at("engine_name").get<std::string>();
     plugin.engine_version = json.at("engine_version").get<std::string>();
-    for (const nlohmann::json& v : json.at("variants"))
+    for (const nlohmann::json& v : json.at("variants")) {
       plugin.variants.push_back(
           {v.at("name").get<std::string>(), v.at("summary").get<std::string>()});
+      if (v.contains("answers"))
+        plugin.abilities[plugin.variants.back().name] = abilityFromJson(v.at("answers"));
+    }
+    for (const nlohmann::json& setting : json.value("settings", nlohmann::json::array()))
+      plugin.abilities[setting.at("backend").get<std::string>()] =
+          abilityFromJson(setting.at("answers"));
     return plugin;
   } catch (const nlohmann::json::exception& e) {
     return Status(StatusCode::kInternal,
@@ -49,6 +67,48 @@ std::string lastLine(std::string text) {
   return text;
 }
 
+// Loads `file` in a child (`plugin-info FILE --out F [--setting S]...`) and reads its answer; a
+// child that hangs, crashes or refuses the plugin gives a problem naming the file.
+Result<ProbedPlugin> probeInChild(const std::string& executable, const std::string& file,
+                                  const std::vector<std::string>& settings, double timeout_s,
+                                  const std::string& scratch_stem) {
+  const std::string answer = scratch_stem + ".json";
+  WorkerLaunch launch;
+  launch.executable = executable;
+  launch.arguments = {"plugin-info", file, "--out", answer};
+  for (const std::string& setting : settings) {
+    launch.arguments.push_back("--setting");
+    launch.arguments.push_back(setting);
+  }
+  launch.log_path = scratch_stem + ".log";
+  launch.timeout_s = timeout_s;
+  const WorkerOutcome outcome = runWorkerProcess(launch);
+  const auto read = [&]() -> Result<ProbedPlugin> {
+    if (outcome.status == "timeout") {
+      return Status(StatusCode::kEngineFailure, "plugin " + file + ": still loading after " +
+                                                    std::to_string(static_cast<int>(timeout_s)) +
+                                                    " s (hangs while loading); skipped");
+    }
+    if (outcome.status == "crashed") {
+      return Status(StatusCode::kEngineFailure, "plugin " + file + ": crashed while loading (" +
+                                                    outcome.signal_name + "); skipped");
+    }
+    if (!outcome.ok()) {
+      const std::string reason = lastLine(outcome.log_tail);
+      return Status(StatusCode::kInvalidArgument,
+                    reason.empty() ? "plugin " + file + ": cannot be loaded (exit " +
+                                         std::to_string(outcome.exit_code) + ")"
+                                   : reason);
+    }
+    return probedFromJson(readAll(answer), file);
+  };
+  Result<ProbedPlugin> plugin = read();
+  std::error_code ec;
+  std::filesystem::remove(answer, ec);
+  std::filesystem::remove(launch.log_path, ec);
+  return plugin;
+}
+
 }  // namespace
 
 const ProbedPlugin* PluginProbe::offering(const std::string& variant) const {
@@ -66,17 +126,37 @@ std::vector<std::string> PluginProbe::variantNames() const {
   return names;
 }
 
-nlohmann::json pluginInfoJson(const PluginLibrary& plugin) {
-  const CollidoPluginTable& table = plugin.table();
+nlohmann::json pluginInfoJson(const std::shared_ptr<PluginLibrary>& plugin,
+                              const std::vector<std::string>& settings) {
+  // What an instance of `variant` with `options` answers; null when it cannot be created.
+  const auto answers = [&plugin](const std::string& variant,
+                                 const std::map<std::string, std::string>& options) {
+    Result<std::unique_ptr<BackendInstance>> instance =
+        BackendInstance::create(plugin, variant, options);
+    return instance.ok() ? abilityJson(instance.value()->capabilities()) : nlohmann::json();
+  };
+  const CollidoPluginTable& table = plugin->table();
   nlohmann::json variants = nlohmann::json::array();
-  for (const VariantInfo& v : plugin.variants())
-    variants.push_back({{"name", v.name}, {"summary", v.summary}});
+  for (const VariantInfo& v : plugin->variants()) {
+    nlohmann::json variant = {{"name", v.name}, {"summary", v.summary}};
+    if (nlohmann::json a = answers(v.name, {}); !a.is_null()) variant["answers"] = std::move(a);
+    variants.push_back(std::move(variant));
+  }
+  nlohmann::json probed = nlohmann::json::array();
+  for (const std::string& setting : settings) {
+    Result<std::pair<std::string, std::map<std::string, std::string>>> parsed =
+        parseBackendText(setting);
+    if (!parsed.ok() || !plugin->hasVariant(parsed.value().first)) continue;
+    if (nlohmann::json a = answers(parsed.value().first, parsed.value().second); !a.is_null())
+      probed.push_back({{"backend", setting}, {"answers", std::move(a)}});
+  }
   const auto text = [](const char* s) { return std::string(s != nullptr ? s : ""); };
-  return {{"name", plugin.name()},
+  return {{"name", plugin->name()},
           {"version", text(table.plugin_version)},
           {"engine_name", text(table.engine_name)},
           {"engine_version", text(table.engine_version)},
-          {"variants", std::move(variants)}};
+          {"variants", std::move(variants)},
+          {"settings", std::move(probed)}};
 }
 
 PluginProbe probePlugins(const std::string& executable, const PluginCandidates& candidates,
@@ -86,46 +166,62 @@ PluginProbe probePlugins(const std::string& executable, const PluginCandidates& 
   std::set<std::string> variants_seen;
   for (std::size_t i = 0; i < candidates.files.size(); ++i) {
     const std::string& file = candidates.files[i];
-    const std::string answer = scratch + "/plugin_" + std::to_string(i) + ".json";
-    WorkerLaunch launch;
-    launch.executable = executable;
-    launch.arguments = {"plugin-info", file, "--out", answer};
-    launch.log_path = scratch + "/plugin_" + std::to_string(i) + ".log";
-    launch.timeout_s = timeout_s;
-    const WorkerOutcome outcome = runWorkerProcess(launch);
-    std::error_code ec;
-    if (outcome.status == "timeout") {
-      probe.problems.push_back("plugin " + file + ": still loading after " +
-                               std::to_string(static_cast<int>(timeout_s)) +
-                               " s (hangs while loading); skipped");
-    } else if (outcome.status == "crashed") {
-      probe.problems.push_back("plugin " + file + ": crashed while loading (" +
-                               outcome.signal_name + "); skipped");
-    } else if (!outcome.ok()) {
-      const std::string reason = lastLine(outcome.log_tail);
-      probe.problems.push_back(reason.empty() ? "plugin " + file + ": cannot be loaded (exit " +
-                                                    std::to_string(outcome.exit_code) + ")"
-                                              : reason);
-    } else if (Result<ProbedPlugin> plugin = probedFromJson(readAll(answer), file); !plugin.ok()) {
+    Result<ProbedPlugin> plugin =
+        probeInChild(executable, file, {}, timeout_s, scratch + "/plugin_" + std::to_string(i));
+    if (!plugin.ok()) {
       probe.problems.push_back(plugin.status().message());
-    } else {
-      bool fresh = true;
-      for (const VariantInfo& v : plugin.value().variants) {
-        if (variants_seen.count(v.name) != 0) {
-          probe.problems.push_back(shadowedVariantProblem(file, v.name));
-          fresh = false;
-        }
-      }
-      if (fresh) {
-        for (const VariantInfo& v : plugin.value().variants)
-          variants_seen.insert(v.name);
-        probe.plugins.push_back(std::move(plugin).value());
+      continue;
+    }
+    bool fresh = true;
+    for (const VariantInfo& v : plugin.value().variants) {
+      if (variants_seen.count(v.name) != 0) {
+        probe.problems.push_back(shadowedVariantProblem(file, v.name));
+        fresh = false;
       }
     }
-    std::filesystem::remove(answer, ec);
-    std::filesystem::remove(launch.log_path, ec);
+    if (fresh) {
+      for (const VariantInfo& v : plugin.value().variants)
+        variants_seen.insert(v.name);
+      probe.plugins.push_back(std::move(plugin).value());
+    }
   }
   return probe;
+}
+
+SettingAbilities probeSettings(const std::string& executable, const PluginProbe& probe,
+                               const std::vector<std::string>& settings, double timeout_s,
+                               const std::string& scratch, std::vector<std::string>& problems) {
+  SettingAbilities abilities;
+  std::map<std::string, std::vector<std::string>> with_options;  // by plugin file
+  for (const std::string& setting : settings) {
+    Result<std::pair<std::string, std::map<std::string, std::string>>> parsed =
+        parseBackendText(setting);
+    if (!parsed.ok()) continue;
+    const ProbedPlugin* plugin = probe.offering(parsed.value().first);
+    if (plugin == nullptr) continue;
+    if (!parsed.value().second.empty()) {
+      with_options[plugin->path].push_back(setting);
+    } else if (const auto known = plugin->abilities.find(setting);
+               known != plugin->abilities.end()) {
+      abilities[setting] = known->second;
+    }
+  }
+  std::size_t child = 0;
+  for (const auto& [file, texts] : with_options) {
+    Result<ProbedPlugin> plugin = probeInChild(executable, file, texts, timeout_s,
+                                               scratch + "/setting_" + std::to_string(child++));
+    if (!plugin.ok()) {
+      problems.push_back(plugin.status().message() + " (while probing its settings " +
+                         "with options; they are planned on every scene)");
+      continue;
+    }
+    for (const std::string& text : texts) {
+      if (const auto known = plugin.value().abilities.find(text);
+          known != plugin.value().abilities.end())
+        abilities[text] = known->second;
+    }
+  }
+  return abilities;
 }
 
 Result<std::vector<std::string>> pluginFilesOf(const std::vector<std::string>& backends,

@@ -176,7 +176,11 @@ Json trackingOf(const std::vector<CombinationResult>& results) {
 }  // namespace
 
 Json reportData(const std::vector<CombinationResult>& results,
-                const std::vector<CombinationResult>& baseline, const std::string& title) {
+                const std::vector<CombinationResult>& baseline, const std::string& title,
+                const std::vector<NotApplicable>& not_applicable) {
+  Json not_planned = Json::array();
+  for (const NotApplicable& n : not_applicable)
+    not_planned.push_back({{"backend", n.backend}, {"scene", n.scene}, {"why", n.reason()}});
   const std::time_t now = std::time(nullptr);
   std::tm parts{};
   gmtime_r(&now, &parts);
@@ -190,6 +194,7 @@ Json reportData(const std::vector<CombinationResult>& results,
           {"deforming", deformingOf(results)},
           {"tracking", trackingOf(results)},
           {"failures", failuresOf(results)},
+          {"not_applicable", std::move(not_planned)},
           {"robustness", robustnessJson(robustnessMatrix(results))},
           {"what_to_pick", whatToPickJson(whatToPick(results), PickBudget{})}};
 }

@@ -215,12 +215,27 @@ Result<std::vector<CombinationResult>> ResultStore::readAll() const {
   return results;
 }
 
-Status ResultStore::writePlan(const std::vector<Combination>& plan) const {
+Status ResultStore::writePlan(const std::vector<Combination>& plan,
+                              const std::vector<NotApplicable>& not_applicable) const {
   Json list = Json::array();
   for (const Combination& c : plan)
     list.push_back(combinationToJson(c));
   return writeFileAtomically((fs::path(directory_) / "plan.json").string(),
-                             Json{{"collidoscope_plan", 1}, {"combinations", list}}.dump(1));
+                             Json{{"collidoscope_plan", 1},
+                                  {"combinations", list},
+                                  {"not_applicable", notApplicableToJson(not_applicable)}}
+                                 .dump(1));
+}
+
+Result<std::vector<NotApplicable>> ResultStore::readNotApplicable() const {
+  const std::string path = (fs::path(directory_) / "plan.json").string();
+  std::error_code ec;
+  if (!fs::exists(path, ec)) return std::vector<NotApplicable>{};
+  Result<Json> json = readJsonFile(path);
+  if (!json.ok()) return json.status();
+  const auto list = json.value().find("not_applicable");
+  if (list == json.value().end()) return std::vector<NotApplicable>{};
+  return notApplicableFromJson(*list, path);
 }
 
 Result<std::vector<Combination>> ResultStore::readPlan() const {

@@ -12,6 +12,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <collido/study/report_html.h>
+
 #include "study_test_data.h"
 #include "support/test_paths.h"
 
@@ -180,6 +182,54 @@ TEST(WriteStudyOutputs, WritesTheFourFiles) {
   EXPECT_EQ(text.str(), studyTable(results));
   const Status missing = writeStudyOutputs(dir + "/missing", results);
   EXPECT_FALSE(missing.ok());
+}
+
+// The settings the plan left out come from plan.json, once, after the table of every setting;
+// a plan written before they were left out (no such key) has none.
+TEST(WriteStudyOutputs, ListsWhatThePlanLeftOutOnce) {
+  const std::string dir = test::makeTempDirectory("outputs_not_applicable");
+  const ResultStore store(dir);
+  const std::vector<CombinationResult> results = mixedResults();
+  const std::vector<NotApplicable> left_out = {
+      {"ode", "tori", QueryKind::kDistance, {QueryKindSet(5), true}},
+      {"ode", "clearance", QueryKind::kDistance, {QueryKindSet(5), true}}};
+  ASSERT_TRUE(store.writePlan({results[0].combination}, left_out).ok());
+  Result<std::vector<NotApplicable>> stored = store.readNotApplicable();
+  ASSERT_TRUE(stored.ok()) << stored.status().message();
+  EXPECT_EQ(stored.value().size(), 2u);
+  ASSERT_TRUE(writeStudyOutputs(dir, results).ok());
+  std::ifstream file(dir + "/table.txt");
+  std::stringstream text;
+  text << file.rdbuf();
+  const std::string table = text.str();
+  EXPECT_EQ(table, studyTable(results, left_out));
+  const std::size_t section = table.find("\nNot applicable, so not planned");
+  ASSERT_NE(section, std::string::npos) << table;
+  EXPECT_LT(section, table.find("\nFailures:"));
+  EXPECT_NE(
+      table.find("ode      boolean, contacts  tori (distance), clearance (distance)", section),
+      std::string::npos)
+      << table;
+
+  test::writeFile(dir + "/plan.json", "{\"collidoscope_plan\": 1, \"combinations\": []}");
+  stored = store.readNotApplicable();
+  ASSERT_TRUE(stored.ok());
+  EXPECT_TRUE(stored.value().empty());
+  test::writeFile(dir + "/plan.json",
+                  "{\"combinations\": [], \"not_applicable\": [{\"backend\": 3}]}");
+  EXPECT_NE(store.readNotApplicable().status().message().find(dir + "/plan.json"),
+            std::string::npos);
+}
+
+TEST(ReportData, ListsWhatThePlanLeftOutWithWhy) {
+  const nlohmann::json data =
+      reportData(mixedResults(), {}, "t",
+                 {{"ode", "clearance", QueryKind::kDistance, {QueryKindSet(5), true}}});
+  ASSERT_EQ(data.at("not_applicable").size(), 1u);
+  EXPECT_EQ(data["not_applicable"][0]["backend"], "ode");
+  EXPECT_EQ(data["not_applicable"][0]["scene"], "clearance");
+  EXPECT_EQ(data["not_applicable"][0]["why"], "answers boolean, contacts; the scene asks distance");
+  EXPECT_TRUE(reportData(mixedResults(), {}, "t").at("not_applicable").empty());
 }
 
 }  // namespace

@@ -97,6 +97,78 @@ TEST(PlanStudy, ASettingKeptToSomeScenesRunsOnlyThere) {
                                               "env_rob obbtree"}));
 }
 
+// A setting that answers none of a scene's kinds is not planned there, and is listed once per
+// scene whatever the needs and limits; unknown abilities and unknown scene kinds plan as before.
+TEST(PlanStudy, LeavesOutWhatDoesNotApplyAndListsItOnce) {
+  const std::vector<PlannedScene> scenes = {
+      {"/s/clearance.json", "clearance", false, "", QueryKind::kDistance},
+      {"/s/contact.json", "contact", false, "",
+       QueryKindSet(QueryKind::kBoolean) | QueryKind::kDistance},
+      {"/s/old.json", "unknown_kinds", false, ""},
+  };
+  const SettingAbilities abilities = {
+      {"bullet", {QueryKindSet(7), true}},
+      {"nurbs:hull", {QueryKind::kDistance, false}},
+      {"obbtree", {QueryKindSet(15), true}},
+  };
+  const std::vector<std::string> backends = {"obbtree", "bullet", "nurbs:hull", "unprobed"};
+  const std::vector<Combination> plan = planStudy(scenes, backends, fullSweep(), {}, abilities);
+  std::set<std::string> planned;
+  for (const Combination& c : plan)
+    planned.insert(c.scene_name + " " + c.backend);
+  EXPECT_EQ(planned, (std::set<std::string>{"clearance obbtree", "clearance unprobed",
+                                            "contact obbtree", "contact bullet", "contact unprobed",
+                                            "unknown_kinds obbtree", "unknown_kinds bullet",
+                                            "unknown_kinds nurbs:hull", "unknown_kinds unprobed"}));
+  // 9 pairs x 2 needs x 2 limits; no scene has generated shapes.
+  EXPECT_EQ(plan.size(), 9u * 4u);
+
+  const std::vector<NotApplicable> left_out = notApplicable(scenes, backends, {}, abilities);
+  ASSERT_EQ(left_out.size(), 3u);
+  EXPECT_EQ(left_out[0].backend, "bullet");
+  EXPECT_EQ(left_out[0].scene, "clearance");
+  EXPECT_EQ(left_out[0].reason(), "answers boolean, all_pairs, contacts; the scene asks distance");
+  EXPECT_EQ(left_out[1].backend, "nurbs:hull");
+  EXPECT_EQ(left_out[1].reason(), "answers no triangle meshes; the scene asks distance");
+  EXPECT_EQ(left_out[2].scene, "contact");
+  EXPECT_EQ(left_out[2].backend, "nurbs:hull");
+
+  // A pair the sweep keeps off a scene is not "not applicable" there.
+  EXPECT_EQ(notApplicable(scenes, backends, {{"bullet", {"contact"}}}, abilities).size(), 2u);
+
+  const std::string text = notApplicableText(left_out);
+  EXPECT_NE(text.find("bullet      boolean, all_pairs, contacts  clearance (distance)"),
+            std::string::npos)
+      << text;
+  EXPECT_NE(text.find("clearance (distance), contact (boolean, distance)"), std::string::npos)
+      << text;
+  EXPECT_EQ(notApplicableText({}), "");
+}
+
+TEST(NotApplicableJson, RoundTripsAndNamesWhatIsWrong) {
+  const std::vector<NotApplicable> list = {
+      {"bullet", "clearance", QueryKind::kDistance, {QueryKindSet(7), true}},
+      {"nurbs:hull", "pile", QueryKind::kBoolean, {QueryKind::kDistance, false}}};
+  Result<std::vector<NotApplicable>> back =
+      notApplicableFromJson(notApplicableToJson(list), "plan.json");
+  ASSERT_TRUE(back.ok()) << back.status().message();
+  ASSERT_EQ(back.value().size(), 2u);
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    EXPECT_EQ(back.value()[i].backend, list[i].backend);
+    EXPECT_EQ(back.value()[i].scene, list[i].scene);
+    EXPECT_EQ(back.value()[i].asks, list[i].asks);
+    EXPECT_EQ(back.value()[i].ability.queries, list[i].ability.queries);
+    EXPECT_EQ(back.value()[i].ability.builds_meshes, list[i].ability.builds_meshes);
+  }
+  nlohmann::json bad = notApplicableToJson(list);
+  bad[1]["asks"] = {"sometimes"};
+  EXPECT_EQ(notApplicableFromJson(bad, "plan.json").status().message(),
+            "plan.json: /not_applicable/1/asks: unknown query kind 'sometimes'");
+  bad[1].erase("asks");
+  EXPECT_NE(notApplicableFromJson(bad, "plan.json").status().message().find("plan.json"),
+            std::string::npos);
+}
+
 TEST(PlanStudy, NoBackendsOrScenesPlanNothing) {
   EXPECT_TRUE(planStudy(kScenes, {}, fullSweep()).empty());
   EXPECT_TRUE(planStudy({}, {"obbtree"}, fullSweep()).empty());

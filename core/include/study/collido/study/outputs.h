@@ -23,15 +23,18 @@ std::string benchmarkJson(const std::vector<CombinationResult>& results);
 /// what building every need costs over the declared ones; then the OBB tree against the field
 /// (field_table.h); then the deforming scenes' update and query costs (deform_table.h); then,
 /// with stress scenes, the
-/// robustness matrix's rates; then every failure.
-std::string studyTable(const std::vector<CombinationResult>& results);
+/// robustness matrix's rates; then every failure. Settings `not_applicable` lists (plan.h) come
+/// once, after the table of every setting.
+std::string studyTable(const std::vector<CombinationResult>& results,
+                       const std::vector<NotApplicable>& not_applicable = {});
 
 /// robustness.txt: the robustness matrix of the stress scenes (study/robustness.h); empty when
 /// the study ran none.
 std::string robustnessReport(const std::vector<CombinationResult>& results);
 
 /// Writes records.jsonl, summary.json, times.json (expected_time.h) and table.txt into
-/// `directory`, and robustness.txt when the study ran stress scenes, each atomically.
+/// `directory`, and robustness.txt when the study ran stress scenes, each atomically; the
+/// settings not applicable come from the folder's plan.json.
 Status writeStudyOutputs(const std::string& directory,
                          const std::vector<CombinationResult>& results);
 

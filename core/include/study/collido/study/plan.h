@@ -11,7 +11,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include <collido/query.h>
 #include <collido/status.h>
+#include <collido/study/not_applicable.h>
 #include <collido/study/sweep.h>
 
 namespace collido::study {
@@ -74,14 +76,31 @@ struct PlannedScene {
   std::string name;
   bool has_generated_shapes = false;  ///< resolutions other than 1 apply only to these
   std::string category = {};          ///< Scene::category: a stress category, or empty
+  QueryKindSet queries = {};          ///< the kinds its queries ask; empty: not known
 };
+
+/// Whether `backend` can answer something of `scene`: it builds triangle meshes and answers
+/// one of the kinds the scene asks. Unknown abilities (a setting missing from `abilities`, a
+/// scene whose kinds are not known) apply.
+bool applies(const PlannedScene& scene, const std::string& backend,
+             const SettingAbilities& abilities);
 
 /// Every combination of scenes × resolutions × backend settings × needs × limits, in that
 /// nesting order. Resolutions other than 1 are planned only for scenes with generated shapes; a
-/// setting named in `only_scenes` runs only on the scenes listed for it (SweepBackend::scenes).
+/// setting named in `only_scenes` runs only on the scenes listed for it (SweepBackend::scenes);
+/// a setting that does not apply to a scene (applies()) is not planned on it.
 std::vector<Combination> planStudy(
     const std::vector<PlannedScene>& scenes, const std::vector<std::string>& backends,
-    const Sweep& sweep, const std::map<std::string, std::set<std::string>>& only_scenes = {});
+    const Sweep& sweep, const std::map<std::string, std::set<std::string>>& only_scenes = {},
+    const SettingAbilities& abilities = {});
+
+/// The (setting, scene) pairs planStudy left out because the setting does not apply, once each,
+/// scenes in the outer order as planStudy nests them; pairs `only_scenes` rules out are not
+/// listed.
+std::vector<NotApplicable> notApplicable(
+    const std::vector<PlannedScene>& scenes, const std::vector<std::string>& backends,
+    const std::map<std::string, std::set<std::string>>& only_scenes,
+    const SettingAbilities& abilities);
 
 /// A surface or FRep file's combinations: its seed method (kSeedMethod), then each backend
 /// setting, each with the grid sizes the backend's meshes are made at.

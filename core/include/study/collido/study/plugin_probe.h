@@ -1,5 +1,6 @@
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -8,6 +9,7 @@
 #include <collido/backend.h>
 #include <collido/host/plugin_library.h>
 #include <collido/status.h>
+#include <collido/study/not_applicable.h>
 
 namespace collido::study {
 
@@ -19,6 +21,9 @@ struct ProbedPlugin {
   std::string engine_name;
   std::string engine_version;
   std::vector<VariantInfo> variants;
+  /// What each variant's instance (default options) and each setting probed with options can
+  /// be asked, by backend text; a variant that could not be created is missing.
+  SettingAbilities abilities;
 };
 
 /// The plugins a study can use, none of them loaded into the driver.
@@ -32,8 +37,11 @@ struct PluginProbe {
   std::vector<std::string> variantNames() const;
 };
 
-/// The JSON a probe child writes about a plugin it loaded (collido plugin-info).
-nlohmann::json pluginInfoJson(const PluginLibrary& plugin);
+/// The JSON a probe child writes about a plugin it loaded (collido plugin-info): its identity,
+/// its variants, and what an instance of each variant, and of each of `settings` (backend texts
+/// with options), answers; an instance that cannot be created is left out.
+nlohmann::json pluginInfoJson(const std::shared_ptr<PluginLibrary>& plugin,
+                              const std::vector<std::string>& settings = {});
 
 /// Loads each candidate in a child process of `executable` (`plugin-info FILE --out F`, at most
 /// `timeout_s` seconds each), so that a plugin which crashes, aborts or hangs while loading is a
@@ -41,6 +49,14 @@ nlohmann::json pluginInfoJson(const PluginLibrary& plugin);
 /// the first, as discoverPlugins does. `scratch` is a folder for the children's answers and logs.
 PluginProbe probePlugins(const std::string& executable, const PluginCandidates& candidates,
                          double timeout_s, const std::string& scratch);
+
+/// What each of `settings` can be asked (plan.h, applies()): a setting without options as its
+/// variant was probed; those with options (which may add query kinds) are created in one child
+/// per plugin file (`plugin-info FILE --setting S...`). A setting whose child or instance failed
+/// is missing, and so planned everywhere; a failed child is a problem added to `problems`.
+SettingAbilities probeSettings(const std::string& executable, const PluginProbe& probe,
+                               const std::vector<std::string>& settings, double timeout_s,
+                               const std::string& scratch, std::vector<std::string>& problems);
 
 /// The plugin file each backend text ("variant" or "variant[k=v;...]") runs from, in order; an
 /// unknown variant is an error listing the known ones.

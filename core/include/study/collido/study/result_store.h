@@ -71,9 +71,14 @@ class ResultStore {
   /// Every stored result, in id order; unreadable files are errors naming the file.
   Result<std::vector<CombinationResult>> readAll() const;
 
-  Status writePlan(const std::vector<Combination>& plan) const;
+  /// plan.json: the combinations, and the settings not planned on some scene (plan.h).
+  Status writePlan(const std::vector<Combination>& plan,
+                   const std::vector<NotApplicable>& not_applicable = {}) const;
   /// The stored plan, or an empty one when none was written.
   Result<std::vector<Combination>> readPlan() const;
+  /// The stored plan's settings not planned on some scene; none without a plan, or in a plan
+  /// written before studies left them out.
+  Result<std::vector<NotApplicable>> readNotApplicable() const;
 
   std::string resultPath(const std::string& id) const;
   std::string logPath(const std::string& id) const;
