@@ -628,6 +628,17 @@ TEST(StudyCli, SettingsThatAnswerNothingAskedAreNotPlanned) {
                        section),
             std::string::npos)
       << table;
+
+  // A merge keeps the list (each shard holds the whole study's).
+  const CommandRun merged = collido({"merge", "--out", dir + "/m", out, out}, dir);
+  ASSERT_EQ(merged.exit_code, 0) << describe(merged);
+  const Result<std::vector<NotApplicable>> merged_left_out =
+      ResultStore(dir + "/m").readNotApplicable();
+  ASSERT_TRUE(merged_left_out.ok()) << merged_left_out.status().message();
+  EXPECT_EQ(merged_left_out.value().size(), 2u);
+  EXPECT_NE(merged.out.find(table.substr(section, table.find("\n\n", section) - section)),
+            std::string::npos)
+      << merged.out;
 }
 
 // A sweep file: option grid, needs, resolutions, limits and its own repetitions; an optional

@@ -215,38 +215,49 @@ Result<std::vector<CombinationResult>> ResultStore::readAll() const {
   return results;
 }
 
+std::string ResultStore::planPath() const {
+  return (fs::path(directory_) / "plan.json").string();
+}
+
 Status ResultStore::writePlan(const std::vector<Combination>& plan,
                               const std::vector<NotApplicable>& not_applicable) const {
   Json list = Json::array();
   for (const Combination& c : plan)
     list.push_back(combinationToJson(c));
-  return writeFileAtomically((fs::path(directory_) / "plan.json").string(),
+  return writeFileAtomically(planPath(),
                              Json{{"collidoscope_plan", 1},
                                   {"combinations", list},
                                   {"not_applicable", notApplicableToJson(not_applicable)}}
                                  .dump(1));
 }
 
-Result<std::vector<NotApplicable>> ResultStore::readNotApplicable() const {
-  const std::string path = (fs::path(directory_) / "plan.json").string();
+Result<std::optional<Json>> ResultStore::readPlanJson() const {
+  const std::string path = planPath();
   std::error_code ec;
-  if (!fs::exists(path, ec)) return std::vector<NotApplicable>{};
+  if (!fs::exists(path, ec)) return std::optional<Json>();
   Result<Json> json = readJsonFile(path);
   if (!json.ok()) return json.status();
-  const auto list = json.value().find("not_applicable");
-  if (list == json.value().end()) return std::vector<NotApplicable>{};
-  return notApplicableFromJson(*list, path);
+  return std::optional<Json>(std::move(json).value());
+}
+
+Result<std::vector<NotApplicable>> ResultStore::readNotApplicable() const {
+  Result<std::optional<Json>> json = readPlanJson();
+  if (!json.ok()) return json.status();
+  const std::optional<Json>& plan = json.value();
+  // Plans written before studies left settings out have no such key.
+  if (!plan || !plan->is_object() || !plan->contains("not_applicable"))
+    return std::vector<NotApplicable>{};
+  return notApplicableFromJson(plan->at("not_applicable"), planPath());
 }
 
 Result<std::vector<Combination>> ResultStore::readPlan() const {
-  const std::string path = (fs::path(directory_) / "plan.json").string();
-  std::error_code ec;
-  if (!fs::exists(path, ec)) return std::vector<Combination>{};
-  Result<Json> json = readJsonFile(path);
+  const std::string path = planPath();
+  Result<std::optional<Json>> json = readPlanJson();
   if (!json.ok()) return json.status();
   std::vector<Combination> plan;
+  if (!json.value()) return plan;
   try {
-    for (const Json& c : json.value().at("combinations")) {
+    for (const Json& c : json.value()->at("combinations")) {
       Result<Combination> combination = combinationFromJson(c);
       if (!combination.ok()) {
         return Status(StatusCode::kInvalidArgument, path + ": " + combination.status().message());

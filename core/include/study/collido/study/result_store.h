@@ -85,6 +85,10 @@ class ResultStore {
   std::string scratchPath(const std::string& id) const;  ///< where a worker writes its answer
 
  private:
+  std::string planPath() const;
+  /// plan.json's JSON, or nothing when there is none.
+  Result<std::optional<nlohmann::json>> readPlanJson() const;
+
   std::string directory_;
 };
 
