@@ -163,7 +163,7 @@ void addStudyCommands(CLI::App& app, const PluginOptions& plugins, int& exit_cod
   auto info_settings = std::make_shared<std::vector<std::string>>();
   info->add_option("file", *info_file)->required();
   info->add_option("--out", *info_out)->required();
-  info->add_option("--setting", *info_settings);  // backend texts with options, each created
+  info->add_option("--setting", *info_settings);  // backend texts, each created
   info->callback([info_file, info_out, info_settings, &exit_code] {
     Result<std::shared_ptr<PluginLibrary>> plugin = PluginLibrary::open(*info_file);
     if (!plugin.ok()) {

@@ -244,19 +244,28 @@ TEST(StudyCli, CrashAbortAndHangCostOneCombinationEach) {
 }
 
 // The same failures in build(), before any query runs: each still costs its combination only,
-// is recorded with its signal or the timeout, and the study goes on to the end.
+// is recorded with its signal or the timeout, and the study goes on to the end. A crash when an
+// instance is created also kills the child that learns what the plugin's settings answer: they
+// are then all planned, with a warning, and the crash costs its own combination only.
 TEST(StudyCli, CrashAbortAndHangInBuildCostOneCombinationEach) {
   const std::string dir = test::makeTempDirectory("study_build_failures");
   const std::string out = dir + "/study";
   std::vector<std::string> args = studyArgs(writeSmallScene(dir),
                                             "misbehaving:crash_in_build,misbehaving:abort_in_build,"
-                                            "misbehaving:hang_in_build,obbtree",
+                                            "misbehaving:hang_in_build,obbtree,"
+                                            "misbehaving:crash_in_create",
                                             out);
   args.insert(args.end(), {"--timeout", "2"});
   const CommandRun run = collido(args, dir);
   ASSERT_EQ(run.exit_code, 0) << describe(run);
+  EXPECT_NE(run.err.find("libcollido_plugin_misbehaving.so: crashed while creating its settings "
+                         "(SIGSEGV); its settings are planned on every scene"),
+            std::string::npos)
+      << run.err;
   const std::vector<CombinationResult> results = readResults(out);
-  ASSERT_EQ(results.size(), 4u);
+  ASSERT_EQ(results.size(), 5u);
+  EXPECT_EQ(results[4].combination.backend, "misbehaving:crash_in_create");
+  EXPECT_EQ(results[4].outcome.status, "crashed");
   EXPECT_EQ(results[0].combination.backend, "misbehaving:crash_in_build");
   EXPECT_EQ(results[0].outcome.status, "crashed");
   EXPECT_EQ(results[0].outcome.signal_name, "SIGSEGV");

@@ -34,12 +34,9 @@ Result<ProbedPlugin> probedFromJson(const std::string& text, const std::string& 
     plugin.version = json.at("version").get<std::string>();
     plugin.engine_name = json.at("engine_name").get<std::string>();
     plugin.engine_version = json.at("engine_version").get<std::string>();
-    for (const nlohmann::json& v : json.at("variants")) {
+    for (const nlohmann::json& v : json.at("variants"))
       plugin.variants.push_back(
           {v.at("name").get<std::string>(), v.at("summary").get<std::string>()});
-      if (v.contains("answers"))
-        plugin.abilities[plugin.variants.back().name] = abilityFromJson(v.at("answers"));
-    }
     for (const nlohmann::json& setting : json.value("settings", nlohmann::json::array()))
       plugin.abilities[setting.at("backend").get<std::string>()] =
           abilityFromJson(setting.at("answers"));
@@ -67,11 +64,22 @@ std::string lastLine(std::string text) {
   return text;
 }
 
+// What a probe child does, for its problems: "loading" a plugin, or "creating its settings";
+// and what follows when it fails ("skipped").
+struct ChildTask {
+  const char* doing;
+  const char* then;
+};
+constexpr ChildTask kLoading{"loading", "skipped"};
+constexpr ChildTask kCreating{"creating its settings",
+                              "its settings are planned on every scene, since what they answer "
+                              "is not known"};
+
 // Loads `file` in a child (`plugin-info FILE --out F [--setting S]...`) and reads its answer; a
 // child that hangs, crashes or refuses the plugin gives a problem naming the file.
 Result<ProbedPlugin> probeInChild(const std::string& executable, const std::string& file,
                                   const std::vector<std::string>& settings, double timeout_s,
-                                  const std::string& scratch_stem) {
+                                  const std::string& scratch_stem, const ChildTask& task) {
   const std::string answer = scratch_stem + ".json";
   WorkerLaunch launch;
   launch.executable = executable;
@@ -83,15 +91,17 @@ Result<ProbedPlugin> probeInChild(const std::string& executable, const std::stri
   launch.log_path = scratch_stem + ".log";
   launch.timeout_s = timeout_s;
   const WorkerOutcome outcome = runWorkerProcess(launch);
+  const std::string doing = task.doing;
+  const std::string then = task.then;
   const auto read = [&]() -> Result<ProbedPlugin> {
     if (outcome.status == "timeout") {
-      return Status(StatusCode::kEngineFailure, "plugin " + file + ": still loading after " +
+      return Status(StatusCode::kEngineFailure, "plugin " + file + ": still " + doing + " after " +
                                                     std::to_string(static_cast<int>(timeout_s)) +
-                                                    " s (hangs while loading); skipped");
+                                                    " s (hangs while " + doing + "); " + then);
     }
     if (outcome.status == "crashed") {
-      return Status(StatusCode::kEngineFailure, "plugin " + file + ": crashed while loading (" +
-                                                    outcome.signal_name + "); skipped");
+      return Status(StatusCode::kEngineFailure, "plugin " + file + ": crashed while " + doing +
+                                                    " (" + outcome.signal_name + "); " + then);
     }
     if (!outcome.ok()) {
       const std::string reason = lastLine(outcome.log_tail);
@@ -137,11 +147,8 @@ nlohmann::json pluginInfoJson(const std::shared_ptr<PluginLibrary>& plugin,
   };
   const CollidoPluginTable& table = plugin->table();
   nlohmann::json variants = nlohmann::json::array();
-  for (const VariantInfo& v : plugin->variants()) {
-    nlohmann::json variant = {{"name", v.name}, {"summary", v.summary}};
-    if (nlohmann::json a = answers(v.name, {}); !a.is_null()) variant["answers"] = std::move(a);
-    variants.push_back(std::move(variant));
-  }
+  for (const VariantInfo& v : plugin->variants())
+    variants.push_back({{"name", v.name}, {"summary", v.summary}});
   nlohmann::json probed = nlohmann::json::array();
   for (const std::string& setting : settings) {
     Result<std::pair<std::string, std::map<std::string, std::string>>> parsed =
@@ -166,8 +173,8 @@ PluginProbe probePlugins(const std::string& executable, const PluginCandidates& 
   std::set<std::string> variants_seen;
   for (std::size_t i = 0; i < candidates.files.size(); ++i) {
     const std::string& file = candidates.files[i];
-    Result<ProbedPlugin> plugin =
-        probeInChild(executable, file, {}, timeout_s, scratch + "/plugin_" + std::to_string(i));
+    Result<ProbedPlugin> plugin = probeInChild(executable, file, {}, timeout_s,
+                                               scratch + "/plugin_" + std::to_string(i), kLoading);
     if (!plugin.ok()) {
       probe.problems.push_back(plugin.status().message());
       continue;
@@ -192,27 +199,21 @@ SettingAbilities probeSettings(const std::string& executable, const PluginProbe&
                                const std::vector<std::string>& settings, double timeout_s,
                                const std::string& scratch, std::vector<std::string>& problems) {
   SettingAbilities abilities;
-  std::map<std::string, std::vector<std::string>> with_options;  // by plugin file
+  std::map<std::string, std::vector<std::string>> by_file;
   for (const std::string& setting : settings) {
     Result<std::pair<std::string, std::map<std::string, std::string>>> parsed =
         parseBackendText(setting);
     if (!parsed.ok()) continue;
-    const ProbedPlugin* plugin = probe.offering(parsed.value().first);
-    if (plugin == nullptr) continue;
-    if (!parsed.value().second.empty()) {
-      with_options[plugin->path].push_back(setting);
-    } else if (const auto known = plugin->abilities.find(setting);
-               known != plugin->abilities.end()) {
-      abilities[setting] = known->second;
-    }
+    if (const ProbedPlugin* plugin = probe.offering(parsed.value().first); plugin != nullptr)
+      by_file[plugin->path].push_back(setting);
   }
   std::size_t child = 0;
-  for (const auto& [file, texts] : with_options) {
-    Result<ProbedPlugin> plugin = probeInChild(executable, file, texts, timeout_s,
-                                               scratch + "/setting_" + std::to_string(child++));
+  for (const auto& [file, texts] : by_file) {
+    Result<ProbedPlugin> plugin =
+        probeInChild(executable, file, texts, timeout_s,
+                     scratch + "/setting_" + std::to_string(child++), kCreating);
     if (!plugin.ok()) {
-      problems.push_back(plugin.status().message() + " (while probing its settings " +
-                         "with options; they are planned on every scene)");
+      problems.push_back(plugin.status().message());
       continue;
     }
     for (const std::string& text : texts) {

@@ -10,6 +10,7 @@
 //   misbehaving:wrong  always answers "disjoint"
 //   misbehaving:crash_in_build, misbehaving:abort_in_build, misbehaving:hang_in_build
 //                      the same failures in build(), before any query
+//   misbehaving:crash_in_create  dies of SIGSEGV when an instance is created
 // Built as libcollido_plugin_misbehaving.so into the tests' own plugin folder, so only tests
 // that pass that folder with --plugin see it.
 #include <array>
@@ -201,6 +202,7 @@ collido::Result<std::unique_ptr<collido::Backend>> create(const std::string& var
   if (variant == "misbehaving:crash_in_build") mode = Mode::kCrashInBuild;
   if (variant == "misbehaving:abort_in_build") mode = Mode::kAbortInBuild;
   if (variant == "misbehaving:hang_in_build") mode = Mode::kHangInBuild;
+  if (variant == "misbehaving:crash_in_create") crash();
   const collido::Result<std::int64_t> mib = options.getInt("build_mib", 0, 0, 1024);
   if (!mib.ok()) return mib.status();
   return std::unique_ptr<collido::Backend>(std::make_unique<MisbehavingBackend>(
@@ -222,7 +224,8 @@ const collido::PluginInfo& describe() {
        {"misbehaving:wrong", "always answers disjoint"},
        {"misbehaving:crash_in_build", "SIGSEGV in build"},
        {"misbehaving:abort_in_build", "std::abort in build"},
-       {"misbehaving:hang_in_build", "never returns from build"}},
+       {"misbehaving:hang_in_build", "never returns from build"},
+       {"misbehaving:crash_in_create", "SIGSEGV when created"}},
       &create};
   return info;
 }

@@ -21,8 +21,8 @@ struct ProbedPlugin {
   std::string engine_name;
   std::string engine_version;
   std::vector<VariantInfo> variants;
-  /// What each variant's instance (default options) and each setting probed with options can
-  /// be asked, by backend text; a variant that could not be created is missing.
+  /// What each setting the probe was asked to create answers, by backend text; one that could
+  /// not be created is missing.
   SettingAbilities abilities;
 };
 
@@ -38,8 +38,8 @@ struct PluginProbe {
 };
 
 /// The JSON a probe child writes about a plugin it loaded (collido plugin-info): its identity,
-/// its variants, and what an instance of each variant, and of each of `settings` (backend texts
-/// with options), answers; an instance that cannot be created is left out.
+/// its variants, and what an instance of each of `settings` (backend texts of its variants,
+/// options included) answers; a setting that cannot be created is left out.
 nlohmann::json pluginInfoJson(const std::shared_ptr<PluginLibrary>& plugin,
                               const std::vector<std::string>& settings = {});
 
@@ -50,10 +50,12 @@ nlohmann::json pluginInfoJson(const std::shared_ptr<PluginLibrary>& plugin,
 PluginProbe probePlugins(const std::string& executable, const PluginCandidates& candidates,
                          double timeout_s, const std::string& scratch);
 
-/// What each of `settings` can be asked (plan.h, applies()): a setting without options as its
-/// variant was probed; those with options (which may add query kinds) are created in one child
-/// per plugin file (`plugin-info FILE --setting S...`). A setting whose child or instance failed
-/// is missing, and so planned everywhere; a failed child is a problem added to `problems`.
+/// What each of `settings` answers (plan.h, applies()), options included (they may add query
+/// kinds), from instances created in one child per plugin file (`plugin-info FILE --setting
+/// S...`), apart from the loading probe, so that an engine that crashes or hangs when created
+/// costs only this knowledge: a setting whose child or instance failed is missing, and so
+/// planned everywhere, its worker then saying what went wrong; a failed child is a problem added
+/// to `problems`.
 SettingAbilities probeSettings(const std::string& executable, const PluginProbe& probe,
                                const std::vector<std::string>& settings, double timeout_s,
                                const std::string& scratch, std::vector<std::string>& problems);
