@@ -367,11 +367,13 @@ PluginProbe probeInChildren(const StudyRequest& request) {
 }
 
 // What each mesh setting answers, so the plan leaves out those a scene cannot use.
-SettingAbilities abilitiesInChildren(const StudyRequest& request, const PluginProbe& found,
-                                     const std::vector<std::string>& settings, std::ostream& err) {
+SettingAbilities abilitiesInChildren(const StudyRequest& request,
+                                     const std::vector<std::string>& settings,
+                                     const std::map<std::string, std::string>& plugin_file_of,
+                                     std::ostream& err) {
   const ProbeScratch scratch;
   std::vector<std::string> problems;
-  SettingAbilities abilities = probeSettings(request.executable, found, settings,
+  SettingAbilities abilities = probeSettings(request.executable, settings, plugin_file_of,
                                              request.plugin_timeout_s, scratch.path(), problems);
   for (const std::string& problem : problems)
     err << "warning: " << problem << "\n";
@@ -487,7 +489,7 @@ int runStudyImpl(const StudyRequest& args, std::ostream& out, std::ostream& err)
   const std::string protocol =
       !args.protocol.empty() ? args.protocol : sweep.protocol.value_or("repeated");
   const std::map<std::string, std::set<std::string>> only_scenes = onlyScenes(sweep, scenes, err);
-  const SettingAbilities abilities = abilitiesInChildren(args, found, settings, err);
+  const SettingAbilities abilities = abilitiesInChildren(args, settings, plugin_file_of, err);
   std::vector<Combination> whole = planStudy(scenes, settings, sweep, only_scenes, abilities);
   const std::vector<NotApplicable> not_applicable =
       notApplicable(scenes, settings, only_scenes, abilities);

@@ -195,17 +195,16 @@ PluginProbe probePlugins(const std::string& executable, const PluginCandidates& 
   return probe;
 }
 
-SettingAbilities probeSettings(const std::string& executable, const PluginProbe& probe,
-                               const std::vector<std::string>& settings, double timeout_s,
-                               const std::string& scratch, std::vector<std::string>& problems) {
+SettingAbilities probeSettings(const std::string& executable,
+                               const std::vector<std::string>& settings,
+                               const std::map<std::string, std::string>& plugin_file_of,
+                               double timeout_s, const std::string& scratch,
+                               std::vector<std::string>& problems) {
   SettingAbilities abilities;
   std::map<std::string, std::vector<std::string>> by_file;
   for (const std::string& setting : settings) {
-    Result<std::pair<std::string, std::map<std::string, std::string>>> parsed =
-        parseBackendText(setting);
-    if (!parsed.ok()) continue;
-    if (const ProbedPlugin* plugin = probe.offering(parsed.value().first); plugin != nullptr)
-      by_file[plugin->path].push_back(setting);
+    if (const auto file = plugin_file_of.find(setting); file != plugin_file_of.end())
+      by_file[file->second].push_back(setting);
   }
   std::size_t child = 0;
   for (const auto& [file, texts] : by_file) {

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -52,13 +53,15 @@ PluginProbe probePlugins(const std::string& executable, const PluginCandidates& 
 
 /// What each of `settings` answers (plan.h, applies()), options included (they may add query
 /// kinds), from instances created in one child per plugin file (`plugin-info FILE --setting
-/// S...`), apart from the loading probe, so that an engine that crashes or hangs when created
-/// costs only this knowledge: a setting whose child or instance failed is missing, and so
-/// planned everywhere, its worker then saying what went wrong; a failed child is a problem added
-/// to `problems`.
-SettingAbilities probeSettings(const std::string& executable, const PluginProbe& probe,
-                               const std::vector<std::string>& settings, double timeout_s,
-                               const std::string& scratch, std::vector<std::string>& problems);
+/// S...`; the file each runs from is `plugin_file_of`, as pluginFilesOf gave it), apart from the
+/// loading probe, so that an engine that crashes or hangs when created costs only this knowledge: a
+/// setting whose child or instance failed is missing, and so planned everywhere, its worker then
+/// saying what went wrong; a failed child is a problem added to `problems`.
+SettingAbilities probeSettings(const std::string& executable,
+                               const std::vector<std::string>& settings,
+                               const std::map<std::string, std::string>& plugin_file_of,
+                               double timeout_s, const std::string& scratch,
+                               std::vector<std::string>& problems);
 
 /// The plugin file each backend text ("variant" or "variant[k=v;...]") runs from, in order; an
 /// unknown variant is an error listing the known ones.
