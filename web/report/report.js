@@ -119,13 +119,46 @@
     return t;
   }
   function empty(parent, text) { parent.appendChild(el('p', { class: 'empty', text: text })); }
+  // printf's "%.Nf", which table.txt prints with: toFixed rounds a value exactly halfway up
+  // (12.25 to "12.3"), printf to even ("12.2"). toFixed(100) gives every decimal of the double.
+  const fixed = (x, digits) => {
+    if (!Number.isFinite(x) || Math.abs(x) >= 1e21) return String(x);
+    const exact = Math.abs(x).toFixed(100);
+    const cut = exact.indexOf('.') + 1 + digits;
+    if (!/^50*$/.test(exact.slice(cut))) return x.toFixed(digits);
+    const kept = exact.slice(0, digits === 0 ? cut - 1 : cut);
+    if (Number(kept[kept.length - 1]) % 2 !== 0) return x.toFixed(digits);
+    return (x < 0 ? '-' : '') + kept;
+  };
   // "-0.00" reads as a finding; a value that rounds to zero is shown as zero.
-  const fmt = (x, digits) => (x === null || x === undefined || Number.isNaN(x)) ? '-' :
-    (Number(Number(x).toFixed(digits === undefined ? 1 : digits)) || 0)
-      .toFixed(digits === undefined ? 1 : digits);
+  const fmt = (x, digits) => {
+    if (x === null || x === undefined || Number.isNaN(x)) return '-';
+    const d = digits === undefined ? 1 : digits;
+    const text = fixed(Number(x), d);
+    return Number(text) === 0 ? (0).toFixed(d) : text;
+  };
+  // The study's one time statistic: the mean over frames of each frame's median call, with its
+  // 95% bootstrap interval. A row written before it (an old baseline) has its median call alone.
+  const timeOf = (r) => (typeof r.time_us === 'number' ? r.time_us : r.median_us);
+  const ciOf = (r) => (Array.isArray(r.ci95_us) && r.ci95_us.length === 2 &&
+    r.ci95_us.every((v) => typeof v === 'number' && Number.isFinite(v)) ? r.ci95_us : null);
+  // "133.9 [130.2, 137.5]", as table.txt prints a time (withInterval); the time alone without one.
+  const withInterval = (value, ci) => fmt(value) + (ci ? ` [${fmt(ci[0])}, ${fmt(ci[1])}]` : '');
+  // A chart's time fields: the statistic, and its interval's ends for the whiskers. A log axis
+  // cannot show 0, and a whisker reaching down decades would squeeze every point into a corner:
+  // the low end is cut at a tenth of the time (the tooltip gives the interval itself). Without
+  // an interval the whisker is the point itself.
+  const timeFields = (r) => {
+    const time = timeOf(r);
+    const ci = ciOf(r);
+    const lo = Math.max(ci ? ci[0] : time, time / 10, 1e-3);
+    return { time_us: time, ci_lo_us: lo, ci_hi_us: Math.max(ci ? ci[1] : time, lo),
+      time_ci95: ci ? `[${fmt(ci[0])}, ${fmt(ci[1])}]` : '-' };
+  };
+  const TIME_TITLE = 'mean time per query (µs), 95% CI';
   const ok = data.rows.filter((r) => r.status === 'ok');
   // Settings run with needs "changed" time only the pairs they asked (a reused frame times at 0):
-  // their medians are not comparable with the others', so they are shown in the needs section only.
+  // their times are not comparable with the others', so they are shown in the needs section only.
   const charted = ok.filter((r) => r.needs !== 'changed');
   const groupBy = (items, key) => {
     const map = new Map();
@@ -163,7 +196,7 @@
     marker: markerOf.get(item.label) || 'circle',
     kinds: ',' + [...new Set(rows.map((r) => r.kind))].join(',') + ',',
     exact: rows.length > 0 && rows.every((r) => r.status === 'ok' && r.disagreements === 0) });
-  const tagRow = (r) => tagged(r, family(r.backend), [r]);
+  const tagRow = (r) => Object.assign(tagged(r, family(r.backend), [r]), timeFields(r));
   const tagByLookup = (item) => {
     const r = rowOf.get(item.label + '|' + item.scene + '|' + item.query);
     return tagged(item, family(r ? r.backend : item.label), r ? [r] : []);
@@ -283,15 +316,27 @@
 
   // --- 0. what to pick ------------------------------------------------------------------------
   {
+    const wanted = data.what_to_pick || {};
+    // Two times within this share of each other are practically the same (docs/STUDY.md).
+    const band = typeof wanted.equivalence_band === 'number' ? wanted.equivalence_band : 0.1;
+    const bandText = fmt(100 * band, 0) + '%';
+    const statistic = (wanted.statistic ||
+      'mean over frames of each frame\'s median call (us per query)').replace('(us per', '(µs per');
     const s = section('what-to-pick', 'What to pick',
       'Per scene and query, among the settings that answered every frame: the fastest with no ' +
       'wrong frame, the fastest within the share of wrong frames set here (or, for all pairs, ' +
       'a pair recall and precision set here), and the exact one ' +
       'with the least model memory, each against the best setting of another backend family. ' +
-      'Times are the mean over frames of each frame\'s median. The line under each row gives ' +
+      `Times are the ${statistic}: "mean [low, high]", the brackets its 95% interval. 'vs next' ` +
+      'is that other family\'s time over the pick\'s, with its 95% interval paired by frame. ' +
+      `A pick is a clear win only when it beats every other setting by more than ${bandText} ` +
+      `with 95% confidence. "a ≈ b, c" means the data cannot tell a from b and c beyond ` +
+      `${bandText}: a is the fastest by its estimate, but b or c may be as fast; take the one ` +
+      'that suits you. Memory is counted, not sampled: there "≈" names the settings within ' +
+      `${bandText} of the smallest. The line under each row gives ` +
       'the fastest setting of every family and, where the fastest of all is not exact, what it ' +
       'costs.');
-    const picks = (data.what_to_pick && data.what_to_pick.picks) || [];
+    const picks = wanted.picks || [];
     if (picks.length === 0) {
       empty(s, 'No scene with a setting that answered every frame.');
     } else {
@@ -309,9 +354,16 @@
       s.appendChild(holder);
       const ratio = (a, b) => (a > 0 ? fmt(b / a, 2) + 'x' : '-');
       const perTriangle = (o) => o.bytes_per_triangle;
+      // As table.txt counts it: a setting without triangles has 0 bytes per triangle.
+      const bytesOf = (o) => perTriangle(o) || 0;
+      // `next`'s time over `o`'s with its interval paired by frame, as table.txt prints it (a
+      // ratio whose interval is a point alone); null where a time was 0.
+      const versus = (o, next) => (o.versus && o.versus[next.backend]) || null;
+      const versusText = (v) => (!v ? '-' : v[1] === v[2] ? fmt(v[0], 2) + 'x' :
+        `${fmt(v[0], 2)}x [${fmt(v[1], 2)}, ${fmt(v[2], 2)}]`);
       // The best of `admitted` by `better` (ties keep the earlier setting, as table.txt does),
-      // and the best of another family.
-      const best = (settings, admit, better) => {
+      // the others `tied` to it, best first, and the best of another family.
+      const best = (settings, admit, better, tied) => {
         let chosen = null;
         for (const o of settings) if (admit(o) && (!chosen || better(o, chosen))) chosen = o;
         if (!chosen) return null;
@@ -321,25 +373,47 @@
             next = o;
           }
         }
-        return { chosen: chosen, next: next };
+        // Array sort is stable: settings equally good keep their order, as std::stable_sort.
+        const ties = settings.filter((o) => o !== chosen && admit(o) && tied(chosen, o))
+          .sort((a, b) => (better(a, b) ? -1 : better(b, a) ? 1 : 0));
+        return { chosen: chosen, next: next, ties: ties };
       };
       const faster = (a, b) => a.mean_us < b.mean_us;
-      const smaller = (a, b) => perTriangle(a) < perTriangle(b) ||
-        (perTriangle(a) === perTriangle(b) && faster(a, b));
+      const smaller = (a, b) => bytesOf(a) < bytesOf(b) ||
+        (bytesOf(a) === bytesOf(b) && faster(a, b));
+      // A time pick ties with every setting it is not clearly faster than (the study decided
+      // that from the paired intervals: its `clearly_faster_than`).
+      const timeTie = (p, o) => !(p.clearly_faster_than || []).includes(o.backend);
+      // Memory is counted: a setting within the band of the pick's bytes ties with it (all do
+      // when the pick's is 0, since no ratio says otherwise).
+      const memoryTie = (p, o) => !(bytesOf(p) > 0) || bytesOf(o) / bytesOf(p) <= 1 + band;
+      // "obbtree ≈ fcl:obb, bullet", byte for byte as table.txt names a pick and its ties.
+      const pickText = (b) => b.chosen.backend +
+        (b.ties.length ? ' ≈ ' + b.ties.map((o) => o.backend).join(', ') : '');
+      const timeText = (o) => withInterval(o.mean_us, ciOf(o));
       const wrongText = (o) => `${o.wrong_frames} of ${o.frames}`;
-      // A pick's cell names it; its title gives every figure of it and of the runner-up.
-      const figures = (o) => `${fmt(o.mean_us)} µs, ${fmt(perTriangle(o), 0)} B/tri, wrong on ` +
+      // A pick's cell names it; its title gives every figure of it, its ties and the runner-up.
+      const figures = (o) => `${timeText(o)} µs, ${fmt(perTriangle(o), 0)} B/tri, wrong on ` +
         wrongText(o) + (o.recall === null || o.recall === undefined ? '' :
         `, pair recall ${fmt(o.recall, 4)}, precision ${fmt(o.precision, 4)}`);
-      const cell = (text, cls, pick, chosen) => el('td', Object.assign({ text: text,
-        class: cls || '' }, pick ? { 'data-pick': pick } : {}, chosen ? { title:
-        `${chosen.chosen.backend}: ${figures(chosen.chosen)}` + (chosen.next ?
-          `\nnext family: ${chosen.next.backend}: ${figures(chosen.next)}` : '') } : {}));
+      const explain = (b, byMemory) => `${b.chosen.backend}: ${figures(b.chosen)}\n` +
+        (b.ties.length ? `ties (not told apart beyond ${bandText}` +
+          (byMemory ? ' of memory' : ' at 95% confidence') + '): ' +
+          b.ties.map((o) => `${o.backend} ${byMemory ? fmt(perTriangle(o), 0) + ' B/tri' :
+            timeText(o) + ' µs'}`).join(', ') :
+          `a clear win: ${byMemory ? 'smaller' : 'faster'} than every other setting by more than ` +
+          bandText + (byMemory ? '' : ' at 95% confidence')) +
+        (b.next ? `\nnext family: ${b.next.backend}: ${figures(b.next)}; its ` +
+          (byMemory ? `memory over the pick's ${ratio(perTriangle(b.chosen), perTriangle(b.next))}` :
+            `time over the pick's ${versusText(versus(b.chosen, b.next))} (95% interval)`) : '');
+      const cell = (text, cls, pick, chosen, byMemory) => el('td', Object.assign({ text: text,
+        class: cls || '' }, pick ? { 'data-pick': pick } : {},
+      chosen ? { title: explain(chosen, byMemory) } : {}));
       const floorValue = () => (pairFloor.value === '' ? null :
         Math.min(100, Math.max(0, Number(pairFloor.value))) / 100);
-      const header = () => el('tr', {}, ['scene', 'query', 'fastest exact', 'µs', 'vs next',
+      const header = () => el('tr', {}, ['scene', 'query', 'fastest exact', 'µs [95% CI]', 'vs next',
         `fastest within ${fmt(Number(budget.value) || 0, 0)}% wrong` + (floorValue() === null ? '' :
-          ` (all pairs: ≥ ${fmt(100 * floorValue(), 1)}% recall and precision)`), 'µs',
+          ` (all pairs: ≥ ${fmt(100 * floorValue(), 1)}% recall and precision)`), 'µs [95% CI]',
         'wrong frames', 'smallest exact', 'B/tri', 'vs next'].map((h) => el('th', { text: h })));
       const render = () => {
         const share = Math.max(0, Number(budget.value) || 0) / 100;
@@ -350,22 +424,22 @@
         const t = el('table', { class: 'picks' }, [header()]);
         for (const p of picks) {
           const exact = (o) => o.wrong_frames === 0;
-          const f = best(p.settings, exact, faster);
-          const w = best(p.settings, withinBudget, faster);
-          const m = best(p.settings, exact, smaller);
+          const f = best(p.settings, exact, faster, timeTie);
+          const w = best(p.settings, withinBudget, faster, timeTie);
+          const m = best(p.settings, exact, smaller, memoryTie);
           const scene = p.resolution === 1 ? p.scene : `${p.scene} r=${p.resolution}`;
           t.appendChild(el('tr', { class: 'pick', 'data-scene': scene, 'data-query': p.query }, [
             cell(scene), cell(p.query),
-            cell(f ? f.chosen.backend : 'none exact', '', 'fastest-exact', f),
-            cell(f ? fmt(f.chosen.mean_us) : '-', 'num'),
-            cell(f && f.next ? ratio(f.chosen.mean_us, f.next.mean_us) : '-', 'num'),
-            cell(w ? w.chosen.backend : 'none', '', 'fastest-within', w),
-            cell(w ? fmt(w.chosen.mean_us) : '-', 'num'), cell(w ? wrongText(w.chosen) : '-', 'num'),
-            cell(m ? m.chosen.backend : 'none exact', '', 'smallest-exact', m),
+            cell(f ? pickText(f) : 'none exact', '', 'fastest-exact', f),
+            cell(f ? timeText(f.chosen) : '-', 'num'),
+            cell(f && f.next ? versusText(versus(f.chosen, f.next)) : '-', 'num'),
+            cell(w ? pickText(w) : 'none', '', 'fastest-within', w),
+            cell(w ? timeText(w.chosen) : '-', 'num'), cell(w ? wrongText(w.chosen) : '-', 'num'),
+            cell(m ? pickText(m) : 'none exact', '', 'smallest-exact', m, true),
             cell(m ? fmt(perTriangle(m.chosen), 0) : '-', 'num'),
             cell(m && m.next ? ratio(perTriangle(m.chosen), perTriangle(m.next)) : '-', 'num')]));
           // Under each row: every family's fastest setting, and what the fastest of all costs.
-          const perFamily = (p.fastest_per_family || []).map((o) => `${o.backend} ${fmt(o.mean_us)} µs` +
+          const perFamily = (p.fastest_per_family || []).map((o) => `${o.backend} ${timeText(o)} µs` +
             (o.wrong_frames ? ` (wrong on ${wrongText(o)})` : '')).join(' · ');
           const detail = el('td', { colspan: '11', class: 'pick-detail' });
           detail.appendChild(el('span', { text: 'fastest per family: ' + perFamily }));
@@ -383,7 +457,8 @@
   // --- 1. time against error ------------------------------------------------------------------
   {
     const s = section('time-vs-error', 'Run time against error',
-      'One point per backend setting: median time per query (log scale) against the share of ' +
+      'One point per backend setting: its time per query (log scale), the mean over frames of ' +
+      'each frame\'s median call, whiskers its 95% interval, against the share of ' +
       'frames whose answer differs from the exact oracle. Colour is the backend family, shape ' +
       'the setting within it (named in the tooltip). The dashed line joins the Pareto front, ' +
       'the settings no other one beats on both, each named beside its point; it follows the ' +
@@ -395,8 +470,10 @@
     for (const [name, rows] of groups) {
       const points = rows.map(tagRow);
       const top = Math.max(0.05, ...points.map((p) => p.error_rate || 0));
-      const x = { field: 'median_us', type: 'quantitative', scale: { type: 'log' },
-        title: 'median time per query (µs)' };
+      const x = { field: 'time_us', type: 'quantitative', scale: { type: 'log' }, title: TIME_TITLE };
+      // The whiskers share the time axis: the same scale and title, or Vega-Lite would join two.
+      const whisker = { x: Object.assign({}, x, { field: 'ci_lo_us' }), x2: { field: 'ci_hi_us' } };
+      const colour = familyColourOf(points);
       // At least 0-5%: a scene where every setting is exact shows a 0% axis, not a single
       // "0.000000" tick; exact points sit on the 0% line.
       const y = { field: 'error_rate', type: 'quantitative', title: 'share of frames wrong',
@@ -407,7 +484,7 @@
         // its error is below that of every faster point.
         transform: [
           { window: [{ op: 'min', field: 'error_rate', as: 'best_before' }],
-            sort: [{ field: 'median_us' }, { field: 'error_rate' }], frame: [null, -1],
+            sort: [{ field: 'time_us' }, { field: 'error_rate' }], frame: [null, -1],
             ignorePeers: true },
           { calculate: '!isValid(datum.best_before) || datum.error_rate < datum.best_before',
             as: 'on_front' }],
@@ -415,10 +492,14 @@
         layer: [
           { transform: [{ filter: 'datum.on_front' }],
             mark: { type: 'line', interpolate: 'step-after', color: '#666', strokeDash: [4, 3] } },
+          { mark: { type: 'rule', opacity: 0.7, strokeWidth: 1.5 }, encoding: Object.assign({ color: colour }, whisker) },
           { mark: { type: 'point', filled: true, size: 70, opacity: 0.85 },
-            encoding: { color: familyColourOf(points), shape: settingShape,
-              tooltip: [{ field: 'label', title: 'setting' }, { field: 'median_us', format: '.1f' },
-                { field: 'p99_us', format: '.1f' }, { field: 'error_rate', format: '.3f' },
+            encoding: { color: colour, shape: settingShape,
+              tooltip: [{ field: 'label', title: 'setting' },
+                { field: 'time_us', title: 'mean µs', format: '.1f' },
+                { field: 'time_ci95', title: '95% CI (µs)' },
+                { field: 'p99_us', title: 'call p99 µs', format: '.1f' },
+                { field: 'error_rate', format: '.3f' },
                 { field: 'recall', format: '.4f' }, { field: 'precision', format: '.4f' },
                 { field: 'finest_error_rate', format: '.3f' }] } },
           { transform: [{ filter: 'datum.on_front' }],
@@ -427,9 +508,9 @@
     }
   }
 
-  // Median time (log) against an error on a symlog scale: linear below 1e-16, logarithmic above,
-  // so an answer exact to the last bit sits on the 0 line instead of at an invented floor. The
-  // chart the distance and contact sections share.
+  // The time (log, whiskers its 95% interval) against an error on a symlog scale: linear below
+  // 1e-16, logarithmic above, so an answer exact to the last bit sits on the 0 line instead of
+  // at an invented floor. The chart the distance and contact sections share.
   function timeAgainstErrorChart(box, name, points, error, title, tooltip) {
     const values = points.map((p) => Object.assign(tagRow(p), { shown_error: Math.max(error(p) || 0, 0) }));
     // Powers of ten from 1e-16 to the first above every error (every other one past seven).
@@ -441,24 +522,32 @@
     if (powers.length > 7) powers = powers.filter((_, i) => (powers.length - 1 - i) % 2 === 0);
     const top = Math.max(powers[powers.length - 1], largest);
     const ticks = [0].concat(powers);
+    const x = { field: 'time_us', type: 'quantitative', scale: { type: 'log' }, title: TIME_TITLE };
     filteredChart(box, name, {
       title: name.slice(name.indexOf(':') + 1), width: 360, height: 220,
-      data: { values: values }, mark: { type: 'point', filled: true, size: 70, opacity: 0.85 },
+      data: { values: values },
       encoding: {
-        x: { field: 'median_us', type: 'quantitative', scale: { type: 'log' },
-          title: 'median time per query (µs)' },
+        x: x,
         y: { field: 'shown_error', type: 'quantitative', title: title,
           scale: { type: 'symlog', constant: 1e-16, domain: [0, top] },
           axis: { values: ticks, format: '~g', labelOverlap: 'greedy' } },
-        color: familyColourOf(values), shape: settingShape,
-        tooltip: [{ field: 'label', title: 'setting' }, { field: 'median_us', format: '.1f' }]
-          .concat(tooltip) } }, values);
+        color: familyColourOf(values) },
+      layer: [
+        // The whiskers share the time axis: the same scale and title, or Vega-Lite would join two.
+        { mark: { type: 'rule', opacity: 0.7, strokeWidth: 1.5 },
+          encoding: { x: Object.assign({}, x, { field: 'ci_lo_us' }), x2: { field: 'ci_hi_us' } } },
+        { mark: { type: 'point', filled: true, size: 70, opacity: 0.85 },
+          encoding: { shape: settingShape,
+            tooltip: [{ field: 'label', title: 'setting' },
+              { field: 'time_us', title: 'mean µs', format: '.1f' },
+              { field: 'time_ci95', title: '95% CI (µs)' }].concat(tooltip) } }] }, values);
   }
 
   // --- 1b. distances: run time against distance error -----------------------------------------
   {
     const s = section('distance-error', 'Distances: run time against error',
-      'Distance queries only: median time per query (log scale) against the largest error of ' +
+      'Distance queries only: time per query (log scale; the mean over frames of each frame\'s ' +
+      'median call, whiskers its 95% interval) against the largest error of ' +
       'the reported distance over the frames, relative to the exact distance (symlog scale: ' +
       'linear below 1e-16, so an answer exact to the last bit is drawn at 0). The share of wrong frames (time against ' +
       'error above) also counts closest points that do not hold together.');
@@ -482,7 +571,8 @@
   {
     const s = section('contact-error', 'Contacts: run time against contact error',
       'Contacts queries only, each contact held to the exact contact of its triangle pair ' +
-      '(docs/DESIGN.md, "Contact geometry"): median time per query (log scale) against the ' +
+      '(docs/DESIGN.md, "Contact geometry"): time per query (log scale; the mean over frames of ' +
+      'each frame\'s median call, whiskers its 95% interval) against the ' +
       'largest distance of a contact point to its pair\'s exact intersection set (symlog ' +
       'scale: linear below 1e-16, so an exact point is drawn at 0). The table gives every contact figure.');
     const box = el('div', { class: 'charts' });
@@ -503,7 +593,7 @@
           { field: 'contact_coverage', format: '.3f' },
           { field: 'contact_false_pairs' }]);
       for (const p of points) {
-        lines.push([name, p.label, p.median_us.toFixed(1), figure(p.contacts_per_frame, 3),
+        lines.push([name, p.label, withInterval(timeOf(p), ciOf(p)), figure(p.contacts_per_frame, 3),
           figure(p.contact_position_error, 3), figure(p.contact_surface_error, 3),
           figure(p.contact_normal_error_deg, 3), figure(p.contact_depth_error, 3),
           p.contact_coverage === null ? '-' : (100 * p.contact_coverage).toFixed(1) + '%',
@@ -511,7 +601,7 @@
       }
     }
     if (lines.length > 0) {
-      laterTable(s, ['scene · query', 'backend / setting', 'median µs', 'contacts/frame', 'point err',
+      laterTable(s, ['scene · query', 'backend / setting', 'mean µs [95% CI]', 'contacts/frame', 'point err',
         'surface err', 'normal °', 'depth err', 'coverage', 'false pairs'], lines);
     }
   }
@@ -928,7 +1018,8 @@
   // --- 4. scaling -----------------------------------------------------------------------------
   {
     const s = section('scaling', 'Scaling',
-      'Median time per query and memory against the number of triangles (log-log), for scenes ' +
+      'Time per query (the mean over frames of each frame\'s median call, whiskers its 95% ' +
+      'interval) and memory against the number of triangles (log-log), for scenes ' +
       'run at several resolutions. The table gives the fitted exponent k of time ~ n^k.');
     const families = groupBy(charted, (r) => r.scene + ' · ' + r.query);
     const curves = [];
@@ -941,7 +1032,8 @@
       for (const r of rows) curves.push(Object.assign(tagRow(r), { group: name, series: series(r) }));
       for (const [backend, points] of groupBy(rows, series)) {
         exponents.push([name, backend, String(new Set(points.map((p) => p.triangles)).size),
-          fmt(fittedExponent(points, 'triangles', 'median_us'), 2),
+          fmt(fittedExponent(points.map((p) => ({ triangles: p.triangles, time_us: timeOf(p) })),
+            'triangles', 'time_us'), 2),
           fmt(fittedExponent(points, 'triangles', 'bytes_per_triangle'), 2)]);
       }
     }
@@ -952,15 +1044,24 @@
       const box = el('div', { class: 'charts' });
       s.appendChild(box);
       for (const [name, rows] of groupBy(curves, (r) => r.group)) {
+        const y = { field: 'time_us', type: 'quantitative', scale: { type: 'log' }, title: TIME_TITLE };
         filteredChart(box, 'scaling:' + name, {
           title: name, width: 360, height: 240, data: { values: rows },
           encoding: { x: { field: 'triangles', type: 'quantitative', scale: { type: 'log' },
             title: 'triangles (both objects)' },
-          y: { field: 'median_us', type: 'quantitative', scale: { type: 'log' }, title: 'median µs' },
+          y: y,
           color: familyColourOf(rows) },
-          layer: [{ mark: { type: 'line', point: true },
-            encoding: { detail: { field: 'series' },
-              tooltip: [{ field: 'label' }, { field: 'triangles' }, { field: 'median_us', format: '.1f' }] } }] },
+          layer: [
+            // The whiskers share the time axis: the same scale and title, or Vega-Lite would
+            // join two.
+            { mark: { type: 'rule', opacity: 0.7, strokeWidth: 1.5 },
+              encoding: { y: Object.assign({}, y, { field: 'ci_lo_us' }), y2: { field: 'ci_hi_us' },
+                detail: { field: 'series' } } },
+            { mark: { type: 'line', point: true },
+              encoding: { detail: { field: 'series' },
+                tooltip: [{ field: 'label' }, { field: 'triangles' },
+                  { field: 'time_us', title: 'mean µs', format: '.1f' },
+                  { field: 'time_ci95', title: '95% CI (µs)' }] } }] },
         rows);
         filteredChart(box, 'scaling-memory:' + name, {
           title: name + ' · memory', width: 360, height: 240, data: { values: rows },
@@ -1053,7 +1154,8 @@
       'only) and changed (built as declared; a pair neither of whose objects moved, changed state or ' +
       'deformed since the frame before takes that answer instead of being asked, and a two-object ' +
       'collision query whose pair the shared broad phase proves apart is not asked; both answers ' +
-      'are still checked against the exact reference).');
+      'are still checked against the exact reference). Query times are the mean over frames of ' +
+      'each frame\'s median call, with its 95% interval in the table.');
     const key = (r) => r.backend + '|' + r.scene + '|' + r.resolution + '|' + r.limit + '|' + r.query;
     const byMode = (mode) => new Map(ok.filter((r) => r.needs === mode).map((r) => [key(r), r]));
     const declared = byMode('declared');
@@ -1069,14 +1171,15 @@
       for (const [mode, r] of [['every', e], ['declared', d], ['changed', h]]) {
         if (!r) continue;
         bars.push({ backend: e.backend, scene: e.scene, query: e.query, needs: mode, build_ms: r.build_ms,
-          bytes: r.bytes_per_triangle, median_us: r.median_us, unasked_frames: r.unasked_frames || 0 });
+          bytes: r.bytes_per_triangle, time_us: timeOf(r), unasked_frames: r.unasked_frames || 0 });
       }
-      const median = (r) => (r ? fmt(r.median_us) : '-');
+      // As table.txt's needs table: the time with its 95% interval.
+      const time = (r) => (r ? withInterval(timeOf(r), ciOf(r)) : '-');
       rows.push([e.backend, e.scene, e.query,
         `${Math.round(e.bytes_per_triangle)} → ${Math.round(built.bytes_per_triangle)}` +
           pct(e.bytes_per_triangle, built.bytes_per_triangle),
         `${fmt(e.build_ms)} → ${fmt(built.build_ms)}` + pct(e.build_ms, built.build_ms),
-        median(e), median(d), median(h),
+        time(e), time(d), time(h),
         h ? `${h.unasked_frames || 0} of ${h.frames}` : '-',
         h ? `${h.reused_pairs || 0} / ${h.skipped_pairs || 0}` : '-',
         h ? String(h.disagreements) : '-']);
@@ -1086,12 +1189,12 @@
         'add them to the sweep\'s "needs" (docs/STUDY.md).');
     } else {
       laterTable(s, ['backend / setting', 'scene', 'query', 'B/tri every → declared', 'build ms every → declared',
-        'median µs every', 'declared', 'changed', 'frames unasked', 'pairs reused / culled',
+        'mean µs every', 'declared', 'changed', 'frames unasked', 'pairs reused / culled',
         'wrong (changed)'], rows);
       const box = el('div', { class: 'charts' });
       s.appendChild(box);
       const charts = [['build_ms', 'build (ms)'], ['bytes', 'bytes per triangle'],
-        ['median_us', 'median query (µs)']];
+        ['time_us', 'mean query (µs)']];
       // Only "changed" answers frames without a query: without it the chart would be all zeros.
       if (bars.some((b) => b.unasked_frames > 0)) charts.push(['unasked_frames', 'frames answered without a query']);
       for (const [field, title] of charts) {
@@ -1115,7 +1218,9 @@
     // within this factor either way is noise, not a finding.
     const NOISE = 1.75;
     const s = section('comparison', 'Against a baseline',
-      'The ratio of median times against an earlier study of the same settings ' +
+      'The ratio of times (the mean over frames of each frame\'s median call; against a ' +
+      'baseline written before that statistic, the median call of both) against an earlier ' +
+      'study of the same settings ' +
       '(collido report DIR --baseline OLD): below 1 is faster now. Only a change beyond a factor ' +
       `${NOISE} either way is coloured (green faster, red slower); within it is grey, since two ` +
       'identical runs on a 2-core machine differed by up to that. Changes in error are listed.');
@@ -1128,8 +1233,12 @@
       for (const r of ok) {
         const b = before.get(r.key);
         if (!b) continue;
-        ratios.push({ label: r.label, scene: r.scene, query: r.query, ratio: r.median_us / b.median_us,
-          now: r.median_us, before: b.median_us });
+        // Like with like: the statistic where both runs have it, else the median call of both.
+        const both = typeof r.time_us === 'number' && typeof b.time_us === 'number';
+        const now = both ? r.time_us : r.median_us;
+        const then = both ? b.time_us : b.median_us;
+        ratios.push({ label: r.label, scene: r.scene, query: r.query, ratio: now / then,
+          now: now, before: then });
         if (b.disagreements !== r.disagreements) {
           changes.push([r.label, r.scene, r.query, String(b.disagreements), String(r.disagreements)]);
         }
@@ -1152,7 +1261,7 @@
                 encoding: {
                   y: { field: 'label', type: 'nominal', title: null, axis: { labelLimit: 220 } },
                   x: { field: 'ratio', type: 'quantitative', scale: { type: 'log' },
-                    title: 'now / before (median time)' },
+                    title: 'now / before (mean time)' },
                   shape: { field: 'query', type: 'nominal' },
                   color: { condition: [{ test: `datum.ratio > ${NOISE}`, value: '#b3261e' },
                     { test: `datum.ratio < ${1 / NOISE}`, value: '#1b7f3b' }], value: '#9a9a9a' },
@@ -1168,10 +1277,14 @@
 
   // --- the table ------------------------------------------------------------------------------
   {
-    const s = section('table', 'All measurements', 'Every (backend setting, scene, query).');
-    laterTable(s, ['backend / setting', 'scene', 'query', 'status', 'median µs', 'p90', 'p99', 'max',
+    const s = section('table', 'All measurements', 'Every (backend setting, scene, query). ' +
+      'mean µs: the mean over frames of each frame\'s median call, with its 95% bootstrap ' +
+      'interval [low, high]; the call percentiles describe single calls.');
+    laterTable(s, ['backend / setting', 'scene', 'query', 'status', 'mean µs [95% CI]',
+      'call p90 µs', 'call p99 µs', 'call max µs',
       'wrong', 'recall', 'precision', 'build ms', 'B/tri', 'B/tri heap'],
-    data.rows.map((r) => [r.label, r.scene, r.query, r.status, fmt(r.median_us), fmt(r.p90_us),
+    data.rows.map((r) => [r.label, r.scene, r.query, r.status,
+      withInterval(timeOf(r), ciOf(r)), fmt(r.p90_us),
       fmt(r.p99_us), fmt(r.max_us), r.status === 'ok' ? String(r.disagreements) : '-',
       r.kind === 'all_pairs' ? fmt(r.recall, 4) : '-', r.kind === 'all_pairs' ? fmt(r.precision, 4) : '-',
       fmt(r.build_ms, 2), fmt(r.bytes_per_triangle, 0), fmt(r.heap_bytes_per_triangle, 0)]),

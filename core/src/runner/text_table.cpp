@@ -17,20 +17,31 @@ std::string bytesPerTriangleText(std::size_t bytes, std::size_t triangles) {
   return formatNumber("%.0f", static_cast<double>(bytes) / static_cast<double>(triangles));
 }
 
+namespace {
+
+// Columns line up on screen: a UTF-8 character ("≈", "µ") takes one column, not its bytes.
+std::size_t columnsOf(const std::string& text) {
+  return static_cast<std::size_t>(std::count_if(text.begin(), text.end(), [](char byte) {
+    return (static_cast<unsigned char>(byte) & 0xC0u) != 0x80u;
+  }));
+}
+
+}  // namespace
+
 std::string formatTextTable(const std::vector<std::string>& header,
                             const std::vector<std::vector<std::string>>& rows,
                             std::size_t first_numeric) {
   std::vector<std::size_t> width(header.size());
   for (std::size_t c = 0; c < header.size(); ++c) {
-    width[c] = header[c].size();
+    width[c] = columnsOf(header[c]);
     for (const auto& row : rows)
-      if (c < row.size()) width[c] = std::max(width[c], row[c].size());
+      if (c < row.size()) width[c] = std::max(width[c], columnsOf(row[c]));
   }
   std::ostringstream out;
   const auto line = [&](const std::vector<std::string>& cells) {
     for (std::size_t c = 0; c < header.size(); ++c) {
       const std::string cell = c < cells.size() ? cells[c] : "";
-      const std::string pad(width[c] - cell.size(), ' ');
+      const std::string pad(width[c] - columnsOf(cell), ' ');
       out << (c == 0 ? "" : "  ") << (c >= first_numeric ? pad + cell : cell + pad);
     }
     out << "\n";

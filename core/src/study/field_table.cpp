@@ -8,6 +8,7 @@
 #include <tuple>
 
 #include <collido/runner/text_table.h>
+#include <collido/runner/time_statistic.h>
 #include <collido/study/robustness.h>
 #include <collido/study/selection_table.h>
 
@@ -37,7 +38,7 @@ const Answer* fastest(const std::vector<Answer>& answers, Admit admit) {
   const Answer* best = nullptr;
   for (const Answer& a : answers) {
     if (!admit(a)) continue;
-    if (best == nullptr || meanFrameMedianUs(a.measurement) < meanFrameMedianUs(best->measurement))
+    if (best == nullptr || meanFrameTimeUs(a.measurement) < meanFrameTimeUs(best->measurement))
       best = &a;
   }
   return best;
@@ -55,15 +56,18 @@ std::string perTruePair(const QueryMeasurement& m, bool counted, std::uint64_t F
   return formatNumber("%.1f", static_cast<double>(total) / static_cast<double>(pairs));
 }
 
-std::string timeCell(const QueryMeasurement& m) {
-  std::string text = formatNumber("%.1f", meanFrameMedianUs(m));
+std::string timeCell(const TimeBootstrap& time, const QueryMeasurement& m) {
+  std::string text = withInterval(time.estimate(), time.ci95());
   if (m.disagreements > 0) text += "!";
   return text;
 }
 
-std::string ratioCell(const QueryMeasurement& theirs, const QueryMeasurement& ours) {
-  if (meanFrameMedianUs(ours) <= 0.0) return "-";
-  return formatNumber("%.2f", meanFrameMedianUs(theirs) / meanFrameMedianUs(ours)) + "x";
+// Their time over ours with its interval, paired by frame; "≈" where it meets the band.
+std::string ratioCell(const TimeBootstrap& theirs, const TimeBootstrap& ours) {
+  const std::optional<Ratio> ratio = timeRatio(theirs, ours);
+  if (!ratio) return "-";
+  const bool tie = differenceOf(ratio->ci95) == Difference::kSame;
+  return (tie ? "≈" : "") + ratioWithInterval(*ratio);
 }
 
 }  // namespace
@@ -125,15 +129,21 @@ std::string fieldTable(const std::vector<CombinationResult>& results) {
       continue;
     }
     const QueryMeasurement& m = ours->measurement;
+    const TimeBootstrap our_time(m);
     row.push_back(ours->backend);
-    row.push_back(formatNumber("%.1f", meanFrameMedianUs(m)));
+    row.push_back(withInterval(our_time.estimate(), our_time.ci95()));
     row.push_back(bytesPerTriangleText(m.memory_bytes, m.triangles));
     row.push_back(m.floor_ratio ? formatNumber("%.1f", *m.floor_ratio) : "-");
     row.push_back(perTruePair(m, m.counts_bv_tests, &FrameRecord::bv_tests));
     row.push_back(perTruePair(m, m.counts_primitive_tests, &FrameRecord::primitive_tests));
     const auto compare = [&](const Answer* theirs) {
-      row.push_back(theirs ? timeCell(theirs->measurement) : "-");
-      row.push_back(theirs ? ratioCell(theirs->measurement, m) : "-");
+      if (theirs == nullptr) {
+        row.insert(row.end(), {"-", "-"});
+        return;
+      }
+      const TimeBootstrap their_time(theirs->measurement);
+      row.push_back(timeCell(their_time, theirs->measurement));
+      row.push_back(ratioCell(their_time, our_time));
     };
     if (has_peer) compare(fastest(answers, [](const Answer& a) { return a.backend == kPeer; }));
     for (const std::string& family : families) {
@@ -145,9 +155,13 @@ std::string fieldTable(const std::vector<CombinationResult>& results) {
   if (rows.empty()) return "";
   std::ostringstream out;
   out << formatTextTable(header, rows, 3);
-  out << "Times are the mean over frames of each frame's median, in microseconds per query; a "
-         "comparator's is its fastest setting's, and '!' marks one whose answer differed from the "
-         "oracle's on some frame. 'vs X' = X's time over the OBB tree's. floor x = "
+  out << "Times are the mean over frames of each frame's median call, in microseconds per query, "
+         "with its 95% bootstrap interval [low, high]; a comparator's is its fastest setting's, "
+         "and '!' marks one whose answer differed from the oracle's on some frame. 'vs X' = X's "
+         "time over the OBB tree's, its 95% interval paired by frame; '≈' marks a ratio whose "
+         "interval meets the "
+      << formatNumber("%g", kEquivalenceBand * 100.0)
+      << "% equivalence band, a tie (docs/STUDY.md). floor x = "
          "query time over one exact triangle test per truly intersecting pair (1 is the floor); "
          "box/pair and tri/pair = box and triangle tests per truly intersecting pair.\n";
   return out.str();

@@ -3,6 +3,7 @@
 #include <cstdint>
 
 #include <collido/runner/measurement_json.h>
+#include <collido/runner/time_statistic.h>
 
 namespace collido::study {
 namespace {
@@ -51,6 +52,14 @@ const std::vector<Figure>& measurementFigures() {
   using R = const CombinationResult&;
   using M = const QueryMeasurement&;
   static const std::vector<Figure> figures = {
+      // The statistic every time figure shows (meanFrameTimeUs), with its interval; the call
+      // percentiles after it describe single calls.
+      {"time_us", kInDashboard, [](R, M m) { return Json(meanFrameTimeUs(m)); }},
+      {"ci95_us", kBoth,
+       [](R, M m) {
+         const Interval ci = TimeBootstrap(m).ci95();
+         return Json::array({ci.lo, ci.hi});
+       }},
       {"median_us", kInDashboard, [](R, M m) { return Json(m.median_us); }},
       {"p90_us", kBoth, [](R, M m) { return Json(m.p90_us); }},
       {"p99_us", kBoth, [](R, M m) { return Json(m.p99_us); }},

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include <collido/runner/text_table.h>
+#include <collido/runner/time_statistic.h>
 #include <collido/study/robustness.h>
 
 namespace collido::study {
@@ -63,7 +64,8 @@ std::string needsTable(const std::vector<CombinationResult>& results) {
       const QueryMeasurement* built = d != nullptr ? d : h;
       if (built == nullptr) continue;
       const auto median = [](const QueryMeasurement* m) {
-        return m == nullptr ? std::string("-") : formatNumber("%.1f", m->median_us);
+        return m == nullptr ? std::string("-")
+                            : withInterval(meanFrameTimeUs(*m), TimeBootstrap(*m).ci95());
       };
       rows.push_back(
           {c.backend, c.scene_name, e.query, bytesPerTriangleText(e.memory_bytes, e.triangles),
@@ -82,12 +84,13 @@ std::string needsTable(const std::vector<CombinationResult>& results) {
   }
   if (rows.empty()) return "";
   std::ostringstream out;
-  out << formatTextTable({"backend", "scene", "query", "B/tri every", "B/tri declared",
-                          "B/tri saved", "build ms every", "build ms declared", "build ms saved",
-                          "median us every", "median us declared", "median us changed",
-                          "frames unasked", "pairs reused / culled", "disagree changed"},
-                         rows, 3);
-  out << "'every' builds each object for every query kind the backend answers and asks every "
+  out << formatTextTable(
+      {"backend", "scene", "query", "B/tri every", "B/tri declared", "B/tri saved",
+       "build ms every", "build ms declared", "build ms saved", "mean us every", "mean us declared",
+       "mean us changed", "frames unasked", "pairs reused / culled", "disagree changed"},
+      rows, 3);
+  out << "mean us: the " << kTimeStatisticText
+      << ". 'every' builds each object for every query kind the backend answers and asks every "
          "pair in every frame (the cold figure); 'declared' builds for the scene's queries only; "
          "'changed' builds as declared and reuses a pair's answer of the frame before when "
          "neither object moved, changed state or deformed, and does not ask a two-object collision "

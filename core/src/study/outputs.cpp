@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include <collido/runner/text_table.h>
+#include <collido/runner/time_statistic.h>
 #include <collido/study/comparison_files.h>
 #include <collido/study/contact_table.h>
 #include <collido/study/deform_table.h>
@@ -89,8 +90,8 @@ std::string benchmarkJsonWith(const std::vector<CombinationResult>& results,
                     {"repetition_index", 0},
                     {"threads", 1},
                     {"iterations", m.times_us.size()},
-                    {"real_time", m.median_us},
-                    {"cpu_time", m.median_us},
+                    {"real_time", meanFrameTimeUs(m)},
+                    {"cpu_time", meanFrameTimeUs(m)},
                     {"time_unit", "us"}};
       // Every summary figure the measurement has, as a counter.
       for (const Figure& figure : measurementFigures()) {
@@ -110,6 +111,8 @@ std::string benchmarkJsonWith(const std::vector<CombinationResult>& results,
                         {"cpu_scaling_enabled", false},
                         {"caches", Json::array()},
                         {"load_avg", Json::array()},
+                        // What real_time is (Google Benchmark's readers ignore other keys).
+                        {"time_statistic", kTimeStatisticText},
 #ifdef NDEBUG
                         {"library_build_type", "release"}
 #else
@@ -130,9 +133,9 @@ std::string studyTableWith(const std::vector<CombinationResult>& results,
                            const std::vector<SceneQueryPicks>& picks,
                            const std::vector<NotApplicable>& not_applicable) {
   const std::vector<std::string> header = {
-      "backend",    "setting",  "scene", "query",      "frames", "median us", "p90 us",
-      "p99 us",     "max us",   "FN",    "FP",         "recall", "precision", "disagree",
-      "coarse err", "build ms", "B/tri", "B/tri heap", "RSS MiB"};
+      "backend",  "setting", "scene",      "query",     "frames",   "mean us [95% CI]",
+      "FN",       "FP",      "recall",     "precision", "disagree", "coarse err",
+      "build ms", "B/tri",   "B/tri heap", "RSS MiB"};
   std::vector<std::vector<std::string>> rows;
   std::vector<std::string> failures;
   for (const CombinationResult& r : results) {
@@ -155,12 +158,11 @@ std::string studyTableWith(const std::vector<CombinationResult>& results,
         continue;
       }
       const bool pairs = m.kind == QueryKind::kAllPairs;
+      const TimeBootstrap time(m);
       rows.push_back(
           {c.backend, c.settingText(), c.scene_name, m.query, std::to_string(m.frames.size()),
-           formatNumber("%.1f", m.median_us), formatNumber("%.1f", m.p90_us),
-           formatNumber("%.1f", m.p99_us), formatNumber("%.1f", m.max_us),
-           std::to_string(m.false_negatives), std::to_string(m.false_positives),
-           pairs ? formatNumber("%.4f", m.recall) : "-",
+           withInterval(time.estimate(), time.ci95()), std::to_string(m.false_negatives),
+           std::to_string(m.false_positives), pairs ? formatNumber("%.4f", m.recall) : "-",
            pairs ? formatNumber("%.4f", m.precision) : "-", std::to_string(m.disagreements),
            m.finest_disagreements ? std::to_string(*m.finest_disagreements) : "-",
            formatNumber("%.2f", m.build_ms), bytesPerTriangleText(m.memory_bytes, m.triangles),
@@ -173,6 +175,8 @@ std::string studyTableWith(const std::vector<CombinationResult>& results,
     out << "What to pick (per scene and query):\n" << text << "\nEvery setting:\n";
   }
   out << formatTextTable(header, rows, 4);
+  out << "mean us: the " << kTimeStatisticText
+      << "; the single calls' percentiles are in summary.json (p90_us, p99_us, max_us).\n";
   if (const std::string text = notApplicableText(not_applicable); !text.empty()) {
     out << "\nNot applicable, so not planned (the setting answers none of the query kinds the "
            "scene asks):\n"

@@ -14,10 +14,18 @@ namespace {
 
 using Json = nlohmann::json;
 
-PickedSetting settingOf(const std::string& backend, const QueryMeasurement& m) {
-  PickedSetting s;
+/// One setting of a scene and query, with the bootstrap of its time.
+struct Candidate {
+  PickedSetting setting;
+  TimeBootstrap time;
+};
+
+Candidate candidateOf(const std::string& backend, const QueryMeasurement& m) {
+  Candidate c{PickedSetting{}, TimeBootstrap(m)};
+  PickedSetting& s = c.setting;
   s.backend = backend;
-  s.mean_us = meanFrameMedianUs(m);
+  s.mean_us = c.time.estimate();
+  s.ci95_us = c.time.ci95();
   s.memory_bytes = m.memory_bytes;
   s.triangles = m.triangles;
   s.wrong_frames = m.disagreements;
@@ -26,60 +34,92 @@ PickedSetting settingOf(const std::string& backend, const QueryMeasurement& m) {
     s.recall = m.recall;
     s.precision = m.precision;
   }
-  return s;
+  return c;
 }
 
 bool exact(const PickedSetting& s) {
   return s.wrong_frames == 0;
 }
 
-// The best of `settings` that `admit` lets in by `better`, and the best of another family.
-template <typename Admit, typename Better>
-std::optional<Pick> bestOf(const std::vector<PickedSetting>& settings, Admit admit, Better better) {
-  const PickedSetting* best = nullptr;
-  for (const PickedSetting& s : settings) {
-    if (admit(s) && (best == nullptr || better(s, *best))) best = &s;
-  }
-  if (best == nullptr) return std::nullopt;
-  const PickedSetting* second = nullptr;
-  for (const PickedSetting& s : settings) {
-    if (!admit(s) || backendFamily(s.backend) == backendFamily(best->backend)) continue;
-    if (second == nullptr || better(s, *second)) second = &s;
-  }
-  Pick pick{*best, std::nullopt};
-  if (second != nullptr) pick.runner_up = *second;
-  return pick;
-}
-
 bool faster(const PickedSetting& a, const PickedSetting& b) {
   return a.mean_us < b.mean_us;
 }
 
+double perTriangle(const PickedSetting& s) {
+  return s.triangles == 0 ? 0.0 : static_cast<double>(s.memory_bytes) / s.triangles;
+}
+
 bool smaller(const PickedSetting& a, const PickedSetting& b) {
-  const double per_a = a.triangles == 0 ? 0.0 : static_cast<double>(a.memory_bytes) / a.triangles;
-  const double per_b = b.triangles == 0 ? 0.0 : static_cast<double>(b.memory_bytes) / b.triangles;
-  return per_a < per_b || (per_a == per_b && faster(a, b));
+  return perTriangle(a) < perTriangle(b) || (perTriangle(a) == perTriangle(b) && faster(a, b));
+}
+
+/// Time or memory: what a pick is best by.
+enum class By { kTime, kMemory };
+
+/// `theirs`' figure over `ours`', with its interval: time is sampled (paired bootstrap), memory is
+/// counted (its interval is the ratio itself).
+std::optional<Ratio> ratioOf(const Candidate& theirs, const Candidate& ours, By by) {
+  if (by == By::kTime) return timeRatio(theirs.time, ours.time);
+  if (perTriangle(ours.setting) <= 0.0) return std::nullopt;
+  const double ratio = perTriangle(theirs.setting) / perTriangle(ours.setting);
+  return Ratio{ratio, {ratio, ratio}};
+}
+
+/// Whether `winner` beats `other` beyond the equivalence band with 95% confidence. Without a
+/// ratio (a time of 0 in some replicate), their intervals must not overlap.
+bool clearlyBeats(const Candidate& winner, const Candidate& other, By by) {
+  if (const std::optional<Ratio> ratio = ratioOf(other, winner, by))
+    return differenceOf(ratio->ci95) == Difference::kClearlyMore;
+  return by == By::kTime && other.setting.ci95_us.lo > winner.setting.ci95_us.hi;
+}
+
+// The best of `all` that `admit` lets in, the settings it does not clearly beat, and the best of
+// another family.
+template <typename Admit>
+std::optional<Pick> bestOf(const std::vector<Candidate>& all, Admit admit, By by) {
+  const auto better = [by](const Candidate& a, const Candidate& b) {
+    return by == By::kTime ? faster(a.setting, b.setting) : smaller(a.setting, b.setting);
+  };
+  const Candidate* best = nullptr;
+  for (const Candidate& c : all) {
+    if (admit(c.setting) && (best == nullptr || better(c, *best))) best = &c;
+  }
+  if (best == nullptr) return std::nullopt;
+  const Candidate* second = nullptr;
+  std::vector<const Candidate*> tied;
+  for (const Candidate& c : all) {
+    if (!admit(c.setting) || &c == best) continue;
+    if (!clearlyBeats(*best, c, by)) tied.push_back(&c);
+    if (backendFamily(c.setting.backend) == backendFamily(best->setting.backend)) continue;
+    if (second == nullptr || better(c, *second)) second = &c;
+  }
+  std::stable_sort(tied.begin(), tied.end(),
+                   [&](const Candidate* a, const Candidate* b) { return better(*a, *b); });
+  Pick pick{best->setting, std::nullopt, std::nullopt, {}};
+  for (const Candidate* c : tied)
+    pick.ties.push_back(c->setting.backend);
+  if (second != nullptr) {
+    pick.runner_up = second->setting;
+    pick.runner_up_ratio = ratioOf(*second, *best, by);
+  }
+  return pick;
 }
 
 std::string wrongText(const PickedSetting& s) {
   return std::to_string(s.wrong_frames) + " of " + std::to_string(s.frames);
 }
 
-std::string ratioText(double ratio) {
-  return formatNumber("%.2f", ratio) + "x";
-}
-
 // What picking the fastest setting of all costs, when it is not the fastest exact one.
-std::string costLine(const std::vector<PickedSetting>& settings,
-                     const std::optional<Pick>& fastest_exact) {
-  const PickedSetting* fastest = nullptr;
-  for (const PickedSetting& s : settings) {
-    if (fastest == nullptr || faster(s, *fastest)) fastest = &s;
+std::string costLine(const std::vector<Candidate>& all, const std::optional<Pick>& fastest_exact) {
+  const Candidate* fastest = nullptr;
+  for (const Candidate& c : all) {
+    if (fastest == nullptr || faster(c.setting, fastest->setting)) fastest = &c;
   }
-  if (fastest == nullptr || exact(*fastest)) return "";
+  if (fastest == nullptr || exact(fastest->setting)) return "";
   if (!fastest_exact) {
-    const PickedSetting* fewest = fastest;
-    for (const PickedSetting& s : settings) {
+    const PickedSetting* fewest = &fastest->setting;
+    for (const Candidate& c : all) {
+      const PickedSetting& s = c.setting;
       if (s.wrong_frames < fewest->wrong_frames ||
           (s.wrong_frames == fewest->wrong_frames && faster(s, *fewest)))
         fewest = &s;
@@ -88,33 +128,49 @@ std::string costLine(const std::vector<PickedSetting>& settings,
            " (" + wrongText(*fewest) + ")";
   }
   const PickedSetting& chosen = fastest_exact->chosen;
-  if (fastest->mean_us <= 0.0) return "";
-  return fastest->backend + " is " + ratioText(chosen.mean_us / fastest->mean_us) +
-         " faster than " + chosen.backend + " here but wrong on " + wrongText(*fastest) + " frames";
+  const auto exact_one = std::find_if(all.begin(), all.end(), [&](const Candidate& c) {
+    return c.setting.backend == chosen.backend;
+  });
+  const std::optional<Ratio> ratio = timeRatio(exact_one->time, fastest->time);
+  if (!ratio) return "";
+  const PickedSetting& wrong = fastest->setting;
+  return wrong.backend + " is " + ratioWithInterval(*ratio) + " faster than " + chosen.backend +
+         " here but wrong on " + wrongText(wrong) + " frames";
+}
+
+Json intervalJson(const Interval& interval) {
+  return Json::array({interval.lo, interval.hi});
+}
+
+// {"fcl:obb": [ratio, low, high], ...}: each other setting's time over this one's.
+Json versusJson(const PickedSetting& s) {
+  Json versus = Json::object();
+  for (const auto& [backend, ratio] : s.versus)
+    versus[backend] = ratio ? Json::array({ratio->value, ratio->ci95.lo, ratio->ci95.hi}) : Json();
+  return versus;
 }
 
 Json settingJson(const PickedSetting& s) {
   return {{"backend", s.backend},
           {"mean_us", s.mean_us},
-          {"bytes_per_triangle",
-           s.triangles == 0 ? Json() : Json(static_cast<double>(s.memory_bytes) / s.triangles)},
+          {"ci95_us", intervalJson(s.ci95_us)},
+          {"bytes_per_triangle", s.triangles == 0 ? Json() : Json(perTriangle(s))},
           {"wrong_frames", s.wrong_frames},
           {"frames", s.frames},
           {"recall", s.recall ? Json(*s.recall) : Json()},
-          {"precision", s.precision ? Json(*s.precision) : Json()}};
+          {"precision", s.precision ? Json(*s.precision) : Json()},
+          {"versus", versusJson(s)},
+          {"clearly_faster_than", s.clearly_faster_than}};
 }
 
-Json pickJson(const std::optional<Pick>& pick, bool by_memory) {
+Json pickJson(const std::optional<Pick>& pick) {
   if (!pick) return nullptr;
   Json json = settingJson(pick->chosen);
+  json["ties"] = pick->ties;
   json["runner_up"] = pick->runner_up ? settingJson(*pick->runner_up) : Json();
-  if (pick->runner_up) {
-    const double ours =
-        by_memory ? static_cast<double>(pick->chosen.memory_bytes) : pick->chosen.mean_us;
-    const double theirs =
-        by_memory ? static_cast<double>(pick->runner_up->memory_bytes) : pick->runner_up->mean_us;
-    json["runner_up_ratio"] = ours > 0.0 ? Json(theirs / ours) : Json();
-  }
+  json["runner_up_ratio"] = pick->runner_up_ratio ? Json(pick->runner_up_ratio->value) : Json();
+  json["runner_up_ratio_ci95"] =
+      pick->runner_up_ratio ? intervalJson(pick->runner_up_ratio->ci95) : Json();
   return json;
 }
 
@@ -129,24 +185,24 @@ std::string sceneText(const SceneQueryPicks& p) {
   return p.resolution == 1.0 ? p.scene : p.scene + " r=" + formatNumber("%g", p.resolution);
 }
 
+// "obbtree ≈ fcl:obb, bullet": a pick and its ties.
+std::string pickText(const Pick& pick) {
+  std::string text = pick.chosen.backend;
+  for (const std::string& tie : pick.ties)
+    text += (&tie == &pick.ties.front() ? " ≈ " : ", ") + tie;
+  return text;
+}
+
 }  // namespace
 
 std::string backendFamily(const std::string& backend) {
   return backend.substr(0, backend.find_first_of(":["));
 }
 
-double meanFrameMedianUs(const QueryMeasurement& m) {
-  if (m.frames.empty()) return 0.0;
-  double total = 0.0;
-  for (const FrameRecord& f : m.frames)
-    total += f.median_us;
-  return total / static_cast<double>(m.frames.size());
-}
-
 std::vector<SceneQueryPicks> whatToPick(const std::vector<CombinationResult>& results,
                                         const PickBudget& budget) {
   using Key = std::tuple<std::string, double, std::string>;
-  std::map<Key, std::vector<PickedSetting>> groups;
+  std::map<Key, std::vector<Candidate>> groups;
   std::vector<Key> order;
   for (const CombinationResult& r : results) {
     const Combination& c = r.combination;
@@ -156,37 +212,46 @@ std::vector<SceneQueryPicks> whatToPick(const std::vector<CombinationResult>& re
       if (!m.ok() || m.frames.empty()) continue;
       const Key key{c.scene_name, c.resolution, m.query};
       if (groups.find(key) == groups.end()) order.push_back(key);
-      groups[key].push_back(settingOf(c.backend, m));
+      groups[key].push_back(candidateOf(c.backend, m));
     }
   }
   std::vector<SceneQueryPicks> picks;
   for (const Key& key : order) {
-    const std::vector<PickedSetting>& settings = groups[key];
+    std::vector<Candidate>& all = groups[key];
+    for (Candidate& c : all) {
+      for (const Candidate& other : all) {
+        if (&other == &c) continue;
+        c.setting.versus.emplace_back(other.setting.backend, timeRatio(other.time, c.time));
+        if (clearlyBeats(c, other, By::kTime))
+          c.setting.clearly_faster_than.push_back(other.setting.backend);
+      }
+    }
     SceneQueryPicks p;
     std::tie(p.scene, p.resolution, p.query) = key;
-    p.settings = settings;
-    p.fastest_exact = bestOf(settings, exact, faster);
+    for (const Candidate& c : all)
+      p.settings.push_back(c.setting);
+    p.fastest_exact = bestOf(all, exact, By::kTime);
     p.fastest_within = bestOf(
-        settings,
+        all,
         [&](const PickedSetting& s) {
           return static_cast<double>(s.wrong_frames) <=
                  budget.wrong_frame_share * static_cast<double>(s.frames);
         },
-        faster);
-    p.smallest_exact = bestOf(settings, exact, smaller);
+        By::kTime);
+    p.smallest_exact = bestOf(all, exact, By::kMemory);
     std::vector<std::string> families;
-    for (const PickedSetting& s : settings) {
-      const std::string family = backendFamily(s.backend);
+    for (const Candidate& c : all) {
+      const std::string family = backendFamily(c.setting.backend);
       if (std::find(families.begin(), families.end(), family) != families.end()) continue;
       families.push_back(family);
       p.fastest_per_family.push_back(
           bestOf(
-              settings,
+              all,
               [&](const PickedSetting& other) { return backendFamily(other.backend) == family; },
-              faster)
+              By::kTime)
               ->chosen);
     }
-    p.cost = costLine(settings, p.fastest_exact);
+    p.cost = costLine(all, p.fastest_exact);
     picks.push_back(std::move(p));
   }
   return picks;
@@ -206,36 +271,32 @@ std::string whatToPickText(const std::vector<SceneQueryPicks>& picks, const Pick
     std::string line = sceneText(p) + " / " + p.query + ":";
     for (const PickedSetting& s : p.fastest_per_family) {
       line += (&s == &p.fastest_per_family.front() ? " " : ", ") + s.backend + " " +
-              formatNumber("%.1f", s.mean_us) + " us";
+              withInterval(s.mean_us, s.ci95_us) + " us";
       if (s.wrong_frames != 0) line += " (wrong on " + wrongText(s) + ")";
     }
     per_family.push_back(line);
     std::vector<std::string> row = {sceneText(p), p.query};
     if (p.fastest_exact) {
       const Pick& f = *p.fastest_exact;
-      row.push_back(f.chosen.backend);
-      row.push_back(formatNumber("%.1f", f.chosen.mean_us));
-      row.push_back(f.runner_up && f.chosen.mean_us > 0.0
-                        ? ratioText(f.runner_up->mean_us / f.chosen.mean_us)
-                        : "-");
+      row.push_back(pickText(f));
+      row.push_back(withInterval(f.chosen.mean_us, f.chosen.ci95_us));
+      row.push_back(f.runner_up_ratio ? ratioWithInterval(*f.runner_up_ratio) : "-");
     } else {
       row.insert(row.end(), {"none exact", "-", "-"});
     }
     if (p.fastest_within) {
-      row.push_back(p.fastest_within->chosen.backend);
-      row.push_back(formatNumber("%.1f", p.fastest_within->chosen.mean_us));
+      row.push_back(pickText(*p.fastest_within));
+      row.push_back(
+          withInterval(p.fastest_within->chosen.mean_us, p.fastest_within->chosen.ci95_us));
       row.push_back(wrongText(p.fastest_within->chosen));
     } else {
       row.insert(row.end(), {"none", "-", "-"});
     }
     if (p.smallest_exact) {
       const Pick& s = *p.smallest_exact;
-      row.push_back(s.chosen.backend);
+      row.push_back(pickText(s));
       row.push_back(bytesPerTriangleText(s.chosen.memory_bytes, s.chosen.triangles));
-      row.push_back(s.runner_up && s.chosen.memory_bytes > 0
-                        ? ratioText(static_cast<double>(s.runner_up->memory_bytes) /
-                                    static_cast<double>(s.chosen.memory_bytes))
-                        : "-");
+      row.push_back(s.runner_up_ratio ? ratioWithInterval(*s.runner_up_ratio) : "-");
     } else {
       row.insert(row.end(), {"none exact", "-", "-"});
     }
@@ -248,8 +309,13 @@ std::string whatToPickText(const std::vector<SceneQueryPicks>& picks, const Pick
          "no answer cap): the fastest with no wrong frame, the fastest with at most "
       << formatNumber("%g", budget.wrong_frame_share * 100.0)
       << "% of its frames wrong, and the exact one with the least model memory. Times are the "
-         "mean over frames of each frame's median (us per query); 'vs next' = the best other "
-         "backend family's time (or memory) over the pick's.\n";
+         "mean over frames of each frame's median call (us per query) with its 95% bootstrap "
+         "interval [low, high]; 'vs next' = the best other backend family's time (or memory) "
+         "over the pick's, its interval paired by frame. A pick is a clear win only over the "
+         "settings it beats by more than "
+      << formatNumber("%g", kEquivalenceBand * 100.0)
+      << "% with 95% confidence; 'a ≈ b, c' names the settings it ties with, fastest (or "
+         "smallest) first (docs/STUDY.md, \"Times and their intervals\").\n";
   if (!costs.empty()) {
     out << "What the fastest setting of all costs where it is not exact:\n";
     for (const std::string& line : costs)
@@ -270,14 +336,17 @@ Json whatToPickJson(const std::vector<SceneQueryPicks>& picks, const PickBudget&
     rows.push_back({{"scene", p.scene},
                     {"resolution", p.resolution},
                     {"query", p.query},
-                    {"fastest_exact", pickJson(p.fastest_exact, false)},
-                    {"fastest_within_budget", pickJson(p.fastest_within, false)},
-                    {"smallest_exact", pickJson(p.smallest_exact, true)},
+                    {"fastest_exact", pickJson(p.fastest_exact)},
+                    {"fastest_within_budget", pickJson(p.fastest_within)},
+                    {"smallest_exact", pickJson(p.smallest_exact)},
                     {"fastest_per_family", families},
                     {"settings", settingsJson(p.settings)},
                     {"cost", p.cost.empty() ? Json() : Json(p.cost)}});
   }
-  return {{"budget", {{"wrong_frame_share", budget.wrong_frame_share}}}, {"picks", rows}};
+  return {{"budget", {{"wrong_frame_share", budget.wrong_frame_share}}},
+          {"statistic", kTimeStatisticText},
+          {"equivalence_band", kEquivalenceBand},
+          {"picks", rows}};
 }
 
 }  // namespace collido::study

@@ -78,11 +78,14 @@ TEST(FieldTable, FastestExactSingleThreadSettingAgainstEachFamilysFastest) {
   // scene, query, ours, mean us, B/tri, floor x, box/pair, tri/pair, then per comparator
   // (fcl:obb, fcl, bullet) its time and the ratio.
   const std::vector<std::string> expected = {
-      "tori", "all_pairs", "obbtree[max_leaf_triangles=4]", "20.0", "116",
+      // Each time with its interval: one call per frame, so the frames drawn decide it.
+      "tori", "all_pairs", "obbtree[max_leaf_triangles=4]", "20.0 [10.0, 30.0]", "116",
       // (10 + 30) / (1 + 2); (200 + 400) / 40; (20 + 60) / 40.
       "13.3", "15.0", "2.0",
-      // fcl:obb mean 80; FCL's fastest is OBBRSS (60); Bullet 40, wrong on a frame.
-      "80.0", "4.00x", "60.0", "3.00x", "40.0!", "2.00x"};
+      // fcl:obb mean 80; FCL's fastest is OBBRSS (60); Bullet 40, wrong on a frame. A ratio's
+      // interval pairs the frames: fcl:obb's 5x and 3.67x on each alone bound its 4x.
+      "80.0 [50.0, 110.0]", "4.00x [3.67, 5.00]", "60.0 [40.0, 80.0]", "3.00x [2.67, 4.00]",
+      "40.0 [30.0, 50.0]!", "2.00x [1.67, 3.00]"};
   EXPECT_EQ(cells, expected);
 }
 
@@ -94,6 +97,15 @@ TEST(FieldTable, NoExactSettingIsSaidNotHidden) {
   const std::vector<std::string> cells = onlyRow(fieldTable(results));
   ASSERT_GE(cells.size(), 3u);
   EXPECT_EQ(cells[2], "no exact setting");
+}
+
+TEST(FieldTable, ARatioWithinTheBandIsMarkedATie) {
+  const std::vector<std::string> cells =
+      onlyRow(fieldTable({result("obbtree", pairs("obbtree", 10, 30)),
+                          result("fcl:obb", pairs("fcl:obb", 10.5, 31.5))}));
+  // scene, query, ours (4 cells), then fcl:obb's and FCL's fastest's time and ratio.
+  ASSERT_EQ(cells.size(), 12u);
+  EXPECT_EQ(cells[9], "≈1.05x");
 }
 
 TEST(FieldTable, EmptyWithoutAComparatorOrForStressScenes) {

@@ -34,7 +34,7 @@ TEST(NeedsTable, EveryAgainstDeclaredAndChanged) {
   const std::string table = needsTable(results);
   ASSERT_FALSE(table.empty());
   for (const char* column : {"B/tri every", "B/tri declared", "B/tri saved", "build ms saved",
-                             "median us changed", "frames unasked", "disagree changed"}) {
+                             "mean us changed", "frames unasked", "disagree changed"}) {
     EXPECT_NE(table.find(column), std::string::npos) << column;
   }
   // 300 against 180 bytes a triangle (1000 triangles): 120 saved, 40%; build 1 ms, 25%; 2 of 3

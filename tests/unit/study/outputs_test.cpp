@@ -105,7 +105,13 @@ TEST(BenchmarkJson, GoogleBenchmarkFormat) {
     EXPECT_EQ(b.at("peak_rss_bytes"), 48u * 1024u * 1024u);
   }
   EXPECT_EQ(benchmarks[0].at("name"), "obbtree/tori/all_pairs");
-  EXPECT_EQ(benchmarks[0].at("real_time"), 20.0);
+  // real_time is the study's statistic, the mean of the frames' medians, with its interval.
+  EXPECT_DOUBLE_EQ(benchmarks[0].at("real_time").get<double>(), 70.0 / 3.0);
+  const nlohmann::json& ci = benchmarks[0].at("ci95_us");
+  ASSERT_EQ(ci.size(), 2u);
+  EXPECT_LT(ci.at(0).get<double>(), 70.0 / 3.0);
+  EXPECT_GT(ci.at(1).get<double>(), 70.0 / 3.0);
+  EXPECT_NE(context.at("time_statistic").get<std::string>().find("95%"), std::string::npos);
   EXPECT_EQ(benchmarks[0].at("iterations"), 3);
   EXPECT_EQ(benchmarks[0].at("max_us"), 40.0);
   EXPECT_EQ(benchmarks[0].at("disagreements"), 1);
@@ -131,8 +137,8 @@ TEST(BenchmarkJson, GoogleBenchmarkFormat) {
 
 TEST(StudyTable, RowsSavingsAndFailures) {
   const std::string table = studyTable(mixedResults());
-  for (const char* column : {"backend", "setting", "median us", "p99 us", "max us", "disagree",
-                             "coarse err", "B/tri heap", "RSS MiB"})
+  for (const char* column : {"backend", "setting", "mean us [95% CI]", "disagree", "coarse err",
+                             "B/tri heap", "RSS MiB"})
     EXPECT_NE(table.find(column), std::string::npos) << column;
   EXPECT_NE(table.find("needs=every"), std::string::npos) << table;
   EXPECT_NE(table.find("skipped"), std::string::npos) << table;

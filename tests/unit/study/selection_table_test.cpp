@@ -63,13 +63,17 @@ TEST(WhatToPick, FastestSmallestWithinTheBudgetAndPerFamily) {
   for (const PickedSetting& s : p.fastest_per_family)
     families.push_back(s.backend);
   EXPECT_EQ(families, (std::vector<std::string>{"obbtree[float_boxes=true]", "fcl:obb", "bullet"}));
+  // Every other setting is clearly beaten: no ties.
+  EXPECT_TRUE(p.fastest_exact->ties.empty());
+  EXPECT_TRUE(p.smallest_exact->ties.empty());
   EXPECT_EQ(
       p.cost,
       "bullet is 3.00x faster than obbtree[float_boxes=true] here but wrong on 1 of 2 frames");
 
   const std::string text = whatToPickText(picks, PickBudget{});
   EXPECT_NE(text.find("within 5% wrong"), std::string::npos) << text;
-  EXPECT_NE(text.find("2.00x"), std::string::npos) << text;  // fcl:obb's time over the pick's
+  // fcl:obb's time over the pick's: its interval is the ratio itself (times that do not vary).
+  EXPECT_NE(text.find(" 2.00x "), std::string::npos) << text;
   EXPECT_NE(text.find("4.00x"), std::string::npos) << text;  // fcl:obb's memory over the pick's
   EXPECT_NE(text.find("tori / boolean: bullet is 3.00x faster"), std::string::npos) << text;
   EXPECT_NE(text.find("tori / boolean: obbtree[float_boxes=true] "), std::string::npos) << text;
@@ -81,9 +85,36 @@ TEST(WhatToPick, FastestSmallestWithinTheBudgetAndPerFamily) {
   const nlohmann::json& row = json.at("picks").at(0);
   EXPECT_EQ(row.at("fastest_exact").at("backend"), "obbtree[float_boxes=true]");
   EXPECT_DOUBLE_EQ(row.at("fastest_exact").at("runner_up_ratio").get<double>(), 2.0);
+  EXPECT_EQ(row.at("fastest_exact").at("runner_up_ratio_ci95"), nlohmann::json::array({2.0, 2.0}));
+  EXPECT_EQ(row.at("fastest_exact").at("ties"), nlohmann::json::array());
+  EXPECT_EQ(row.at("fastest_exact").at("ci95_us"), nlohmann::json::array({15.0, 15.0}));
+  EXPECT_EQ(row.at("fastest_exact").at("clearly_faster_than"),
+            nlohmann::json::array({"obbtree", "fcl:obb"}));
+  EXPECT_DOUBLE_EQ(row.at("fastest_exact").at("versus").at("fcl:obb").at(0).get<double>(), 2.0);
+  EXPECT_DOUBLE_EQ(json.at("equivalence_band").get<double>(), kEquivalenceBand);
   EXPECT_DOUBLE_EQ(row.at("smallest_exact").at("bytes_per_triangle").get<double>(), 50.0);
   EXPECT_EQ(row.at("fastest_per_family").size(), 3u);
   EXPECT_TRUE(row.at("settings").at(0).at("recall").is_null());  // a boolean query has no pairs
+}
+
+TEST(WhatToPick, SettingsWithinTheBandAreTiesNotWins) {
+  // fcl:obb is 5% slower than the OBB tree, inside the band; the float-box setting 8% larger.
+  const std::vector<SceneQueryPicks> picks =
+      whatToPick({setting("obbtree", 20.0, 100000), setting("fcl:obb", 21.0, 300000),
+                  setting("obbtree[float_boxes=true]", 30.0, 108000)});
+  ASSERT_EQ(picks.size(), 1u);
+  const SceneQueryPicks& p = picks[0];
+  ASSERT_TRUE(p.fastest_exact && p.fastest_exact->runner_up_ratio);
+  EXPECT_EQ(p.fastest_exact->chosen.backend, "obbtree");
+  EXPECT_EQ(p.fastest_exact->ties, std::vector<std::string>{"fcl:obb"});
+  EXPECT_DOUBLE_EQ(p.fastest_exact->runner_up_ratio->value, 1.05);
+  ASSERT_TRUE(p.smallest_exact);
+  EXPECT_EQ(p.smallest_exact->ties, std::vector<std::string>{"obbtree[float_boxes=true]"});
+  const std::string text = whatToPickText(picks, PickBudget{});
+  EXPECT_NE(text.find("obbtree ≈ fcl:obb "), std::string::npos) << text;
+  EXPECT_NE(text.find("obbtree ≈ obbtree[float_boxes=true] "), std::string::npos) << text;
+  EXPECT_EQ(whatToPickJson(picks, PickBudget{}).at("picks").at(0).at("fastest_exact").at("ties"),
+            nlohmann::json::array({"fcl:obb"}));
 }
 
 TEST(WhatToPick, AllPairsSettingsCarryTheirPairRecallAndPrecision) {

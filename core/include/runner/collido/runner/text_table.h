@@ -7,7 +7,7 @@
 namespace collido {
 
 /// A plain-text table: a header, a rule, then the rows; columns from `first_numeric` on are
-/// right-aligned. Widths count bytes, so cells should be ASCII.
+/// right-aligned. Widths count UTF-8 characters, each taken as one column.
 std::string formatTextTable(const std::vector<std::string>& header,
                             const std::vector<std::vector<std::string>>& rows,
                             std::size_t first_numeric);

@@ -1,0 +1,87 @@
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <collido/runner/runner.h>
+
+namespace collido {
+
+/// A 95% confidence interval.
+struct Interval {
+  double lo = 0.0;
+  double hi = 0.0;
+};
+
+/// The one time statistic every table, summary and chart of a study shows: the mean over frames
+/// of each frame's median timed call, in microseconds per query. Each frame weighs once, as a
+/// step of the workload does; the median keeps one slow call from deciding a frame.
+double meanFrameTimeUs(const QueryMeasurement& m);
+
+/// That statistic and its interval in words, as the outputs name them.
+inline constexpr const char* kTimeStatisticText =
+    "mean over frames of each frame's median call (us per query), with its 95% bootstrap "
+    "interval (frames and calls resampled)";
+
+/// Each frame's timed calls, split from QueryMeasurement::times_us (frame-major, the same count
+/// per frame). A frame whose calls cannot be told apart from its neighbours' (a measurement
+/// written with another layout) holds its median alone.
+std::vector<std::vector<double>> callsPerFrame(const QueryMeasurement& m);
+
+/// The bootstrap distribution of meanFrameTimeUs (docs/STUDY.md, "Times and their intervals"):
+/// each replicate draws the frames with replacement and, within each drawn frame, its calls
+/// with replacement, and takes the mean of the drawn frames' medians. The frames drawn depend on
+/// the frame count alone, so two measurements of the same frames draw the same ones: their
+/// replicates pair by frame. The calls drawn are seeded from the times themselves, so the same
+/// measurement always gives the same interval.
+class TimeBootstrap {
+ public:
+  static constexpr int kReplicates = 2000;
+
+  explicit TimeBootstrap(const QueryMeasurement& m);
+  /// The same for any per-frame timings: each frame's calls (one or more each).
+  explicit TimeBootstrap(const std::vector<std::vector<double>>& calls_per_frame);
+
+  double estimate() const { return estimate_; }
+  /// The percentile interval of the replicates.
+  Interval ci95() const;
+  const std::vector<double>& replicates() const { return replicates_; }
+
+ private:
+  double estimate_ = 0.0;
+  std::vector<double> replicates_;
+};
+
+/// A ratio of two figures with its 95% interval.
+struct Ratio {
+  double value = 0.0;
+  Interval ci95;
+};
+
+/// `numerator`'s statistic over `denominator`'s, with the percentile interval of the replicates'
+/// ratios (paired by frame when both have the same frame count); none when the denominator's
+/// estimate or a replicate of it is 0.
+std::optional<Ratio> timeRatio(const TimeBootstrap& numerator, const TimeBootstrap& denominator);
+
+/// The practical-equivalence band: two times within 10% of each other are treated as the same
+/// (docs/STUDY.md says why 10%).
+inline constexpr double kEquivalenceBand = 0.10;
+
+/// Where a ratio's interval lies against the band [1/(1+band), 1+band].
+enum class Difference {
+  kClearlyLess,  ///< wholly below the band
+  kSame,         ///< meets the band: practically the same within the noise
+  kClearlyMore,  ///< wholly above the band
+};
+
+Difference differenceOf(const Interval& ratio, double band = kEquivalenceBand);
+
+/// "133.9 [130.2, 137.5]": a time with its interval, to a tenth of a microsecond.
+std::string withInterval(double value, const Interval& ci);
+
+/// "1.09x [1.02, 1.17]"; "4.00x" where the interval is the ratio itself (a counted figure, or
+/// times that vary in step).
+std::string ratioWithInterval(const Ratio& ratio);
+
+}  // namespace collido

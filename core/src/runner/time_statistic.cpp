@@ -1,0 +1,144 @@
+#include <collido/runner/time_statistic.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <random>
+
+#include <collido/runner/statistics.h>
+#include <collido/runner/text_table.h>
+
+namespace collido {
+namespace {
+
+// FNV-1a over the times' bytes: the same measurement seeds the same call draws, and two
+// measurements seed different ones.
+std::uint64_t seedOf(const std::vector<std::vector<double>>& calls) {
+  std::uint64_t hash = 14695981039346656037ull;
+  for (const std::vector<double>& frame : calls) {
+    for (const double t : frame) {
+      unsigned char bytes[sizeof t];
+      std::memcpy(bytes, &t, sizeof t);
+      for (const unsigned char b : bytes) {
+        hash ^= b;
+        hash *= 1099511628211ull;
+      }
+    }
+  }
+  return hash;
+}
+
+// The median of `values` (type 7, as quantile(values, 0.5)); reorders them.
+double medianInPlace(std::vector<double>& values) {
+  const std::size_t k = values.size();
+  const auto middle = values.begin() + static_cast<std::ptrdiff_t>(k / 2);
+  std::nth_element(values.begin(), middle, values.end());
+  if (k % 2 == 1) return *middle;
+  const double below = *std::max_element(values.begin(), middle);
+  return (below + *middle) / 2.0;
+}
+
+Interval percentileInterval(const std::vector<double>& values) {
+  return {quantile(values, 0.025), quantile(values, 0.975)};
+}
+
+bool sameMedian(const std::vector<double>& calls, double median) {
+  const double of_calls = quantile(calls, 0.5);
+  return std::abs(of_calls - median) <= 1e-9 * std::max(1.0, std::abs(median));
+}
+
+}  // namespace
+
+double meanFrameTimeUs(const QueryMeasurement& m) {
+  if (m.frames.empty()) return 0.0;
+  double total = 0.0;
+  for (const FrameRecord& f : m.frames)
+    total += f.median_us;
+  return total / static_cast<double>(m.frames.size());
+}
+
+std::vector<std::vector<double>> callsPerFrame(const QueryMeasurement& m) {
+  const std::size_t frames = m.frames.size();
+  std::vector<std::vector<double>> calls(frames);
+  const std::size_t per_frame = frames == 0 ? 0 : m.times_us.size() / frames;
+  const bool split = per_frame > 0 && per_frame * frames == m.times_us.size();
+  for (std::size_t f = 0; f < frames; ++f) {
+    if (split) {
+      const auto first = m.times_us.begin() + static_cast<std::ptrdiff_t>(f * per_frame);
+      calls[f].assign(first, first + static_cast<std::ptrdiff_t>(per_frame));
+    }
+    if (!split || !sameMedian(calls[f], m.frames[f].median_us)) calls[f] = {m.frames[f].median_us};
+  }
+  return calls;
+}
+
+TimeBootstrap::TimeBootstrap(const QueryMeasurement& m) : TimeBootstrap(callsPerFrame(m)) {}
+
+TimeBootstrap::TimeBootstrap(const std::vector<std::vector<double>>& calls) {
+  const std::size_t frames = calls.size();
+  for (const std::vector<double>& frame : calls)
+    estimate_ += frame.empty() ? 0.0 : quantile(frame, 0.5);
+  if (frames != 0) estimate_ /= static_cast<double>(frames);
+  if (frames == 0) {
+    replicates_.assign(kReplicates, 0.0);
+    return;
+  }
+  // The frames drawn depend on their count alone (pairing, above); the calls on the times.
+  std::mt19937_64 frame_draws(0x5EEDF4A3E5ull ^ frames);
+  std::mt19937_64 call_draws(seedOf(calls));
+  std::uniform_int_distribution<std::size_t> pick_frame(0, frames - 1);
+  std::vector<double> drawn;
+  replicates_.reserve(kReplicates);
+  for (int r = 0; r < kReplicates; ++r) {
+    double total = 0.0;
+    for (std::size_t i = 0; i < frames; ++i) {
+      const std::vector<double>& frame = calls[pick_frame(frame_draws)];
+      if (frame.size() <= 1) {
+        total += frame.empty() ? 0.0 : frame.front();
+        continue;
+      }
+      std::uniform_int_distribution<std::size_t> pick_call(0, frame.size() - 1);
+      drawn.resize(frame.size());
+      for (double& d : drawn)
+        d = frame[pick_call(call_draws)];
+      total += medianInPlace(drawn);
+    }
+    replicates_.push_back(total / static_cast<double>(frames));
+  }
+}
+
+Interval TimeBootstrap::ci95() const {
+  return percentileInterval(replicates_);
+}
+
+std::optional<Ratio> timeRatio(const TimeBootstrap& numerator, const TimeBootstrap& denominator) {
+  if (denominator.estimate() <= 0.0) return std::nullopt;
+  const std::vector<double>& top = numerator.replicates();
+  const std::vector<double>& bottom = denominator.replicates();
+  std::vector<double> ratios(top.size());
+  for (std::size_t r = 0; r < top.size(); ++r) {
+    if (bottom[r] <= 0.0) return std::nullopt;
+    ratios[r] = top[r] / bottom[r];
+  }
+  return Ratio{numerator.estimate() / denominator.estimate(), percentileInterval(ratios)};
+}
+
+Difference differenceOf(const Interval& ratio, double band) {
+  if (ratio.lo > 1.0 + band) return Difference::kClearlyMore;
+  if (ratio.hi < 1.0 / (1.0 + band)) return Difference::kClearlyLess;
+  return Difference::kSame;
+}
+
+std::string withInterval(double value, const Interval& ci) {
+  return formatNumber("%.1f", value) + " [" + formatNumber("%.1f", ci.lo) + ", " +
+         formatNumber("%.1f", ci.hi) + "]";
+}
+
+std::string ratioWithInterval(const Ratio& ratio) {
+  if (ratio.ci95.lo == ratio.ci95.hi) return formatNumber("%.2f", ratio.value) + "x";
+  return formatNumber("%.2f", ratio.value) + "x [" + formatNumber("%.2f", ratio.ci95.lo) + ", " +
+         formatNumber("%.2f", ratio.ci95.hi) + "]";
+}
+
+}  // namespace collido
