@@ -134,9 +134,17 @@ void addStudyCommands(CLI::App& app, const PluginOptions& plugins, int& exit_cod
       ->check(CLI::PositiveNumber);
   command
       ->add_option("--protocol", args->protocol,
-                   "timing protocol: repeated (each frame's calls back to back, the default) or "
-                   "cycled (each timed call on another frame than the last; docs/STUDY.md)")
+                   "timing protocol: cycled (each timed call on another frame than the last, the "
+                   "default) or repeated (each frame's calls back to back; docs/STUDY.md)")
       ->check(CLI::IsMember({"repeated", "cycled"}));
+  command
+      ->add_option("--rounds", args->rounds,
+                   "timing rounds: each scene combination runs this many times, each in a worker "
+                   "of its own, and its timed calls are joined (default: the sweep's, else 1)")
+      ->check(CLI::Range(1, 100));
+  command->add_option("--order-seed", args->order_seed,
+                      "the seed of the random order combinations and rounds run in (recorded in "
+                      "plan.json)");
   command->add_option("--expected-times", args->expected_times,
                       "an earlier study folder or its times.json: the expected time printed at "
                       "the start and the progress estimate come from its wall times");

@@ -192,7 +192,7 @@ TEST(StudyCli, CrashAbortAndHangCostOneCombinationEach) {
     SCOPED_TRACE(m.query);
     EXPECT_EQ(m.status, "ok");
     EXPECT_EQ(m.frames.size(), 3u);
-    EXPECT_EQ(m.times_us.size(), 3u);  // --repetitions 1
+    EXPECT_EQ(m.times_us.size(), 12u);  // --repetitions 1, raised to 12 calls a round
     EXPECT_EQ(m.disagreements, 0u);
   }
   EXPECT_GT(obbtree.outcome.peak_rss_bytes, 0u);
@@ -519,16 +519,18 @@ TEST(StudyCli, ShardsMergeIntoTheWholeStudy) {
   const std::string scene = writeSmallScene(dir);
   const std::string backends = "obbtree,misbehaving:exact,misbehaving:wrong";
   std::vector<std::string> a = studyArgs(scene, backends, dir + "/a");
-  // One oracle store for both shards, as on a cluster's shared filesystem.
-  a.insert(a.end(), {"--shard", "0/2", "--oracle-store", dir + "/store"});
+  // One oracle store for both shards, as on a cluster's shared filesystem; two timing rounds,
+  // each shard running both of each of its combinations.
+  a.insert(a.end(), {"--shard", "0/2", "--oracle-store", dir + "/store", "--rounds", "2"});
   std::vector<std::string> b = studyArgs(scene, backends, dir + "/b");
-  b.insert(b.end(), {"--shard", "1/2", "--oracle-store", dir + "/store"});
+  b.insert(b.end(), {"--shard", "1/2", "--oracle-store", dir + "/store", "--rounds", "2"});
   const CommandRun run_a = collido(a, dir);
   ASSERT_EQ(run_a.exit_code, 0) << describe(run_a);
-  EXPECT_NE(run_a.err.find("study: 2 combinations in shard 0/2"), std::string::npos) << run_a.err;
+  EXPECT_NE(run_a.err.find("study: 4 combinations in shard 0/2"), std::string::npos) << run_a.err;
+  EXPECT_NE(readText(dir + "/a/plan.json").find(R"("rounds": 2)"), std::string::npos);
   const CommandRun run_b = collido(b, dir);
   ASSERT_EQ(run_b.exit_code, 0) << describe(run_b);
-  EXPECT_NE(run_b.err.find("study: 1 combinations in shard 1/2"), std::string::npos) << run_b.err;
+  EXPECT_NE(run_b.err.find("study: 2 combinations in shard 1/2"), std::string::npos) << run_b.err;
   // The scene's exact answers were kept once, in the store given, not in either shard's folder.
   EXPECT_EQ(jsonFilesIn(dir + "/store").size(), 1u);
   EXPECT_FALSE(fs::exists(dir + "/a/oracle"));
@@ -558,8 +560,12 @@ TEST(StudyCli, ShardsMergeIntoTheWholeStudy) {
   EXPECT_EQ(merged_plan.value().size(), 3u);
   std::map<std::string, CombinationResult> results = byBackend(readResults(dir + "/m"));
   ASSERT_EQ(results.size(), 3u);
-  for (const auto& [backend, r] : results)
+  for (const auto& [backend, r] : results) {
     EXPECT_EQ(r.outcome.status, "ok") << backend;
+    // Both rounds' calls, 12 a round, joined frame by frame.
+    EXPECT_EQ(r.measurements.at(0).rounds, 2u) << backend;
+    EXPECT_EQ(r.measurements.at(0).times_us.size(), 24u) << backend;
+  }
   EXPECT_EQ(results["misbehaving:wrong"].measurements.at(0).disagreements, 3u);
   for (const char* file : {"table.txt", "records.jsonl", "summary.json"})
     EXPECT_TRUE(fs::exists(dir + "/m/" + file)) << file;
@@ -684,7 +690,8 @@ TEST(StudyCli, SweepFileSetsTheGrid) {
     ASSERT_EQ(r.measurements.size(), 2u);
     for (const QueryMeasurement& m : r.measurements) {
       EXPECT_EQ(m.status, "ok");
-      EXPECT_EQ(m.times_us.size(), 3u * 2u);  // the sweep's repetitions
+      // The sweep's 2 repetitions on 3 frames, raised to 12 calls (at least 12 a round).
+      EXPECT_EQ(m.times_us.size(), 12u);
       EXPECT_EQ(m.protocol, "cycled");
       EXPECT_EQ(m.disagreements, 0u);
       EXPECT_EQ(m.finest_disagreements.has_value(), r.combination.resolution != 1.0);

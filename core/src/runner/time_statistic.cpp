@@ -73,9 +73,10 @@ std::vector<std::vector<double>> callsPerFrame(const QueryMeasurement& m) {
   return calls;
 }
 
-TimeBootstrap::TimeBootstrap(const QueryMeasurement& m) : TimeBootstrap(callsPerFrame(m)) {}
+TimeBootstrap::TimeBootstrap(const QueryMeasurement& m)
+    : TimeBootstrap(callsPerFrame(m), m.rounds) {}
 
-TimeBootstrap::TimeBootstrap(const std::vector<std::vector<double>>& calls) {
+TimeBootstrap::TimeBootstrap(const std::vector<std::vector<double>>& calls, std::size_t rounds) {
   const std::size_t frames = calls.size();
   for (const std::vector<double>& frame : calls)
     estimate_ += frame.empty() ? 0.0 : quantile(frame, 0.5);
@@ -84,13 +85,23 @@ TimeBootstrap::TimeBootstrap(const std::vector<std::vector<double>>& calls) {
     replicates_.assign(kReplicates, 0.0);
     return;
   }
-  // The frames drawn depend on their count alone (pairing, above); the calls on the times.
+  // Rounds resampled only where every frame's calls divide into them evenly.
+  const bool by_round = rounds > 1 && std::all_of(calls.begin(), calls.end(), [&](const auto& f) {
+                          return !f.empty() && f.size() % rounds == 0;
+                        });
+  if (!by_round) rounds = 1;
+  // The frames drawn depend on their count alone (pairing, above); rounds and calls on the times.
   std::mt19937_64 frame_draws(0x5EEDF4A3E5ull ^ frames);
   std::mt19937_64 call_draws(seedOf(calls));
   std::uniform_int_distribution<std::size_t> pick_frame(0, frames - 1);
+  std::uniform_int_distribution<std::size_t> pick_round(0, rounds - 1);
+  std::vector<std::size_t> drawn_rounds(rounds);
+  std::vector<double> pool;
   std::vector<double> drawn;
   replicates_.reserve(kReplicates);
   for (int r = 0; r < kReplicates; ++r) {
+    for (std::size_t& round : drawn_rounds)
+      round = rounds == 1 ? 0 : pick_round(call_draws);
     double total = 0.0;
     for (std::size_t i = 0; i < frames; ++i) {
       const std::vector<double>& frame = calls[pick_frame(frame_draws)];
@@ -98,14 +109,45 @@ TimeBootstrap::TimeBootstrap(const std::vector<std::vector<double>>& calls) {
         total += frame.empty() ? 0.0 : frame.front();
         continue;
       }
-      std::uniform_int_distribution<std::size_t> pick_call(0, frame.size() - 1);
-      drawn.resize(frame.size());
+      // This frame's calls from the rounds drawn, then drawn again call by call.
+      const std::size_t per_round = frame.size() / rounds;
+      pool.clear();
+      for (const std::size_t round : drawn_rounds) {
+        const auto first = frame.begin() + static_cast<std::ptrdiff_t>(round * per_round);
+        pool.insert(pool.end(), first, first + static_cast<std::ptrdiff_t>(per_round));
+      }
+      std::uniform_int_distribution<std::size_t> pick_call(0, pool.size() - 1);
+      drawn.resize(pool.size());
       for (double& d : drawn)
-        d = frame[pick_call(call_draws)];
+        d = pool[pick_call(call_draws)];
       total += medianInPlace(drawn);
     }
     replicates_.push_back(total / static_cast<double>(frames));
   }
+}
+
+std::optional<double> roundSpread(const QueryMeasurement& m) {
+  const std::size_t rounds = m.rounds;
+  if (rounds < 2) return std::nullopt;
+  const std::vector<std::vector<double>> calls = callsPerFrame(m);
+  std::vector<double> means(rounds, 0.0);
+  for (const std::vector<double>& frame : calls) {
+    if (frame.size() % rounds != 0 || frame.size() < rounds) return std::nullopt;
+    const std::size_t per_round = frame.size() / rounds;
+    for (std::size_t r = 0; r < rounds; ++r) {
+      const auto first = frame.begin() + static_cast<std::ptrdiff_t>(r * per_round);
+      means[r] +=
+          quantile(std::vector<double>(first, first + static_cast<std::ptrdiff_t>(per_round)), 0.5);
+    }
+  }
+  const auto [low, high] = std::minmax_element(means.begin(), means.end());
+  if (calls.empty() || *low <= 0.0) return std::nullopt;
+  return *high / *low;
+}
+
+bool unstable(const QueryMeasurement& m) {
+  const std::optional<double> spread = roundSpread(m);
+  return spread && *spread > 1.0 + 2.0 * kEquivalenceBand;
 }
 
 Interval TimeBootstrap::ci95() const {

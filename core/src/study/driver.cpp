@@ -486,8 +486,11 @@ int runStudyImpl(const StudyRequest& args, std::ostream& out, std::ostream& err)
   }
   const int repetitions = args.repetitions > 0 ? args.repetitions : sweep.repetitions.value_or(5);
   const double timeout_s = args.timeout_s > 0 ? args.timeout_s : sweep.timeout_s.value_or(600.0);
+  // Cycled by default: each timed call on another frame than the last, as an independent
+  // harness and a simulation step meet them (docs/STUDY.md, "Timing protocols").
   const std::string protocol =
-      !args.protocol.empty() ? args.protocol : sweep.protocol.value_or("repeated");
+      !args.protocol.empty() ? args.protocol : sweep.protocol.value_or("cycled");
+  const RunOrder order{args.rounds > 0 ? args.rounds : sweep.rounds.value_or(1), args.order_seed};
   const std::map<std::string, std::set<std::string>> only_scenes = onlyScenes(sweep, scenes, err);
   const SettingAbilities abilities = abilitiesInChildren(args, settings, plugin_file_of, err);
   std::vector<Combination> whole = planStudy(scenes, settings, sweep, only_scenes, abilities);
@@ -510,7 +513,9 @@ int runStudyImpl(const StudyRequest& args, std::ostream& out, std::ostream& err)
       whole.push_back(withInputs(std::move(c), digest, identity, repetitions, "repeated"));
     }
   }
-  const std::vector<Combination> plan = shardOf(whole, shard_index, shard_count);
+  // A shard runs every round of its combinations, so that it can join them.
+  const std::vector<Combination> plan =
+      inRounds(shardOf(whole, shard_index, shard_count), order.rounds);
 
   // One driver per folder: a second one on the same --out would delete the first one's scratch
   // files and store results under its plan. Held until this function returns.
@@ -555,13 +560,14 @@ int runStudyImpl(const StudyRequest& args, std::ostream& out, std::ostream& err)
     err << "error: " << s.message() << "\n";
     return 2;
   }
-  if (Status s = store.writePlan(plan, not_applicable); !s.ok()) {
+  if (Status s = store.writePlan(plan, not_applicable, order); !s.ok()) {
     err << "error: " << s.message() << "\n";
     return 2;
   }
 
   std::vector<const Combination*> todo;
-  for (const Combination& c : plan) {
+  for (const std::size_t index : runOrder(plan.size(), order.seed)) {
+    const Combination& c = plan[index];
     if (args.resume && store.has(c.id)) {
       if (!args.retry_failed) continue;
       std::ifstream in(store.resultPath(c.id));
@@ -598,7 +604,8 @@ int runStudyImpl(const StudyRequest& args, std::ostream& out, std::ostream& err)
   std::chrono::steady_clock::time_point outputs_made = std::chrono::steady_clock::now();
   for (std::size_t i = 0; i < todo.size(); ++i) {
     const Combination& c = *todo[i];
-    progress.start(i, c.label());
+    progress.start(
+        i, c.round == 0 ? c.label() : c.label() + " · round " + std::to_string(c.round + 1));
     const auto plugin_file = plugin_file_of.find(c.backend);
     CombinationResult result =
         runInWorker(c, store, repetitions, timeout_s,

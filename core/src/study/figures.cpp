@@ -60,6 +60,10 @@ const std::vector<Figure>& measurementFigures() {
          const Interval ci = TimeBootstrap(m).ci95();
          return Json::array({ci.lo, ci.hi});
        }},
+      // The timing rounds the calls came from, and how far their figures lay apart.
+      {"rounds", kBoth, [](R, M m) { return Json(m.rounds); }},
+      {"round_spread", kBoth, [](R, M m) { return nullable(roundSpread(m)); }},
+      {"unstable", kBoth, [](R, M m) { return Json(unstable(m)); }},
       {"median_us", kInDashboard, [](R, M m) { return Json(m.median_us); }},
       {"p90_us", kBoth, [](R, M m) { return Json(m.p90_us); }},
       {"p99_us", kBoth, [](R, M m) { return Json(m.p99_us); }},

@@ -58,6 +58,8 @@ int mergeImpl(const std::string& out_dir, const std::vector<std::string>& inputs
       return 2;
     }
     for (const Combination& c : shard_plan.value()) {
+      // A shard's results hold each combination's rounds joined into its round 0.
+      if (c.round != 0) continue;
       // Shards of one study share their inputs; the same combination run on other inputs (a
       // scene or plugin changed between shards) would sit beside itself in the table.
       const auto [known, fresh] = label_source.emplace(c.label(), std::make_pair(c.id, input));

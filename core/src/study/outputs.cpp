@@ -38,6 +38,14 @@ std::string benchmarkName(const Combination& c, const QueryMeasurement& m) {
   return name;
 }
 
+// "3 1.04x", "3 1.31x unstable", or "1".
+std::string roundsText(const QueryMeasurement& m) {
+  const std::optional<double> spread = roundSpread(m);
+  if (!spread) return std::to_string(m.rounds);
+  return std::to_string(m.rounds) + " " + formatNumber("%.2f", *spread) + "x" +
+         (unstable(m) ? " unstable" : "");
+}
+
 std::string localTime() {
   const std::time_t now = std::time(nullptr);
   std::tm parts{};
@@ -133,9 +141,9 @@ std::string studyTableWith(const std::vector<CombinationResult>& results,
                            const std::vector<SceneQueryPicks>& picks,
                            const std::vector<NotApplicable>& not_applicable) {
   const std::vector<std::string> header = {
-      "backend",  "setting", "scene",      "query",     "frames",   "mean us [95% CI]",
-      "FN",       "FP",      "recall",     "precision", "disagree", "coarse err",
-      "build ms", "B/tri",   "B/tri heap", "RSS MiB"};
+      "backend",    "setting",  "scene", "query",      "frames",    "mean us [95% CI]",
+      "rounds",     "FN",       "FP",    "recall",     "precision", "disagree",
+      "coarse err", "build ms", "B/tri", "B/tri heap", "RSS MiB"};
   std::vector<std::vector<std::string>> rows;
   std::vector<std::string> failures;
   for (const CombinationResult& r : results) {
@@ -161,8 +169,9 @@ std::string studyTableWith(const std::vector<CombinationResult>& results,
       const TimeBootstrap time(m);
       rows.push_back(
           {c.backend, c.settingText(), c.scene_name, m.query, std::to_string(m.frames.size()),
-           withInterval(time.estimate(), time.ci95()), std::to_string(m.false_negatives),
-           std::to_string(m.false_positives), pairs ? formatNumber("%.4f", m.recall) : "-",
+           withInterval(time.estimate(), time.ci95()), roundsText(m),
+           std::to_string(m.false_negatives), std::to_string(m.false_positives),
+           pairs ? formatNumber("%.4f", m.recall) : "-",
            pairs ? formatNumber("%.4f", m.precision) : "-", std::to_string(m.disagreements),
            m.finest_disagreements ? std::to_string(*m.finest_disagreements) : "-",
            formatNumber("%.2f", m.build_ms), bytesPerTriangleText(m.memory_bytes, m.triangles),
@@ -176,7 +185,10 @@ std::string studyTableWith(const std::vector<CombinationResult>& results,
   }
   out << formatTextTable(header, rows, 4);
   out << "mean us: the " << kTimeStatisticText
-      << "; the single calls' percentiles are in summary.json (p90_us, p99_us, max_us).\n";
+      << "; the single calls' percentiles are in summary.json (p90_us, p99_us, max_us). rounds: "
+         "the worker processes the calls came from, and the slowest round's figure over the "
+         "fastest's; 'unstable' past "
+      << formatNumber("%.2f", 1.0 + 2.0 * kEquivalenceBand) << "x.\n";
   if (const std::string text = notApplicableText(not_applicable); !text.empty()) {
     out << "\nNot applicable, so not planned (the setting answers none of the query kinds the "
            "scene asks):\n"

@@ -2,6 +2,7 @@
 
 #include <cctype>
 #include <cstdio>
+#include <random>
 #include <sstream>
 
 namespace collido::study {
@@ -46,6 +47,7 @@ std::string makeId(const Combination& c) {
     key += "\n" + c.scene_digest + "\n" + c.plugin_identity + "\n" + std::to_string(c.repetitions);
   }
   if (!c.protocol.empty() && c.protocol != "repeated") key += "\n" + c.protocol;
+  if (c.round != 0) key += "\nround " + std::to_string(c.round);
   if (c.kind != InputKind::kScene) {
     key += std::string("\n") + inputKindName(c.kind);
     for (const int size : c.grid)
@@ -86,6 +88,12 @@ std::optional<InputKind> parseInputKind(const std::string& name) {
     if (name == inputKindName(kind)) return kind;
   }
   return std::nullopt;
+}
+
+Combination inRound(Combination c, int round) {
+  c.round = round;
+  c.id = makeId(c);
+  return c;
 }
 
 Combination withInputs(Combination c, const std::string& scene_digest,
@@ -205,6 +213,27 @@ std::vector<Combination> shardOf(const std::vector<Combination>& plan, std::size
   return part;
 }
 
+std::vector<Combination> inRounds(const std::vector<Combination>& plan, int rounds) {
+  std::vector<Combination> all;
+  for (const Combination& c : plan) {
+    all.push_back(c);
+    for (int round = 1; c.kind == InputKind::kScene && round < rounds; ++round)
+      all.push_back(inRound(c, round));
+  }
+  return all;
+}
+
+std::vector<std::size_t> runOrder(std::size_t count, std::uint64_t seed) {
+  std::vector<std::size_t> order(count);
+  for (std::size_t i = 0; i < count; ++i)
+    order[i] = i;
+  // The generator's output is fixed by the standard; std::shuffle's use of it is not.
+  std::mt19937_64 draws(seed);
+  for (std::size_t i = count; i > 1; --i)
+    std::swap(order[i - 1], order[static_cast<std::size_t>(draws() % i)]);
+  return order;
+}
+
 Result<std::pair<std::size_t, std::size_t>> parseShard(const std::string& text) {
   const Status bad(StatusCode::kInvalidArgument,
                    "--shard '" + text + "': expected I/N with 0 <= I < N, e.g. 0/4");
@@ -237,6 +266,7 @@ nlohmann::json combinationToJson(const Combination& c) {
   if (!c.plugin_identity.empty()) json["plugin"] = c.plugin_identity;
   if (c.repetitions != 0) json["repetitions"] = c.repetitions;
   if (!c.protocol.empty()) json["protocol"] = c.protocol;
+  if (c.round != 0) json["round"] = c.round;
   if (c.kind != InputKind::kScene) {
     json["kind"] = inputKindName(c.kind);
     json["grid"] = c.grid;
@@ -263,6 +293,7 @@ Result<Combination> combinationFromJson(const nlohmann::json& json) {
     c.plugin_identity = json.value("plugin", std::string());
     c.repetitions = json.value("repetitions", 0);
     c.protocol = json.value("protocol", std::string());
+    c.round = json.value("round", 0);
     // Absent for mesh scenes (and from studies made before surfaces and FRep joined them).
     const std::optional<InputKind> kind = parseInputKind(json.value("kind", std::string("scene")));
     if (!kind) return Status(StatusCode::kInvalidArgument, "combination: unknown kind");

@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include <collido/runner/measurement_json.h>
+#include <collido/study/rounds.h>
 
 namespace collido::study {
 namespace {
@@ -212,7 +213,7 @@ Result<std::vector<CombinationResult>> ResultStore::readAll() const {
                      };
                      return order(a) < order(b);
                    });
-  return results;
+  return joinRounds(std::move(results));
 }
 
 std::string ResultStore::planPath() const {
@@ -220,12 +221,14 @@ std::string ResultStore::planPath() const {
 }
 
 Status ResultStore::writePlan(const std::vector<Combination>& plan,
-                              const std::vector<NotApplicable>& not_applicable) const {
+                              const std::vector<NotApplicable>& not_applicable,
+                              const RunOrder& order) const {
   Json list = Json::array();
   for (const Combination& c : plan)
     list.push_back(combinationToJson(c));
   return writeFileAtomically(planPath(),
                              Json{{"collidoscope_plan", 1},
+                                  {"order", {{"rounds", order.rounds}, {"seed", order.seed}}},
                                   {"combinations", list},
                                   {"not_applicable", notApplicableToJson(not_applicable)}}
                                  .dump(1));

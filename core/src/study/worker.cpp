@@ -1,5 +1,6 @@
 #include <collido/study/worker.h>
 
+#include <algorithm>
 #include <optional>
 
 #include <collido/runner/runner.h>
@@ -8,6 +9,12 @@
 #include <collido/study/resident_memory.h>
 
 namespace collido::study {
+namespace {
+
+/// The fewest timed calls a query gets in one round, however few its frames.
+constexpr int kMinTimedCalls = 12;
+
+}  // namespace
 
 Result<CombinationResult> runCombination(const WorkerRequest& request) {
   const Combination& c = request.combination;
@@ -43,6 +50,12 @@ Result<CombinationResult> runCombination(const WorkerRequest& request) {
 
   RunOptions options;
   options.repetitions = request.repetitions;
+  // A scene of a few frames still gets enough timed calls a round for an interval of its own:
+  // a one-frame scene's figure would otherwise rest on `repetitions` calls.
+  if (scene.frames > 0) {
+    const auto frames = static_cast<int>(std::min<std::size_t>(scene.frames, kMinTimedCalls));
+    options.repetitions = std::max(options.repetitions, (kMinTimedCalls + frames - 1) / frames);
+  }
   if (const std::optional<TimingProtocol> protocol = parseTimingProtocol(c.protocol))
     options.protocol = *protocol;
   options.build_every_need = c.needs == NeedsMode::kEvery;

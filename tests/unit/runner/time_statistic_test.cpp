@@ -73,6 +73,25 @@ TEST(TimeStatistic, RatiosPairByFrame) {
   EXPECT_FALSE(timeRatio(slow, TimeBootstrap(timed({{0}, {0}, {0}, {0}}))));
 }
 
+TEST(TimeStatistic, RoundsThatDisagreeWidenTheIntervalAndAreUnstable) {
+  // Two frames, each with three calls from a steady round and three from a round 1.5x slower.
+  QueryMeasurement m = timed({{10, 10.1, 9.9, 15, 15.1, 14.9}, {10, 10.1, 9.9, 15, 15.1, 14.9}});
+  m.rounds = 2;
+  EXPECT_NEAR(*roundSpread(m), 1.5, 1e-9);
+  EXPECT_TRUE(unstable(m));
+  // Drawing whole rounds reaches down to the steady round alone and up to the slow one alone.
+  const TimeBootstrap time(m);
+  EXPECT_DOUBLE_EQ(time.estimate(), 12.5);
+  EXPECT_NEAR(time.ci95().lo, 10.0, 0.2);
+  EXPECT_NEAR(time.ci95().hi, 15.0, 0.2);
+  // Rounds that agree are stable; one round has no spread.
+  QueryMeasurement steady = timed({{10, 10.1, 9.9, 10.2, 10, 9.8}});
+  steady.rounds = 2;
+  EXPECT_FALSE(unstable(steady));
+  steady.rounds = 1;
+  EXPECT_FALSE(roundSpread(steady));
+}
+
 TEST(TimeStatistic, TheBandDecidesWhatIsTheSame) {
   EXPECT_EQ(differenceOf({1.05, 1.20}), Difference::kSame);
   EXPECT_EQ(differenceOf({1.11, 1.20}), Difference::kClearlyMore);

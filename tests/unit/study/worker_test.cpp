@@ -128,7 +128,8 @@ TEST(RunCombination, MeasuresEveryQueryAgainstTheOracle) {
     EXPECT_EQ(m.status, "ok");
     EXPECT_EQ(m.backend, "obbtree");
     EXPECT_EQ(m.frames.size(), 3u);
-    EXPECT_EQ(m.times_us.size(), 3u);  // one repetition per frame
+    // One repetition per frame is raised to the 12 timed calls a round every query gets.
+    EXPECT_EQ(m.times_us.size(), 12u);
     EXPECT_EQ(m.disagreements, 0u);
     EXPECT_EQ(m.triangles, 2u * 2u * 24u * 12u);
     EXPECT_FALSE(m.finest_disagreements.has_value());  // at resolution 1 there is no coarser mesh

@@ -97,6 +97,7 @@ void visitMeasurementFields(Measurement& m, Visit&& visit) {
   visit("heap_probe", m.heap_probe, Absent::kKeep);
   visit("protocol", m.protocol, Absent::kKeep);  // "repeated" before there was a choice
   visit("times_us", m.times_us, Absent::kError);
+  visit("rounds", m.rounds, Absent::kKeep);  // 1 before a study joined rounds
 }
 
 /// A measurement's derived summary figures, written beside the stored fields for readers of the

@@ -177,7 +177,11 @@ struct QueryMeasurement {
   QueryKind kind = QueryKind::kBoolean;
   MeasurementStatus status;  ///< ok, skipped (by design) or failed, with the reason
   std::vector<FrameRecord> frames;
-  std::vector<double> times_us;       ///< every timed call
+  /// Every timed call, frame by frame (each frame's calls together); with several rounds, each
+  /// frame's calls round after round, the same number from each.
+  std::vector<double> times_us;
+  /// The worker processes (a study's timing rounds) the timed calls came from.
+  std::size_t rounds = 1;
   std::string protocol = "repeated";  ///< how they were ordered (timingProtocolName)
   double median_us = 0.0;
   double p90_us = 0.0;

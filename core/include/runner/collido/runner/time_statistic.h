@@ -30,18 +30,21 @@ inline constexpr const char* kTimeStatisticText =
 std::vector<std::vector<double>> callsPerFrame(const QueryMeasurement& m);
 
 /// The bootstrap distribution of meanFrameTimeUs (docs/STUDY.md, "Times and their intervals"):
-/// each replicate draws the frames with replacement and, within each drawn frame, its calls
-/// with replacement, and takes the mean of the drawn frames' medians. The frames drawn depend on
-/// the frame count alone, so two measurements of the same frames draw the same ones: their
-/// replicates pair by frame. The calls drawn are seeded from the times themselves, so the same
+/// each replicate draws the rounds (worker processes) with replacement, the frames with
+/// replacement and, within each drawn frame, its calls from the drawn rounds with replacement,
+/// and takes the mean of the drawn frames' medians. The frames drawn depend on the frame count
+/// alone, so two measurements of the same frames draw the same ones: their replicates pair by
+/// frame. Rounds and calls are drawn from a seed made of the times themselves, so the same
 /// measurement always gives the same interval.
 class TimeBootstrap {
  public:
   static constexpr int kReplicates = 2000;
 
   explicit TimeBootstrap(const QueryMeasurement& m);
-  /// The same for any per-frame timings: each frame's calls (one or more each).
-  explicit TimeBootstrap(const std::vector<std::vector<double>>& calls_per_frame);
+  /// The same for any per-frame timings: each frame's calls (one or more each), `rounds` equal
+  /// runs of them one after the other (taken as one where they do not divide evenly).
+  explicit TimeBootstrap(const std::vector<std::vector<double>>& calls_per_frame,
+                         std::size_t rounds = 1);
 
   double estimate() const { return estimate_; }
   /// The percentile interval of the replicates.
@@ -52,6 +55,14 @@ class TimeBootstrap {
   double estimate_ = 0.0;
   std::vector<double> replicates_;
 };
+
+/// With several rounds: the slowest round's statistic over the fastest's (each round's own mean
+/// over frames of its calls' medians); none with one round or a round at 0.
+std::optional<double> roundSpread(const QueryMeasurement& m);
+
+/// A measurement whose rounds differ by more than twice the equivalence band (roundSpread above
+/// 1.2) is unstable: its processes did not agree, so its figure and interval are suspect.
+bool unstable(const QueryMeasurement& m);
 
 /// A ratio of two figures with its 95% interval.
 struct Ratio {

@@ -1,8 +1,11 @@
 #pragma once
 
+#include <cstdint>
 #include <ostream>
 #include <string>
 #include <vector>
+
+#include <collido/study/plan.h>
 
 namespace collido::study {
 
@@ -20,9 +23,11 @@ struct StudyRequest {
   std::string oracle_directory;
   bool resume = false;
   bool retry_failed = false;
-  double timeout_s = 0.0;          ///< 0: the sweep's, else 600
-  int repetitions = 0;             ///< 0: the sweep's, else 5
-  std::string protocol;            ///< "" : the sweep's, else "repeated"
+  double timeout_s = 0.0;                      ///< 0: the sweep's, else 600
+  int repetitions = 0;                         ///< 0: the sweep's, else 5
+  int rounds = 0;                              ///< 0: the sweep's, else 1 (RunOrder)
+  std::uint64_t order_seed = RunOrder{}.seed;  ///< the seed of the order combinations run in
+  std::string protocol;                        ///< "" : the sweep's, else "cycled"
   std::string expected_times;      ///< an earlier study or its times.json, for the expected time
   double plugin_timeout_s = 30.0;  ///< how long a plugin may take to load in its probe
   bool quiet = false;              ///< no progress lines

@@ -55,6 +55,10 @@ struct Combination {
   /// The timing protocol ("repeated", "cycled"; TimingProtocol); "" for studies made before
   /// there was a choice, which timed repeated.
   std::string protocol = {};
+  /// Which of the study's timing rounds this is: each round of a mesh combination is a worker
+  /// process of its own that runs it whole, and the results join their timed calls into round
+  /// 0's (rounds.h). Part of the id when not 0; not of the label, which names the combination.
+  int round = 0;
 
   /// "bunny_vs_bunny · obbtree[max_leaf_triangles=4] · every needs · r=0.5 · limit 16", only the
   /// parts that differ from the defaults.
@@ -69,6 +73,9 @@ struct Combination {
 Combination withInputs(Combination c, const std::string& scene_digest,
                        const std::string& plugin_identity, int repetitions,
                        const std::string& protocol = "");
+
+/// `c` as timing round `round` (Combination::round), its id made again.
+Combination inRound(Combination c, int round);
 
 /// A scene as the planner sees it.
 struct PlannedScene {
@@ -112,6 +119,23 @@ std::vector<Combination> planComparisons(const std::vector<PlannedScene>& files,
 /// `index`, so each shard gets a fair mix of cheap and dear ones).
 std::vector<Combination> shardOf(const std::vector<Combination>& plan, std::size_t index,
                                  std::size_t count);
+
+/// How a study orders its work (docs/STUDY.md, "Rounds and their order").
+struct RunOrder {
+  /// Timing rounds of every mesh combination: each a worker process of its own.
+  int rounds = 1;
+  /// The seed of the order: the same seed and plan give the same order on any machine.
+  std::uint64_t seed = 20261129;
+};
+
+/// `plan` with each mesh combination followed by its rounds 1 .. rounds - 1 (surface and FRep
+/// files run once).
+std::vector<Combination> inRounds(const std::vector<Combination>& plan, int rounds);
+
+/// The order to run `count` planned combinations in: 0 .. count - 1 shuffled by `seed`
+/// (Fisher-Yates on a 64-bit Mersenne twister), so that no setting's calls all fall in one
+/// stretch of the study's time and drift spreads over every setting alike.
+std::vector<std::size_t> runOrder(std::size_t count, std::uint64_t seed);
 
 /// Reads "I/N" (0 <= I < N), as a Slurm array passes $SLURM_ARRAY_TASK_ID/$SLURM_ARRAY_TASK_COUNT.
 Result<std::pair<std::size_t, std::size_t>> parseShard(const std::string& text);

@@ -68,12 +68,15 @@ class ResultStore {
 
   bool has(const std::string& id) const;
   Status write(const CombinationResult& result) const;
-  /// Every stored result, in id order; unreadable files are errors naming the file.
+  /// Every stored result, in id order, each combination's timing rounds joined into one result
+  /// (joinRounds); unreadable files are errors naming the file.
   Result<std::vector<CombinationResult>> readAll() const;
 
-  /// plan.json: the combinations, and the settings not planned on some scene (plan.h).
+  /// plan.json: the combinations in the order they run, the settings not planned on some scene
+  /// (plan.h), and the rounds and seed that order came from.
   Status writePlan(const std::vector<Combination>& plan,
-                   const std::vector<NotApplicable>& not_applicable = {}) const;
+                   const std::vector<NotApplicable>& not_applicable = {},
+                   const RunOrder& order = {}) const;
   /// The stored plan, or an empty one when none was written.
   Result<std::vector<Combination>> readPlan() const;
   /// The stored plan's settings not planned on some scene; none without a plan, or in a plan

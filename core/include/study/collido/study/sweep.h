@@ -55,7 +55,10 @@ struct Sweep {
   std::map<std::string, std::vector<NeedsMode>> scene_needs;
   /// Caps on all-pairs and contacts answers (max_pairs / max_contacts); 0 keeps the scene's.
   std::vector<std::uint64_t> limits{0};
-  std::optional<int> repetitions;
+  std::optional<int> repetitions;  ///< timed calls per frame and query in each round
+  /// Timing rounds: each mesh combination runs this many times, each in a worker process of its
+  /// own, in a seeded random order across the study (rounds.h); unset: --rounds, else 1.
+  std::optional<int> rounds;
   std::optional<double> timeout_s;
   /// "repeated" or "cycled" (TimingProtocol); unset: --protocol, else repeated.
   std::optional<std::string> protocol;
