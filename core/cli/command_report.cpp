@@ -64,15 +64,6 @@ Result<nlohmann::json> withInlinePreview(nlohmann::json comparison, const std::s
   return comparison;
 }
 
-Result<std::vector<study::CombinationResult>> readStudy(const std::string& directory) {
-  std::error_code ec;
-  if (!std::filesystem::is_directory(std::filesystem::path(directory) / "results", ec)) {
-    return Status(StatusCode::kInvalidArgument,
-                  directory + ": not a study folder (no results/; make one with collido study)");
-  }
-  return study::ResultStore(directory).readAll();
-}
-
 // The files of `folder` with `extension` (".html"), in name order; none when it does not exist.
 std::vector<std::string> filesIn(const std::filesystem::path& folder, const char* extension) {
   std::vector<std::string> files;
@@ -182,6 +173,15 @@ int runReport(ReportArguments args) {
 }
 
 }  // namespace
+
+Result<std::vector<study::CombinationResult>> readStudy(const std::string& directory) {
+  std::error_code ec;
+  if (!std::filesystem::is_directory(std::filesystem::path(directory) / "results", ec)) {
+    return Status(StatusCode::kInvalidArgument,
+                  directory + ": not a study folder (no results/; make one with collido study)");
+  }
+  return study::ResultStore(directory).readAll();
+}
 
 void addReportCommand(CLI::App& app, int& exit_code) {
   CLI::App* command = app.add_subcommand(

@@ -5,6 +5,9 @@
 
 #include <CLI/CLI.hpp>
 
+#include <collido/status.h>
+#include <collido/study/result_store.h>
+
 namespace collido::cli {
 
 /// Plugin search options shared by the subcommands.
@@ -19,6 +22,9 @@ std::string thisExecutable();
 /// The plugin options as arguments for a child process of this executable (paths absolute).
 std::vector<std::string> pluginArguments(const PluginOptions& plugins);
 
+/// A study folder's results (rounds joined), or an error naming the folder when it holds none.
+Result<std::vector<study::CombinationResult>> readStudy(const std::string& directory);
+
 /// Each add*Command registers a subcommand whose callback runs it and stores its exit code.
 void addBackendsCommand(CLI::App& app, const PluginOptions& plugins, int& exit_code);
 void addCheckCommand(CLI::App& app, int& exit_code);
@@ -31,6 +37,8 @@ void addRunCommand(CLI::App& app, const PluginOptions& plugins, int& exit_code);
 void addConformanceCommand(CLI::App& app, int& exit_code);
 /// study, merge, and the internal worker mode the study starts.
 void addReportCommand(CLI::App& app, int& exit_code);
+/// compare: two studies' times, row by row, with a verdict per row.
+void addCompareCommand(CLI::App& app, int& exit_code);
 void addViewCommands(CLI::App& app, const PluginOptions& plugins, int& exit_code);
 void addStudyCommands(CLI::App& app, const PluginOptions& plugins, int& exit_code);
 

@@ -39,6 +39,7 @@ int main(int argc, char** argv) {
   collido::cli::addConformanceCommand(app, exit_code);
   collido::cli::addStudyCommands(app, plugins, exit_code);
   collido::cli::addReportCommand(app, exit_code);
+  collido::cli::addCompareCommand(app, exit_code);
   collido::cli::addViewCommands(app, plugins, exit_code);
   try {
     app.parse(argc, argv);

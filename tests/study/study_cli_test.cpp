@@ -597,6 +597,58 @@ TEST(StudyCli, ShardsMergeIntoTheWholeStudy) {
   EXPECT_NE(not_a_study.err.find("no study here"), std::string::npos) << not_a_study.err;
 }
 
+// collido compare and report --baseline decide a change by its interval: a study whose every
+// query was made 25% dearer (the test plugin's COLLIDO_TEST_QUERY_EXTRA_US) is slower on every
+// row, and an identical rerun changes no row.
+TEST(StudyCli, CompareFindsASlowdownAndNoChangeInARerun) {
+  const std::string dir = test::makeTempDirectory("study_compare");
+  const std::string scene = writeSmallScene(dir);
+  // The spin dwarfs the brute force's own cost, under the sanitizers too: 4 ms then 5 ms.
+  const auto study = [&](const std::string& out, const char* extra_us) {
+    setenv("COLLIDO_TEST_QUERY_EXTRA_US", extra_us, 1);
+    std::vector<std::string> args =
+        studyArgs(scene, "misbehaving:exact,misbehaving:exact[build_mib=1]", dir + "/" + out);
+    args.insert(args.end(), {"--rounds", "2"});
+    const CommandRun run = collido(args, dir);
+    unsetenv("COLLIDO_TEST_QUERY_EXTRA_US");
+    return run;
+  };
+  for (const auto& [out, extra] :
+       {std::pair{"before", "4000"}, {"again", "4000"}, {"slow", "5000"}})
+    ASSERT_EQ(study(out, extra).exit_code, 0) << out;
+
+  const auto changes = [&](const std::string& now) {
+    const CommandRun run = collido(
+        {"compare", dir + "/before", dir + "/" + now, "--json", dir + "/" + now + ".json"}, dir);
+    EXPECT_EQ(run.exit_code, 0) << describe(run);
+    return nlohmann::json::parse(readText(dir + "/" + now + ".json"));
+  };
+  const nlohmann::json again = changes("again");
+  ASSERT_EQ(again.at("rows").size(), 4u);  // two settings, two queries
+  EXPECT_EQ(again.at("counts").at("same"), 4) << again.dump(1);
+  const nlohmann::json slow = changes("slow");
+  EXPECT_EQ(slow.at("counts").at("slower"), 4) << slow.dump(1);
+  for (const nlohmann::json& row : slow.at("rows"))
+    EXPECT_NEAR(row.at("ratio").get<double>(), 1.25, 0.05) << row.dump();
+  // As a CI gate; and from the summaries alone, where the intervals combine unpaired.
+  EXPECT_EQ(collido({"compare", dir + "/before", dir + "/slow", "--fail-on-slower"}, dir).exit_code,
+            1);
+  const CommandRun summaries =
+      collido({"compare", dir + "/before/summary.json", dir + "/slow/summary.json"}, dir);
+  EXPECT_NE(summaries.out.find("4 rows: 0 faster, 4 slower, 0 the same"), std::string::npos)
+      << describe(summaries);
+  const CommandRun bad = collido({"compare", dir + "/before", dir + "/nothing_here"}, dir);
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("nothing_here: not found"), std::string::npos) << bad.err;
+
+  // The dashboard carries the same verdicts.
+  const CommandRun report = collido(
+      {"report", dir + "/slow", "--baseline", dir + "/before", "-o", dir + "/report.html"}, dir);
+  ASSERT_EQ(report.exit_code, 0) << describe(report);
+  EXPECT_NE(readText(dir + "/report.html").find(R"("counts":{"faster":0,"same":0,"slower":4})"),
+            std::string::npos);
+}
+
 // A setting that answers none of the kinds a scene asks is not planned there, its options
 // probed as well, and the table lists it once; a setting that cannot be created is planned, and
 // its worker says why.

@@ -156,6 +156,9 @@
       time_ci95: ci ? `[${fmt(ci[0])}, ${fmt(ci[1])}]` : '-' };
   };
   const TIME_TITLE = 'mean time per query (µs), 95% CI';
+  // Two times within this share of each other are practically the same (docs/STUDY.md).
+  const pickBand = data.what_to_pick && typeof data.what_to_pick.equivalence_band === 'number' ?
+    data.what_to_pick.equivalence_band : 0.1;
   const ok = data.rows.filter((r) => r.status === 'ok');
   // Settings run with needs "changed" time only the pairs they asked (a reused frame times at 0):
   // their times are not comparable with the others', so they are shown in the needs section only.
@@ -289,6 +292,19 @@
       counts.appendChild(document.createTextNode(' (setting and scene pairs not planned)'));
     }
     summary.after(counts);
+    // The study's measured noise: how far apart one setting's rounds (worker processes) came
+    // out, and the rows whose rounds disagreed past twice the equivalence band.
+    const spreads = ok.map((r) => r.round_spread).filter((v) => typeof v === 'number')
+      .sort((a, b) => a - b);
+    const at = (q) => spreads[Math.min(spreads.length - 1, Math.floor(q * spreads.length))];
+    const unstableRows = ok.filter((r) => r.unstable === true).length;
+    counts.after(el('p', { id: 'noise', text: spreads.length === 0 ?
+      'Measured noise: one round per setting, so the noise between worker processes is not ' +
+      'measured (collido study --rounds 3).' :
+      `Measured noise: the rounds (worker processes) of one setting came out ${fmt(at(0.5), 2)}x ` +
+      `apart at the median, ${fmt(at(0.9), 2)}x at the 90th percentile, over ${spreads.length} ` +
+      `rows; ${unstableRows} rows unstable (rounds more than ${fmt(1 + 2 * pickBand, 2)}x apart: ` +
+      'their figures are suspect, their intervals wide).' }));
   }
 
   // --- chart filters ----------------------------------------------------------------------------
@@ -1214,81 +1230,92 @@
 
   // --- 7. before / after ----------------------------------------------------------------------
   {
-    // Two identical runs on a 2-core machine differed by -43% to +67% on one setting: a ratio
-    // within this factor either way is noise, not a finding.
-    const NOISE = 1.75;
+    // The study decided each row (collido compare): now over before with its 95% interval, paired
+    // by frame, and a change only where the whole interval lies beyond the equivalence band.
+    const changes = data.baseline_changes || null;
+    const bandText = changes ? fmt(100 * changes.equivalence_band, 0) + '%' : '10%';
     const s = section('comparison', 'Against a baseline',
-      'The ratio of times (the mean over frames of each frame\'s median call; against a ' +
-      'baseline written before that statistic, the median call of both) against an earlier ' +
-      'study of the same settings ' +
-      '(collido report DIR --baseline OLD): below 1 is faster now. Only a change beyond a factor ' +
-      `${NOISE} either way is coloured (green faster, red slower); within it is grey, since two ` +
-      'identical runs on a 2-core machine differed by up to that. Changes in error are listed.');
-    if (!data.baseline_rows || data.baseline_rows.length === 0) {
-      empty(s, 'No baseline given: run collido report DIR --baseline EARLIER_DIR.');
+      'Each setting against an earlier study of the same settings (collido report DIR --baseline ' +
+      'OLD; collido compare OLD DIR prints the same rows): now / before of the mean over frames ' +
+      'of each frame\'s median call, the whiskers its 95% interval, paired by frame. A row is ' +
+      `faster (green) or slower (red) only when its whole interval lies beyond the ${bandText} ` +
+      'equivalence band, a change both significant and large; the rest (grey) is the same ' +
+      'within noise. Changes in error are listed.');
+    if (!changes || !changes.rows || changes.rows.length === 0) {
+      empty(s, !data.baseline_rows || data.baseline_rows.length === 0 ?
+        'No baseline given: run collido report DIR --baseline EARLIER_DIR.' :
+        'The baseline shares no measured setting with this study.');
     } else {
-      const before = new Map(data.baseline_rows.filter((r) => r.status === 'ok').map((r) => [r.key, r]));
-      const ratios = [];
-      const changes = [];
+      const counts = changes.counts;
+      s.appendChild(el('p', { class: 'baseline-counts', text: `${changes.rows.length} rows: ` +
+        `${counts.faster} faster, ${counts.slower} slower, ${counts.same} the same.` }));
+      const labelOf = (r) => (r.setting ? r.backend + ' ' + r.setting : r.backend);
+      const ratios = changes.rows.filter((r) => typeof r.ratio === 'number').map((r) => ({
+        label: labelOf(r), scene: r.scene, query: r.query, ratio: r.ratio,
+        lo: r.ratio_ci95[0], hi: r.ratio_ci95[1], change: r.change,
+        interval: `[${fmt(r.ratio_ci95[0], 2)}, ${fmt(r.ratio_ci95[1], 2)}]`,
+        before: withInterval(r.before_us, r.before_ci95_us), now: withInterval(r.now_us, r.now_ci95_us) }));
+      const before = new Map((data.baseline_rows || []).filter((r) => r.status === 'ok')
+        .map((r) => [r.key, r]));
+      const errors = [];
       for (const r of ok) {
         const b = before.get(r.key);
-        if (!b) continue;
-        // Like with like: the statistic where both runs have it, else the median call of both.
-        const both = typeof r.time_us === 'number' && typeof b.time_us === 'number';
-        const now = both ? r.time_us : r.median_us;
-        const then = both ? b.time_us : b.median_us;
-        ratios.push({ label: r.label, scene: r.scene, query: r.query, ratio: now / then,
-          now: now, before: then });
-        if (b.disagreements !== r.disagreements) {
-          changes.push([r.label, r.scene, r.query, String(b.disagreements), String(r.disagreements)]);
+        if (b && b.disagreements !== r.disagreements) {
+          errors.push([r.label, r.scene, r.query, String(b.disagreements), String(r.disagreements)]);
         }
       }
-      if (ratios.length === 0) {
-        empty(s, 'The baseline shares no measured setting with this study.');
-      } else {
-        const box = el('div', { class: 'charts' });
-        s.appendChild(box);
-        chart(box, 'comparison', {
-          data: { values: ratios }, width: 420, height: { step: 16 },
-          facet: { row: { field: 'scene', type: 'nominal', title: null } },
-          // Each scene lists only the settings that ran on it.
-          resolve: { scale: { y: 'independent' } },
-          spec: { width: 420, height: { step: 16 },
-            layer: [
-              { mark: { type: 'rule', color: '#888', strokeDash: [4, 3] },
-                encoding: { x: { datum: 1, type: 'quantitative' } } },
-              { mark: { type: 'point', filled: true, size: 70 },
-                encoding: {
-                  y: { field: 'label', type: 'nominal', title: null, axis: { labelLimit: 220 } },
-                  x: { field: 'ratio', type: 'quantitative', scale: { type: 'log' },
-                    title: 'now / before (mean time)' },
-                  shape: { field: 'query', type: 'nominal' },
-                  color: { condition: [{ test: `datum.ratio > ${NOISE}`, value: '#b3261e' },
-                    { test: `datum.ratio < ${1 / NOISE}`, value: '#1b7f3b' }], value: '#9a9a9a' },
-                  tooltip: [{ field: 'label' }, { field: 'query' }, { field: 'before', format: '.1f' },
-                    { field: 'now', format: '.1f' }, { field: 'ratio', format: '.3f' }] } }] } });
-        if (changes.length) {
-          table(s, ['backend / setting', 'scene', 'query', 'wrong frames before', 'now'], changes,
-            ['', '', '', 'num', 'num']);
-        }
+      const box = el('div', { class: 'charts' });
+      s.appendChild(box);
+      const x = { type: 'quantitative', scale: { type: 'log' }, title: 'now / before (mean time), 95% CI' };
+      const colour = { field: 'change', type: 'nominal', title: 'change',
+        scale: { domain: ['faster', 'same', 'slower'], range: ['#1b7f3b', '#9a9a9a', '#b3261e'] } };
+      // One chart a scene, each listing only the settings that ran on it.
+      for (const [scene, rows] of groupBy(ratios, (r) => r.scene)) {
+        chart(box, 'comparison:' + scene, {
+          title: scene, data: { values: rows }, width: 420, height: { step: 20 },
+          encoding: { y: { field: 'label', type: 'nominal', title: null,
+            axis: { labelLimit: 220, labelOverlap: false } } },
+          layer: [
+            { mark: { type: 'tick', color: '#888', thickness: 1 },
+              encoding: { x: { datum: 1, type: 'quantitative' } } },
+            { mark: { type: 'rule' },
+              encoding: { x: Object.assign({ field: 'lo' }, x), x2: { field: 'hi' }, color: colour } },
+            { mark: { type: 'point', filled: true, size: 70 },
+              encoding: {
+                x: Object.assign({ field: 'ratio' }, x),
+                shape: { field: 'query', type: 'nominal' }, color: colour,
+                tooltip: [{ field: 'label' }, { field: 'query' }, { field: 'before', title: 'before µs' },
+                  { field: 'now', title: 'now µs' }, { field: 'ratio', format: '.3f' },
+                  { field: 'interval', title: '95% interval' }, { field: 'change' }] } }] });
+      }
+      if (errors.length) {
+        table(s, ['backend / setting', 'scene', 'query', 'wrong frames before', 'now'], errors,
+          ['', '', '', 'num', 'num']);
       }
     }
+  }
+
+  // "3 1.04x" (rounds, and the slowest round's figure over the fastest's), as table.txt.
+  function roundsText(r) {
+    if (typeof r.round_spread !== 'number') return String(r.rounds || 1);
+    return `${r.rounds} ${fmt(r.round_spread, 2)}x` + (r.unstable ? ' unstable' : '');
   }
 
   // --- the table ------------------------------------------------------------------------------
   {
     const s = section('table', 'All measurements', 'Every (backend setting, scene, query). ' +
       'mean µs: the mean over frames of each frame\'s median call, with its 95% bootstrap ' +
-      'interval [low, high]; the call percentiles describe single calls.');
-    laterTable(s, ['backend / setting', 'scene', 'query', 'status', 'mean µs [95% CI]',
+      'interval [low, high]; rounds: the worker processes the calls came from, and the slowest ' +
+      'round\'s figure over the fastest\'s; the call percentiles describe single calls.');
+    laterTable(s, ['backend / setting', 'scene', 'query', 'status', 'mean µs [95% CI]', 'rounds',
       'call p90 µs', 'call p99 µs', 'call max µs',
       'wrong', 'recall', 'precision', 'build ms', 'B/tri', 'B/tri heap'],
     data.rows.map((r) => [r.label, r.scene, r.query, r.status,
-      withInterval(timeOf(r), ciOf(r)), fmt(r.p90_us),
+      withInterval(timeOf(r), ciOf(r)), roundsText(r), fmt(r.p90_us),
       fmt(r.p99_us), fmt(r.max_us), r.status === 'ok' ? String(r.disagreements) : '-',
       r.kind === 'all_pairs' ? fmt(r.recall, 4) : '-', r.kind === 'all_pairs' ? fmt(r.precision, 4) : '-',
       fmt(r.build_ms, 2), fmt(r.bytes_per_triangle, 0), fmt(r.heap_bytes_per_triangle, 0)]),
-    ['', '', '', '', 'num', 'num', 'num', 'num', 'num', 'num', 'num', 'num', 'num', 'num']);
+    ['', '', '', '', 'num', 'num', 'num', 'num', 'num', 'num', 'num', 'num', 'num', 'num', 'num']);
   }
 
   applyFilters();

@@ -15,6 +15,7 @@
 #include <collido/study/html_page.h>
 #include <collido/study/robustness.h>
 #include <collido/study/selection_table.h>
+#include <collido/study/time_changes.h>
 
 namespace collido::study {
 namespace {
@@ -190,6 +191,9 @@ Json reportData(const std::vector<CombinationResult>& results,
           {"generated", generated},
           {"rows", rowsOf(results)},
           {"baseline_rows", rowsOf(baseline)},
+          // Each setting, scene and query against the baseline: ratio, interval and verdict.
+          {"baseline_changes",
+           baseline.empty() ? Json() : timeChangesJson(timeChanges(baseline, results))},
           {"times", timesOf(results)},
           {"deforming", deformingOf(results)},
           {"tracking", trackingOf(results)},

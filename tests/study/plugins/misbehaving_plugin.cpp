@@ -11,6 +11,9 @@
 //   misbehaving:crash_in_build, misbehaving:abort_in_build, misbehaving:hang_in_build
 //                      the same failures in build(), before any query
 //   misbehaving:crash_in_create  dies of SIGSEGV when an instance is created
+// Every answering variant also spends COLLIDO_TEST_QUERY_EXTRA_US microseconds (an environment
+// variable, so that the setting keeps its name) busy in each query: a known slowdown between two
+// studies of the same settings, which `collido compare` must find.
 // Built as libcollido_plugin_misbehaving.so into the tests' own plugin folder, so only tests
 // that pass that folder with --plugin see it.
 #include <array>
@@ -109,10 +112,24 @@ bool trianglesOverlap(const Triangle& a, const Triangle& b) {
     std::this_thread::sleep_for(std::chrono::seconds(1));
 }
 
+// The extra microseconds each query spends, from the environment (0 without it).
+double extraQueryMicroseconds() {
+  const char* text = std::getenv("COLLIDO_TEST_QUERY_EXTRA_US");
+  return text == nullptr ? 0.0 : std::strtod(text, nullptr);
+}
+
+// Spins (a sleep would give the core away and wake late) until `microseconds` have passed.
+void spin(double microseconds) {
+  const auto until =
+      std::chrono::steady_clock::now() + std::chrono::duration<double, std::micro>(microseconds);
+  while (std::chrono::steady_clock::now() < until) {
+  }
+}
+
 class MisbehavingBackend final : public collido::Backend {
  public:
   MisbehavingBackend(Mode mode, std::size_t ballast_bytes)
-      : mode_(mode), ballast_bytes_(ballast_bytes) {}
+      : mode_(mode), ballast_bytes_(ballast_bytes), extra_us_(extraQueryMicroseconds()) {}
 
   collido::Capabilities capabilities() const override {
     collido::Capabilities caps;
@@ -157,6 +174,7 @@ class MisbehavingBackend final : public collido::Backend {
       case Mode::kThrow:
         throw std::runtime_error("misbehaving:throw throws on purpose");
       case Mode::kWrong:
+        if (extra_us_ > 0.0) spin(extra_us_);
         return {};
       case Mode::kExact:
       case Mode::kCrashInBuild:
@@ -164,6 +182,7 @@ class MisbehavingBackend final : public collido::Backend {
       case Mode::kHangInBuild:
         break;
     }
+    if (extra_us_ > 0.0) spin(extra_us_);
     const std::vector<Triangle> ta = posed(static_cast<MeshModel&>(a), pose_a);
     const std::vector<Triangle> tb = posed(static_cast<MeshModel&>(b), pose_b);
     result.counters.counts_primitive_tests = true;
@@ -188,6 +207,7 @@ class MisbehavingBackend final : public collido::Backend {
  private:
   Mode mode_;
   std::size_t ballast_bytes_;
+  double extra_us_;
 };
 
 collido::Result<std::unique_ptr<collido::Backend>> create(const std::string& variant,
