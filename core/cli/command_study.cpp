@@ -142,6 +142,12 @@ void addStudyCommands(CLI::App& app, const PluginOptions& plugins, int& exit_cod
                    "timing rounds: each scene combination runs this many times, each in a worker "
                    "of its own, and its timed calls are joined (default: the sweep's, else 1)")
       ->check(CLI::Range(1, 100));
+  command
+      ->add_option("--adaptive-seconds", args->adaptive_s,
+                   "after the planned rounds, seconds to spend on extra rounds (up to 3) for "
+                   "combinations whose rounds cannot pin a figure down to within 10% (default: "
+                   "the sweep's adaptive_s, else 0)")
+      ->check(CLI::NonNegativeNumber);
   command->add_option("--order-seed", args->order_seed,
                       "the seed of the random order combinations and rounds run in (recorded in "
                       "plan.json)");

@@ -649,6 +649,34 @@ TEST(StudyCli, CompareFindsASlowdownAndNoChangeInARerun) {
             std::string::npos);
 }
 
+// Rounds that disagree (every other worker of the test plugin spins three times as long) get
+// more rounds within the time budget, up to three, and the rows that stay unstable are flagged.
+TEST(StudyCli, UnstableRowsGetMoreRoundsThenAreFlagged) {
+  const std::string dir = test::makeTempDirectory("study_adaptive");
+  setenv("COLLIDO_TEST_QUERY_EXTRA_US", "1000", 1);
+  setenv("COLLIDO_TEST_QUERY_JITTER", "2", 1);
+  setenv("COLLIDO_TEST_QUERY_JITTER_FILE", (dir + "/created").c_str(), 1);
+  std::vector<std::string> args = studyArgs(writeSmallScene(dir), "misbehaving:exact", dir + "/s");
+  args.insert(args.end(), {"--rounds", "2", "--adaptive-seconds", "60"});
+  const CommandRun run = collido(args, dir);
+  unsetenv("COLLIDO_TEST_QUERY_EXTRA_US");
+  unsetenv("COLLIDO_TEST_QUERY_JITTER");
+  unsetenv("COLLIDO_TEST_QUERY_JITTER_FILE");
+  ASSERT_EQ(run.exit_code, 0) << describe(run);
+  EXPECT_NE(run.err.find("study: round 3 for 1 combinations whose rounds disagree"),
+            std::string::npos)
+      << run.err;
+  const std::vector<CombinationResult> results = readResults(dir + "/s");
+  ASSERT_EQ(results.size(), 1u);
+  // Two planned rounds and three more, joined; plan.json still lists the two planned.
+  for (const QueryMeasurement& m : results[0].measurements) {
+    EXPECT_EQ(m.rounds, 5u) << m.query;
+    EXPECT_EQ(m.times_us.size(), 5u * 12u) << m.query;
+  }
+  EXPECT_EQ(ResultStore(dir + "/s").readPlan().value().size(), 2u);
+  EXPECT_NE(readText(dir + "/s/table.txt").find(" unstable"), std::string::npos);
+}
+
 // A setting that answers none of the kinds a scene asks is not planned there, its options
 // probed as well, and the table lists it once; a setting that cannot be created is planned, and
 // its worker says why.

@@ -303,8 +303,9 @@
       'measured (collido study --rounds 3).' :
       `Measured noise: the rounds (worker processes) of one setting came out ${fmt(at(0.5), 2)}x ` +
       `apart at the median, ${fmt(at(0.9), 2)}x at the 90th percentile, over ${spreads.length} ` +
-      `rows; ${unstableRows} rows unstable (rounds more than ${fmt(1 + 2 * pickBand, 2)}x apart: ` +
-      'their figures are suspect, their intervals wide).' }));
+      `rows; ${unstableRows} rows unstable (their rounds cannot pin the figure down to within ` +
+      `${fmt(100 * pickBand, 0)}%, even after the extra rounds the study gave them: their figures ` +
+      'are suspect, their intervals wide).' }));
   }
 
   // --- chart filters ----------------------------------------------------------------------------

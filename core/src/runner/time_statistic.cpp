@@ -4,7 +4,11 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <map>
+#include <memory>
+#include <mutex>
 #include <random>
+#include <tuple>
 
 #include <collido/runner/statistics.h>
 #include <collido/runner/text_table.h>
@@ -39,8 +43,26 @@ double medianInPlace(std::vector<double>& values) {
   return (below + *middle) / 2.0;
 }
 
-Interval percentileInterval(const std::vector<double>& values) {
-  return {quantile(values, 0.025), quantile(values, 0.975)};
+// The 2.5% and 97.5% quantiles (type 7, as quantile()), by selection rather than a full sort:
+// what-to-pick takes thousands of them.
+Interval percentileInterval(std::vector<double> values) {
+  if (values.empty()) return {};
+  const auto at = [&values](double q) {
+    const double position = q * static_cast<double>(values.size() - 1);
+    const auto below = static_cast<std::size_t>(std::floor(position));
+    const std::size_t above = std::min(below + 1, values.size() - 1);
+    std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(below),
+                     values.end());
+    const double low = values[below];
+    // After that selection the next order statistic is the least of what lies above it.
+    const double high =
+        above == below
+            ? low
+            : *std::min_element(values.begin() + static_cast<std::ptrdiff_t>(above), values.end());
+    return low + (position - static_cast<double>(below)) * (high - low);
+  };
+  const double lo = at(0.025);
+  return {lo, at(0.975)};
 }
 
 bool sameMedian(const std::vector<double>& calls, double median) {
@@ -76,15 +98,13 @@ std::vector<std::vector<double>> callsPerFrame(const QueryMeasurement& m) {
 TimeBootstrap::TimeBootstrap(const QueryMeasurement& m)
     : TimeBootstrap(callsPerFrame(m), m.rounds) {}
 
-TimeBootstrap::TimeBootstrap(const std::vector<std::vector<double>>& calls, std::size_t rounds) {
+namespace {
+
+// The replicates of `calls` (TimeBootstrap's doc says how they are drawn).
+std::vector<double> drawReplicates(const std::vector<std::vector<double>>& calls,
+                                   std::size_t rounds, std::uint64_t seed) {
   const std::size_t frames = calls.size();
-  for (const std::vector<double>& frame : calls)
-    estimate_ += frame.empty() ? 0.0 : quantile(frame, 0.5);
-  if (frames != 0) estimate_ /= static_cast<double>(frames);
-  if (frames == 0) {
-    replicates_.assign(kReplicates, 0.0);
-    return;
-  }
+  if (frames == 0) return std::vector<double>(TimeBootstrap::kReplicates, 0.0);
   // Rounds resampled only where every frame's calls divide into them evenly.
   const bool by_round = rounds > 1 && std::all_of(calls.begin(), calls.end(), [&](const auto& f) {
                           return !f.empty() && f.size() % rounds == 0;
@@ -92,14 +112,15 @@ TimeBootstrap::TimeBootstrap(const std::vector<std::vector<double>>& calls, std:
   if (!by_round) rounds = 1;
   // The frames drawn depend on their count alone (pairing, above); rounds and calls on the times.
   std::mt19937_64 frame_draws(0x5EEDF4A3E5ull ^ frames);
-  std::mt19937_64 call_draws(seedOf(calls));
+  std::mt19937_64 call_draws(seed);
   std::uniform_int_distribution<std::size_t> pick_frame(0, frames - 1);
   std::uniform_int_distribution<std::size_t> pick_round(0, rounds - 1);
   std::vector<std::size_t> drawn_rounds(rounds);
   std::vector<double> pool;
   std::vector<double> drawn;
-  replicates_.reserve(kReplicates);
-  for (int r = 0; r < kReplicates; ++r) {
+  std::vector<double> replicates;
+  replicates.reserve(TimeBootstrap::kReplicates);
+  for (int r = 0; r < TimeBootstrap::kReplicates; ++r) {
     for (std::size_t& round : drawn_rounds)
       round = rounds == 1 ? 0 : pick_round(call_draws);
     double total = 0.0;
@@ -122,14 +143,54 @@ TimeBootstrap::TimeBootstrap(const std::vector<std::vector<double>>& calls, std:
         d = pool[pick_call(call_draws)];
       total += medianInPlace(drawn);
     }
-    replicates_.push_back(total / static_cast<double>(frames));
+    replicates.push_back(total / static_cast<double>(frames));
   }
+  return replicates;
 }
 
-std::optional<double> roundSpread(const QueryMeasurement& m) {
+// Replicates drawn before in this process, by what they were drawn from: one output pass asks
+// for a measurement's interval from several tables, and each draw is thousands of medians.
+using DrawKey = std::tuple<std::uint64_t, std::size_t, std::size_t, std::size_t>;
+constexpr std::size_t kMemoLimit = 20000;
+
+std::shared_ptr<const std::vector<double>> memoisedReplicates(
+    const std::vector<std::vector<double>>& calls, std::size_t rounds) {
+  static std::mutex mutex;
+  static std::map<DrawKey, std::shared_ptr<const std::vector<double>>> memo;
+  std::size_t count = 0;
+  for (const std::vector<double>& frame : calls)
+    count += frame.size();
+  const std::uint64_t seed = seedOf(calls);
+  const DrawKey key{seed, calls.size(), rounds, count};
+  {
+    const std::lock_guard<std::mutex> lock(mutex);
+    if (const auto found = memo.find(key); found != memo.end()) return found->second;
+  }
+  auto drawn = std::make_shared<const std::vector<double>>(drawReplicates(calls, rounds, seed));
+  const std::lock_guard<std::mutex> lock(mutex);
+  if (memo.size() >= kMemoLimit) memo.clear();
+  memo.emplace(key, drawn);
+  return drawn;
+}
+
+}  // namespace
+
+TimeBootstrap::TimeBootstrap(const std::vector<std::vector<double>>& calls, std::size_t rounds)
+    : replicates_(memoisedReplicates(calls, rounds)) {
+  for (const std::vector<double>& frame : calls)
+    estimate_ += frame.empty() ? 0.0 : quantile(frame, 0.5);
+  if (!calls.empty()) estimate_ /= static_cast<double>(calls.size());
+}
+
+namespace {
+
+// Each round's statistic: the mean over frames of the median of that round's calls; none where
+// the calls do not divide evenly into the rounds.
+std::optional<std::vector<double>> roundMeans(const QueryMeasurement& m) {
   const std::size_t rounds = m.rounds;
   if (rounds < 2) return std::nullopt;
   const std::vector<std::vector<double>> calls = callsPerFrame(m);
+  if (calls.empty()) return std::nullopt;
   std::vector<double> means(rounds, 0.0);
   for (const std::vector<double>& frame : calls) {
     if (frame.size() % rounds != 0 || frame.size() < rounds) return std::nullopt;
@@ -140,18 +201,53 @@ std::optional<double> roundSpread(const QueryMeasurement& m) {
           quantile(std::vector<double>(first, first + static_cast<std::ptrdiff_t>(per_round)), 0.5);
     }
   }
-  const auto [low, high] = std::minmax_element(means.begin(), means.end());
-  if (calls.empty() || *low <= 0.0) return std::nullopt;
+  for (double& mean : means)
+    mean /= static_cast<double>(calls.size());
+  return means;
+}
+
+// Student's t, two-sided 95%, for `df` degrees of freedom (the normal's beyond the table).
+double studentT95(std::size_t df) {
+  static constexpr double kTable[] = {12.706, 4.303, 3.182, 2.776, 2.571, 2.447, 2.365, 2.306,
+                                      2.262,  2.228, 2.201, 2.179, 2.160, 2.145, 2.131, 2.120,
+                                      2.110,  2.101, 2.093, 2.086, 2.080, 2.074, 2.069, 2.064,
+                                      2.060,  2.056, 2.052, 2.048, 2.045, 2.042};
+  constexpr std::size_t kRows = sizeof kTable / sizeof kTable[0];
+  return df >= 1 && df <= kRows ? kTable[df - 1] : 1.960;
+}
+
+}  // namespace
+
+std::optional<double> roundSpread(const QueryMeasurement& m) {
+  const std::optional<std::vector<double>> means = roundMeans(m);
+  if (!means) return std::nullopt;
+  const auto [low, high] = std::minmax_element(means->begin(), means->end());
+  if (*low <= 0.0) return std::nullopt;
   return *high / *low;
 }
 
+std::optional<double> roundHalfWidth(const QueryMeasurement& m) {
+  const std::optional<std::vector<double>> means = roundMeans(m);
+  if (!means) return std::nullopt;
+  const auto n = static_cast<double>(means->size());
+  double mean = 0.0;
+  for (const double x : *means)
+    mean += x / n;
+  if (mean <= 0.0) return std::nullopt;
+  double squares = 0.0;
+  for (const double x : *means)
+    squares += (x - mean) * (x - mean);
+  const double standard_error = std::sqrt(squares / (n - 1.0) / n);
+  return studentT95(means->size() - 1) * standard_error / mean;
+}
+
 bool unstable(const QueryMeasurement& m) {
-  const std::optional<double> spread = roundSpread(m);
-  return spread && *spread > 1.0 + 2.0 * kEquivalenceBand;
+  const std::optional<double> half_width = roundHalfWidth(m);
+  return half_width && *half_width > kEquivalenceBand;
 }
 
 Interval TimeBootstrap::ci95() const {
-  return percentileInterval(replicates_);
+  return percentileInterval(*replicates_);
 }
 
 std::optional<Ratio> timeRatio(const TimeBootstrap& numerator, const TimeBootstrap& denominator) {
@@ -163,7 +259,8 @@ std::optional<Ratio> timeRatio(const TimeBootstrap& numerator, const TimeBootstr
     if (bottom[r] <= 0.0) return std::nullopt;
     ratios[r] = top[r] / bottom[r];
   }
-  return Ratio{numerator.estimate() / denominator.estimate(), percentileInterval(ratios)};
+  return Ratio{numerator.estimate() / denominator.estimate(),
+               percentileInterval(std::move(ratios))};
 }
 
 Difference differenceOf(const Interval& ratio, double band) {

@@ -17,6 +17,7 @@
 
 #include <collido/mesh/input_file.h>
 #include <collido/runner/digest.h>
+#include <collido/runner/time_statistic.h>
 #include <collido/scene/frep_file.h>
 #include <collido/scene/surface_file.h>
 #include <collido/study/expected_time.h>
@@ -380,6 +381,74 @@ SettingAbilities abilitiesInChildren(const StudyRequest& request,
   return abilities;
 }
 
+/// How many extra rounds a combination may get for its unstable rows.
+constexpr int kMaxExtraRounds = 3;
+
+/// What running a queue of workers needs from the study.
+struct WorkerQueue {
+  const ResultStore& store;
+  int repetitions;
+  double timeout_s;
+  const std::map<std::string, std::string>& plugin_file_of;
+  const StudyRequest& args;
+  const StopOnSignals& stop;
+  std::ostream& err;
+};
+
+enum class QueueEnd { kDone, kInterrupted, kStoreFailed };
+
+// Runs `todo` one worker at a time, storing each result; stops when asked to, or before a worker
+// that would start past `deadline`.
+QueueEnd runQueue(
+    const std::vector<const Combination*>& todo, const WorkerQueue& q, StudyProgress& progress,
+    std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max()) {
+  std::chrono::steady_clock::time_point outputs_made = std::chrono::steady_clock::now();
+  for (std::size_t i = 0; i < todo.size(); ++i) {
+    if (std::chrono::steady_clock::now() >= deadline) return QueueEnd::kDone;
+    const Combination& c = *todo[i];
+    progress.start(
+        i, c.round == 0 ? c.label() : c.label() + " · round " + std::to_string(c.round + 1));
+    const auto plugin_file = q.plugin_file_of.find(c.backend);
+    CombinationResult result =
+        runInWorker(c, q.store, q.repetitions, q.timeout_s,
+                    plugin_file == q.plugin_file_of.end() ? std::string() : plugin_file->second,
+                    q.args, progress, q.stop.requested());
+    if (result.outcome.status == "interrupted") return QueueEnd::kInterrupted;
+    if (Status s = q.store.write(result); !s.ok()) {
+      q.err << "\nerror: " << s.message() << "\n";
+      return QueueEnd::kStoreFailed;
+    }
+    if (!q.args.quiet) progress.finish(outcomeText(result));
+    // The outputs are made from every stored result: remade after each combination, a study of
+    // n combinations did O(n^2) work. While it runs they are refreshed at most every 30 s (a
+    // running study can be looked at), and made once more at the end.
+    if (std::chrono::steady_clock::now() - outputs_made > kOutputsRefresh) {
+      Result<std::vector<CombinationResult>> all = q.store.readAll();
+      if (all.ok()) (void)writeStudyOutputs(q.store.directory(), all.value());
+      outputs_made = std::chrono::steady_clock::now();
+    }
+    if (q.stop.requested().load()) return QueueEnd::kInterrupted;
+  }
+  return QueueEnd::kDone;
+}
+
+// Round `round` of each finished mesh combination with an unstable row (unstable(): its rounds
+// so far cannot pin the figure down to within the equivalence band), unless already stored.
+std::vector<Combination> extraRounds(const ResultStore& store, int round) {
+  std::vector<Combination> more;
+  Result<std::vector<CombinationResult>> all = store.readAll();
+  if (!all.ok()) return more;
+  for (const CombinationResult& r : all.value()) {
+    if (!r.outcome.ok() || r.combination.kind != InputKind::kScene) continue;
+    const bool wanting =
+        std::any_of(r.measurements.begin(), r.measurements.end(),
+                    [](const QueryMeasurement& m) { return m.ok() && unstable(m); });
+    Combination next = inRound(r.combination, round);
+    if (wanting && !store.has(next.id)) more.push_back(std::move(next));
+  }
+  return more;
+}
+
 int runStudyImpl(const StudyRequest& args, std::ostream& out, std::ostream& err) {
   Sweep sweep;
   if (!args.sweep_path.empty()) {
@@ -600,39 +669,29 @@ int runStudyImpl(const StudyRequest& args, std::ostream& out, std::ostream& err)
   const StopOnSignals stop;
   StudyProgress progress(err, todo.size(), !args.quiet && args.interactive);
   progress.setExpected(estimate.seconds);
-  bool interrupted = false;
-  std::chrono::steady_clock::time_point outputs_made = std::chrono::steady_clock::now();
-  for (std::size_t i = 0; i < todo.size(); ++i) {
-    const Combination& c = *todo[i];
-    progress.start(
-        i, c.round == 0 ? c.label() : c.label() + " · round " + std::to_string(c.round + 1));
-    const auto plugin_file = plugin_file_of.find(c.backend);
-    CombinationResult result =
-        runInWorker(c, store, repetitions, timeout_s,
-                    plugin_file == plugin_file_of.end() ? std::string() : plugin_file->second, args,
-                    progress, stop.requested());
-    if (result.outcome.status == "interrupted") {
-      interrupted = true;
-      break;
-    }
-    if (Status s = store.write(result); !s.ok()) {
-      err << "\nerror: " << s.message() << "\n";
-      return 2;
-    }
-    if (!args.quiet) progress.finish(outcomeText(result));
-    // The outputs are made from every stored result: remade after each combination, a study of
-    // n combinations did O(n^2) work. While it runs they are refreshed at most every 30 s (a
-    // running study can be looked at), and made once more at the end.
-    if (std::chrono::steady_clock::now() - outputs_made > kOutputsRefresh) {
-      Result<std::vector<CombinationResult>> all = store.readAll();
-      if (all.ok()) (void)writeStudyOutputs(store.directory(), all.value());
-      outputs_made = std::chrono::steady_clock::now();
-    }
-    if (stop.requested().load()) {
-      interrupted = true;
-      break;
-    }
+  const WorkerQueue queue{store, repetitions, timeout_s, plugin_file_of, args, stop, err};
+  QueueEnd end = runQueue(todo, queue, progress);
+  // Then more rounds where the rounds so far cannot pin a figure down, within the time budget.
+  const double adaptive_s = args.adaptive_s >= 0.0 ? args.adaptive_s : sweep.adaptive_s.value_or(0);
+  const std::chrono::steady_clock::time_point deadline =
+      std::chrono::steady_clock::now() +
+      std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+          std::chrono::duration<double>(adaptive_s));
+  for (int extra = 0; end == QueueEnd::kDone && adaptive_s > 0.0 && order.rounds > 1 &&
+                      extra < kMaxExtraRounds && std::chrono::steady_clock::now() < deadline;
+       ++extra) {
+    const std::vector<Combination> more = extraRounds(store, order.rounds + extra);
+    if (more.empty()) break;
+    err << "study: round " << order.rounds + extra + 1 << " for " << more.size()
+        << " combinations whose rounds disagree (unstable rows)\n";
+    std::vector<const Combination*> pointers;
+    for (const Combination& c : more)
+      pointers.push_back(&c);
+    StudyProgress extra_progress(err, pointers.size(), !args.quiet && args.interactive);
+    end = runQueue(pointers, queue, extra_progress, deadline);
   }
+  if (end == QueueEnd::kStoreFailed) return 2;
+  const bool interrupted = end == QueueEnd::kInterrupted;
 
   Result<std::vector<CombinationResult>> all = store.readAll();
   if (!all.ok()) {

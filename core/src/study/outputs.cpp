@@ -187,8 +187,10 @@ std::string studyTableWith(const std::vector<CombinationResult>& results,
   out << "mean us: the " << kTimeStatisticText
       << "; the single calls' percentiles are in summary.json (p90_us, p99_us, max_us). rounds: "
          "the worker processes the calls came from, and the slowest round's figure over the "
-         "fastest's; 'unstable' past "
-      << formatNumber("%.2f", 1.0 + 2.0 * kEquivalenceBand) << "x.\n";
+         "fastest's; 'unstable' where the rounds cannot pin the figure down to within "
+      << formatNumber("%g", kEquivalenceBand * 100.0)
+      << "% (the 95% interval of their mean is wider), even after the extra rounds the study "
+         "gave it.\n";
   if (const std::string text = notApplicableText(not_applicable); !text.empty()) {
     out << "\nNot applicable, so not planned (the setting answers none of the query kinds the "
            "scene asks):\n"

@@ -183,8 +183,8 @@ void readPerScene(const Json& node, const std::string& where, Read read, const C
 
 Sweep readSweep(const Checker& c, const Json& root) {
   c.allowKeys(root, "",
-              {"backends", "resolutions", "needs", "limits", "repetitions", "rounds", "timeout_s",
-               "protocol", "surfaces", "frep"});
+              {"backends", "resolutions", "needs", "limits", "repetitions", "rounds", "adaptive_s",
+               "timeout_s", "protocol", "surfaces", "frep"});
   Sweep sweep;
   if (root.contains("surfaces"))
     readComparison(c, root.at("surfaces"), "/surfaces", "tessellations", 1, sweep.surfaces);
@@ -224,6 +224,12 @@ Sweep readSweep(const Checker& c, const Json& root) {
     if (!value.is_number_integer() || value.get<long long>() < 1 || value.get<long long>() > 100)
       c.fail("/rounds", "expected a whole number from 1 to 100");
     sweep.rounds = value.get<int>();
+  }
+  if (root.contains("adaptive_s")) {
+    const Json& value = root.at("adaptive_s");
+    if (!value.is_number() || !(value.get<double>() >= 0.0))
+      c.fail("/adaptive_s", "expected a number of seconds >= 0");
+    sweep.adaptive_s = value.get<double>();
   }
   if (root.contains("protocol")) {
     const Json& value = root.at("protocol");

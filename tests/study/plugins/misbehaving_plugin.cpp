@@ -13,7 +13,10 @@
 //   misbehaving:crash_in_create  dies of SIGSEGV when an instance is created
 // Every answering variant also spends COLLIDO_TEST_QUERY_EXTRA_US microseconds (an environment
 // variable, so that the setting keeps its name) busy in each query: a known slowdown between two
-// studies of the same settings, which `collido compare` must find.
+// studies of the same settings, which `collido compare` must find. With
+// COLLIDO_TEST_QUERY_JITTER=J and COLLIDO_TEST_QUERY_JITTER_FILE=F, every other instance created
+// (counted by appending a byte to F) spins 1 + J times as long: worker processes, and so a
+// study's rounds, that disagree.
 // Built as libcollido_plugin_misbehaving.so into the tests' own plugin folder, so only tests
 // that pass that folder with --plugin see it.
 #include <array>
@@ -24,6 +27,10 @@
 #include <stdexcept>
 #include <thread>
 #include <vector>
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include <collido/plugin_export.h>
 
@@ -115,7 +122,16 @@ bool trianglesOverlap(const Triangle& a, const Triangle& b) {
 // The extra microseconds each query spends, from the environment (0 without it).
 double extraQueryMicroseconds() {
   const char* text = std::getenv("COLLIDO_TEST_QUERY_EXTRA_US");
-  return text == nullptr ? 0.0 : std::strtod(text, nullptr);
+  const char* jitter = std::getenv("COLLIDO_TEST_QUERY_JITTER");
+  const double extra = text == nullptr ? 0.0 : std::strtod(text, nullptr);
+  const char* counter = std::getenv("COLLIDO_TEST_QUERY_JITTER_FILE");
+  if (jitter == nullptr || counter == nullptr) return extra;
+  const int file = open(counter, O_WRONLY | O_APPEND | O_CREAT, 0644);
+  if (file < 0) return extra;
+  struct stat status {};
+  const bool counted = write(file, "+", 1) == 1 && fstat(file, &status) == 0;
+  close(file);
+  return counted && status.st_size % 2 == 0 ? extra * (1.0 + std::strtod(jitter, nullptr)) : extra;
 }
 
 // Spins (a sleep would give the core away and wake late) until `microseconds` have passed.

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -49,19 +50,25 @@ class TimeBootstrap {
   double estimate() const { return estimate_; }
   /// The percentile interval of the replicates.
   Interval ci95() const;
-  const std::vector<double>& replicates() const { return replicates_; }
+  const std::vector<double>& replicates() const { return *replicates_; }
 
  private:
   double estimate_ = 0.0;
-  std::vector<double> replicates_;
+  std::shared_ptr<const std::vector<double>> replicates_;  ///< shared with equal draws
 };
 
 /// With several rounds: the slowest round's statistic over the fastest's (each round's own mean
 /// over frames of its calls' medians); none with one round or a round at 0.
 std::optional<double> roundSpread(const QueryMeasurement& m);
 
-/// A measurement whose rounds differ by more than twice the equivalence band (roundSpread above
-/// 1.2) is unstable: its processes did not agree, so its figure and interval are suspect.
+/// With several rounds: the half-width of the 95% interval of the mean of the rounds' own
+/// statistics (Student's t over the rounds), relative to that mean: how finely the worker
+/// processes pin the figure down; none with one round or a mean of 0.
+std::optional<double> roundHalfWidth(const QueryMeasurement& m);
+
+/// A measurement whose rounds cannot resolve the equivalence band (roundHalfWidth above it) is
+/// unstable: its processes disagreed, so its figure is suspect and its interval wide. A study
+/// gives such combinations more rounds within its time budget, then flags what stays so.
 bool unstable(const QueryMeasurement& m);
 
 /// A ratio of two figures with its 95% interval.

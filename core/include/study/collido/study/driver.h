@@ -23,9 +23,10 @@ struct StudyRequest {
   std::string oracle_directory;
   bool resume = false;
   bool retry_failed = false;
-  double timeout_s = 0.0;                      ///< 0: the sweep's, else 600
-  int repetitions = 0;                         ///< 0: the sweep's, else 5
-  int rounds = 0;                              ///< 0: the sweep's, else 1 (RunOrder)
+  double timeout_s = 0.0;    ///< 0: the sweep's, else 600
+  int repetitions = 0;       ///< 0: the sweep's, else 5
+  int rounds = 0;            ///< 0: the sweep's, else 1 (RunOrder)
+  double adaptive_s = -1.0;  ///< < 0: the sweep's, else 0 (the extra rounds' time budget)
   std::uint64_t order_seed = RunOrder{}.seed;  ///< the seed of the order combinations run in
   std::string protocol;                        ///< "" : the sweep's, else "cycled"
   std::string expected_times;      ///< an earlier study or its times.json, for the expected time

@@ -59,6 +59,9 @@ struct Sweep {
   /// Timing rounds: each mesh combination runs this many times, each in a worker process of its
   /// own, in a seeded random order across the study (rounds.h); unset: --rounds, else 1.
   std::optional<int> rounds;
+  /// Seconds the study may spend on extra rounds for combinations with unstable rows, after the
+  /// planned ones; unset: --adaptive-seconds, else 0 (none).
+  std::optional<double> adaptive_s;
   std::optional<double> timeout_s;
   /// "repeated" or "cycled" (TimingProtocol); unset: --protocol, else repeated.
   std::optional<std::string> protocol;
