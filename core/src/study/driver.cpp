@@ -684,9 +684,9 @@ int runStudyImpl(const StudyRequest& args, std::ostream& out, std::ostream& err)
     if (more.empty()) break;
     err << "study: round " << order.rounds + extra + 1 << " for " << more.size()
         << " combinations whose rounds disagree (unstable rows)\n";
-    std::vector<const Combination*> pointers;
-    for (const Combination& c : more)
-      pointers.push_back(&c);
+    std::vector<const Combination*> pointers(more.size());
+    for (std::size_t i = 0; i < more.size(); ++i)
+      pointers[i] = &more[i];
     StudyProgress extra_progress(err, pointers.size(), !args.quiet && args.interactive);
     end = runQueue(pointers, queue, extra_progress, deadline);
   }

@@ -23,7 +23,7 @@ double meanFrameTimeUs(const QueryMeasurement& m);
 /// That statistic and its interval in words, as the outputs name them.
 inline constexpr const char* kTimeStatisticText =
     "mean over frames of each frame's median call (us per query), with its 95% bootstrap "
-    "interval (frames and calls resampled)";
+    "interval (rounds, frames and calls resampled)";
 
 /// Each frame's timed calls, split from QueryMeasurement::times_us (frame-major, the same count
 /// per frame). A frame whose calls cannot be told apart from its neighbours' (a measurement
