@@ -598,24 +598,28 @@ TEST(StudyCli, ShardsMergeIntoTheWholeStudy) {
 }
 
 // collido compare and report --baseline decide a change by its interval: a study whose every
-// query was made 25% dearer (the test plugin's COLLIDO_TEST_QUERY_EXTRA_US) is slower on every
+// query was made 25% dearer (the test plugin's COLLIDO_TEST_QUERY_SLOWDOWN) is slower on every
 // row, and an identical rerun changes no row.
 TEST(StudyCli, CompareFindsASlowdownAndNoChangeInARerun) {
   const std::string dir = test::makeTempDirectory("study_compare");
   const std::string scene = writeSmallScene(dir);
-  // The spin dwarfs the brute force's own cost, under the sanitizers too: 4 ms then 5 ms.
-  const auto study = [&](const std::string& out, const char* extra_us) {
-    setenv("COLLIDO_TEST_QUERY_EXTRA_US", extra_us, 1);
+  // A steady 2 ms spin in every query; the slow study makes each whole query 25% longer, so the
+  // ratio holds whatever the build's own cost (under the sanitizers the brute force takes ms).
+  const auto study = [&](const std::string& out, const char* slowdown) {
+    setenv("COLLIDO_TEST_QUERY_EXTRA_US", "2000", 1);
+    if (slowdown != nullptr) setenv("COLLIDO_TEST_QUERY_SLOWDOWN", slowdown, 1);
     std::vector<std::string> args =
         studyArgs(scene, "misbehaving:exact,misbehaving:exact[build_mib=1]", dir + "/" + out);
     args.insert(args.end(), {"--rounds", "2"});
     const CommandRun run = collido(args, dir);
     unsetenv("COLLIDO_TEST_QUERY_EXTRA_US");
+    unsetenv("COLLIDO_TEST_QUERY_SLOWDOWN");
     return run;
   };
-  for (const auto& [out, extra] :
-       {std::pair{"before", "4000"}, {"again", "4000"}, {"slow", "5000"}})
-    ASSERT_EQ(study(out, extra).exit_code, 0) << out;
+  for (const auto& [out, slowdown] : {std::pair<const char*, const char*>{"before", nullptr},
+                                      {"again", nullptr},
+                                      {"slow", "0.25"}})
+    ASSERT_EQ(study(out, slowdown).exit_code, 0) << out;
 
   const auto changes = [&](const std::string& now) {
     const CommandRun run = collido(

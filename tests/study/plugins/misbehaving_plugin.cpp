@@ -12,8 +12,9 @@
 //                      the same failures in build(), before any query
 //   misbehaving:crash_in_create  dies of SIGSEGV when an instance is created
 // Every answering variant also spends COLLIDO_TEST_QUERY_EXTRA_US microseconds (an environment
-// variable, so that the setting keeps its name) busy in each query: a known slowdown between two
-// studies of the same settings, which `collido compare` must find. With
+// variable, so that the setting keeps its name) busy in each query, which steadies its time between
+// studies of the same settings. COLLIDO_TEST_QUERY_SLOWDOWN=F makes each whole query (that
+// spin and the answer) 1 + F times as long, a known slowdown `collido compare` must find. With
 // COLLIDO_TEST_QUERY_JITTER=J and COLLIDO_TEST_QUERY_JITTER_FILE=F, every other instance created
 // (counted by appending a byte to F) spins 1 + J times as long: worker processes, and so a
 // study's rounds, that disagree.
@@ -119,6 +120,12 @@ bool trianglesOverlap(const Triangle& a, const Triangle& b) {
     std::this_thread::sleep_for(std::chrono::seconds(1));
 }
 
+// A number from the environment, 0 without it.
+double environmentNumber(const char* name) {
+  const char* text = std::getenv(name);
+  return text == nullptr ? 0.0 : std::strtod(text, nullptr);
+}
+
 // The extra microseconds each query spends, from the environment (0 without it).
 double extraQueryMicroseconds() {
   const char* text = std::getenv("COLLIDO_TEST_QUERY_EXTRA_US");
@@ -145,7 +152,10 @@ void spin(double microseconds) {
 class MisbehavingBackend final : public collido::Backend {
  public:
   MisbehavingBackend(Mode mode, std::size_t ballast_bytes)
-      : mode_(mode), ballast_bytes_(ballast_bytes), extra_us_(extraQueryMicroseconds()) {}
+      : mode_(mode),
+        ballast_bytes_(ballast_bytes),
+        extra_us_(extraQueryMicroseconds()),
+        slowdown_(environmentNumber("COLLIDO_TEST_QUERY_SLOWDOWN")) {}
 
   collido::Capabilities capabilities() const override {
     collido::Capabilities caps;
@@ -198,7 +208,24 @@ class MisbehavingBackend final : public collido::Backend {
       case Mode::kHangInBuild:
         break;
     }
+    const auto start = std::chrono::steady_clock::now();
     if (extra_us_ > 0.0) spin(extra_us_);
+    const collido::Status answered = answer(a, pose_a, b, pose_b, request, result);
+    // The slowdown scales the whole query, whatever the build's own cost (sanitizers included).
+    if (slowdown_ > 0.0) {
+      spin(slowdown_ *
+           std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start)
+               .count());
+    }
+    return answered;
+  }
+
+ private:
+  // The brute-force answer: every triangle pair by the separating-axis test.
+  static collido::Status answer(collido::BackendModel& a, const collido::Pose& pose_a,
+                                collido::BackendModel& b, const collido::Pose& pose_b,
+                                const collido::QueryRequest& request,
+                                collido::QueryResult& result) {
     const std::vector<Triangle> ta = posed(static_cast<MeshModel&>(a), pose_a);
     const std::vector<Triangle> tb = posed(static_cast<MeshModel&>(b), pose_b);
     result.counters.counts_primitive_tests = true;
@@ -220,10 +247,10 @@ class MisbehavingBackend final : public collido::Backend {
     return {};
   }
 
- private:
   Mode mode_;
   std::size_t ballast_bytes_;
   double extra_us_;
+  double slowdown_;
 };
 
 collido::Result<std::unique_ptr<collido::Backend>> create(const std::string& variant,
