@@ -1,9 +1,7 @@
 // collido compare: the times of two studies (or two summary.json files) row by row, each row
 // faster, slower or the same, decided by the ratio's 95% interval against the equivalence band.
 #include <filesystem>
-#include <fstream>
 #include <iostream>
-#include <sstream>
 
 #include <nlohmann/json.hpp>
 
@@ -33,18 +31,11 @@ Result<nlohmann::json> readSummary(const std::string& path) {
   const std::string file = std::filesystem::is_directory(path, ec)
                                ? (std::filesystem::path(path) / "summary.json").string()
                                : path;
-  std::ifstream in(file);
-  if (!in) {
+  if (!std::filesystem::exists(file, ec)) {
     return Status(StatusCode::kInvalidArgument,
                   file + ": not found (give two study folders or two summary.json files)");
   }
-  std::stringstream text;
-  text << in.rdbuf();
-  try {
-    return nlohmann::json::parse(text.str());
-  } catch (const nlohmann::json::exception& e) {
-    return Status(StatusCode::kInvalidArgument, file + ": not valid JSON: " + e.what());
-  }
+  return study::readJsonFile(file);
 }
 
 // Both study folders: intervals from their timed calls, paired by frame. Otherwise their

@@ -334,8 +334,7 @@
   // --- 0. what to pick ------------------------------------------------------------------------
   {
     const wanted = data.what_to_pick || {};
-    // Two times within this share of each other are practically the same (docs/STUDY.md).
-    const band = typeof wanted.equivalence_band === 'number' ? wanted.equivalence_band : 0.1;
+    const band = pickBand;
     const bandText = fmt(100 * band, 0) + '%';
     const statistic = (wanted.statistic ||
       'mean over frames of each frame\'s median call (us per query)').replace('(us per', '(µs per');

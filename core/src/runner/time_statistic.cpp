@@ -43,26 +43,8 @@ double medianInPlace(std::vector<double>& values) {
   return (below + *middle) / 2.0;
 }
 
-// The 2.5% and 97.5% quantiles (type 7, as quantile()), by selection rather than a full sort:
-// what-to-pick takes thousands of them.
-Interval percentileInterval(std::vector<double> values) {
-  if (values.empty()) return {};
-  const auto at = [&values](double q) {
-    const double position = q * static_cast<double>(values.size() - 1);
-    const auto below = static_cast<std::size_t>(std::floor(position));
-    const std::size_t above = std::min(below + 1, values.size() - 1);
-    std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(below),
-                     values.end());
-    const double low = values[below];
-    // After that selection the next order statistic is the least of what lies above it.
-    const double high =
-        above == below
-            ? low
-            : *std::min_element(values.begin() + static_cast<std::ptrdiff_t>(above), values.end());
-    return low + (position - static_cast<double>(below)) * (high - low);
-  };
-  const double lo = at(0.025);
-  return {lo, at(0.975)};
+Interval percentileInterval(const std::vector<double>& values) {
+  return {quantile(values, 0.025), quantile(values, 0.975)};
 }
 
 bool sameMedian(const std::vector<double>& calls, double median) {
@@ -80,17 +62,25 @@ double meanFrameTimeUs(const QueryMeasurement& m) {
   return total / static_cast<double>(m.frames.size());
 }
 
+std::optional<std::vector<std::vector<double>>> splitEvenly(const std::vector<double>& values,
+                                                            std::size_t parts) {
+  if (parts == 0 || values.empty() || values.size() % parts != 0) return std::nullopt;
+  const std::size_t length = values.size() / parts;
+  std::vector<std::vector<double>> runs(parts);
+  for (std::size_t i = 0; i < parts; ++i) {
+    const auto first = values.begin() + static_cast<std::ptrdiff_t>(i * length);
+    runs[i].assign(first, first + static_cast<std::ptrdiff_t>(length));
+  }
+  return runs;
+}
+
 std::vector<std::vector<double>> callsPerFrame(const QueryMeasurement& m) {
-  const std::size_t frames = m.frames.size();
-  std::vector<std::vector<double>> calls(frames);
-  const std::size_t per_frame = frames == 0 ? 0 : m.times_us.size() / frames;
-  const bool split = per_frame > 0 && per_frame * frames == m.times_us.size();
-  for (std::size_t f = 0; f < frames; ++f) {
-    if (split) {
-      const auto first = m.times_us.begin() + static_cast<std::ptrdiff_t>(f * per_frame);
-      calls[f].assign(first, first + static_cast<std::ptrdiff_t>(per_frame));
-    }
-    if (!split || !sameMedian(calls[f], m.frames[f].median_us)) calls[f] = {m.frames[f].median_us};
+  std::vector<std::vector<double>> calls =
+      splitEvenly(m.times_us, m.frames.size())
+          .value_or(std::vector<std::vector<double>>(m.frames.size()));
+  for (std::size_t f = 0; f < calls.size(); ++f) {
+    if (calls[f].empty() || !sameMedian(calls[f], m.frames[f].median_us))
+      calls[f] = {m.frames[f].median_us};
   }
   return calls;
 }
@@ -193,13 +183,10 @@ std::optional<std::vector<double>> roundMeans(const QueryMeasurement& m) {
   if (calls.empty()) return std::nullopt;
   std::vector<double> means(rounds, 0.0);
   for (const std::vector<double>& frame : calls) {
-    if (frame.size() % rounds != 0 || frame.size() < rounds) return std::nullopt;
-    const std::size_t per_round = frame.size() / rounds;
-    for (std::size_t r = 0; r < rounds; ++r) {
-      const auto first = frame.begin() + static_cast<std::ptrdiff_t>(r * per_round);
-      means[r] +=
-          quantile(std::vector<double>(first, first + static_cast<std::ptrdiff_t>(per_round)), 0.5);
-    }
+    const std::optional<std::vector<std::vector<double>>> by_round = splitEvenly(frame, rounds);
+    if (!by_round) return std::nullopt;
+    for (std::size_t r = 0; r < rounds; ++r)
+      means[r] += quantile((*by_round)[r], 0.5);
   }
   for (double& mean : means)
     mean /= static_cast<double>(calls.size());
@@ -259,8 +246,7 @@ std::optional<Ratio> timeRatio(const TimeBootstrap& numerator, const TimeBootstr
     if (bottom[r] <= 0.0) return std::nullopt;
     ratios[r] = top[r] / bottom[r];
   }
-  return Ratio{numerator.estimate() / denominator.estimate(),
-               percentileInterval(std::move(ratios))};
+  return Ratio{numerator.estimate() / denominator.estimate(), percentileInterval(ratios)};
 }
 
 Difference differenceOf(const Interval& ratio, double band) {

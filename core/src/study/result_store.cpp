@@ -21,6 +21,8 @@ namespace {
 using Json = nlohmann::json;
 namespace fs = std::filesystem;
 
+}  // namespace
+
 Result<Json> readJsonFile(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) return Status(StatusCode::kInvalidArgument, path + ": cannot be read");
@@ -32,8 +34,6 @@ Result<Json> readJsonFile(const std::string& path) {
     return Status(StatusCode::kInvalidArgument, path + ": not valid JSON: " + e.what());
   }
 }
-
-}  // namespace
 
 std::string WorkerOutcome::text() const {
   std::string text = status;

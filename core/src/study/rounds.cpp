@@ -7,21 +7,14 @@
 #include <utility>
 
 #include <collido/runner/statistics.h>
+#include <collido/runner/time_statistic.h>
 
 namespace collido::study {
 namespace {
 
 /// Each frame's calls of `m`, or none where the calls do not divide evenly over its frames.
 std::optional<std::vector<std::vector<double>>> framesOf(const QueryMeasurement& m) {
-  const std::size_t frames = m.frames.size();
-  if (frames == 0 || m.times_us.empty() || m.times_us.size() % frames != 0) return std::nullopt;
-  const std::size_t per_frame = m.times_us.size() / frames;
-  std::vector<std::vector<double>> calls(frames);
-  for (std::size_t f = 0; f < frames; ++f) {
-    const auto first = m.times_us.begin() + static_cast<std::ptrdiff_t>(f * per_frame);
-    calls[f].assign(first, first + static_cast<std::ptrdiff_t>(per_frame));
-  }
-  return calls;
+  return splitEvenly(m.times_us, m.frames.size());
 }
 
 const QueryMeasurement* sameQuery(const CombinationResult& r, const QueryMeasurement& m) {

@@ -56,10 +56,16 @@ bool smaller(const PickedSetting& a, const PickedSetting& b) {
 /// Time or memory: what a pick is best by.
 enum class By { kTime, kMemory };
 
-/// `theirs`' figure over `ours`', with its interval: time is sampled (paired bootstrap), memory is
-/// counted (its interval is the ratio itself).
+/// `theirs`' figure over `ours`', with its interval: time is sampled (the paired bootstrap's ratio,
+/// computed once per pair into `ours`' versus list), memory is counted (its interval is the
+/// ratio itself).
 std::optional<Ratio> ratioOf(const Candidate& theirs, const Candidate& ours, By by) {
-  if (by == By::kTime) return timeRatio(theirs.time, ours.time);
+  if (by == By::kTime) {
+    for (const auto& [backend, ratio] : ours.setting.versus) {
+      if (backend == theirs.setting.backend) return ratio;
+    }
+    return std::nullopt;
+  }
   if (perTriangle(ours.setting) <= 0.0) return std::nullopt;
   const double ratio = perTriangle(theirs.setting) / perTriangle(ours.setting);
   return Ratio{ratio, {ratio, ratio}};
@@ -131,7 +137,7 @@ std::string costLine(const std::vector<Candidate>& all, const std::optional<Pick
   const auto exact_one = std::find_if(all.begin(), all.end(), [&](const Candidate& c) {
     return c.setting.backend == chosen.backend;
   });
-  const std::optional<Ratio> ratio = timeRatio(exact_one->time, fastest->time);
+  const std::optional<Ratio> ratio = ratioOf(*exact_one, *fastest, By::kTime);
   if (!ratio) return "";
   const PickedSetting& wrong = fastest->setting;
   return wrong.backend + " is " + ratioWithInterval(*ratio) + " faster than " + chosen.backend +
@@ -218,11 +224,16 @@ std::vector<SceneQueryPicks> whatToPick(const std::vector<CombinationResult>& re
   std::vector<SceneQueryPicks> picks;
   for (const Key& key : order) {
     std::vector<Candidate>& all = groups[key];
+    // Every pair's time ratio once: ties, picks and the cost line read them from `versus`.
     for (Candidate& c : all) {
       for (const Candidate& other : all) {
-        if (&other == &c) continue;
-        c.setting.versus.emplace_back(other.setting.backend, timeRatio(other.time, c.time));
-        if (clearlyBeats(c, other, By::kTime))
+        if (&other != &c)
+          c.setting.versus.emplace_back(other.setting.backend, timeRatio(other.time, c.time));
+      }
+    }
+    for (Candidate& c : all) {
+      for (const Candidate& other : all) {
+        if (&other != &c && clearlyBeats(c, other, By::kTime))
           c.setting.clearly_faster_than.push_back(other.setting.backend);
       }
     }

@@ -25,6 +25,12 @@ inline constexpr const char* kTimeStatisticText =
     "mean over frames of each frame's median call (us per query), with its 95% bootstrap "
     "interval (rounds, frames and calls resampled)";
 
+/// `values` cut into `parts` runs of equal length, in order; none when they are empty or do not
+/// divide evenly (the layout of QueryMeasurement::times_us by frame, and of a frame's calls by
+/// round).
+std::optional<std::vector<std::vector<double>>> splitEvenly(const std::vector<double>& values,
+                                                            std::size_t parts);
+
 /// Each frame's timed calls, split from QueryMeasurement::times_us (frame-major, the same count
 /// per frame). A frame whose calls cannot be told apart from its neighbours' (a measurement
 /// written with another layout) holds its median alone.

@@ -51,6 +51,10 @@ struct CombinationResult {
 nlohmann::json resultToJson(const CombinationResult& result);
 Result<CombinationResult> resultFromJson(const nlohmann::json& json, const std::string& label);
 
+/// The JSON in the file at `path`, or an error naming the file: it cannot be read, or is not
+/// valid JSON (with the parser's message).
+Result<nlohmann::json> readJsonFile(const std::string& path);
+
 /// Writes `text` to a temporary file beside `path` ("<path>.partial.<pid>.<n>"), flushes it to
 /// disk, then renames it over `path`: a reader, a study killed mid-write or a machine that loses
 /// power sees the previous file or the new one, never half a file. On failure the temporary is
