@@ -68,7 +68,8 @@ else
   fi
   "${study[@]}" "${study_arguments[@]}" > /dev/null
 fi
-touch "$out/.complete"
+# Finished; the commit it ran (tools/publish_results.sh names it on the published page).
+git rev-parse --short HEAD 2>/dev/null > "$out/.complete" || touch "$out/.complete"
 # The studied scenes' 3D views (collido view), each with the backends the study ran on it, linked
 # from the dashboard; one view at a time, each backend in its own process.
 mkdir -p "$out/views"
