@@ -13,6 +13,8 @@ namespace {
 
 /// The fewest timed calls a query gets in one round, however few its frames.
 constexpr int kMinTimedCalls = 12;
+/// The fewest back-to-back calls a frame gets for the repeated protocol's secondary figure.
+constexpr int kMinRepeatedCalls = 3;
 
 }  // namespace
 
@@ -58,6 +60,10 @@ Result<CombinationResult> runCombination(const WorkerRequest& request) {
   }
   if (const std::optional<TimingProtocol> protocol = parseTimingProtocol(c.protocol))
     options.protocol = *protocol;
+  // The secondary figure is measured in the first round only: it informs, it decides no pick,
+  // and the study's time budget goes to the headline's rounds.
+  if (options.protocol == TimingProtocol::kCycled && c.round == 0)
+    options.repeated_calls = std::max(kMinRepeatedCalls, options.repetitions);
   options.build_every_need = c.needs == NeedsMode::kEvery;
   options.reuse_unchanged = c.needs == NeedsMode::kChanged;
   options.skip_apart_pairs = c.needs == NeedsMode::kChanged;

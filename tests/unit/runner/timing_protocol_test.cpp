@@ -1,5 +1,6 @@
 // The two timing protocols measure the same answers: cycled passes time one call per frame each,
-// `repetitions` passes, with deforming objects updated to each frame first.
+// `repetitions` passes, with deforming objects updated to each frame first; the repeated
+// protocol's secondary figure can be measured after them.
 #include <gtest/gtest.h>
 
 #include <collido/runner/measurement_json.h>
@@ -25,6 +26,7 @@ constexpr const char* kScene = R"({"name": "rings", "frames": 4, "objects": [
 RunReport run(const Scene& scene, TimingProtocol protocol) {
   RunOptions options = test::repeated(3);
   options.protocol = protocol;
+  options.repeated_calls = 2;  // the secondary figure, measured under the cycled protocol only
   return test::runPlugin(scene, "obbtree", "obbtree", options);
 }
 
@@ -41,7 +43,10 @@ TEST(TimingProtocol, CycledTimesEveryFrameAndAnswersAlike) {
     ASSERT_EQ(c.status, "ok");
     EXPECT_EQ(r.protocol, "repeated");
     EXPECT_EQ(c.protocol, "cycled");
-    EXPECT_EQ(c.times_us.size(), 4u * 3u);
+    EXPECT_EQ(c.times_us.size(), 4u * 3u) << "the secondary figure's calls are not the headline's";
+    EXPECT_FALSE(r.repeated_us.has_value());
+    ASSERT_TRUE(c.repeated_us.has_value());
+    EXPECT_GT(*c.repeated_us, 0.0);
     EXPECT_EQ(c.disagreements, 0u);
     ASSERT_EQ(c.frames.size(), r.frames.size());
     for (std::size_t f = 0; f < c.frames.size(); ++f) {
@@ -53,6 +58,7 @@ TEST(TimingProtocol, CycledTimesEveryFrameAndAnswersAlike) {
     const Result<QueryMeasurement> back = measurementFromJson(measurementToJson(c));
     ASSERT_TRUE(back.ok()) << back.status().message();
     EXPECT_EQ(back.value().protocol, "cycled");
+    EXPECT_EQ(back.value().repeated_us, c.repeated_us);
   }
   EXPECT_EQ(parseTimingProtocol("cycled"), TimingProtocol::kCycled);
   EXPECT_FALSE(parseTimingProtocol("shuffled").has_value());

@@ -98,6 +98,7 @@ void visitMeasurementFields(Measurement& m, Visit&& visit) {
   visit("protocol", m.protocol, Absent::kKeep);  // "repeated" before there was a choice
   visit("times_us", m.times_us, Absent::kError);
   visit("rounds", m.rounds, Absent::kKeep);  // 1 before a study joined rounds
+  visit("repeated_us", m.repeated_us, Absent::kKeep);
 }
 
 /// A measurement's derived summary figures, written beside the stored fields for readers of the

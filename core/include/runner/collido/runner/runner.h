@@ -62,6 +62,10 @@ std::optional<TimingProtocol> parseTimingProtocol(const std::string& name);
 struct RunOptions {
   int repetitions = 5;  ///< timed calls per frame and query (see `protocol`)
   TimingProtocol protocol = TimingProtocol::kRepeated;
+  /// Under the cycled protocol: after its passes, time each frame this many more calls back to
+  /// back, after one untimed call on it, for the repeated protocol's figure beside the cycled one
+  /// (QueryMeasurement::repeated_us); 0 measures none.
+  int repeated_calls = 0;
   /// Build every object for every query kind the backend answers, not only the ones the scene
   /// asks of it: shows what building only the needed structures saves.
   bool build_every_need = false;
@@ -183,6 +187,10 @@ struct QueryMeasurement {
   /// The worker processes (a study's timing rounds) the timed calls came from.
   std::size_t rounds = 1;
   std::string protocol = "repeated";  ///< how they were ordered (timingProtocolName)
+  /// With RunOptions::repeated_calls: the secondary figure, the repeated protocol's, measured in
+  /// the same process after the cycled calls: the mean over frames of each frame's median
+  /// back-to-back call.
+  std::optional<double> repeated_us;
   double median_us = 0.0;
   double p90_us = 0.0;
   double p99_us = 0.0;
