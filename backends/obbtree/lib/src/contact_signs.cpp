@@ -12,7 +12,7 @@ PosedCorner posedCorner(const Eigen::Vector3d& model, const Eigen::Isometry3d& p
   const Eigen::Matrix3d& r = pose.linear();
   const Eigen::Vector3d& t = pose.translation();
   PosedCorner corner;
-  corner.exact = PosedModelPoint{model, &pose};
+  corner.exact = PosedModelPoint(model, pose);
   for (int row = 0; row < 3; ++row) {
     // Error-free transformations tell whether every product and sum was exact: then the double
     // is the exact world coordinate (radius 0, and the filter's exact predicates on doubles
@@ -44,13 +44,6 @@ int ContactSignKernel::settle(const std::optional<int>& sign) {
   return 0;
 }
 
-int ContactSignKernel::orient3d(const Point& a, const Point& b, const Point& c, const Point& d) {
-  FilteredKernel filter;
-  const int sign = filter.orient3d(a.world, b.world, c.world, d.world);
-  if (!filter.unsure()) return sign;
-  return settle(posedOrient3dByExpansions(a.exact, b.exact, c.exact, d.exact));
-}
-
 int ContactSignKernel::orient2d(const Point& a, const Point& b, const Point& c, int drop) {
   FilteredKernel filter;
   const int sign = filter.orient2d(a.world, b.world, c.world, drop);
@@ -63,6 +56,38 @@ int ContactSignKernel::compare(const Point& a, const Point& b, int k) {
   const int sign = filter.compare(a.world, b.world, k);
   if (!filter.unsure()) return sign;
   return settle(posedCompareByExpansions(a.exact, b.exact, k));
+}
+
+std::optional<double> PlaneSides::value(std::size_t side, std::size_t k) {
+  Memo& memo = values_[side][k];
+  if (!memo.computed) {
+    const std::array<PosedCorner, 3>& plane = side == 0 ? a_ : b_;
+    const PosedCorner& corner = side == 0 ? b_[k] : a_[k];
+    memo.value = posedOrient3dValueByExpansions(plane[0].exact, plane[1].exact, plane[2].exact,
+                                                corner.exact);
+    memo.computed = true;
+  }
+  return memo.value;
+}
+
+std::optional<PlaneSigns> PlaneSides::signs() {
+  PlaneSigns signs{};
+  for (std::size_t side = 0; side < 2; ++side) {
+    const std::array<PosedCorner, 3>& plane = side == 0 ? a_ : b_;
+    const std::array<PosedCorner, 3>& other = side == 0 ? b_ : a_;
+    for (std::size_t k = 0; k < 3; ++k) {
+      FilteredKernel filter;
+      signs[side][k] =
+          filter.orient3d(plane[0].world, plane[1].world, plane[2].world, other[k].world);
+      if (!filter.unsure()) continue;
+      // An expansion's rounded value keeps its exact sign: its largest component outweighs the
+      // others together, and the inputs' range keeps it from underflowing to zero.
+      const std::optional<double> exact = value(side, k);
+      if (!exact) return std::nullopt;
+      signs[side][k] = (*exact > 0.0) - (*exact < 0.0);
+    }
+  }
+  return signs;
 }
 
 }  // namespace collido::obbtree::detail

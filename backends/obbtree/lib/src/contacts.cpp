@@ -85,15 +85,14 @@ std::optional<std::vector<Eigen::Vector3d>> planePoints(const Corners& t,
 
 // The intersection of two world triangles whose planes cross, in double precision: where each
 // meets the other's plane, overlapped along the planes' common line. With `exact` (the corners'
-// exact sides of the other plane, [0]: B's against A's plane, [1]: A's against B's, and the
-// corners themselves for exact distances), ill-conditioned crossings take exact distances and
-// planes however near parallel are accepted (the points then give the line's direction);
-// without, the doubles' signs are used, and a
-// corner on or near a plane, or planes near parallel, give nothing (the caller then asks for
-// exact signs, or the exact oracle).
+// exact sides of the other plane, [0]: B's against A's plane, [1]: A's against B's, and their
+// exact distances), ill-conditioned crossings take exact distances and planes however near
+// parallel are accepted (the points then give the line's direction); without, the doubles'
+// signs are used, and a corner on or near a plane, or planes near parallel, give nothing (the
+// caller then asks for exact signs, or the exact oracle).
 std::optional<ExactIntersection> doubleIntersection(
     const Corners& a, const Corners& b, const std::optional<detail::PlaneSigns>& exact_signs = {},
-    const ExactCorners* exact = nullptr) {
+    detail::PlaneSides* exact = nullptr) {
   const Eigen::Vector3d n_a = (a[1] - a[0]).cross(a[2] - a[0]);
   const Eigen::Vector3d n_b = (b[1] - b[0]).cross(b[2] - b[0]);
   const double length_a = n_a.norm();
@@ -114,13 +113,11 @@ std::optional<ExactIntersection> doubleIntersection(
   // The exact distances are orientation determinants, on the scale of s: n . (x - corner 0).
   const auto exact_b_against_a = [&](std::size_t k) -> std::optional<double> {
     if (exact == nullptr) return std::nullopt;
-    return detail::posedOrient3dValueByExpansions(exact->a[0].exact, exact->a[1].exact,
-                                                  exact->a[2].exact, exact->b[k].exact);
+    return exact->value(0, k);
   };
   const auto exact_a_against_b = [&](std::size_t k) -> std::optional<double> {
     if (exact == nullptr) return std::nullopt;
-    return detail::posedOrient3dValueByExpansions(exact->b[0].exact, exact->b[1].exact,
-                                                  exact->b[2].exact, exact->a[k].exact);
+    return exact->value(1, k);
   };
   const auto on_a = planePoints(b, s_b, signs[0], length_a, exact_b_against_a);
   const auto on_b = planePoints(a, s_a, signs[1], length_b, exact_a_against_b);
@@ -256,10 +253,11 @@ void contactsOfPairs(const ObbTree& a, const std::vector<std::int32_t>& position
            detail::posedCorner(model_a[2], pose_a)},
           {detail::posedCorner(model_b[0], pose_b), detail::posedCorner(model_b[1], pose_b),
            detail::posedCorner(model_b[2], pose_b)}};
-      const detail::PlaneSigns signs = detail::planeSignsWith(kernel, exact.a, exact.b);
-      if (!kernel.failed() && signs[0] != Signs{0, 0, 0}) {
-        set = doubleIntersection(world_a, world_b, signs, &exact);
-      } else if (!kernel.failed()) {
+      detail::PlaneSides sides(exact.a, exact.b);
+      const std::optional<detail::PlaneSigns> signs = sides.signs();
+      if (signs && (*signs)[0] != Signs{0, 0, 0}) {
+        set = doubleIntersection(world_a, world_b, signs, &sides);
+      } else if (signs) {
         const std::optional<detail::CoplanarOverlap> overlap = detail::coplanarOverlapWith(
             kernel, exact.a, exact.b, (world_a[1] - world_a[0]).cross(world_a[2] - world_a[0]));
         if (overlap && !kernel.failed())

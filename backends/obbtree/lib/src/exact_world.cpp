@@ -8,7 +8,6 @@
 #include "exact_world.h"
 
 #include <array>
-#include <initializer_list>
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 
@@ -55,14 +54,11 @@ EK::Point_3 placeRational(const Eigen::Vector3d& v, const Eigen::Isometry3d& pos
   return {world[0], world[1], world[2]};
 }
 
-// A world coordinate, sum of three products and a translation: at most 7 components.
-using Coordinate = Expansion<8>;
+using Coordinate = ExactCoordinate;
 // Differences of coordinates, their products and the determinants.
 using Wide = Expansion<64>;
 
-struct ExpansionPoint {
-  std::array<Coordinate, 3> x;
-};
+using ExpansionPoint = std::array<Coordinate, 3>;
 
 // Exact signs on expansion coordinates. Remembers when an expansion overflowed its capacity: the
 // signs are then unreliable and the caller decides the pair on rationals.
@@ -85,9 +81,9 @@ class ExpansionWorldKernel {
     Wide v[3];
     Wide w[3];
     for (int k = 0; k < 3; ++k) {
-      u[k] = difference(b.x[k], a.x[k]);
-      v[k] = difference(c.x[k], a.x[k]);
-      w[k] = difference(d.x[k], a.x[k]);
+      u[k] = difference(b[k], a[k]);
+      v[k] = difference(c[k], a[k]);
+      w[k] = difference(d[k], a[k]);
     }
     // det(u, v, w) = u . (v x w), as the filter computes it.
     Wide minor;
@@ -107,8 +103,8 @@ class ExpansionWorldKernel {
               Wide& result) {
     const int i = exact::keptFirst(drop);
     const int j = exact::keptSecond(drop);
-    cross(difference(p1.x[i], p0.x[i]), difference(q1.x[j], q0.x[j]), difference(p1.x[j], p0.x[j]),
-          difference(q1.x[i], q0.x[i]), result);
+    cross(difference(p1[i], p0[i]), difference(q1[j], q0[j]), difference(p1[j], p0[j]),
+          difference(q1[i], q0[i]), result);
     overflowed_ = overflowed_ || result.overflowed();
   }
 
@@ -116,8 +112,8 @@ class ExpansionWorldKernel {
     const int i = exact::keptFirst(drop);
     const int j = exact::keptSecond(drop);
     Wide det;
-    cross(difference(b.x[i], a.x[i]), difference(c.x[j], a.x[j]), difference(b.x[j], a.x[j]),
-          difference(c.x[i], a.x[i]), det);
+    cross(difference(b[i], a[i]), difference(c[j], a[j]), difference(b[j], a[j]),
+          difference(c[i], a[i]), det);
     return signOf(det);
   }
 
@@ -128,7 +124,7 @@ class ExpansionWorldKernel {
     return true;
   }
 
-  int compare(const Point& a, const Point& b, int k) { return signOf(difference(a.x[k], b.x[k])); }
+  int compare(const Point& a, const Point& b, int k) { return signOf(difference(a[k], b[k])); }
 
  private:
   static Wide difference(const Coordinate& x, const Coordinate& y) {
@@ -159,7 +155,7 @@ ExpansionPoint placeExpansion(const Eigen::Vector3d& v, const Eigen::Isometry3d&
   const Eigen::Vector3d& t = pose.translation();
   ExpansionPoint p;
   for (int row = 0; row < 3; ++row) {
-    Coordinate& x = p.x[row];
+    Coordinate& x = p[row];
     x = Coordinate(t[row]);
     for (int k = 0; k < 3; ++k)
       x.add(Coordinate::product(r(row, k), v[k]));
@@ -206,44 +202,31 @@ std::optional<bool> posedTrianglesIntersectByExpansions(const Eigen::Vector3d* a
   return answer;
 }
 
-namespace {
-
-bool inRange(std::initializer_list<const PosedModelPoint*> points) {
-  for (const PosedModelPoint* p : points) {
-    if (!pointInExpansionRange(p->model) || !poseInExpansionRange(*p->pose)) return false;
+const std::array<ExactCoordinate, 3>* PosedModelPoint::placed() const {
+  if (placement_ == Placement::kNotYet) {
+    const bool in_range = pointInExpansionRange(model_) && poseInExpansionRange(*pose_);
+    if (in_range) world_ = placeExpansion(model_, *pose_);
+    placement_ = in_range ? Placement::kPlaced : Placement::kOutOfRange;
   }
-  return true;
-}
-
-ExpansionPoint placed(const PosedModelPoint& p) {
-  return placeExpansion(p.model, *p.pose);
-}
-
-}  // namespace
-
-std::optional<int> posedOrient3dByExpansions(const PosedModelPoint& a, const PosedModelPoint& b,
-                                             const PosedModelPoint& c, const PosedModelPoint& d) {
-  if (!inRange({&a, &b, &c, &d})) return std::nullopt;
-  ExpansionWorldKernel kernel;
-  const int sign = kernel.orient3d(placed(a), placed(b), placed(c), placed(d));
-  if (kernel.overflowed()) return std::nullopt;
-  return sign;
+  return placement_ == Placement::kPlaced ? &world_ : nullptr;
 }
 
 std::optional<int> posedOrient2dByExpansions(const PosedModelPoint& a, const PosedModelPoint& b,
                                              const PosedModelPoint& c, int drop) {
-  if (!inRange({&a, &b, &c})) return std::nullopt;
+  const auto *pa = a.placed(), *pb = b.placed(), *pc = c.placed();
+  if (!pa || !pb || !pc) return std::nullopt;
   ExpansionWorldKernel kernel;
-  const int sign = kernel.orient2d(placed(a), placed(b), placed(c), drop);
+  const int sign = kernel.orient2d(*pa, *pb, *pc, drop);
   if (kernel.overflowed()) return std::nullopt;
   return sign;
 }
 
 std::optional<int> posedCompareByExpansions(const PosedModelPoint& a, const PosedModelPoint& b,
                                             int k) {
-  if (!inRange({&a, &b})) return std::nullopt;
+  const auto *pa = a.placed(), *pb = b.placed();
+  if (!pa || !pb) return std::nullopt;
   ExpansionWorldKernel kernel;
-  const int sign = kernel.compare(placed(a), placed(b), k);
+  const int sign = kernel.compare(*pa, *pb, k);
   if (kernel.overflowed()) return std::nullopt;
   return sign;
 }
@@ -252,10 +235,11 @@ std::optional<double> posedOrient3dValueByExpansions(const PosedModelPoint& a,
                                                      const PosedModelPoint& b,
                                                      const PosedModelPoint& c,
                                                      const PosedModelPoint& d) {
-  if (!inRange({&a, &b, &c, &d})) return std::nullopt;
+  const auto *pa = a.placed(), *pb = b.placed(), *pc = c.placed(), *pd = d.placed();
+  if (!pa || !pb || !pc || !pd) return std::nullopt;
   ExpansionWorldKernel kernel;
   Wide det;
-  kernel.orient3dDeterminant(placed(a), placed(b), placed(c), placed(d), det);
+  kernel.orient3dDeterminant(*pa, *pb, *pc, *pd, det);
   if (kernel.overflowed()) return std::nullopt;
   return det.estimate();
 }
@@ -264,10 +248,11 @@ std::optional<double> posedCross2ValueByExpansions(const PosedModelPoint& p0,
                                                    const PosedModelPoint& p1,
                                                    const PosedModelPoint& q0,
                                                    const PosedModelPoint& q1, int drop) {
-  if (!inRange({&p0, &p1, &q0, &q1})) return std::nullopt;
+  const auto *pp0 = p0.placed(), *pp1 = p1.placed(), *pq0 = q0.placed(), *pq1 = q1.placed();
+  if (!pp0 || !pp1 || !pq0 || !pq1) return std::nullopt;
   ExpansionWorldKernel kernel;
   Wide value;
-  kernel.cross2(placed(p0), placed(p1), placed(q0), placed(q1), drop, value);
+  kernel.cross2(*pp0, *pp1, *pq0, *pq1, drop, value);
   if (kernel.overflowed()) return std::nullopt;
   return value.estimate();
 }

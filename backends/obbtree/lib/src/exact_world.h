@@ -2,9 +2,12 @@
 // the other and to the oracle.
 #pragma once
 
+#include <array>
 #include <optional>
 
 #include <collido/obbtree/triangle_intersection.h>
+
+#include "expansion.h"
 
 namespace collido::obbtree::detail {
 
@@ -38,17 +41,36 @@ bool posedTrianglesIntersectByExpansionsOrRationals(const Eigen::Vector3d* a,
                                                     const Eigen::Vector3d* b,
                                                     const Eigen::Isometry3d& pose_b);
 
-/// A model point and the pose that places it: its world position is R v + t, exactly.
-struct PosedModelPoint {
-  Eigen::Vector3d model = Eigen::Vector3d::Zero();
-  const Eigen::Isometry3d* pose = nullptr;
+/// A world coordinate on expansions, r . v + t exactly: three products and a translation, at
+/// most 7 components.
+using ExactCoordinate = Expansion<8>;
+
+/// A model point and the pose that places it: its world position is R v + t, exactly. Its exact
+/// world coordinates are computed on the first sign that needs them and kept: a contact pair's
+/// corners meet in several signs, and placing a point costs about as much as a sign's products.
+class PosedModelPoint {
+ public:
+  PosedModelPoint() = default;
+  PosedModelPoint(const Eigen::Vector3d& model, const Eigen::Isometry3d& pose)
+      : model_(model), pose_(&pose) {}
+
+  const Eigen::Vector3d& model() const { return model_; }
+  const Eigen::Isometry3d& pose() const { return *pose_; }
+  /// The exact world coordinates, or nullptr when the point or its pose lies outside
+  /// inExpansionRange().
+  const std::array<ExactCoordinate, 3>* placed() const;
+
+ private:
+  enum class Placement : unsigned char { kNotYet, kPlaced, kOutOfRange };
+  Eigen::Vector3d model_ = Eigen::Vector3d::Zero();
+  const Eigen::Isometry3d* pose_ = nullptr;
+  mutable Placement placement_ = Placement::kNotYet;
+  mutable std::array<ExactCoordinate, 3> world_;
 };
 
-/// Signs on the exact world positions of posed model points, on expansions: orient3d (the sign
-/// of ((b - a) x (c - a)) . (d - a)), orient2d after dropping coordinate `drop`, and the
-/// comparison of coordinate k. std::nullopt outside the expansions' safe range or on overflow.
-std::optional<int> posedOrient3dByExpansions(const PosedModelPoint& a, const PosedModelPoint& b,
-                                             const PosedModelPoint& c, const PosedModelPoint& d);
+/// Signs on the exact world positions of posed model points, on expansions: orient2d after
+/// dropping coordinate `drop`, and the comparison of coordinate k. std::nullopt outside the
+/// expansions' safe range or on overflow.
 std::optional<int> posedOrient2dByExpansions(const PosedModelPoint& a, const PosedModelPoint& b,
                                              const PosedModelPoint& c, int drop);
 std::optional<int> posedCompareByExpansions(const PosedModelPoint& a, const PosedModelPoint& b,

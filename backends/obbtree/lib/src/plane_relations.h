@@ -1,8 +1,7 @@
 // How two posed triangles lie against each other's planes, for contact sets: each corner's side
-// of the other triangle's plane, and for coplanar triangles the combinatorics of their overlap.
-// Written once over a kernel of exactly placed world points (orient3d, orient2d, compare), and
-// run first on certified double-doubles (tracked_world.cpp), then on expansions (exact_world.cpp)
-// where those were unsure.
+// of the other triangle's plane (PlaneSigns, which contact_signs.h's PlaneSides computes), and for
+// coplanar triangles the combinatorics of their overlap, written once over a kernel of exactly
+// placed world points (orient2d, compare).
 #pragma once
 
 #include <array>
@@ -31,20 +30,8 @@ struct CoplanarOverlap {
   bool collinear_corners = false;  ///< every corner listed lies on one line (no crossing then)
 };
 
-/// orient3d(p, q, r, x) is the sign of ((q - p) x (r - p)) . (x - p).
-template <typename Kernel, typename Point>
-PlaneSigns planeSignsWith(Kernel& kernel, const std::array<Point, 3>& a,
-                          const std::array<Point, 3>& b) {
-  PlaneSigns signs{};
-  for (std::size_t k = 0; k < 3; ++k) {
-    signs[0][k] = kernel.orient3d(a[0], a[1], a[2], b[k]);
-    signs[1][k] = kernel.orient3d(b[0], b[1], b[2], a[k]);
-  }
-  return signs;
-}
-
 /// The overlap of triangles a and b, known to be coplanar (every corner of B in A's plane:
-/// planeSignsWith), or std::nullopt when either is degenerate. `normal_a` (A's normal in double)
+/// PlaneSides::signs), or std::nullopt when either is degenerate. `normal_a` (A's normal in double)
 /// picks the coordinate to drop.
 template <typename Kernel, typename Point>
 std::optional<CoplanarOverlap> coplanarOverlapWith(Kernel& kernel, const std::array<Point, 3>& pa,
