@@ -54,7 +54,7 @@ class PlaneSides {
   PlaneSides(const std::array<PosedCorner, 3>& a, const std::array<PosedCorner, 3>& b)
       : a_(a), b_(b) {}
 
-  /// [0]: B's corners against A's plane, [1]: A's against B's (planeSignsWith's order); nullopt
+  /// [0]: B's corners against A's plane, [1]: A's against B's (as PlaneSigns); nullopt
   /// when a sign was out of the expansions' reach (the caller then decides on rationals).
   std::optional<PlaneSigns> signs();
   /// The signed distance of corner k of B from A's plane (side 0), or of A's corner k from B's

@@ -54,8 +54,6 @@ class PosedModelPoint {
   PosedModelPoint(const Eigen::Vector3d& model, const Eigen::Isometry3d& pose)
       : model_(model), pose_(&pose) {}
 
-  const Eigen::Vector3d& model() const { return model_; }
-  const Eigen::Isometry3d& pose() const { return *pose_; }
   /// The exact world coordinates, or nullptr when the point or its pose lies outside
   /// inExpansionRange().
   const std::array<ExactCoordinate, 3>* placed() const;
