@@ -43,15 +43,21 @@ std::optional<CoplanarOverlap> coplanarOverlapWith(Kernel& kernel, const std::ar
   const int sign_a = kernel.orient2d(pa[0], pa[1], pa[2], drop);
   const int sign_b = kernel.orient2d(pb[0], pb[1], pb[2], drop);
   if (sign_a == 0 || sign_b == 0) return std::nullopt;
-  const auto inside = [&](const std::array<Point, 3>& t, int sign, const Point& p) {
-    for (std::size_t i = 0; i < 3; ++i) {
-      if (kernel.orient2d(t[i], t[(i + 1) % 3], p, drop) * sign < 0) return false;
+  // Each corner's side of each edge of the other triangle, once: the inside tests and the
+  // crossing tests ask the same 18 orientations (the crossings each of them twice).
+  std::array<std::array<int, 3>, 3> b_side{};  // [edge i of A][corner j of B]
+  std::array<std::array<int, 3>, 3> a_side{};  // [edge j of B][corner i of A]
+  for (std::size_t i = 0; i < 3; ++i) {
+    for (std::size_t j = 0; j < 3; ++j) {
+      b_side[i][j] = kernel.orient2d(pa[i], pa[(i + 1) % 3], pb[j], drop);
+      a_side[j][i] = kernel.orient2d(pb[j], pb[(j + 1) % 3], pa[i], drop);
     }
-    return true;
-  };
+  }
   for (std::size_t k = 0; k < 3; ++k) {
-    overlap.a_in_b[k] = inside(pb, sign_b, pa[k]);
-    overlap.b_in_a[k] = inside(pa, sign_a, pb[k]);
+    overlap.a_in_b[k] =
+        a_side[0][k] * sign_b >= 0 && a_side[1][k] * sign_b >= 0 && a_side[2][k] * sign_b >= 0;
+    overlap.b_in_a[k] =
+        b_side[0][k] * sign_a >= 0 && b_side[1][k] * sign_a >= 0 && b_side[2][k] * sign_a >= 0;
     for (std::size_t i = 0; i < 3 && overlap.b_equals_a[k] < 0; ++i) {
       if (kernel.compare(pb[k], pa[i], 0) == 0 && kernel.compare(pb[k], pa[i], 1) == 0 &&
           kernel.compare(pb[k], pa[i], 2) == 0)
@@ -61,13 +67,10 @@ std::optional<CoplanarOverlap> coplanarOverlapWith(Kernel& kernel, const std::ar
   bool any_crossing = false;
   for (std::size_t i = 0; i < 3; ++i) {
     for (std::size_t j = 0; j < 3; ++j) {
-      const Point& a0 = pa[i];
-      const Point& a1 = pa[(i + 1) % 3];
-      const Point& b0 = pb[j];
-      const Point& b1 = pb[(j + 1) % 3];
+      const std::size_t i_next = (i + 1) % 3;
+      const std::size_t j_next = (j + 1) % 3;
       overlap.crossing[i][j] =
-          kernel.orient2d(a0, a1, b0, drop) * kernel.orient2d(a0, a1, b1, drop) < 0 &&
-          kernel.orient2d(b0, b1, a0, drop) * kernel.orient2d(b0, b1, a1, drop) < 0;
+          b_side[i][j] * b_side[i][j_next] < 0 && a_side[j][i] * a_side[j][i_next] < 0;
       any_crossing = any_crossing || overlap.crossing[i][j];
     }
   }
