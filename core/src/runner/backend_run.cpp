@@ -158,11 +158,16 @@ struct FrameWork {
   bool all_reused = false;  ///< every candidate pair took its answer of the frame before
 };
 
-// One timed call of a frame's `work`; a frame whose every pair is reused costs nothing.
-template <typename Ask>
-Result<double> timeFrameWork(const FrameWork& work, const Ask& ask) {
+// One timed call of frame `frame`'s `work` (a frame whose every pair is reused costs nothing);
+// a call that fails marks `m` failed at that frame and gives none.
+std::optional<double> timedCall(const QueryRun& run, const FrameWork& work, std::size_t frame,
+                                QueryResult& result, QueryMeasurement& m) {
   if (work.all_reused) return 0.0;
-  return timeFrameCall(work.asked, ask);
+  const Result<double> took = timeFrameCall(
+      work.asked, [&](std::size_t ia, std::size_t ib) { return run.ask(ia, ib, frame, result); });
+  if (took.ok()) return took.value();
+  m.status = frameFailure(frame, took.status().toString());
+  return std::nullopt;
 }
 
 // Steps through the query's frames: each frame's shapes (deforming objects updated, timed), the
@@ -231,13 +236,9 @@ std::vector<FrameWork> stepFrames(const QueryRun& run, const std::optional<Broad
     std::vector<double> frame_times;
     const int repetitions = options.protocol == TimingProtocol::kRepeated ? options.repetitions : 0;
     for (int rep = 0; rep < repetitions; ++rep) {
-      const Result<double> took = timeFrameWork(
-          work, [&](std::size_t ia, std::size_t ib) { return run.ask(ia, ib, frame, result); });
-      if (!took.ok()) {
-        m.status = frameFailure(frame, took.status().toString());
-        break;
-      }
-      frame_times.push_back(took.value());
+      const std::optional<double> took = timedCall(run, work, frame, result, m);
+      if (!took) break;
+      frame_times.push_back(*took);
     }
     record.median_us = quantile(frame_times, 0.5);
     if (m.ok()) {
@@ -266,13 +267,9 @@ void timeCycled(const QueryRun& run, const std::vector<FrameWork>& work, int rep
       const std::size_t frame = m.frames[k].frame;
       updateDeforming(run, frame, shapesAt(run, frame), work[k].held, nullptr, m);
       if (!m.ok()) break;
-      const Result<double> took = timeFrameWork(
-          work[k], [&](std::size_t ia, std::size_t ib) { return run.ask(ia, ib, frame, result); });
-      if (!took.ok()) {
-        m.status = frameFailure(frame, took.status().toString());
-        break;
-      }
-      times[k].push_back(took.value());
+      const std::optional<double> took = timedCall(run, work[k], frame, result, m);
+      if (!took) break;
+      times[k].push_back(*took);
     }
   }
   for (std::size_t k = 0; k < m.frames.size(); ++k) {
@@ -294,13 +291,9 @@ void timeRepeatedAfterCycled(const QueryRun& run, const std::vector<FrameWork>& 
     if (!m.ok()) return;
     std::vector<double> times;
     for (int call = -1; call < calls; ++call) {
-      const Result<double> took = timeFrameWork(
-          work[k], [&](std::size_t ia, std::size_t ib) { return run.ask(ia, ib, frame, result); });
-      if (!took.ok()) {
-        m.status = frameFailure(frame, took.status().toString());
-        return;
-      }
-      if (call >= 0) times.push_back(took.value());
+      const std::optional<double> took = timedCall(run, work[k], frame, result, m);
+      if (!took) return;
+      if (call >= 0) times.push_back(*took);
     }
     sum += quantile(times, 0.5);
   }

@@ -128,17 +128,16 @@ double environmentNumber(const char* name) {
 
 // The extra microseconds each query spends, from the environment (0 without it).
 double extraQueryMicroseconds() {
-  const char* text = std::getenv("COLLIDO_TEST_QUERY_EXTRA_US");
-  const char* jitter = std::getenv("COLLIDO_TEST_QUERY_JITTER");
-  const double extra = text == nullptr ? 0.0 : std::strtod(text, nullptr);
+  const double extra = environmentNumber("COLLIDO_TEST_QUERY_EXTRA_US");
+  const double jitter = environmentNumber("COLLIDO_TEST_QUERY_JITTER");
   const char* counter = std::getenv("COLLIDO_TEST_QUERY_JITTER_FILE");
-  if (jitter == nullptr || counter == nullptr) return extra;
+  if (jitter == 0.0 || counter == nullptr) return extra;
   const int file = open(counter, O_WRONLY | O_APPEND | O_CREAT, 0644);
   if (file < 0) return extra;
   struct stat status {};
   const bool counted = write(file, "+", 1) == 1 && fstat(file, &status) == 0;
   close(file);
-  return counted && status.st_size % 2 == 0 ? extra * (1.0 + std::strtod(jitter, nullptr)) : extra;
+  return counted && status.st_size % 2 == 0 ? extra * (1.0 + jitter) : extra;
 }
 
 // Spins (a sleep would give the core away and wake late) until `microseconds` have passed.
