@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Writes docs/results/default_study.md from one finished default study (tools/study.sh): the run
-# it came from (date, commit, machine, wall time when given), then table.txt's "What to pick" and
-# "The OBB tree against the field" sections as the study printed them. A new run replaces the
-# page whole; nobody edits its tables by hand.
+# it came from (date, commit, machine, wall time when given), then table.txt's summary sections
+# (what to pick, the OBB tree against the field, needs, contacts, deforming and tracked scenes) as
+# the study printed them. A new run replaces the page whole; nobody edits its tables by hand.
 # Usage: tools/publish_results.sh [STUDY_DIR] [--wall TEXT] [--commit REV]
 #   STUDY_DIR defaults to build/release/study. The commit is the one tools/study.sh recorded in
 #   STUDY_DIR/.complete; --commit names it for a study that did not record one.
@@ -52,16 +52,21 @@ mkdir -p "$(dirname "$out")"
   echo "equivalence band; \`!\` marks an answer wrong on some frame (docs/STUDY.md, \"Times and their"
   echo "intervals\")."
   echo
-  echo "## What to pick"
-  echo
-  echo '```'
-  section "What to pick"
-  echo '```'
-  echo
-  echo "## The OBB tree against the field"
-  echo
-  echo '```'
-  section "The OBB tree against the field"
-  echo '```'
+  # table.txt's sections, as printed: the heading that starts each, and its title here.
+  for entry in "What to pick|What to pick" \
+               "The OBB tree against the field|The OBB tree against the field" \
+               "What the scene's needs save|What a scene's needs save" \
+               "Contacts against the exact reference|Contacts against the exact reference" \
+               "Deforming scenes|Deforming scenes" \
+               "Poses from tracked markers|Poses from tracked markers"; do
+    text=$(section "${entry%%|*}")
+    [[ -z $text ]] && continue
+    echo "## ${entry#*|}"
+    echo
+    echo '```'
+    echo "$text"
+    echo '```'
+    echo
+  done
 } > "$out"
 echo "$out"
