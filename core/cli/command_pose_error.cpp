@@ -179,18 +179,18 @@ void addPoseErrorCommand(CLI::App& app, int& exit_code) {
       ->check(CLI::Range(3, 10000));
   command->add_option("--noise", args->noises, "per-axis noise standard deviations")
       ->delimiter(',')
-      ->check(CLI::NonNegativeNumber);
+      ->check(nonNegativeNumber());
   command->add_option("--dropout", args->dropouts, "chances a marker is not seen")
       ->delimiter(',')
       ->check(CLI::Range(0.0, 1.0));
   command->add_option("--outliers", args->outliers, "chance a seen marker is mis-identified")
       ->check(CLI::Range(0.0, 1.0));
   command->add_option("--outlier-offset", args->outlier_offset, "how far it lands")
-      ->check(CLI::NonNegativeNumber);
+      ->check(nonNegativeNumber());
   command
       ->add_option("--reject-outliers", args->reject_outliers,
                    "residual limit of the outlier rejection (0: off)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(nonNegativeNumber());
   command->add_option("--trials", args->trials, "random true poses per row")
       ->check(CLI::Range(1, 1000000));
   command->add_option("--seed", args->seed, "seed of the poses and noise");

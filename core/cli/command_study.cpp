@@ -147,7 +147,7 @@ void addStudyCommands(CLI::App& app, const PluginOptions& plugins, int& exit_cod
                    "after the planned rounds, seconds to spend on extra rounds (up to 3) for "
                    "combinations whose rounds cannot pin a figure down to within 10% (default: "
                    "the sweep's adaptive_s, else 0)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(nonNegativeNumber());
   command->add_option("--order-seed", args->order_seed,
                       "the seed of the random order combinations and rounds run in (recorded in "
                       "plan.json)");

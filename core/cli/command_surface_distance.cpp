@@ -302,7 +302,7 @@ void addSurfaceDistanceCommand(CLI::App& app, const PluginOptions& plugins, int&
   command
       ->add_option("--tolerance", args->tolerance,
                    "stop when upper - lower <= this (default 1e-6 of the model's size)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(nonNegativeNumber());
   command->add_flag("--seed-only", args->seed_only, "only the seed method as published");
   command->add_flag("--backends-only", args->backends_only,
                     "only the backends against the certified reference, not the seed's rows (how "

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -41,5 +42,18 @@ void addReportCommand(CLI::App& app, int& exit_code);
 void addCompareCommand(CLI::App& app, int& exit_code);
 void addViewCommands(CLI::App& app, const PluginOptions& plugins, int& exit_code);
 void addStudyCommands(CLI::App& app, const PluginOptions& plugins, int& exit_code);
+
+/// An option that takes a number >= 0. Its error names the value given (CLI11's own
+/// NonNegativeNumber prints its range up to the largest double).
+inline CLI::Validator nonNegativeNumber() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        char* end = nullptr;
+        const double value = std::strtod(text.c_str(), &end);
+        if (text.empty() || end != text.c_str() + text.size()) return text + " is not a number";
+        return value >= 0.0 ? std::string() : text + " is negative: give a number >= 0";
+      },
+      "NUMBER >= 0", "NONNEGATIVE");
+}
 
 }  // namespace collido::cli
