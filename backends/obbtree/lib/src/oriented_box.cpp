@@ -165,9 +165,9 @@ OrientedBox BoxFitter::fit(const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
 }
 
 void refitBoxExtents(OrientedBox& box, const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
-                     const Eigen::Ref<const Eigen::Matrix3Xi>& triangles) {
+                     const Eigen::Ref<const Eigen::Matrix3Xi>& triangles, double axis_defect) {
   const Eigen::Vector3d reference = vertices.col(triangles(0, 0));
-  setExtents(box, reference, vertices, cornersOf(triangles));
+  setExtents(box, reference, vertices, cornersOf(triangles), axis_defect);
 }
 
 void refitBoxExtents(OrientedBox& box, const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
@@ -296,10 +296,10 @@ CompactBox compactBox(const OrientedBox& box, const Eigen::Ref<const Eigen::Matr
 }
 
 void refitCompactBox(CompactBox& box, const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
-                     const Eigen::Ref<const Eigen::Matrix3Xi>& triangles) {
+                     const Eigen::Ref<const Eigen::Matrix3Xi>& triangles, double axis_defect) {
   OrientedBox refitted = expandBox(box);
-  refitBoxExtents(refitted, vertices, triangles);
-  measureCompact(box, refitted.center, vertices, cornersOf(triangles));
+  refitBoxExtents(refitted, vertices, triangles, axis_defect);
+  measureCompact(box, refitted.center, vertices, cornersOf(triangles), axis_defect);
 }
 
 void refitCompactBox(CompactBox& box, const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,

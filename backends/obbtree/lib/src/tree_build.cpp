@@ -168,10 +168,11 @@ void ObbTree::buildVertexSpans() {
   TreeTopology& topology = ownTopology();
   const auto n = static_cast<std::int32_t>(topology.triangles.cols());
   std::vector<std::int32_t> first_triangle(static_cast<std::size_t>(vertices_.cols()), -1);
+  // Where each triangle position's first-used vertices start in refit_order; kept per node.
+  std::vector<std::int32_t> position_first_use(static_cast<std::size_t>(n), 0);
   topology.refit_order.clear();
-  topology.first_use.assign(static_cast<std::size_t>(n) + 1, 0);
   for (std::int32_t k = 0; k < n; ++k) {
-    topology.first_use[static_cast<std::size_t>(k)] =
+    position_first_use[static_cast<std::size_t>(k)] =
         static_cast<std::int32_t>(topology.refit_order.size());
     for (int c = 0; c < 3; ++c) {
       const std::int32_t v = topology.triangles(c, k);
@@ -180,18 +181,20 @@ void ObbTree::buildVertexSpans() {
       topology.refit_order.push_back(v);
     }
   }
-  topology.first_use[static_cast<std::size_t>(n)] =
-      static_cast<std::int32_t>(topology.refit_order.size());
-  // A node's vertices first used before its triangles: found once per node with a stamp.
   const std::size_t node_count = nodeCount();
+  const std::vector<TriangleRange> ranges = triangleRanges();
+  topology.first_use.assign(node_count + 1, 0);
+  topology.first_use[node_count] = static_cast<std::int32_t>(topology.refit_order.size());
+  // An inner node's vertices first used before its triangles: found once per node with a stamp.
   topology.extra_begin.assign(node_count + 1, 0);
   topology.refit_extra.clear();
   std::vector<std::size_t> stamp(static_cast<std::size_t>(vertices_.cols()), 0);
-  const std::vector<TriangleRange> ranges = triangleRanges();
   for (std::size_t i = 0; i < node_count; ++i) {
-    topology.extra_begin[i] = static_cast<std::int32_t>(topology.refit_extra.size());
     const TriangleRange range = ranges[i];
     const std::int32_t first = range.first;
+    topology.first_use[i] = position_first_use[static_cast<std::size_t>(first)];
+    topology.extra_begin[i] = static_cast<std::int32_t>(topology.refit_extra.size());
+    if (isLeafNode(i)) continue;
     for (std::int32_t k = first; k < first + range.count; ++k) {
       for (int c = 0; c < 3; ++c) {
         const auto v = static_cast<std::size_t>(topology.triangles(c, k));

@@ -74,7 +74,7 @@ void ObbTree::recordFreshVolumes() {
 std::size_t ObbTree::subtreeEnd(std::size_t node) const {
   // The last node of a subtree is its rightmost leaf: follow second children down.
   for (;;) {
-    const bool leaf = float_boxes_ ? compact_nodes_[node].isLeaf() : nodes_[node].isLeaf();
+    const bool leaf = isLeafNode(node);
     if (leaf) return node + 1;
     const std::int32_t second =
         float_boxes_ ? compact_nodes_[node].secondChild() : nodes_[node].secondChild();
@@ -141,7 +141,7 @@ void ObbTree::rebuildGrownSubtrees(RefitReport& report) {
     const auto [node, depth] = stack.back();
     stack.pop_back();
     depth_ = std::max(depth_, depth);
-    const bool leaf = float_boxes_ ? compact_nodes_[node].isLeaf() : nodes_[node].isLeaf();
+    const bool leaf = isLeafNode(node);
     if (leaf) continue;
     const std::int32_t second =
         float_boxes_ ? compact_nodes_[node].secondChild() : nodes_[node].secondChild();

@@ -54,13 +54,16 @@ RefitReport ObbTree::refit(const Eigen::Ref<const Eigen::Matrix3Xd>& vertices) {
   const auto rangeOf = [&](std::size_t i) {
     return float_boxes_ ? compact_ranges[i] : TriangleRange{nodes_[i].first, nodes_[i].count};
   };
+  // A leaf with spans is refit from its corners too (the spans keep no leaf lists), with the
+  // tree's defect bound.
+  const double known_defect = spans ? axis_defect_ : -1.0;
   const auto refitDirty = [&](auto& nodes, auto&& over_triangles, auto&& over_span) {
     const std::vector<char> dirty = dirtyNodes(nodes, topology_->triangles, moved);
     for (std::size_t i = nodes.size(); i-- > 0;) {
       if (dirty[i] == 0) continue;
       const TriangleRange range = rangeOf(i);
-      if (spans) {
-        over_span(nodes[i].box, vertexSpan(i, range.first, range.count));
+      if (spans && !nodes[i].isLeaf()) {
+        over_span(nodes[i].box, vertexSpan(i));
       } else {
         over_triangles(nodes[i].box, topology_->triangles.middleCols(range.first, range.count));
       }
@@ -69,13 +72,17 @@ RefitReport ObbTree::refit(const Eigen::Ref<const Eigen::Matrix3Xd>& vertices) {
   };
   refitDirty(
       nodes_,
-      [&](OrientedBox& box, const auto& triangles) { refitBoxExtents(box, vertices_, triangles); },
+      [&](OrientedBox& box, const auto& triangles) {
+        refitBoxExtents(box, vertices_, triangles, known_defect);
+      },
       [&](OrientedBox& box, const VertexSpan& span) {
         refitBoxExtents(box, vertices_, span, axis_defect_);
       });
   refitDirty(
       compact_nodes_,
-      [&](CompactBox& box, const auto& triangles) { refitCompactBox(box, vertices_, triangles); },
+      [&](CompactBox& box, const auto& triangles) {
+        refitCompactBox(box, vertices_, triangles, known_defect);
+      },
       [&](CompactBox& box, const VertexSpan& span) {
         refitCompactBox(box, vertices_, span, axis_defect_);
       });
@@ -83,15 +90,13 @@ RefitReport ObbTree::refit(const Eigen::Ref<const Eigen::Matrix3Xd>& vertices) {
   return report;
 }
 
-VertexSpan ObbTree::vertexSpan(std::size_t node, std::int32_t first, std::int32_t count) const {
+VertexSpan ObbTree::vertexSpan(std::size_t node) const {
+  const TreeTopology& topology = *topology_;
   VertexSpan span;
-  span.first =
-      topology_->refit_order.data() + topology_->first_use[static_cast<std::size_t>(first)];
-  span.last =
-      topology_->refit_order.data() +
-      topology_->first_use[static_cast<std::size_t>(first) + static_cast<std::size_t>(count)];
-  span.extra_first = topology_->refit_extra.data() + topology_->extra_begin[node];
-  span.extra_last = topology_->refit_extra.data() + topology_->extra_begin[node + 1];
+  span.first = topology.refit_order.data() + topology.first_use[node];
+  span.last = topology.refit_order.data() + topology.first_use[subtreeEnd(node)];
+  span.extra_first = topology.refit_extra.data() + topology.extra_begin[node];
+  span.extra_last = topology.refit_extra.data() + topology.extra_begin[node + 1];
   return span;
 }
 

@@ -44,9 +44,11 @@ OrientedBox fitBox(const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
                    std::int32_t count);
 
 /// Recomputes centre and extents of `box` over all columns of `triangles`, keeping its axes
-/// (refit after the vertices moved).
+/// (refit after the vertices moved). `axis_defect`, when >= 0, is a bound on
+/// axisDefect(box.axes) known ahead (a refit keeps the axes), else it is computed.
 void refitBoxExtents(OrientedBox& box, const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
-                     const Eigen::Ref<const Eigen::Matrix3Xi>& triangles);
+                     const Eigen::Ref<const Eigen::Matrix3Xi>& triangles,
+                     double axis_defect = -1.0);
 
 /// The vertices of a set of triangles, each once: indices [first, last) then [extra_first,
 /// extra_last); at least one in all.
@@ -122,9 +124,11 @@ CompactBox compactBox(const OrientedBox& box, const Eigen::Ref<const Eigen::Matr
                       const Eigen::Ref<const Eigen::Matrix3Xi>& triangles);
 
 /// Refit of a compact box after the vertices moved: keeps its axes (the stored quaternion),
-/// recomputes centre and extents over all columns of `triangles`.
+/// recomputes centre and extents over all columns of `triangles`; `axis_defect` as for
+/// refitBoxExtents, on the decoded axes.
 void refitCompactBox(CompactBox& box, const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
-                     const Eigen::Ref<const Eigen::Matrix3Xi>& triangles);
+                     const Eigen::Ref<const Eigen::Matrix3Xi>& triangles,
+                     double axis_defect = -1.0);
 
 /// refitCompactBox over the vertices `span` lists, with a known bound on the decoded axes'
 /// defect (see refitBoxExtents).

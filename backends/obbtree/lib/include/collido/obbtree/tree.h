@@ -19,8 +19,8 @@ struct BuildOptions {
   /// Store compact boxes (CompactNode: 32 instead of 136 bytes a node), still containing every
   /// triangle they bound; the tree's shape is the same as with double boxes.
   bool float_boxes = false;
-  /// The model will be refit (update() with moved vertices): keep, per node, the list of its
-  /// distinct vertices (in a compact form: about 10 bytes per triangle), so that a refit
+  /// The model will be refit (update() with moved vertices): keep, per inner node, the list of
+  /// its distinct vertices (in a compact form: 6 to 15 bytes per triangle), so that a refit
   /// projects each vertex once per level instead of once per triangle corner.
   bool deformable = false;
   /// With `deformable`: after a refit, rebuild (split and fit anew over its current triangles)
@@ -84,9 +84,11 @@ struct TreeTopology {
   Eigen::Matrix3Xi triangles;  ///< leaf order: column k is input triangle ids[k]
   std::vector<std::int32_t> ids;
   // The refit's vertex spans: every vertex in the order the leaf-ordered triangles first use
-  // it; the triangles at positions [a, b) first use refit_order[first_use[a] .. first_use[b]),
-  // and node i also uses the earlier-seen vertices refit_extra[extra_begin[i] ..
-  // extra_begin[i + 1]).
+  // it. Per node (and one entry past the last): node i's triangles first use
+  // refit_order[first_use[i] .. first_use[e]), e being the node after i's subtree; an inner
+  // node also uses the earlier-seen vertices refit_extra[extra_begin[i] .. extra_begin[i + 1]).
+  // A leaf keeps no list: its few triangles' corners are projected instead (leaf lists were
+  // about a third of the spans' memory).
   std::vector<std::int32_t> refit_order;
   std::vector<std::int32_t> first_use;
   std::vector<std::int32_t> extra_begin;
@@ -174,7 +176,11 @@ class ObbTree {
   /// shift); returns its new node count.
   std::size_t rebuildSubtree(std::size_t node);
   void rebuildGrownSubtrees(RefitReport& report);
-  VertexSpan vertexSpan(std::size_t node, std::int32_t first, std::int32_t count) const;
+  /// The vertices of inner node `node`'s triangles (BuildOptions::deformable).
+  VertexSpan vertexSpan(std::size_t node) const;
+  bool isLeafNode(std::size_t node) const {
+    return float_boxes_ ? compact_nodes_[node].isLeaf() : nodes_[node].isLeaf();
+  }
   /// The topology to change: a private copy first when it is shared with a sibling.
   TreeTopology& ownTopology();
   Eigen::Matrix3Xd vertices_;
