@@ -218,8 +218,8 @@ class Search {
   void leaves(const LeafA& na, const LeafB& nb) {
     const Eigen::Matrix3Xd& va = a_.vertices();
     const Eigen::Matrix3Xd& vb = b_.vertices();
-    const Eigen::Matrix3Xi& ta = a_.orderedTriangles();
-    const Eigen::Matrix3Xi& tb = b_.orderedTriangles();
+    const TriangleList& ta = a_.orderedTriangles();
+    const TriangleList& tb = b_.orderedTriangles();
     // A's triangles with their bounds, once per leaf pair (each meets every triangle of B's leaf).
     leaf_a_.clear();
     for (std::int32_t i = na.leafFirst(); i < na.leafFirst() + na.leafCount(); ++i) {

@@ -65,6 +65,16 @@ auto cornersOf(const Eigen::Ref<const Eigen::Matrix3Xi>& triangles) {
   };
 }
 
+// The same over the triangles `range` of a TriangleList.
+auto cornersOf(const TriangleList& triangles, TriangleRange range) {
+  return [&triangles, range](auto&& visit) {
+    for (std::int32_t t = range.first; t < range.first + range.count; ++t) {
+      for (int k = 0; k < 3; ++k)
+        visit(static_cast<Eigen::Index>(triangles(k, t)));
+    }
+  };
+}
+
 // Calls visit(v) for every vertex of a VertexSpan.
 auto verticesOf(const VertexSpan& span) {
   return [&span](auto&& visit) {
@@ -168,6 +178,12 @@ void refitBoxExtents(OrientedBox& box, const Eigen::Ref<const Eigen::Matrix3Xd>&
                      const Eigen::Ref<const Eigen::Matrix3Xi>& triangles, double axis_defect) {
   const Eigen::Vector3d reference = vertices.col(triangles(0, 0));
   setExtents(box, reference, vertices, cornersOf(triangles), axis_defect);
+}
+
+void refitBoxExtents(OrientedBox& box, const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
+                     const TriangleList& triangles, TriangleRange range, double axis_defect) {
+  const Eigen::Vector3d reference = vertices.col(triangles(0, range.first));
+  setExtents(box, reference, vertices, cornersOf(triangles, range), axis_defect);
 }
 
 void refitBoxExtents(OrientedBox& box, const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
@@ -300,6 +316,21 @@ void refitCompactBox(CompactBox& box, const Eigen::Ref<const Eigen::Matrix3Xd>& 
   OrientedBox refitted = expandBox(box);
   refitBoxExtents(refitted, vertices, triangles, axis_defect);
   measureCompact(box, refitted.center, vertices, cornersOf(triangles), axis_defect);
+}
+
+CompactBox compactBox(const OrientedBox& box, const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
+                      const TriangleList& triangles, TriangleRange range) {
+  CompactBox out;
+  encodeRotation(box.axes, out.rotation);
+  measureCompact(out, box.center, vertices, cornersOf(triangles, range));
+  return out;
+}
+
+void refitCompactBox(CompactBox& box, const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
+                     const TriangleList& triangles, TriangleRange range, double axis_defect) {
+  OrientedBox refitted = expandBox(box);
+  refitBoxExtents(refitted, vertices, triangles, range, axis_defect);
+  measureCompact(box, refitted.center, vertices, cornersOf(triangles, range), axis_defect);
 }
 
 void refitCompactBox(CompactBox& box, const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,

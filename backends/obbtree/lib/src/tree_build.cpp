@@ -88,10 +88,8 @@ ObbTree ObbTree::build(const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
     stack.push_back(Task{task.first + lower, task.count - lower, index, task.depth + 1});
     stack.push_back(Task{task.first, lower, -1, task.depth + 1});
   }
-  tree.topology_->triangles.resize(3, n);
+  tree.topology_->triangles = TriangleList(triangles, order, vertices.cols());
   tree.topology_->ids = order;
-  for (std::int32_t k = 0; k < n; ++k)
-    tree.topology_->triangles.col(k) = triangles.col(order[k]);
   tree.nodes_.shrink_to_fit();
   if (options.float_boxes) tree.storeFloatBoxes();
   tree.options_ = options;
@@ -112,8 +110,8 @@ void ObbTree::storeFloatBoxes() {
   compact_nodes_.reserve(nodes_.size());
   for (const Node& node : nodes_) {
     CompactNode compact;
-    compact.box =
-        compactBox(node.box, vertices_, topology_->triangles.middleCols(node.first, node.count));
+    compact.box = compactBox(node.box, vertices_, topology_->triangles,
+                             TriangleRange{node.first, node.count});
     compact.leaf_count = static_cast<std::uint16_t>(node.isLeaf() ? node.count : 0);
     compact.link = node.isLeaf() ? node.first : node.second_child;
     compact_nodes_.push_back(compact);
@@ -210,10 +208,9 @@ void ObbTree::buildVertexSpans() {
 }
 
 std::size_t TreeTopology::memoryBytes() const {
-  return static_cast<std::size_t>(triangles.size()) * sizeof(int) +
-         (ids.capacity() + refit_order.capacity() + first_use.capacity() + extra_begin.capacity() +
-          refit_extra.capacity()) *
-             sizeof(std::int32_t);
+  return triangles.memoryBytes() + (ids.capacity() + refit_order.capacity() + first_use.capacity() +
+                                    extra_begin.capacity() + refit_extra.capacity()) *
+                                       sizeof(std::int32_t);
 }
 
 std::size_t ObbTree::memoryBytes() const {

@@ -95,8 +95,8 @@ std::size_t ObbTree::rebuildSubtree(std::size_t node) {
   const std::vector<std::int32_t> ids(topology.ids.begin() + first,
                                       topology.ids.begin() + first + count);
   for (std::int32_t k = 0; k < count; ++k) {
-    topology.triangles.col(first + k) =
-        triangles.col(part.topology_->ids[static_cast<std::size_t>(k)]);
+    topology.triangles.set(first + k,
+                           triangles.col(part.topology_->ids[static_cast<std::size_t>(k)]));
     topology.ids[static_cast<std::size_t>(first) + static_cast<std::size_t>(k)] =
         ids[static_cast<std::size_t>(part.topology_->ids[static_cast<std::size_t>(k)])];
   }

@@ -7,7 +7,7 @@ namespace {
 // Marks the nodes whose triangles use a moved vertex: children come after their parent in
 // depth-first order, so a reverse sweep sees both children before their parent.
 template <typename NodeT>
-std::vector<char> dirtyNodes(const std::vector<NodeT>& nodes, const Eigen::Matrix3Xi& triangles,
+std::vector<char> dirtyNodes(const std::vector<NodeT>& nodes, const TriangleList& triangles,
                              const std::vector<char>& moved) {
   std::vector<char> dirty(nodes.size(), 0);
   for (std::size_t i = nodes.size(); i-- > 0;) {
@@ -65,23 +65,23 @@ RefitReport ObbTree::refit(const Eigen::Ref<const Eigen::Matrix3Xd>& vertices) {
       if (spans && !nodes[i].isLeaf()) {
         over_span(nodes[i].box, vertexSpan(i));
       } else {
-        over_triangles(nodes[i].box, topology_->triangles.middleCols(range.first, range.count));
+        over_triangles(nodes[i].box, range);
       }
       ++report.nodes_refit;
     }
   };
   refitDirty(
       nodes_,
-      [&](OrientedBox& box, const auto& triangles) {
-        refitBoxExtents(box, vertices_, triangles, known_defect);
+      [&](OrientedBox& box, TriangleRange range) {
+        refitBoxExtents(box, vertices_, topology_->triangles, range, known_defect);
       },
       [&](OrientedBox& box, const VertexSpan& span) {
         refitBoxExtents(box, vertices_, span, axis_defect_);
       });
   refitDirty(
       compact_nodes_,
-      [&](CompactBox& box, const auto& triangles) {
-        refitCompactBox(box, vertices_, triangles, known_defect);
+      [&](CompactBox& box, TriangleRange range) {
+        refitCompactBox(box, vertices_, topology_->triangles, range, known_defect);
       },
       [&](CompactBox& box, const VertexSpan& span) {
         refitCompactBox(box, vertices_, span, axis_defect_);

@@ -20,7 +20,7 @@ ObbTree ObbTree::buildLike(const ObbTree& sibling,
   tree.depth_ = sibling.depth_;
   // The sibling's shape, every box fitted fresh: new axes suit the state's geometry, where a
   // refit of the sibling's boxes would keep axes fitted to another shape.
-  const Eigen::Matrix3Xi& triangles = tree.topology_->triangles;
+  const Eigen::Matrix3Xi triangles = tree.topology_->triangles.matrix();  // for the fitter
   std::vector<std::int32_t> identity(static_cast<std::size_t>(triangles.cols()));
   std::iota(identity.begin(), identity.end(), 0);
   BoxFitter fitter(static_cast<std::size_t>(vertices.cols()));

@@ -15,7 +15,7 @@ std::string nodeText(std::size_t index) {
 // child order is checked first).
 template <typename NodeT, typename BoxOf, typename RangeOf>
 std::string validateNodes(const std::vector<NodeT>& nodes, const std::vector<std::int32_t>& ids,
-                          const Eigen::Matrix3Xd& vertices, const Eigen::Matrix3Xi& triangles,
+                          const Eigen::Matrix3Xd& vertices, const TriangleList& triangles,
                           BoxOf&& box_of, RangeOf&& range_of) {
   const auto n = static_cast<std::int32_t>(ids.size());
   if (nodes.empty()) return n == 0 ? "" : "no nodes for " + std::to_string(n) + " triangles";

@@ -4,6 +4,7 @@
 // the depth of well-spread meshes, boxes that hold their triangles, refit, memory accounting.
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <random>
 #include <string>
 #include <utility>
@@ -291,6 +292,26 @@ TEST(ObbTreeBuild, SmallAndEmptyInputs) {
 }
 
 // A degenerate mesh: zero-area triangles, duplicated triangles, a flat sheet (zero thickness).
+// Indices are stored in 16 bits up to 65,536 vertices and in 32 above: a torus whose vertices
+// sit after unused padding, its last index just inside and just past the narrow range.
+TEST(ObbTreeBuild, VertexIndicesNarrowUpToSixteenBits) {
+  const TriangleMesh torus = smallTorus();
+  for (const Eigen::Index last_index : {Eigen::Index{65535}, Eigen::Index{65536}}) {
+    const Eigen::Index padding = last_index + 1 - torus.vertices.cols();
+    Eigen::Matrix3Xd vertices = Eigen::Matrix3Xd::Zero(3, last_index + 1);
+    vertices.rightCols(torus.vertices.cols()) = torus.vertices;
+    const Eigen::Matrix3Xi triangles = torus.triangles.array() + static_cast<int>(padding);
+    const ObbTree tree = ObbTree::build(vertices, triangles, {4});
+    const std::string label = "last index " + std::to_string(last_index);
+    EXPECT_EQ(tree.orderedTriangles().narrow(), last_index <= 65535) << label;
+    EXPECT_EQ(tree.validate(), "") << label;
+    for (std::int32_t k = 0; k < static_cast<std::int32_t>(tree.triangleCount()); ++k) {
+      ASSERT_EQ(tree.orderedTriangles().col(k), triangles.col(tree.triangleId(k)))
+          << label << ", position " << k;
+    }
+  }
+}
+
 TEST(ObbTreeBuild, DegenerateTrianglesAreStillContained) {
   std::mt19937_64 rng(12);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
@@ -478,9 +499,9 @@ TEST(ObbTreeMemory, PositiveAndGrowsWithTheTriangleCount) {
     const ObbTree tree = ObbTree::build(torus.vertices, torus.triangles, {1});
     const std::size_t bytes = tree.memoryBytes();
     // At least what it must hold: nodes, vertices, triangles and ids.
-    const std::size_t floor = tree.nodes().size() * sizeof(Node) +
-                              torus.vertexCount() * 3 * sizeof(double) +
-                              torus.triangleCount() * (3 * sizeof(int) + sizeof(std::int32_t));
+    const std::size_t floor =
+        tree.nodes().size() * sizeof(Node) + torus.vertexCount() * 3 * sizeof(double) +
+        torus.triangleCount() * (3 * sizeof(std::uint16_t) + sizeof(std::int32_t));
     EXPECT_GE(bytes, floor) << segments;
     EXPECT_LE(bytes, 2 * floor) << segments;  // no hidden slack
     EXPECT_GT(bytes, previous) << segments;

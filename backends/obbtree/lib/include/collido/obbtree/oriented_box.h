@@ -7,6 +7,8 @@
 
 #include <Eigen/Core>
 
+#include <collido/obbtree/triangle_list.h>
+
 namespace collido::obbtree {
 
 /// An oriented box: the points center + axes * u with |u_k| <= half_extents[k].
@@ -49,6 +51,10 @@ OrientedBox fitBox(const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
 void refitBoxExtents(OrientedBox& box, const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
                      const Eigen::Ref<const Eigen::Matrix3Xi>& triangles,
                      double axis_defect = -1.0);
+
+/// refitBoxExtents over the triangles `range` of `triangles`.
+void refitBoxExtents(OrientedBox& box, const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
+                     const TriangleList& triangles, TriangleRange range, double axis_defect = -1.0);
 
 /// The vertices of a set of triangles, each once: indices [first, last) then [extra_first,
 /// extra_last); at least one in all.
@@ -123,12 +129,20 @@ OrientedBox expandBox(const CompactBox& box);
 CompactBox compactBox(const OrientedBox& box, const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
                       const Eigen::Ref<const Eigen::Matrix3Xi>& triangles);
 
+/// compactBox over the triangles `range` of `triangles`.
+CompactBox compactBox(const OrientedBox& box, const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
+                      const TriangleList& triangles, TriangleRange range);
+
 /// Refit of a compact box after the vertices moved: keeps its axes (the stored quaternion),
 /// recomputes centre and extents over all columns of `triangles`; `axis_defect` as for
 /// refitBoxExtents, on the decoded axes.
 void refitCompactBox(CompactBox& box, const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
                      const Eigen::Ref<const Eigen::Matrix3Xi>& triangles,
                      double axis_defect = -1.0);
+
+/// refitCompactBox over the triangles `range` of `triangles`.
+void refitCompactBox(CompactBox& box, const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
+                     const TriangleList& triangles, TriangleRange range, double axis_defect = -1.0);
 
 /// refitCompactBox over the vertices `span` lists, with a known bound on the decoded axes'
 /// defect (see refitBoxExtents).

@@ -9,6 +9,7 @@
 #include <Eigen/Core>
 
 #include <collido/obbtree/oriented_box.h>
+#include <collido/obbtree/triangle_list.h>
 
 namespace collido::obbtree {
 
@@ -71,17 +72,11 @@ struct CompactNode {
 /// triangle centres all coincide, which no plane splits, is split in halves above it).
 inline constexpr std::int32_t kMaxLeafTriangles = 65535;
 
-/// The triangles of a subtree: positions [first, first + count) of the tree's triangle order.
-struct TriangleRange {
-  std::int32_t first = 0;
-  std::int32_t count = 0;
-};
-
 /// What a tree's shape fixes whatever the vertex positions: the triangles in leaf order, their
 /// input ids, and (BuildOptions::deformable) the refit's vertex spans. Trees of one object's
 /// active states with the same triangle list share one (ObbTree::buildLike).
 struct TreeTopology {
-  Eigen::Matrix3Xi triangles;  ///< leaf order: column k is input triangle ids[k]
+  TriangleList triangles;  ///< leaf order: triangle k is input triangle ids[k]
   std::vector<std::int32_t> ids;
   // The refit's vertex spans: every vertex in the order the leaf-ordered triangles first use
   // it. Per node (and one entry past the last): node i's triangles first use
@@ -128,8 +123,8 @@ class ObbTree {
   bool floatBoxes() const { return float_boxes_; }
   std::size_t nodeCount() const { return float_boxes_ ? compact_nodes_.size() : nodes_.size(); }
   const Eigen::Matrix3Xd& vertices() const { return vertices_; }
-  /// Triangles in leaf order: column k is the input triangle triangleId(k).
-  const Eigen::Matrix3Xi& orderedTriangles() const { return topology_->triangles; }
+  /// Triangles in leaf order: triangle k is the input triangle triangleId(k).
+  const TriangleList& orderedTriangles() const { return topology_->triangles; }
   /// The input index of the triangle at position k of the leaf order.
   std::int32_t triangleId(std::int32_t k) const {
     return topology_->ids[static_cast<std::size_t>(k)];
