@@ -175,9 +175,9 @@ OrientedBox BoxFitter::fit(const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
 }
 
 void refitBoxExtents(OrientedBox& box, const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
-                     const Eigen::Ref<const Eigen::Matrix3Xi>& triangles, double axis_defect) {
+                     const Eigen::Ref<const Eigen::Matrix3Xi>& triangles) {
   const Eigen::Vector3d reference = vertices.col(triangles(0, 0));
-  setExtents(box, reference, vertices, cornersOf(triangles), axis_defect);
+  setExtents(box, reference, vertices, cornersOf(triangles));
 }
 
 void refitBoxExtents(OrientedBox& box, const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
@@ -312,10 +312,10 @@ CompactBox compactBox(const OrientedBox& box, const Eigen::Ref<const Eigen::Matr
 }
 
 void refitCompactBox(CompactBox& box, const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
-                     const Eigen::Ref<const Eigen::Matrix3Xi>& triangles, double axis_defect) {
+                     const Eigen::Ref<const Eigen::Matrix3Xi>& triangles) {
   OrientedBox refitted = expandBox(box);
-  refitBoxExtents(refitted, vertices, triangles, axis_defect);
-  measureCompact(box, refitted.center, vertices, cornersOf(triangles), axis_defect);
+  refitBoxExtents(refitted, vertices, triangles);
+  measureCompact(box, refitted.center, vertices, cornersOf(triangles));
 }
 
 CompactBox compactBox(const OrientedBox& box, const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,

@@ -8,12 +8,10 @@ TriangleList::TriangleList(const Eigen::Ref<const Eigen::Matrix3Xi>& triangles,
                            const std::vector<std::int32_t>& order, Eigen::Index vertex_count)
     : count_(static_cast<Eigen::Index>(order.size())),
       narrow_(vertex_count <= Eigen::Index{std::numeric_limits<std::uint16_t>::max()} + 1) {
-  std::vector<std::uint16_t>& shorts = short_indices_;
-  std::vector<std::int32_t>& wides = wide_indices_;
   if (narrow_) {
-    shorts.resize(3 * order.size());
+    short_indices_.resize(3 * order.size());
   } else {
-    wides.resize(3 * order.size());
+    wide_indices_.resize(3 * order.size());
   }
   for (std::size_t k = 0; k < order.size(); ++k)
     set(static_cast<std::int32_t>(k), triangles.col(order[k]));
@@ -21,11 +19,12 @@ TriangleList::TriangleList(const Eigen::Ref<const Eigen::Matrix3Xi>& triangles,
 
 void TriangleList::set(std::int32_t k, const Eigen::Vector3i& triangle) {
   const std::size_t at = 3 * static_cast<std::size_t>(k);
-  for (int c = 0; c < 3; ++c) {
+  for (std::size_t c = 0; c < 3; ++c) {
+    const int index = triangle[static_cast<Eigen::Index>(c)];
     if (narrow_) {
-      short_indices_[at + static_cast<std::size_t>(c)] = static_cast<std::uint16_t>(triangle[c]);
+      short_indices_[at + c] = static_cast<std::uint16_t>(index);
     } else {
-      wide_indices_[at + static_cast<std::size_t>(c)] = triangle[c];
+      wide_indices_[at + c] = index;
     }
   }
 }

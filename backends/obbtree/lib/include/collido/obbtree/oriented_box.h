@@ -46,13 +46,12 @@ OrientedBox fitBox(const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
                    std::int32_t count);
 
 /// Recomputes centre and extents of `box` over all columns of `triangles`, keeping its axes
-/// (refit after the vertices moved). `axis_defect`, when >= 0, is a bound on
-/// axisDefect(box.axes) known ahead (a refit keeps the axes), else it is computed.
+/// (refit after the vertices moved).
 void refitBoxExtents(OrientedBox& box, const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
-                     const Eigen::Ref<const Eigen::Matrix3Xi>& triangles,
-                     double axis_defect = -1.0);
+                     const Eigen::Ref<const Eigen::Matrix3Xi>& triangles);
 
-/// refitBoxExtents over the triangles `range` of `triangles`.
+/// refitBoxExtents over the triangles `range` of `triangles`; `axis_defect`, when >= 0, is a
+/// bound on axisDefect(box.axes) known ahead (a refit keeps the axes), else it is computed.
 void refitBoxExtents(OrientedBox& box, const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
                      const TriangleList& triangles, TriangleRange range, double axis_defect = -1.0);
 
@@ -134,13 +133,12 @@ CompactBox compactBox(const OrientedBox& box, const Eigen::Ref<const Eigen::Matr
                       const TriangleList& triangles, TriangleRange range);
 
 /// Refit of a compact box after the vertices moved: keeps its axes (the stored quaternion),
-/// recomputes centre and extents over all columns of `triangles`; `axis_defect` as for
-/// refitBoxExtents, on the decoded axes.
+/// recomputes centre and extents over all columns of `triangles`.
 void refitCompactBox(CompactBox& box, const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
-                     const Eigen::Ref<const Eigen::Matrix3Xi>& triangles,
-                     double axis_defect = -1.0);
+                     const Eigen::Ref<const Eigen::Matrix3Xi>& triangles);
 
-/// refitCompactBox over the triangles `range` of `triangles`.
+/// refitCompactBox over the triangles `range` of `triangles`; `axis_defect` as for
+/// refitBoxExtents, on the decoded axes.
 void refitCompactBox(CompactBox& box, const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
                      const TriangleList& triangles, TriangleRange range, double axis_defect = -1.0);
 
