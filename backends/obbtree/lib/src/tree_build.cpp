@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <numeric>
 
+#include <collido/assert.h>
 #include <collido/obbtree/tree.h>
 
 namespace collido::obbtree {
@@ -40,6 +41,10 @@ std::int32_t partition(std::int32_t* order, std::int32_t count, const Eigen::Vec
 ObbTree ObbTree::build(const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
                        const Eigen::Ref<const Eigen::Matrix3Xi>& triangles,
                        const BuildOptions& options) {
+  // An index out of range would be read out of bounds here, and stored truncated to 16 bits.
+  COLLIDO_ASSERT(triangles.size() == 0 ||
+                     (triangles.minCoeff() >= 0 && triangles.maxCoeff() < vertices.cols()),
+                 "a triangle's vertex index names no vertex");
   ObbTree tree;
   tree.vertices_ = vertices;
   const auto n = static_cast<std::int32_t>(triangles.cols());

@@ -312,6 +312,15 @@ TEST(ObbTreeBuild, VertexIndicesNarrowUpToSixteenBits) {
   }
 }
 
+TEST(ObbTreeBuildDeathTest, AnIndexNamingNoVertexIsRefused) {
+  const TriangleMesh torus = smallTorus();
+  Eigen::Matrix3Xi triangles = torus.triangles;
+  triangles(1, 3) = static_cast<int>(torus.vertices.cols());
+  EXPECT_DEATH(ObbTree::build(torus.vertices, triangles), "names no vertex");
+  triangles(1, 3) = -1;
+  EXPECT_DEATH(ObbTree::build(torus.vertices, triangles), "names no vertex");
+}
+
 TEST(ObbTreeBuild, DegenerateTrianglesAreStillContained) {
   std::mt19937_64 rng(12);
   std::uniform_real_distribution<double> u(-1.0, 1.0);

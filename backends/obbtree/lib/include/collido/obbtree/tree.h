@@ -99,7 +99,8 @@ class ObbTree {
   /// Builds the tree top-down: fit a box (fitBox); split along the longest box axis by the plane
   /// through the mean of the triangle centres, a triangle going to the side its centre lies on;
   /// if a side is empty try the next longest axis; if every axis fails, or the node holds at
-  /// most max_leaf_triangles, it is a leaf. O(n log n) for well-spread meshes.
+  /// most max_leaf_triangles, it is a leaf. O(n log n) for well-spread meshes. Every index must
+  /// name one of the vertices (COLLIDO_ASSERT: the scene loader reports bad meshes before this).
   static ObbTree build(const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
                        const Eigen::Ref<const Eigen::Matrix3Xi>& triangles,
                        const BuildOptions& options = {});
