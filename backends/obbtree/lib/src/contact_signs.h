@@ -1,8 +1,10 @@
 // Exact signs for contact sets on posed triangle corners: the certified filter on the world
-// doubles first (filtered_predicates.h), expansions on the exact world positions (R v + t, as the
-// oracle places them) for the signs it cannot settle (exact_world.h). Corners exactly on the
+// doubles first (filtered_predicates.h), then the world positions as tracked double-doubles
+// (tracked_world.h), and expansions on the exact world positions (R v + t, as the oracle places
+// them) for the signs neither can settle (exact_world.h). Corners exactly on the
 // other triangle's plane, and exactly coplanar faces, are what CAD contacts are made of: each
-// such sign costs one expansion determinant instead of a rational construction.
+// such sign costs a double-double determinant, or where that is unsure one expansion
+// determinant, instead of a rational construction.
 #pragma once
 
 #include <array>
@@ -14,25 +16,32 @@
 
 #include "exact_world.h"
 #include "plane_relations.h"
+#include "tracked_world.h"
 
 namespace collido::obbtree::detail {
 
-/// A triangle corner: its world position in double with the radius of that rounding, and the
-/// model point and pose that place it exactly.
+/// A triangle corner: its world position in double with the radius of that rounding, the same
+/// to about 106 bits (placed on first use), and the model point and pose that place it exactly.
 struct PosedCorner {
   UncertainPoint world;
+  mutable LazyWorldPoint tracked;
   PosedModelPoint exact;
 };
 
-/// The corner `model` placed by `pose` (which must outlive the corner).
-PosedCorner posedCorner(const Eigen::Vector3d& model, const Eigen::Isometry3d& pose);
+/// The corner `model` placed by `pose` (which must outlive the corner); `pose_in_range`: the
+/// pose's poseInExpansionRange().
+PosedCorner posedCorner(const Eigen::Vector3d& model, const Eigen::Isometry3d& pose,
+                        bool pose_in_range);
 
-/// orient2d and compare on posed corners, exact. A sign neither the filter nor the
-/// expansions could give (a coordinate outside the expansions' safe range, an overflow) is
+/// A triangle's three posed corners, each kept by whoever placed it (a query's corner cache).
+using PosedTriangle = std::array<const PosedCorner*, 3>;
+
+/// orient2d and compare on posed corners, exact. A sign neither the filter, the double-doubles
+/// nor the expansions could give (a coordinate outside the expansions' safe range, an overflow) is
 /// returned as 0 and marks the kernel failed: the caller then computes the set on rationals.
 class ContactSignKernel {
  public:
-  using Point = PosedCorner;
+  using Point = const PosedCorner*;
 
   bool failed() const { return failed_; }
   int orient2d(const Point& a, const Point& b, const Point& c, int drop);
@@ -46,13 +55,13 @@ class ContactSignKernel {
 /// The sides of each of two triangles' corners of the other's plane, exact, and on request the
 /// signed distances behind them (orientation determinants, n . (x - corner 0) with n by the
 /// plane's winding, to within a few units in the last place). A corner the filter places costs
-/// nothing; one it cannot, and a crossing point that needs the distance's value, share one
-/// expansion determinant, computed once: near-coplanar CAD faces ask both of most corners.
+/// nothing; one it cannot is asked of the double-doubles, whose determinant also gives the value
+/// a crossing point needs when its radius is below an ulp of it; the rest share one expansion
+/// determinant, computed once: near-coplanar CAD faces ask both of most corners.
 class PlaneSides {
  public:
   /// The corners must outlive this.
-  PlaneSides(const std::array<PosedCorner, 3>& a, const std::array<PosedCorner, 3>& b)
-      : a_(a), b_(b) {}
+  PlaneSides(const PosedTriangle& a, const PosedTriangle& b) : a_(a), b_(b) {}
 
   /// [0]: B's corners against A's plane, [1]: A's against B's (as PlaneSigns); nullopt
   /// when a sign was out of the expansions' reach (the caller then decides on rationals).
@@ -66,9 +75,14 @@ class PlaneSides {
     bool computed = false;
     std::optional<double> value;
   };
-  const std::array<PosedCorner, 3>& a_;
-  const std::array<PosedCorner, 3>& b_;
+  // The tracked determinant of corner k against side's plane; nullopt out of range.
+  std::optional<TrackedDoubleDouble> tracked(std::size_t side, std::size_t k);
+
+  PosedTriangle a_;
+  PosedTriangle b_;
   std::array<std::array<Memo, 3>, 2> values_{};
+  std::array<std::optional<TrackedPlane>, 2> planes_{};
+  std::array<std::array<std::optional<TrackedDoubleDouble>, 3>, 2> determinants_{};
 };
 
 }  // namespace collido::obbtree::detail

@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 #include <optional>
+#include <unordered_map>
 #include <vector>
 
 #include <collido/oracle/contact_manifold.h>
@@ -23,14 +24,50 @@ using Corners = std::array<Eigen::Vector3d, 3>;
 // the segment's ends is no longer small: the pair goes to exact arithmetic.
 constexpr double kMinimumSine = 1.0 / 1024.0;
 
-Corners modelCorners(const ObbTree& tree, const std::vector<std::int32_t>& positions,
-                     std::int32_t id) {
+using VertexIndices = std::array<std::int32_t, 3>;
+
+VertexIndices vertexIndices(const ObbTree& tree, const std::vector<std::int32_t>& positions,
+                            std::int32_t id) {
   const auto column = positions[static_cast<std::size_t>(id)];
-  Corners corners;
-  for (int k = 0; k < 3; ++k)
-    corners[static_cast<std::size_t>(k)] = tree.vertices().col(tree.orderedTriangles()(k, column));
-  return corners;
+  return {tree.orderedTriangles()(0, column), tree.orderedTriangles()(1, column),
+          tree.orderedTriangles()(2, column)};
 }
+
+Corners modelCorners(const ObbTree& tree, const VertexIndices& vertices) {
+  return {tree.vertices().col(vertices[0]), tree.vertices().col(vertices[1]),
+          tree.vertices().col(vertices[2])};
+}
+
+// One object's vertices as posed corners, each placed on the first pair that asks for exact
+// signs and kept for the query: a CAD face's corners meet in many pairs, and their double-double
+// and exact placements are most of what a sign costs.
+class PosedCornerCache {
+ public:
+  PosedCornerCache(const ObbTree& tree, const Eigen::Isometry3d& pose)
+      : tree_(tree), pose_(pose), pose_in_range_(detail::poseInExpansionRange(pose)) {}
+
+  detail::PosedTriangle corners(const VertexIndices& vertices) {
+    return {&corner(vertices[0]), &corner(vertices[1]), &corner(vertices[2])};
+  }
+
+ private:
+  const detail::PosedCorner& corner(std::int32_t vertex) {
+    auto found = corners_.find(vertex);
+    if (found == corners_.end()) {
+      // Map nodes keep their addresses as the map grows: the triangles point at them.
+      found = corners_
+                  .emplace(vertex,
+                           detail::posedCorner(tree_.vertices().col(vertex), pose_, pose_in_range_))
+                  .first;
+    }
+    return found->second;
+  }
+
+  const ObbTree& tree_;
+  const Eigen::Isometry3d& pose_;
+  bool pose_in_range_;
+  std::unordered_map<std::int32_t, detail::PosedCorner> corners_;
+};
 
 Corners posed(const Corners& model, const Eigen::Isometry3d& pose) {
   return {pose * model[0], pose * model[1], pose * model[2]};
@@ -44,8 +81,8 @@ int signOf(double x) {
 
 // The corners of both triangles as the exact signs and values see them (contact_signs.h).
 struct ExactCorners {
-  std::array<detail::PosedCorner, 3> a;
-  std::array<detail::PosedCorner, 3> b;
+  detail::PosedTriangle a;
+  detail::PosedTriangle b;
 };
 
 // Where triangle `t` meets the other's plane (corners' signed distances `s`, scaled by the
@@ -183,10 +220,10 @@ std::optional<ExactIntersection> coplanarIntersection(const detail::CoplanarOver
         const std::size_t i_next = (i + 1) % 3;
         const std::size_t j_next = (j + 1) % 3;
         const std::optional<double> exact_denominator = detail::posedCross2ValueByExpansions(
-            exact.a[i].exact, exact.a[i_next].exact, exact.b[j].exact, exact.b[j_next].exact,
+            exact.a[i]->exact, exact.a[i_next]->exact, exact.b[j]->exact, exact.b[j_next]->exact,
             overlap.drop);
         const std::optional<double> exact_numerator = detail::posedCross2ValueByExpansions(
-            exact.a[i].exact, exact.b[j].exact, exact.b[j].exact, exact.b[j_next].exact,
+            exact.a[i]->exact, exact.b[j]->exact, exact.b[j]->exact, exact.b[j_next]->exact,
             overlap.drop);
         if (!exact_denominator || !exact_numerator) return std::nullopt;
         denominator = *exact_denominator;
@@ -238,9 +275,13 @@ void contactsOfPairs(const ObbTree& a, const std::vector<std::int32_t>& position
   answer.exact_sets = 0;
   answer.merged = 0;
   answer.contacts.reserve(pairs.size());
+  PosedCornerCache cache_a(a, pose_a);
+  PosedCornerCache cache_b(b, pose_b);
   for (const TrianglePair& pair : pairs) {
-    const Corners model_a = modelCorners(a, positions_a, pair.a);
-    const Corners model_b = modelCorners(b, positions_b, pair.b);
+    const VertexIndices vertices_a = vertexIndices(a, positions_a, pair.a);
+    const VertexIndices vertices_b = vertexIndices(b, positions_b, pair.b);
+    const Corners model_a = modelCorners(a, vertices_a);
+    const Corners model_b = modelCorners(b, vertices_b);
     const Corners world_a = posed(model_a, pose_a);
     const Corners world_b = posed(model_b, pose_b);
     std::optional<ExactIntersection> set = doubleIntersection(world_a, world_b);
@@ -248,11 +289,7 @@ void contactsOfPairs(const ObbTree& a, const std::vector<std::int32_t>& position
       // Corners on or near the other's plane: their sides decided exactly, then the same
       // construction, or the coplanar one where every corner lies in the other plane.
       detail::ContactSignKernel kernel;
-      const ExactCorners exact{
-          {detail::posedCorner(model_a[0], pose_a), detail::posedCorner(model_a[1], pose_a),
-           detail::posedCorner(model_a[2], pose_a)},
-          {detail::posedCorner(model_b[0], pose_b), detail::posedCorner(model_b[1], pose_b),
-           detail::posedCorner(model_b[2], pose_b)}};
+      const ExactCorners exact{cache_a.corners(vertices_a), cache_b.corners(vertices_b)};
       detail::PlaneSides sides(exact.a, exact.b);
       const std::optional<detail::PlaneSigns> signs = sides.signs();
       if (signs && (*signs)[0] != Signs{0, 0, 0}) {

@@ -20,6 +20,7 @@
 #pragma once
 
 #include <cmath>
+#include <optional>
 
 #include "expansion.h"
 
@@ -138,6 +139,13 @@ inline TrackedDoubleDouble operator*(const TrackedDoubleDouble& x, const Tracked
   const bool exact = x.radius == 0.0 && y.radius == 0.0 && dropped == 0.0;
   z.radius = radiusOf(propagated, dropped, exact);
   return z;
+}
+
+/// certainSign() as an optional: std::nullopt where it is kUnsure.
+inline std::optional<int> certainSignOf(const TrackedDoubleDouble& value) {
+  const int sign = value.certainSign();
+  if (sign == TrackedDoubleDouble::kUnsure) return std::nullopt;
+  return sign;
 }
 
 /// A point of world coordinates, each a tracked double-double.

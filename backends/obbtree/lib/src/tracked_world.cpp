@@ -26,37 +26,21 @@ class TrackedWorldKernel {
 
   bool unsure() const { return unsure_; }
 
-  // det(b - a, c - a, d - a) = ((b - a) x (c - a)) . (d - a). The triangle test asks for the
-  // corners of one triangle against the other's plane (a, b, c) in a row: the last plane's
-  // normal is kept, keyed by the corners' values.
+  // The triangle test asks for the corners of one triangle against the other's plane (a, b, c)
+  // in a row: the last plane is kept, keyed by the corners' values.
   int orient3d(const Point& a, const Point& b, const Point& c, const Point& d) {
-    if (!same(a, plane_[0]) || !same(b, plane_[1]) || !same(c, plane_[2]) || !has_plane_) {
-      plane_[0] = a;
-      plane_[1] = b;
-      plane_[2] = c;
+    if (!same(a, corners_[0]) || !same(b, corners_[1]) || !same(c, corners_[2]) || !has_plane_) {
+      corners_[0] = a;
+      corners_[1] = b;
+      corners_[2] = c;
+      plane_ = TrackedPlane(a, b, c);
       has_plane_ = true;
-      Tracked u[3];
-      Tracked v[3];
-      for (int k = 0; k < 3; ++k) {
-        u[k] = b.x[k] - a.x[k];
-        v[k] = c.x[k] - a.x[k];
-      }
-      for (int k = 0; k < 3; ++k) {
-        const int i = (k + 1) % 3;
-        const int j = (k + 2) % 3;
-        normal_[k] = u[i] * v[j] - u[j] * v[i];
-      }
     }
-    Tracked det;
-    for (int k = 0; k < 3; ++k)
-      det = det + normal_[k] * (d.x[k] - a.x[k]);
-    return signOf(det);
+    return signOf(plane_.orient3d(d));
   }
 
   int orient2d(const Point& a, const Point& b, const Point& c, int drop) {
-    const int i = exact::keptFirst(drop);
-    const int j = exact::keptSecond(drop);
-    return signOf((b.x[i] - a.x[i]) * (c.x[j] - a.x[j]) - (b.x[j] - a.x[j]) * (c.x[i] - a.x[i]));
+    return signOf(trackedOrient2d(a, b, c, drop));
   }
 
   bool collinear(const Point& a, const Point& b, const Point& c) {
@@ -87,8 +71,8 @@ class TrackedWorldKernel {
 
   bool unsure_ = false;
   bool has_plane_ = false;
-  Point plane_[3];
-  Tracked normal_[3];
+  Point corners_[3];
+  TrackedPlane plane_;
 };
 
 // The double-double stage with the certified filter in front of it: a 3D orientation or a
@@ -146,6 +130,35 @@ TrackedPoint placeTracked(const Eigen::Vector3d& v, const Eigen::Isometry3d& pos
 }
 
 }  // namespace
+
+TrackedPlane::TrackedPlane(const TrackedPoint& a, const TrackedPoint& b, const TrackedPoint& c)
+    : origin_(a) {
+  Tracked u[3];
+  Tracked v[3];
+  for (int k = 0; k < 3; ++k) {
+    u[k] = b.x[k] - a.x[k];
+    v[k] = c.x[k] - a.x[k];
+  }
+  for (int k = 0; k < 3; ++k) {
+    const int i = (k + 1) % 3;
+    const int j = (k + 2) % 3;
+    normal_[k] = u[i] * v[j] - u[j] * v[i];
+  }
+}
+
+TrackedDoubleDouble TrackedPlane::orient3d(const TrackedPoint& d) const {
+  Tracked det;
+  for (int k = 0; k < 3; ++k)
+    det = det + normal_[k] * (d.x[k] - origin_.x[k]);
+  return det;
+}
+
+TrackedDoubleDouble trackedOrient2d(const TrackedPoint& a, const TrackedPoint& b,
+                                    const TrackedPoint& c, int drop) {
+  const int i = exact::keptFirst(drop);
+  const int j = exact::keptSecond(drop);
+  return (b.x[i] - a.x[i]) * (c.x[j] - a.x[j]) - (b.x[j] - a.x[j]) * (c.x[i] - a.x[i]);
+}
 
 LazyWorldPoint::LazyWorldPoint(const Eigen::Vector3d& model, const Eigen::Isometry3d& pose,
                                bool pose_in_range)

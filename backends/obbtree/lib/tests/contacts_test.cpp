@@ -107,6 +107,21 @@ TEST(ObbTreeContacts, StackedBoxesMatchTheReference) {
   EXPECT_GT(polygons, 0);
 }
 
+// A constraint solver's "upright" pose: rotation entries of 1e-18 off the axis leave the top box's
+// lower face within rounding of the lower box's upper one, tilted by about 1e-18. The corners'
+// sides and the crossing points' distances are beyond the doubles and within the double-doubles'
+// reach (contact_signs.h).
+TEST(ObbTreeContacts, NearlyUprightBoxesMatchTheReference) {
+  const Posed box = prepare(unwrap(makeBox(BoxParams{}), "box"));
+  Pose on_top = Pose::Identity();
+  on_top.linear() =
+      Eigen::AngleAxisd(0.35, Eigen::Vector3d(1e-18, -2e-18, 1.0).normalized()).toRotationMatrix();
+  on_top.translation() = Eigen::Vector3d(0.25, 0.1, 1.0);
+  const ContactAnswer answer = contactsOf(box, Pose::Identity(), box, on_top, {});
+  EXPECT_EQ(answer.exact_sets, 0u) << "no pair should need rationals";
+  expectReference(box, Pose::Identity(), box, on_top, answer, "nearly upright");
+}
+
 TEST(ObbTreeContacts, MergeRadiusAndCapShapeTheManifold) {
   const Posed torus = prepare(unwrap(makeTorus(TorusParams{1.0, 0.25, 32, 16}), "torus"));
   Pose pose_b = Pose::Identity();
