@@ -5,6 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <collido/io/files.h>
 #include <collido/study/result_store.h>
 #include <collido/study/time_changes.h>
 
@@ -35,7 +36,7 @@ Result<nlohmann::json> readSummary(const std::string& path) {
     return Status(StatusCode::kInvalidArgument,
                   file + ": not found (give two study folders or two summary.json files)");
   }
-  return study::readJsonFile(file);
+  return io::readJsonFile(file);
 }
 
 // Both study folders: intervals from their timed calls, paired by frame. Otherwise their
@@ -69,8 +70,8 @@ int runCompare(const CompareArguments& args) {
   }
   std::cout << study::timeChangesText(changes.value());
   if (!args.json.empty()) {
-    const Status written = study::writeFileAtomically(
-        args.json, study::timeChangesJson(changes.value()).dump(1) + "\n");
+    const Status written =
+        io::writeFileAtomically(args.json, study::timeChangesJson(changes.value()).dump(1) + "\n");
     if (!written.ok()) {
       std::cerr << "error: " << written.message() << "\n";
       return 2;

@@ -19,6 +19,7 @@
 #include <nlohmann/json.hpp>
 
 #include <collido/host/plugin_library.h>
+#include <collido/io/files.h>
 
 #include "commands.h"
 
@@ -83,10 +84,11 @@ struct Row {
 
 std::vector<Row> readReport(const std::string& path) {
   std::vector<Row> rows;
-  std::ifstream in(path);
-  if (!in) return rows;
-  const nlohmann::json report = nlohmann::json::parse(in, nullptr, false);
-  if (report.is_discarded()) return rows;
+  // No report, or a broken one (the kit crashed while writing it): no rows, and the caller shows
+  // the kit's log instead.
+  const Result<nlohmann::json> read = io::readJsonFile(path);
+  if (!read.ok()) return rows;
+  const nlohmann::json& report = read.value();
   for (const auto& suite : report.value("testsuites", nlohmann::json::array())) {
     for (const auto& test : suite.value("testsuite", nlohmann::json::array())) {
       Row row;

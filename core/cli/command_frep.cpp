@@ -13,12 +13,12 @@
 #include <collido/frep/polygonize.h>
 #include <collido/frep/preview.h>
 #include <collido/host/backend_instance.h>
+#include <collido/io/files.h>
 #include <collido/runner/runner.h>
 #include <collido/runner/statistics.h>
 #include <collido/runner/text_table.h>
 #include <collido/runner/timed_calls.h>
 #include <collido/scene/frep_file.h>
-#include <collido/study/result_store.h>
 
 #include "commands.h"
 
@@ -333,7 +333,7 @@ int runFrep(const FrepArguments& args, const PluginOptions& plugin_options) {
                   .string();
   }
   if (!args.json_path.empty()) {
-    if (Status s = study::writeFileAtomically(args.json_path, json.dump(1) + "\n"); !s.ok()) {
+    if (Status s = io::writeFileAtomically(args.json_path, json.dump(1) + "\n"); !s.ok()) {
       std::cerr << "error: " << s.message() << "\n";
       return 2;
     }

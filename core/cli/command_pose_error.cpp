@@ -6,10 +6,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include <collido/io/files.h>
 #include <collido/pose/error_sweep.h>
 #include <collido/runner/text_table.h>
 #include <collido/scene/scene.h>
-#include <collido/study/result_store.h>
 
 #include "commands.h"
 
@@ -152,7 +152,7 @@ int poseError(const PoseErrorArguments& args) {
                            {"rows", nlohmann::json::array()}};
     for (const pose::ErrorSweepRow& r : rows.value())
       json["rows"].push_back(rowJson(r));
-    if (Status s = study::writeFileAtomically(args.json_path, json.dump(1) + "\n"); !s.ok()) {
+    if (Status s = io::writeFileAtomically(args.json_path, json.dump(1) + "\n"); !s.ok()) {
       std::cerr << "error: " << s.message() << "\n";
       return 2;
     }

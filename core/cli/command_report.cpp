@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <collido/io/files.h>
 #include <collido/study/report_html.h>
 #include <collido/study/result_store.h>
 
@@ -30,20 +31,14 @@ struct ReportArguments {
 // field that must be an array), checked enough to draw.
 Result<nlohmann::json> readResultsFile(const std::string& path, const char* marker,
                                        const char* array, const char* how) {
-  std::ifstream in(path);
-  if (!in) return Status(StatusCode::kInvalidArgument, path + ": file not found");
-  std::stringstream text;
-  text << in.rdbuf();
-  try {
-    nlohmann::json json = nlohmann::json::parse(text.str());
-    if (!json.is_object() || json.value(marker, 0) != 1 || !json.contains(array) ||
-        !json.at(array).is_array()) {
-      return Status(StatusCode::kInvalidArgument, path + ": not a file of " + how);
-    }
-    return json;
-  } catch (const nlohmann::json::exception& e) {
-    return Status(StatusCode::kInvalidArgument, path + ": not valid JSON: " + e.what());
+  Result<nlohmann::json> json = io::readJsonFile(path, "file not found");
+  if (!json.ok()) return json.status();
+  const nlohmann::json& root = json.value();
+  if (!root.is_object() || root.value(marker, 0) != 1 || !root.contains(array) ||
+      !root.at(array).is_array()) {
+    return Status(StatusCode::kInvalidArgument, path + ": not a file of " + how);
   }
+  return json;
 }
 
 // The FRep file's preview picture (named relative to the JSON file) inlined as a data URI, so
@@ -163,7 +158,7 @@ int runReport(ReportArguments args) {
     std::cerr << "error: " << html.status().message() << "\n";
     return 2;
   }
-  if (Status s = study::writeFileAtomically(output, html.value()); !s.ok()) {
+  if (Status s = io::writeFileAtomically(output, html.value()); !s.ok()) {
     std::cerr << "error: " << s.message() << "\n";
     return 2;
   }

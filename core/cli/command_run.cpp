@@ -3,6 +3,7 @@
 #include <csignal>
 #include <iostream>
 
+#include <collido/io/files.h>
 #include <collido/runner/runner.h>
 #include <collido/study/oracle_store.h>
 #include <collido/study/result_store.h>
@@ -99,8 +100,7 @@ int run(const RunArguments& args, const PluginOptions& plugin_options) {
   std::cout << formatRunTable(report);
   if (!args.json_path.empty()) {
     // The study's atomic write: a reader never sees half a report.
-    if (Status s = study::writeFileAtomically(args.json_path, runReportJson(report) + "\n");
-        !s.ok()) {
+    if (Status s = io::writeFileAtomically(args.json_path, runReportJson(report) + "\n"); !s.ok()) {
       std::cerr << "error: " << s.message() << "\n";
       return 2;
     }

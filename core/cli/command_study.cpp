@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include <collido/host/install_layout.h>
+#include <collido/io/files.h>
 #include <collido/study/driver.h>
 #include <collido/study/plugin_probe.h>
 #include <collido/study/result_store.h>
@@ -42,19 +43,12 @@ std::vector<std::string> workerEnvironment() {
 
 int runWorkerMode(const std::string& request_path, const std::string& out_path, int repetitions,
                   const std::string& oracle_directory, const PluginOptions& plugins) {
-  std::ifstream in(request_path, std::ios::binary);
-  if (!in) {
-    std::cerr << "error: " << request_path << ": cannot be read\n";
+  const Result<nlohmann::json> json = io::readJsonFile(request_path);
+  if (!json.ok()) {
+    std::cerr << "error: " << json.status().message() << "\n";
     return 2;
   }
-  std::stringstream text;
-  text << in.rdbuf();
-  Result<Combination> combination = Status(StatusCode::kInvalidArgument, "");
-  try {
-    combination = study::combinationFromJson(nlohmann::json::parse(text.str()));
-  } catch (const nlohmann::json::exception& e) {
-    combination = Status(StatusCode::kInvalidArgument, e.what());
-  }
+  const Result<Combination> combination = study::combinationFromJson(json.value());
   if (!combination.ok()) {
     std::cerr << "error: " << request_path << ": " << combination.status().message() << "\n";
     return 2;
@@ -73,7 +67,7 @@ int runWorkerMode(const std::string& request_path, const std::string& out_path, 
     std::cerr << "error: " << result.status().message() << "\n";
     return 2;
   }
-  if (Status s = study::writeFileAtomically(out_path, study::resultToJson(result.value()).dump());
+  if (Status s = io::writeFileAtomically(out_path, study::resultToJson(result.value()).dump());
       !s.ok()) {
     std::cerr << "error: " << s.message() << "\n";
     return 2;
@@ -185,7 +179,7 @@ void addStudyCommands(CLI::App& app, const PluginOptions& plugins, int& exit_cod
       exit_code = 2;
       return;
     }
-    const Status written = study::writeFileAtomically(
+    const Status written = io::writeFileAtomically(
         *info_out, study::pluginInfoJson(plugin.value(), *info_settings).dump());
     if (!written.ok()) std::cerr << "error: " << written.message() << "\n";
     exit_code = written.ok() ? 0 : 2;

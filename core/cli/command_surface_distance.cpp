@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include <collido/host/backend_instance.h>
+#include <collido/io/files.h>
 #include <collido/nurbs/surface_distance.h>
 #include <collido/nurbs/tessellate.h>
 #include <collido/runner/runner.h>
@@ -17,7 +18,6 @@
 #include <collido/runner/text_table.h>
 #include <collido/runner/timed_calls.h>
 #include <collido/scene/surface_file.h>
-#include <collido/study/result_store.h>
 
 #include "commands.h"
 
@@ -277,7 +277,7 @@ int surfaceDistance(const SurfaceDistanceArguments& args, const PluginOptions& p
       std::cout << "  " << failure << "\n";
   }
   if (!args.json_path.empty()) {
-    if (Status s = study::writeFileAtomically(args.json_path, json.dump(1) + "\n"); !s.ok()) {
+    if (Status s = io::writeFileAtomically(args.json_path, json.dump(1) + "\n"); !s.ok()) {
       std::cerr << "error: " << s.message() << "\n";
       return 2;
     }

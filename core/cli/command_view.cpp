@@ -13,6 +13,7 @@
 #include <sstream>
 #include <thread>
 
+#include <collido/io/files.h>
 #include <collido/runner/runner.h>
 #include <collido/runner/view_answers.h>
 #include <collido/study/oracle_store.h>
@@ -126,10 +127,7 @@ view::ViewBackend answersOf(const ViewArguments& args, const PluginOptions& plug
   launch.stop = &stop;
   const study::WorkerOutcome outcome = study::runWorkerProcess(launch);
   if (!outcome.ok()) {
-    result.problem =
-        outcome.status + (outcome.signal_name.empty() ? "" : " (" + outcome.signal_name + ")") +
-        (outcome.exit_code != 0 ? " (exit " + std::to_string(outcome.exit_code) + ")" : "") + ": " +
-        outcome.log_tail;
+    result.problem = outcome.text() + ": " + outcome.log_tail;
     return result;
   }
   result.answers_json = readFile(out);
@@ -241,7 +239,7 @@ int view(const ViewArguments& args, const PluginOptions& plugins) {
     std::cerr << "error: " << page.status().message() << "\n";
     return 2;
   }
-  if (Status s = study::writeFileAtomically(args.out, page.value()); !s.ok()) {
+  if (Status s = io::writeFileAtomically(args.out, page.value()); !s.ok()) {
     std::cerr << "error: " << s.message() << "\n";
     return 2;
   }
@@ -275,7 +273,7 @@ int viewAnswers(const AnswersArguments& args, const PluginOptions& plugins) {
   const RunReport report = runScene(scene.value(), specs.value().front(), options, oracle);
   stored.keepNew();
   const std::string json = viewAnswersJson(scene.value(), report, specs.value().front().label());
-  if (Status s = study::writeFileAtomically(args.out, json); !s.ok()) {
+  if (Status s = io::writeFileAtomically(args.out, json); !s.ok()) {
     std::cerr << "error: " << s.message() << "\n";
     return 2;
   }

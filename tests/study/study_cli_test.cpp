@@ -185,7 +185,7 @@ TEST(StudyCli, CrashAbortAndHangCostOneCombinationEach) {
   EXPECT_EQ(results[3].combination.backend, "misbehaving:hang");
 
   const CombinationResult& obbtree = results[0];
-  EXPECT_EQ(obbtree.outcome.status, "ok");
+  EXPECT_EQ(obbtree.outcome.status, WorkerStatus::kOk);
   EXPECT_EQ(obbtree.combination.scene_name, "linked");
   ASSERT_EQ(obbtree.measurements.size(), 2u);
   for (const QueryMeasurement& m : obbtree.measurements) {
@@ -201,16 +201,16 @@ TEST(StudyCli, CrashAbortAndHangCostOneCombinationEach) {
   EXPECT_LT(*obbtree.backend_rss_bytes, obbtree.outcome.peak_rss_bytes);
 
   const CombinationResult& crash = results[1];
-  EXPECT_EQ(crash.outcome.status, "crashed");
+  EXPECT_EQ(crash.outcome.status, WorkerStatus::kCrashed);
   EXPECT_EQ(crash.outcome.signal, SIGSEGV);
   EXPECT_EQ(crash.outcome.signal_name, "SIGSEGV");
   EXPECT_TRUE(crash.measurements.empty());
   const CombinationResult& abort = results[2];
-  EXPECT_EQ(abort.outcome.status, "crashed");
+  EXPECT_EQ(abort.outcome.status, WorkerStatus::kCrashed);
   EXPECT_EQ(abort.outcome.signal_name, "SIGABRT");
   EXPECT_TRUE(abort.measurements.empty());
   const CombinationResult& hang = results[3];
-  EXPECT_EQ(hang.outcome.status, "timeout");
+  EXPECT_EQ(hang.outcome.status, WorkerStatus::kTimeout);
   EXPECT_GE(hang.outcome.wall_s, 3.0);
   EXPECT_LT(hang.outcome.wall_s, 10.0);
   EXPECT_TRUE(hang.measurements.empty());
@@ -265,20 +265,20 @@ TEST(StudyCli, CrashAbortAndHangInBuildCostOneCombinationEach) {
   const std::vector<CombinationResult> results = readResults(out);
   ASSERT_EQ(results.size(), 5u);
   EXPECT_EQ(results[4].combination.backend, "misbehaving:crash_in_create");
-  EXPECT_EQ(results[4].outcome.status, "crashed");
+  EXPECT_EQ(results[4].outcome.status, WorkerStatus::kCrashed);
   EXPECT_EQ(results[0].combination.backend, "misbehaving:crash_in_build");
-  EXPECT_EQ(results[0].outcome.status, "crashed");
+  EXPECT_EQ(results[0].outcome.status, WorkerStatus::kCrashed);
   EXPECT_EQ(results[0].outcome.signal_name, "SIGSEGV");
   EXPECT_EQ(results[1].combination.backend, "misbehaving:abort_in_build");
-  EXPECT_EQ(results[1].outcome.status, "crashed");
+  EXPECT_EQ(results[1].outcome.status, WorkerStatus::kCrashed);
   EXPECT_EQ(results[1].outcome.signal_name, "SIGABRT");
   EXPECT_EQ(results[2].combination.backend, "misbehaving:hang_in_build");
-  EXPECT_EQ(results[2].outcome.status, "timeout");
+  EXPECT_EQ(results[2].outcome.status, WorkerStatus::kTimeout);
   for (std::size_t i = 0; i < 3; ++i)
     EXPECT_TRUE(results[i].measurements.empty()) << results[i].combination.backend;
   // The combination after them ran whole.
   EXPECT_EQ(results[3].combination.backend, "obbtree");
-  EXPECT_EQ(results[3].outcome.status, "ok");
+  EXPECT_EQ(results[3].outcome.status, WorkerStatus::kOk);
   ASSERT_EQ(results[3].measurements.size(), 2u);
   for (const QueryMeasurement& m : results[3].measurements)
     EXPECT_EQ(m.disagreements, 0u) << m.query;
@@ -303,7 +303,7 @@ TEST(StudyCli, EnvRobOnObbtreeAgreesWithTheOracle) {
   ASSERT_EQ(run.exit_code, 0) << describe(run);
   const std::vector<CombinationResult> results = readResults(out);
   ASSERT_EQ(results.size(), 1u);
-  EXPECT_EQ(results[0].outcome.status, "ok");
+  EXPECT_EQ(results[0].outcome.status, WorkerStatus::kOk);
   EXPECT_EQ(results[0].combination.scene_name, "env_rob");
   ASSERT_EQ(results[0].measurements.size(), 3u);  // all pairs, boolean, distance
   for (const QueryMeasurement& m : results[0].measurements) {
@@ -340,12 +340,12 @@ TEST(StudyCli, ExitThrowAndWrongAnswersAreRecorded) {
   ASSERT_EQ(results.size(), 4u);
 
   const CombinationResult& exited = results["misbehaving:exit"];
-  EXPECT_EQ(exited.outcome.status, "failed");
+  EXPECT_EQ(exited.outcome.status, WorkerStatus::kFailed);
   EXPECT_EQ(exited.outcome.exit_code, 7);
   EXPECT_EQ(exited.outcome.signal, 0);
 
   const CombinationResult& threw = results["misbehaving:throw"];
-  EXPECT_EQ(threw.outcome.status, "ok");
+  EXPECT_EQ(threw.outcome.status, WorkerStatus::kOk);
   ASSERT_EQ(threw.measurements.size(), 2u);
   for (const QueryMeasurement& m : threw.measurements) {
     EXPECT_TRUE(m.status.failed()) << m.status;
@@ -353,7 +353,7 @@ TEST(StudyCli, ExitThrowAndWrongAnswersAreRecorded) {
   }
 
   const CombinationResult& wrong = results["misbehaving:wrong"];
-  EXPECT_EQ(wrong.outcome.status, "ok");
+  EXPECT_EQ(wrong.outcome.status, WorkerStatus::kOk);
   ASSERT_EQ(wrong.measurements.size(), 2u);
   for (const QueryMeasurement& m : wrong.measurements) {
     SCOPED_TRACE(m.query);
@@ -363,7 +363,7 @@ TEST(StudyCli, ExitThrowAndWrongAnswersAreRecorded) {
   }
 
   const CombinationResult& exact = results["misbehaving:exact"];
-  EXPECT_EQ(exact.outcome.status, "ok");
+  EXPECT_EQ(exact.outcome.status, WorkerStatus::kOk);
   for (const QueryMeasurement& m : exact.measurements) {
     EXPECT_EQ(m.status, "ok");
     EXPECT_EQ(m.disagreements, 0u) << m.query;
@@ -400,7 +400,7 @@ TEST(StudyCli, ResumeRunsOnlyWhatIsMissing) {
   const std::vector<CombinationResult> again = readResults(out);
   ASSERT_EQ(again.size(), 2u);
   EXPECT_EQ(again[1].combination.id, stored[1].combination.id);
-  EXPECT_EQ(again[1].outcome.status, "ok");
+  EXPECT_EQ(again[1].outcome.status, WorkerStatus::kOk);
 
   const CommandRun nothing_left = collido(resume, dir);
   ASSERT_EQ(nothing_left.exit_code, 0) << describe(nothing_left);
@@ -464,7 +464,8 @@ TEST(StudyCli, RetryFailedRunsFailuresAgain) {
   const CommandRun retried = collido(args, dir);
   ASSERT_EQ(retried.exit_code, 0) << describe(retried);
   EXPECT_NE(retried.err.find("1 to run"), std::string::npos) << retried.err;
-  EXPECT_EQ(byBackend(readResults(out))["misbehaving:crash"].outcome.status, "crashed");
+  EXPECT_EQ(byBackend(readResults(out))["misbehaving:crash"].outcome.status,
+            WorkerStatus::kCrashed);
 }
 
 // A lost session (SIGHUP to the study; Ctrl-C and SIGTERM take the same path) kills the running
@@ -509,8 +510,8 @@ TEST(StudyCli, InterruptedStudyResumes) {
   EXPECT_NE(second.err.find("2 to run"), std::string::npos) << second.err;
   std::map<std::string, CombinationResult> results = byBackend(readResults(out));
   ASSERT_EQ(results.size(), 2u);
-  EXPECT_EQ(results["misbehaving:hang"].outcome.status, "timeout");
-  EXPECT_EQ(results["misbehaving:exact"].outcome.status, "ok");
+  EXPECT_EQ(results["misbehaving:hang"].outcome.status, WorkerStatus::kTimeout);
+  EXPECT_EQ(results["misbehaving:exact"].outcome.status, WorkerStatus::kOk);
 }
 
 // Shards split the plan; merge joins them into the whole study.
@@ -561,7 +562,7 @@ TEST(StudyCli, ShardsMergeIntoTheWholeStudy) {
   std::map<std::string, CombinationResult> results = byBackend(readResults(dir + "/m"));
   ASSERT_EQ(results.size(), 3u);
   for (const auto& [backend, r] : results) {
-    EXPECT_EQ(r.outcome.status, "ok") << backend;
+    EXPECT_EQ(r.outcome.status, WorkerStatus::kOk) << backend;
     // Both rounds' calls, 12 a round, joined frame by frame.
     EXPECT_EQ(r.measurements.at(0).rounds, 2u) << backend;
     EXPECT_EQ(r.measurements.at(0).times_us.size(), 24u) << backend;
@@ -710,7 +711,7 @@ TEST(StudyCli, SettingsThatAnswerNothingAskedAreNotPlanned) {
   EXPECT_NE(run.err.find("study: 2 combinations, 2 to run"), std::string::npos) << run.err;
   const std::map<std::string, CombinationResult> results = byBackend(readResults(out));
   ASSERT_EQ(results.size(), 2u);
-  EXPECT_EQ(results.at("obbtree").outcome.status, "ok");
+  EXPECT_EQ(results.at("obbtree").outcome.status, WorkerStatus::kOk);
   const CombinationResult& refused = results.at("misbehaving:exact[build_mib=5000]");
   ASSERT_EQ(refused.measurements.size(), 1u);
   EXPECT_NE(refused.measurements[0].status.text().find("build_mib = '5000'"), std::string::npos)
@@ -772,7 +773,7 @@ TEST(StudyCli, SweepFileSetsTheGrid) {
   for (const CombinationResult& r : results) {
     SCOPED_TRACE(r.combination.label());
     settings.insert(r.combination.backend);
-    EXPECT_EQ(r.outcome.status, "ok");
+    EXPECT_EQ(r.outcome.status, WorkerStatus::kOk);
     EXPECT_EQ(r.combination.limit, 2u);
     ASSERT_EQ(r.measurements.size(), 2u);
     for (const QueryMeasurement& m : r.measurements) {
@@ -837,10 +838,10 @@ TEST(StudyCli, SurfaceAndFrepFilesRunInWorkersOfTheirOwn) {
     EXPECT_NE(r.combination.kind, InputKind::kScene);
     EXPECT_TRUE(r.measurements.empty());
     if (r.combination.backend == "misbehaving:crash") {
-      EXPECT_EQ(r.outcome.status, "crashed");
+      EXPECT_EQ(r.outcome.status, WorkerStatus::kCrashed);
       EXPECT_EQ(r.outcome.signal_name, "SIGSEGV");
     } else {
-      EXPECT_EQ(r.outcome.status, "ok") << r.outcome.log_tail;
+      EXPECT_EQ(r.outcome.status, WorkerStatus::kOk) << r.outcome.log_tail;
       EXPECT_TRUE(r.comparison.is_object());
     }
   }
@@ -992,7 +993,7 @@ TEST(StudyCli, APluginThatCrashesOrHangsWhileLoadingIsSkipped) {
       << run.err;
   const std::vector<CombinationResult> results = readResults(dir + "/s");
   ASSERT_EQ(results.size(), 1u);
-  EXPECT_EQ(results[0].outcome.status, "ok");
+  EXPECT_EQ(results[0].outcome.status, WorkerStatus::kOk);
 }
 
 // collido run keeps every backend in one process: a crash ends it, and says where isolation is.

@@ -4,6 +4,8 @@
 #include <filesystem>
 #include <system_error>
 
+#include <collido/io/files.h>
+
 namespace collido::study {
 namespace {
 
@@ -111,7 +113,8 @@ Status writeComparisonFiles(const std::string& directory,
       return Status(StatusCode::kInvalidArgument,
                     path.parent_path().string() + ": cannot create the folder: " + ec.message());
     }
-    if (Status s = writeFileAtomically(path.string(), document.dump(1) + "\n"); !s.ok()) return s;
+    if (Status s = io::writeFileAtomically(path.string(), document.dump(1) + "\n"); !s.ok())
+      return s;
   }
   return Status();
 }

@@ -15,6 +15,7 @@
 #include <set>
 #include <sstream>
 
+#include <collido/io/files.h>
 #include <collido/mesh/input_file.h>
 #include <collido/runner/digest.h>
 #include <collido/runner/time_statistic.h>
@@ -143,23 +144,16 @@ std::vector<std::string> workerCommand(const Combination& c, int repetitions,
 // picture goes inline, so the answer does not depend on a file in the scratch folder.
 void readComparison(const std::string& answer_path, const std::string& preview_path,
                     CombinationResult& result) {
-  std::ifstream in(answer_path, std::ios::binary);
-  if (!in) {
+  // Answers are written atomically: a worker that failed before writing one keeps its status.
+  Result<nlohmann::json> answer = io::readJsonFile(answer_path, "the worker wrote no answer");
+  if (!answer.ok()) {
     if (result.outcome.ok()) {
-      result.outcome.status = "unfinished";
-      result.outcome.log_tail = answer_path + ": the worker wrote no answer";
+      result.outcome.status = WorkerStatus::kUnfinished;
+      result.outcome.log_tail = answer.status().message();
     }
     return;
   }
-  std::stringstream text;
-  text << in.rdbuf();
-  try {
-    result.comparison = nlohmann::json::parse(text.str());
-  } catch (const nlohmann::json::exception& e) {
-    result.outcome.status = "unfinished";
-    result.outcome.log_tail = answer_path + ": " + e.what();
-    return;
-  }
+  result.comparison = std::move(answer).value();
   if (result.comparison.contains("preview")) {
     result.comparison.erase("preview");
     std::ifstream picture(preview_path, std::ios::binary);
@@ -179,8 +173,8 @@ CombinationResult runInWorker(const Combination& c, const ResultStore& store, in
   std::filesystem::remove(answer_path);
   CombinationResult result;
   result.combination = c;
-  if (Status s = writeFileAtomically(request_path, combinationToJson(c).dump()); !s.ok()) {
-    result.outcome.status = "failed";
+  if (Status s = io::writeFileAtomically(request_path, combinationToJson(c).dump()); !s.ok()) {
+    result.outcome.status = WorkerStatus::kFailed;
     result.outcome.log_tail = s.message();
     return result;
   }
@@ -213,22 +207,15 @@ CombinationResult runInWorker(const Combination& c, const ResultStore& store, in
   if (c.kind != InputKind::kScene) {
     readComparison(answer_path, preview_path, result);
   } else if (result.outcome.ok()) {
-    std::ifstream in(answer_path, std::ios::binary);
-    std::stringstream text;
-    text << in.rdbuf();
-    Result<CombinationResult> answer = Result<CombinationResult>(
-        Status(StatusCode::kInvalidArgument, answer_path + ": the worker wrote no answer"));
-    try {
-      if (in) answer = resultFromJson(nlohmann::json::parse(text.str()), answer_path);
-    } catch (const nlohmann::json::exception& e) {
-      answer = Status(StatusCode::kInvalidArgument, answer_path + ": " + e.what());
-    }
+    const Result<nlohmann::json> json = io::readJsonFile(answer_path, "the worker wrote no answer");
+    Result<CombinationResult> answer =
+        json.ok() ? resultFromJson(json.value(), answer_path) : json.status();
     if (answer.ok()) {
       result.measurements = std::move(answer.value().measurements);
       result.problems = std::move(answer.value().problems);
       result.backend_rss_bytes = answer.value().backend_rss_bytes;
     } else {
-      result.outcome.status = "unfinished";
+      result.outcome.status = WorkerStatus::kUnfinished;
       result.outcome.log_tail = answer.status().message();
     }
   }
@@ -413,7 +400,7 @@ QueueEnd runQueue(
         runInWorker(c, q.store, q.repetitions, q.timeout_s,
                     plugin_file == q.plugin_file_of.end() ? std::string() : plugin_file->second,
                     q.args, progress, q.stop.requested());
-    if (result.outcome.status == "interrupted") return QueueEnd::kInterrupted;
+    if (result.outcome.status == WorkerStatus::kInterrupted) return QueueEnd::kInterrupted;
     if (Status s = q.store.write(result); !s.ok()) {
       q.err << "\nerror: " << s.message() << "\n";
       return QueueEnd::kStoreFailed;
@@ -639,15 +626,12 @@ int runStudyImpl(const StudyRequest& args, std::ostream& out, std::ostream& err)
     const Combination& c = plan[index];
     if (args.resume && store.has(c.id)) {
       if (!args.retry_failed) continue;
-      std::ifstream in(store.resultPath(c.id));
-      std::stringstream text;
-      text << in.rdbuf();
-      try {
-        Result<CombinationResult> stored =
-            resultFromJson(nlohmann::json::parse(text.str()), store.resultPath(c.id));
+      // An unreadable result is run again.
+      const Result<nlohmann::json> json = io::readJsonFile(store.resultPath(c.id));
+      if (json.ok()) {
+        const Result<CombinationResult> stored =
+            resultFromJson(json.value(), store.resultPath(c.id));
         if (stored.ok() && stored.value().outcome.ok()) continue;
-      } catch (const nlohmann::json::exception&) {
-        // unreadable: run it again
       }
     }
     todo.push_back(&c);

@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <collido/io/files.h>
 #include <collido/study/progress.h>
 
 namespace collido::study {
@@ -44,19 +45,12 @@ Result<CombinationTimes> loadCombinationTimes(const std::string& path) {
     file = (std::filesystem::path(path) / "times.json").string();
     if (!std::filesystem::exists(file, ec)) return timesFromResults(path);
   }
-  std::ifstream in(file, std::ios::binary);
-  if (!in) return Status(StatusCode::kInvalidArgument, file + ": times file not found");
-  std::stringstream text;
-  text << in.rdbuf();
+  const Result<nlohmann::json> read = io::readJsonFile(file, "times file not found");
+  if (!read.ok()) return read.status();
+  const nlohmann::json& root = read.value();
   const auto fail = [&file](const std::string& problem) -> Result<CombinationTimes> {
     return Status(StatusCode::kInvalidArgument, file + ": " + problem);
   };
-  nlohmann::json root;
-  try {
-    root = nlohmann::json::parse(text.str());
-  } catch (const nlohmann::json::exception& e) {
-    return fail(std::string("not valid JSON: ") + e.what());
-  }
   if (!root.is_object() || root.value("collidoscope_times", 0) != kTimesVersion)
     return fail("not a times file (expected \"collidoscope_times\": 1)");
   if (!root.contains("combinations") || !root["combinations"].is_object())

@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <collido/io/files.h>
 #include <collido/study/result_store.h>
 
 namespace collido::study {
@@ -32,15 +33,14 @@ std::string oracleStorePath(const std::string& directory, const OracleCache& cac
 }
 
 Status loadOracleAnswers(const std::string& path, OracleCache& cache) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return {};
-  std::stringstream text;
-  text << in.rdbuf();
+  // No stored answers yet (or none readable): the oracle computes them.
+  const Result<std::string> text = io::readTextFile(path);
+  if (!text.ok()) return {};
   const auto bad = [&](const std::string& why) {
     return Status(StatusCode::kInvalidArgument, path + ": " + why);
   };
   try {
-    const Json document = Json::parse(text.str());
+    const Json document = Json::parse(text.value());
     if (document.at("fingerprint").get<std::string>() != cache.fingerprint()) {
       return bad("the stored answers are for another scene (fingerprint differs)");
     }
@@ -119,7 +119,7 @@ Status saveOracleAnswers(const std::string& path, const OracleCache& cache) {
   const Json document{{"fingerprint", cache.fingerprint()},
                       {"sizes", cache.inputSizes()},
                       {"answers", std::move(answers)}};
-  return writeFileAtomically(path, document.dump());
+  return io::writeFileAtomically(path, document.dump());
 }
 
 }  // namespace collido::study

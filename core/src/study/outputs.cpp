@@ -13,6 +13,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <collido/io/files.h>
 #include <collido/runner/text_table.h>
 #include <collido/runner/time_statistic.h>
 #include <collido/study/comparison_files.h>
@@ -156,10 +157,7 @@ std::string studyTableWith(const std::vector<CombinationResult>& results,
   for (const CombinationResult& r : results) {
     const Combination& c = r.combination;
     if (!r.outcome.ok()) {
-      std::string why = r.outcome.status;
-      if (!r.outcome.signal_name.empty()) why += " (" + r.outcome.signal_name + ")";
-      if (r.outcome.status == "failed")
-        why += " (exit " + std::to_string(r.outcome.exit_code) + ")";
+      const std::string why = r.outcome.text();
       rows.push_back({c.backend, c.settingText(), c.scene_name, "*", why});
       failures.push_back(c.label() + ": worker " + why);
       continue;
@@ -259,28 +257,29 @@ Status writeStudyOutputs(const std::string& directory,
   Result<std::vector<NotApplicable>> not_applicable = ResultStore(directory).readNotApplicable();
   if (!not_applicable.ok()) return not_applicable.status();
   if (Status s =
-          writeFileAtomically((folder / "records.jsonl").string(), recordsJsonLines(results));
+          io::writeFileAtomically((folder / "records.jsonl").string(), recordsJsonLines(results));
       !s.ok()) {
     return s;
   }
   const std::vector<SceneQueryPicks> picks = whatToPick(results);
-  if (Status s = writeFileAtomically((folder / "summary.json").string(),
-                                     benchmarkJsonWith(results, picks));
+  if (Status s = io::writeFileAtomically((folder / "summary.json").string(),
+                                         benchmarkJsonWith(results, picks));
       !s.ok()) {
     return s;
   }
-  if (Status s = writeFileAtomically((folder / "times.json").string(), timesJson(results));
+  if (Status s = io::writeFileAtomically((folder / "times.json").string(), timesJson(results));
       !s.ok()) {
     return s;
   }
   if (Status s = writeComparisonFiles(directory, results); !s.ok()) return s;
   if (const std::string robustness = robustnessReport(results); !robustness.empty()) {
-    if (Status s = writeFileAtomically((folder / "robustness.txt").string(), robustness); !s.ok()) {
+    if (Status s = io::writeFileAtomically((folder / "robustness.txt").string(), robustness);
+        !s.ok()) {
       return s;
     }
   }
-  return writeFileAtomically((folder / "table.txt").string(),
-                             studyTableWith(results, picks, not_applicable.value()));
+  return io::writeFileAtomically((folder / "table.txt").string(),
+                                 studyTableWith(results, picks, not_applicable.value()));
 }
 
 std::string robustnessReport(const std::vector<CombinationResult>& results) {

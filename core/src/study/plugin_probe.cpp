@@ -94,12 +94,12 @@ Result<ProbedPlugin> probeInChild(const std::string& executable, const std::stri
   const std::string doing = task.doing;
   const std::string then = task.then;
   const auto read = [&]() -> Result<ProbedPlugin> {
-    if (outcome.status == "timeout") {
+    if (outcome.status == WorkerStatus::kTimeout) {
       return Status(StatusCode::kEngineFailure, "plugin " + file + ": still " + doing + " after " +
                                                     std::to_string(static_cast<int>(timeout_s)) +
                                                     " s (hangs while " + doing + "); " + then);
     }
-    if (outcome.status == "crashed") {
+    if (outcome.status == WorkerStatus::kCrashed) {
       return Status(StatusCode::kEngineFailure, "plugin " + file + ": crashed while " + doing +
                                                     " (" + outcome.signal_name + "); " + then);
     }

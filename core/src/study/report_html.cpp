@@ -57,12 +57,13 @@ Json failuresOf(const std::vector<CombinationResult>& results) {
   for (const CombinationResult& r : results) {
     const Combination& c = r.combination;
     if (!r.outcome.ok()) {
-      std::string detail = "worker " + r.outcome.status;
+      const std::string status = workerStatusName(r.outcome.status);
+      std::string detail = "worker " + status;
       if (!r.outcome.signal_name.empty()) detail += " by " + r.outcome.signal_name;
-      if (r.outcome.status == "failed")
+      if (r.outcome.status == WorkerStatus::kFailed)
         detail += " with exit code " + std::to_string(r.outcome.exit_code);
       detail += " after " + std::to_string(r.outcome.wall_s).substr(0, 5) + " s";
-      failures.push_back({{"what", r.outcome.status},
+      failures.push_back({{"what", status},
                           {"label", backendLabel(c)},
                           {"scene", c.scene_name},
                           {"query", "*"},

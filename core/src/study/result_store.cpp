@@ -1,17 +1,10 @@
 #include <collido/study/result_store.h>
 
-#include <fcntl.h>
-#include <unistd.h>
-
 #include <algorithm>
-#include <atomic>
-#include <cerrno>
-#include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <map>
-#include <sstream>
 
+#include <collido/io/files.h>
 #include <collido/runner/measurement_json.h>
 #include <collido/study/rounds.h>
 
@@ -23,22 +16,37 @@ namespace fs = std::filesystem;
 
 }  // namespace
 
-Result<Json> readJsonFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return Status(StatusCode::kInvalidArgument, path + ": cannot be read");
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  try {
-    return Json::parse(buffer.str());
-  } catch (const Json::parse_error& e) {
-    return Status(StatusCode::kInvalidArgument, path + ": not valid JSON: " + e.what());
+namespace {
+
+constexpr std::pair<WorkerStatus, const char*> kWorkerStatusNames[] = {
+    {WorkerStatus::kOk, "ok"},
+    {WorkerStatus::kFailed, "failed"},
+    {WorkerStatus::kCrashed, "crashed"},
+    {WorkerStatus::kTimeout, "timeout"},
+    {WorkerStatus::kInterrupted, "interrupted"},
+    {WorkerStatus::kUnfinished, "unfinished"},
+};
+
+}  // namespace
+
+const char* workerStatusName(WorkerStatus status) {
+  for (const auto& [value, name] : kWorkerStatusNames) {
+    if (value == status) return name;
   }
+  return "unknown";
+}
+
+std::optional<WorkerStatus> parseWorkerStatus(const std::string& name) {
+  for (const auto& [value, spelled] : kWorkerStatusNames) {
+    if (name == spelled) return value;
+  }
+  return std::nullopt;
 }
 
 std::string WorkerOutcome::text() const {
-  std::string text = status;
+  std::string text = workerStatusName(status);
   if (!signal_name.empty()) text += " (" + signal_name + ")";
-  if (status == "failed") text += " (exit " + std::to_string(exit_code) + ")";
+  if (status == WorkerStatus::kFailed) text += " (exit " + std::to_string(exit_code) + ")";
   return text;
 }
 
@@ -49,7 +57,7 @@ Json resultToJson(const CombinationResult& r) {
   Json json = {{"collidoscope_combination", 1},
                {"combination", combinationToJson(r.combination)},
                {"outcome",
-                {{"status", r.outcome.status},
+                {{"status", workerStatusName(r.outcome.status)},
                  {"exit_code", r.outcome.exit_code},
                  {"signal", r.outcome.signal},
                  {"signal_name", r.outcome.signal_name},
@@ -76,7 +84,10 @@ Result<CombinationResult> resultFromJson(const Json& json, const std::string& la
     if (!combination.ok()) return bad(combination.status().message());
     r.combination = std::move(combination).value();
     const Json& o = json.at("outcome");
-    r.outcome.status = o.at("status").get<std::string>();
+    const std::string status = o.at("status").get<std::string>();
+    const std::optional<WorkerStatus> parsed = parseWorkerStatus(status);
+    if (!parsed) return bad("/outcome/status: unknown worker status \"" + status + "\"");
+    r.outcome.status = *parsed;
     r.outcome.exit_code = o.at("exit_code").get<int>();
     r.outcome.signal = o.at("signal").get<int>();
     r.outcome.signal_name = o.at("signal_name").get<std::string>();
@@ -107,47 +118,6 @@ Result<CombinationResult> resultFromJson(const Json& json, const std::string& la
 // temporary's name is unique to the process and the call, so two writers of one path never share
 // it (one's rename would publish the other's half-written text), also from processes on other
 // machines that share the folder (the shards of a study on a cluster); a failed write removes it.
-Status writeFileAtomically(const std::string& path, const std::string& text) {
-  static std::atomic<unsigned long> serial{0};
-  static const std::string host = [] {
-    char name[256] = {};
-    return ::gethostname(name, sizeof(name) - 1) == 0 ? std::string(name) : std::string("host");
-  }();
-  const std::string temporary = path + ".partial." + host + "." + std::to_string(::getpid()) + "." +
-                                std::to_string(serial.fetch_add(1));
-  const auto failed = [&](const std::string& what, int error) {
-    ::unlink(temporary.c_str());
-    return Status(StatusCode::kInvalidArgument, what + ": " + std::strerror(error));
-  };
-  const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (fd < 0) {
-    return Status(StatusCode::kInvalidArgument,
-                  temporary + ": cannot be written: " + std::strerror(errno));
-  }
-  for (std::size_t done = 0; done < text.size();) {
-    const ::ssize_t n = ::write(fd, text.data() + done, text.size() - done);
-    if (n < 0 && errno == EINTR) continue;
-    if (n < 0) {
-      const int error = errno;
-      ::close(fd);
-      return failed(temporary + ": cannot be written", error);
-    }
-    done += static_cast<std::size_t>(n);
-  }
-  // Without this, a crash of the machine soon after the rename could leave the new name on a
-  // file whose data never reached the disk (an empty result that would stop --resume).
-  if (::fdatasync(fd) != 0) {
-    const int error = errno;
-    ::close(fd);
-    return failed(temporary + ": cannot be flushed to disk", error);
-  }
-  if (::close(fd) != 0) return failed(temporary + ": cannot be written", errno);
-  if (::rename(temporary.c_str(), path.c_str()) != 0) {
-    return failed(path + ": cannot be replaced", errno);
-  }
-  return Status();
-}
-
 Status ResultStore::prepare() const {
   std::error_code ec;
   for (const char* sub : {"results", "logs", "scratch"}) {
@@ -176,7 +146,7 @@ bool ResultStore::has(const std::string& id) const {
 }
 
 Status ResultStore::write(const CombinationResult& result) const {
-  return writeFileAtomically(
+  return io::writeFileAtomically(
       resultPath(result.combination.id),
       resultToJson(result).dump(1, ' ', false, Json::error_handler_t::replace));
 }
@@ -199,7 +169,7 @@ Result<std::vector<CombinationResult>> ResultStore::readAll() const {
       rank.emplace(plan.value()[i].id, i);
   }
   for (const std::string& file : files) {
-    Result<Json> json = readJsonFile(file);
+    Result<Json> json = io::readJsonFile(file);
     if (!json.ok()) return json.status();
     Result<CombinationResult> result = resultFromJson(json.value(), file);
     if (!result.ok()) return result.status();
@@ -226,19 +196,19 @@ Status ResultStore::writePlan(const std::vector<Combination>& plan,
   Json list = Json::array();
   for (const Combination& c : plan)
     list.push_back(combinationToJson(c));
-  return writeFileAtomically(planPath(),
-                             Json{{"collidoscope_plan", 1},
-                                  {"order", {{"rounds", order.rounds}, {"seed", order.seed}}},
-                                  {"combinations", list},
-                                  {"not_applicable", notApplicableToJson(not_applicable)}}
-                                 .dump(1));
+  return io::writeFileAtomically(planPath(),
+                                 Json{{"collidoscope_plan", 1},
+                                      {"order", {{"rounds", order.rounds}, {"seed", order.seed}}},
+                                      {"combinations", list},
+                                      {"not_applicable", notApplicableToJson(not_applicable)}}
+                                     .dump(1));
 }
 
 Result<std::optional<Json>> ResultStore::readPlanJson() const {
   const std::string path = planPath();
   std::error_code ec;
   if (!fs::exists(path, ec)) return std::optional<Json>();
-  Result<Json> json = readJsonFile(path);
+  Result<Json> json = io::readJsonFile(path);
   if (!json.ok()) return json.status();
   return std::optional<Json>(std::move(json).value());
 }

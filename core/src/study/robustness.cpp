@@ -82,9 +82,9 @@ Json nullable(const std::optional<double>& value) {
 // "7.1% (3/42)", or the status where nothing was answered; a trailing "+n failed" when some
 // queries of a measured cell have no answer.
 std::string rateText(const RobustnessAnswers& a) {
-  const std::string status = a.status();
-  if (status != "measured")
-    return status == "failed" ? "failed (" + std::to_string(a.failed) + ")" : status;
+  const AnswersStatus status = a.status();
+  if (status == AnswersStatus::kFailed) return "failed (" + std::to_string(a.failed) + ")";
+  if (status != AnswersStatus::kMeasured) return answersStatusName(status);
   std::string text = formatNumber("%.1f%%", 100.0 * *a.wrongRate()) + " (" +
                      std::to_string(a.wrong) + "/" + std::to_string(a.answered) + ")";
   if (a.failed != 0) text += " +" + std::to_string(a.failed) + " failed";
@@ -96,7 +96,7 @@ std::string shareText(const std::optional<double>& value) {
 }
 
 Json answersJson(const RobustnessAnswers& a, bool pairs) {
-  Json json = {{"status", a.status()},
+  Json json = {{"status", answersStatusName(a.status())},
                {"answered", a.answered},
                {"wrong", a.wrong},
                {"wrong_rate", nullable(a.wrongRate())},
@@ -198,11 +198,25 @@ std::optional<double> RobustnessAnswers::extraShare() const {
   return share(extra_pairs, reported_pairs);
 }
 
-std::string RobustnessAnswers::status() const {
-  if (answered != 0) return "measured";
-  if (failed != 0) return "failed";
-  if (unsupported != 0) return "unsupported";
+const char* answersStatusName(AnswersStatus status) {
+  switch (status) {
+    case AnswersStatus::kMeasured:
+      return "measured";
+    case AnswersStatus::kUnsupported:
+      return "unsupported";
+    case AnswersStatus::kFailed:
+      return "failed";
+    case AnswersStatus::kNone:
+      return "none";
+  }
   return "none";
+}
+
+AnswersStatus RobustnessAnswers::status() const {
+  if (answered != 0) return AnswersStatus::kMeasured;
+  if (failed != 0) return AnswersStatus::kFailed;
+  if (unsupported != 0) return AnswersStatus::kUnsupported;
+  return AnswersStatus::kNone;
 }
 
 std::vector<RobustnessCell> robustnessMatrix(const std::vector<CombinationResult>& results) {
@@ -237,11 +251,7 @@ std::vector<RobustnessCell> robustnessMatrix(const std::vector<CombinationResult
     }
     RobustnessCell& cell = cells[found->second];
     if (!r.outcome.ok()) {
-      std::string why = r.outcome.status;
-      if (!r.outcome.signal_name.empty()) why += " (" + r.outcome.signal_name + ")";
-      if (r.outcome.status == "failed")
-        why += " (exit " + std::to_string(r.outcome.exit_code) + ")";
-      cell.worker_failures.push_back(c.scene_name + ": " + why);
+      cell.worker_failures.push_back(c.scene_name + ": " + r.outcome.text());
       const auto known = scene_cases.find(scene_key(c));
       const std::size_t lost = known == scene_cases.end() ? 0 : known->second;
       cell.cases += lost;
@@ -330,7 +340,7 @@ std::string robustnessText(const std::vector<RobustnessCell>& cells) {
   matrix("Wrong all-pairs answers (share of cases whose pair set differs from the oracle's):",
          Answers::kAllPairs);
   const bool distances = std::any_of(cells.begin(), cells.end(), [](const RobustnessCell& cell) {
-    return cell.distance.status() != "none";
+    return cell.distance.status() != AnswersStatus::kNone;
   });
   if (distances) {
     out << "\n";
@@ -349,18 +359,20 @@ std::string robustnessText(const std::vector<RobustnessCell>& cells) {
   for (const RobustnessCell& cell : cells) {
     const RobustnessAnswers& b = cell.boolean;
     const RobustnessAnswers& p = cell.all_pairs;
-    const bool pairs_measured = p.status() == "measured";
-    rows.push_back({cell.setting, cell.category, std::to_string(cell.cases),
-                    b.status() == "measured" ? std::to_string(b.wrong) : b.status(),
+    // A count where answers were checked, else the status.
+    const auto count = [](const RobustnessAnswers& a, std::size_t n) -> std::string {
+      return a.status() == AnswersStatus::kMeasured ? std::to_string(n)
+                                                    : answersStatusName(a.status());
+    };
+    const bool pairs_measured = p.status() == AnswersStatus::kMeasured;
+    rows.push_back({cell.setting, cell.category, std::to_string(cell.cases), count(b, b.wrong),
                     std::to_string(b.false_negatives), std::to_string(b.false_positives),
-                    pairs_measured ? std::to_string(p.wrong) : p.status(),
-                    pairs_measured ? std::to_string(p.true_pairs) : "-",
+                    count(p, p.wrong), pairs_measured ? std::to_string(p.true_pairs) : "-",
                     pairs_measured ? std::to_string(p.missed_pairs) : "-",
                     pairs_measured ? shareText(p.missedShare()) : "-",
                     pairs_measured ? std::to_string(p.extra_pairs) : "-",
                     pairs_measured ? shareText(p.extraShare()) : "-",
-                    cell.distance.status() == "measured" ? std::to_string(cell.distance.wrong)
-                                                         : cell.distance.status(),
+                    count(cell.distance, cell.distance.wrong),
                     std::to_string(b.invalid_pairs + p.invalid_pairs),
                     std::to_string(b.failed + p.failed + cell.distance.failed)});
     for (const std::string& f : cell.worker_failures)

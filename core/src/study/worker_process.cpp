@@ -97,7 +97,7 @@ WorkerOutcome runWorkerProcess(const WorkerLaunch& launch) {
   WorkerOutcome outcome;
   int pipe_fds[2];
   if (pipe2(pipe_fds, O_CLOEXEC) != 0) {
-    outcome.status = "failed";
+    outcome.status = WorkerStatus::kFailed;
     outcome.log_tail = std::string("cannot create a pipe: ") + std::strerror(errno);
     return outcome;
   }
@@ -107,7 +107,7 @@ WorkerOutcome runWorkerProcess(const WorkerLaunch& launch) {
   if (pid < 0) {
     close(pipe_fds[0]);
     close(pipe_fds[1]);
-    outcome.status = "failed";
+    outcome.status = WorkerStatus::kFailed;
     outcome.log_tail = std::string("cannot fork: ") + std::strerror(errno);
     return outcome;
   }
@@ -165,13 +165,13 @@ WorkerOutcome runWorkerProcess(const WorkerLaunch& launch) {
     outcome.signal_name = signalName(outcome.signal);
   }
   if (interrupted) {
-    outcome.status = "interrupted";
+    outcome.status = WorkerStatus::kInterrupted;
   } else if (timed_out) {
-    outcome.status = "timeout";
+    outcome.status = WorkerStatus::kTimeout;
   } else if (outcome.signal != 0) {
-    outcome.status = "crashed";
+    outcome.status = WorkerStatus::kCrashed;
   } else if (outcome.exit_code != 0) {
-    outcome.status = "failed";
+    outcome.status = WorkerStatus::kFailed;
   }
   if (!outcome.ok()) outcome.log_tail = fileTail(launch.log_path, 4000);
   return outcome;

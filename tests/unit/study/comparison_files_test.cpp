@@ -30,7 +30,7 @@ TEST(ComparisonDocuments, SeedRowsThenEveryBackendsRowsAndTheWorkersThatDied) {
                         {"reference", {{"lower", 0.3}, {"upper", 0.3}}},
                         {"backends", Json::array({{{"backend", "obbtree"}, {"status", "ok"}}})}};
   CombinationResult crashed = part(InputKind::kSurfaces, "fcl:rss", Json());
-  crashed.outcome.status = "crashed";
+  crashed.outcome.status = WorkerStatus::kCrashed;
   crashed.outcome.signal_name = "SIGSEGV";
   crashed.outcome.log_tail = "building\nfcl: bad\n";
   CombinationResult scene = part(InputKind::kScene, "obbtree", Json());
@@ -53,14 +53,14 @@ TEST(ComparisonDocuments, SeedRowsThenEveryBackendsRowsAndTheWorkersThatDied) {
 
 TEST(ComparisonDocuments, ASeedThatDiedIsAProblemAndTheBackendsStillShow) {
   CombinationResult seed = part(InputKind::kFrep, kSeedMethod, Json());
-  seed.outcome.status = "timeout";
+  seed.outcome.status = WorkerStatus::kTimeout;
   const Json ode = {{"collidoscope_frep", 1},
                     {"name", "blades"},
                     {"precision", 0.001},
                     {"seed", Json::array()},
                     {"comparators", Json::array({{{"backend", "ode"}, {"status", "ok"}}})}};
   CombinationResult failed = part(InputKind::kFrep, "bullet", Json());
-  failed.outcome.status = "failed";
+  failed.outcome.status = WorkerStatus::kFailed;
   failed.outcome.exit_code = 2;
 
   const std::map<std::string, Json> documents =

@@ -16,7 +16,7 @@ namespace collido::study {
 namespace {
 
 CombinationResult finished(const std::string& backend, double wall_s,
-                           const std::string& status = "ok") {
+                           WorkerStatus status = WorkerStatus::kOk) {
   CombinationResult r;
   r.combination = testdata::combination(backend);
   r.outcome.status = status;
@@ -26,8 +26,9 @@ CombinationResult finished(const std::string& backend, double wall_s,
 
 TEST(ExpectedTime, TimesRoundTripAndSkipRunsThatDidNotFinish) {
   const std::string dir = test::makeTempDirectory("expected_time");
-  test::writeFile(dir + "/times.json", timesJson({finished("obbtree", 2.5), finished("ode", 4.0),
-                                                  finished("bullet", 99.0, "crashed")}));
+  test::writeFile(dir + "/times.json",
+                  timesJson({finished("obbtree", 2.5), finished("ode", 4.0),
+                             finished("bullet", 99.0, WorkerStatus::kCrashed)}));
   const Result<CombinationTimes> times = loadCombinationTimes(dir);  // the folder finds its file
   ASSERT_TRUE(times.ok()) << times.status().message();
   EXPECT_EQ(times.value().seconds.size(), 2u);

@@ -31,7 +31,7 @@ std::vector<std::string> linesOf(const std::string& text) {
 /// ok (obbtree, declared), ok (obbtree, every), crashed (fcl:obb), failed (bullet, exit 3).
 std::vector<CombinationResult> mixedResults() {
   CombinationResult failed = testdata::crashedResult(testdata::combination("bullet"));
-  failed.outcome.status = "failed";
+  failed.outcome.status = WorkerStatus::kFailed;
   failed.outcome.signal = 0;
   failed.outcome.signal_name.clear();
   failed.outcome.exit_code = 3;

@@ -16,6 +16,7 @@
 
 #include <gtest/gtest.h>
 
+#include <collido/io/files.h>
 #include <collido/runner/measurement_json.h>
 
 #include "study_test_data.h"
@@ -179,7 +180,7 @@ TEST(ResultJson, RoundTripsOutcomeMeasurementsAndProblems) {
   const Result<CombinationResult> back = resultFromJson(resultToJson(r), "label.json");
   ASSERT_TRUE(back.ok()) << back.status().message();
   EXPECT_EQ(back.value().combination.id, r.combination.id);
-  EXPECT_EQ(back.value().outcome.status, "ok");
+  EXPECT_EQ(back.value().outcome.status, WorkerStatus::kOk);
   EXPECT_EQ(back.value().outcome.wall_s, r.outcome.wall_s);
   EXPECT_EQ(back.value().outcome.peak_rss_bytes, r.outcome.peak_rss_bytes);
   EXPECT_EQ(back.value().backend_rss_bytes, r.backend_rss_bytes);
@@ -192,7 +193,7 @@ TEST(ResultJson, RoundTripsOutcomeMeasurementsAndProblems) {
   const CombinationResult crashed = testdata::crashedResult(testdata::combination("fcl:obb"));
   const Result<CombinationResult> crash = resultFromJson(resultToJson(crashed), "label.json");
   ASSERT_TRUE(crash.ok()) << crash.status().message();
-  EXPECT_EQ(crash.value().outcome.status, "crashed");
+  EXPECT_EQ(crash.value().outcome.status, WorkerStatus::kCrashed);
   EXPECT_EQ(crash.value().outcome.signal, crashed.outcome.signal);
   EXPECT_EQ(crash.value().outcome.signal_name, "SIGSEGV");
   EXPECT_EQ(crash.value().outcome.log_tail, crashed.outcome.log_tail);
@@ -219,16 +220,22 @@ TEST(ResultJson, ErrorsNameTheLabel) {
   nlohmann::json bad_combination = good;
   bad_combination["combination"]["needs"] = "some";
   EXPECT_FALSE(resultFromJson(bad_combination, "r/d.json").ok());
+  // "r/e.json: /outcome/status: unknown worker status \"exploded\""
+  nlohmann::json bad_status = good;
+  bad_status["outcome"]["status"] = "exploded";
+  const Result<CombinationResult> e = resultFromJson(bad_status, "r/e.json");
+  ASSERT_FALSE(e.ok());
+  EXPECT_EQ(e.status().message(), "r/e.json: /outcome/status: unknown worker status \"exploded\"");
 }
 
 TEST(WriteFileAtomically, ReplacesTheFileAndLeavesNoPartialFile) {
   const std::string dir = test::makeTempDirectory("atomic");
   const std::string path = dir + "/out.json";
-  ASSERT_TRUE(writeFileAtomically(path, "first").ok());
+  ASSERT_TRUE(io::writeFileAtomically(path, "first").ok());
   EXPECT_EQ(readText(path), "first");
-  ASSERT_TRUE(writeFileAtomically(path, "second, longer").ok());
+  ASSERT_TRUE(io::writeFileAtomically(path, "second, longer").ok());
   EXPECT_EQ(readText(path), "second, longer");
-  ASSERT_TRUE(writeFileAtomically(path, "").ok());
+  ASSERT_TRUE(io::writeFileAtomically(path, "").ok());
   EXPECT_EQ(readText(path), "");
   EXPECT_EQ(filesIn(dir), (std::vector<std::string>{"out.json"}));
   EXPECT_FALSE(fs::exists(path + ".partial"));
@@ -258,9 +265,9 @@ int runWithFileSizeLimit(rlim_t limit_bytes, bool killed_at_limit,
 TEST(WriteFileAtomically, AFailedWriteLeavesThePreviousFileAndNoTemporary) {
   const std::string dir = test::makeTempDirectory("atomic_full");
   const std::string path = dir + "/out.json";
-  ASSERT_TRUE(writeFileAtomically(path, "previous").ok());
+  ASSERT_TRUE(io::writeFileAtomically(path, "previous").ok());
   const int status = runWithFileSizeLimit(4096, false, [&] {
-    const Status s = writeFileAtomically(path, std::string(64 * 1024, 'x'));
+    const Status s = io::writeFileAtomically(path, std::string(64 * 1024, 'x'));
     std::ofstream(dir + "/message.txt") << s.message();
     return s.ok() ? 0 : 1;
   });
@@ -278,9 +285,9 @@ TEST(WriteFileAtomically, AFailedWriteLeavesThePreviousFileAndNoTemporary) {
 TEST(WriteFileAtomically, AWriterKilledMidWriteLeavesThePreviousFile) {
   const std::string dir = test::makeTempDirectory("atomic_killed");
   const std::string path = dir + "/out.json";
-  ASSERT_TRUE(writeFileAtomically(path, "previous").ok());
+  ASSERT_TRUE(io::writeFileAtomically(path, "previous").ok());
   const int status = runWithFileSizeLimit(4096, true, [&] {
-    return writeFileAtomically(path, std::string(64 * 1024, 'x')).ok() ? 0 : 1;
+    return io::writeFileAtomically(path, std::string(64 * 1024, 'x')).ok() ? 0 : 1;
   });
   ASSERT_TRUE(WIFSIGNALED(status)) << status;
   EXPECT_EQ(WTERMSIG(status), SIGXFSZ);
@@ -315,7 +322,7 @@ TEST(ResultStore, AStudyKilledWhileWritingAResultStoresNothingHalfWritten) {
 TEST(WriteFileAtomically, FailsWithTheFileNamedWhenTheFolderIsMissing) {
   const std::string dir = test::makeTempDirectory("atomic_missing");
   const std::string path = dir + "/no/such/folder/out.json";
-  const Status s = writeFileAtomically(path, "text");
+  const Status s = io::writeFileAtomically(path, "text");
   ASSERT_FALSE(s.ok());
   EXPECT_NE(s.message().find(path), std::string::npos) << s.message();
   EXPECT_TRUE(filesIn(dir).empty());
@@ -361,9 +368,9 @@ TEST(ResultStore, WritesHasAndReadsBackInPlanOrder) {
   ASSERT_TRUE(all.ok()) << all.status().message();
   ASSERT_EQ(all.value().size(), 3u);
   EXPECT_EQ(all.value()[0].combination.id, plan[0].id);
-  EXPECT_EQ(all.value()[0].outcome.status, "crashed");
+  EXPECT_EQ(all.value()[0].outcome.status, WorkerStatus::kCrashed);
   EXPECT_EQ(all.value()[1].combination.id, plan[2].id);
-  EXPECT_EQ(all.value()[1].outcome.status, "ok");
+  EXPECT_EQ(all.value()[1].outcome.status, WorkerStatus::kOk);
   EXPECT_EQ(all.value()[1].measurements.size(), 3u);
   EXPECT_EQ(all.value()[2].combination.id, stray.id);
 }

@@ -110,7 +110,7 @@ TEST(RobustnessMatrix, OneCellPerSettingAndCategory) {
 
 TEST(RobustnessMatrix, ExactBackendHasZeroRatesNotEmptyOnes) {
   const RobustnessCell exact = robustnessMatrix(handMade())[0];
-  EXPECT_EQ(exact.boolean.status(), "measured");
+  EXPECT_EQ(exact.boolean.status(), AnswersStatus::kMeasured);
   EXPECT_EQ(exact.boolean.answered, 3u);
   EXPECT_EQ(exact.boolean.wrong, 0u);
   ASSERT_TRUE(exact.boolean.wrongRate());
@@ -142,8 +142,8 @@ TEST(RobustnessMatrix, CountsWrongAnswersMissedAndExtraPairs) {
 
 TEST(RobustnessMatrix, UnsupportedIsNeverZeroErrors) {
   const RobustnessCell ode = robustnessMatrix(handMade())[3];
-  EXPECT_EQ(ode.boolean.status(), "measured");
-  EXPECT_EQ(ode.all_pairs.status(), "unsupported");
+  EXPECT_EQ(ode.boolean.status(), AnswersStatus::kMeasured);
+  EXPECT_EQ(ode.all_pairs.status(), AnswersStatus::kUnsupported);
   EXPECT_EQ(ode.all_pairs.unsupported, 3u);
   EXPECT_EQ(ode.all_pairs.answered, 0u);
   EXPECT_FALSE(ode.all_pairs.wrongRate());
@@ -155,8 +155,8 @@ TEST(RobustnessMatrix, UnsupportedIsNeverZeroErrors) {
 
 TEST(RobustnessMatrix, CrashedWorkerCountsItsCasesAsUnanswered) {
   const RobustnessCell crashed = robustnessMatrix(handMade())[4];
-  EXPECT_EQ(crashed.boolean.status(), "failed");
-  EXPECT_EQ(crashed.all_pairs.status(), "failed");
+  EXPECT_EQ(crashed.boolean.status(), AnswersStatus::kFailed);
+  EXPECT_EQ(crashed.all_pairs.status(), AnswersStatus::kFailed);
   EXPECT_EQ(crashed.boolean.failed, 3u);
   EXPECT_FALSE(crashed.boolean.wrongRate());
   ASSERT_EQ(crashed.worker_failures.size(), 1u);
@@ -319,7 +319,7 @@ TEST(RobustnessMatrix, DistanceAnswersAreHeldToTheExactDistance) {
   EXPECT_EQ(d.wrong, 3u);
   EXPECT_EQ(d.false_positives, 1u);  // 0 for meshes apart
   EXPECT_EQ(d.false_negatives, 1u);  // positive for touching ones
-  EXPECT_EQ(cells[0].all_pairs.status(), "none");
+  EXPECT_EQ(cells[0].all_pairs.status(), AnswersStatus::kNone);
   const std::string text = robustnessText(cells);
   EXPECT_NE(text.find("Wrong distance answers"), std::string::npos) << text;
   EXPECT_NE(text.find("60.0% (3/5)"), std::string::npos) << text;

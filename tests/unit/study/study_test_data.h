@@ -124,7 +124,7 @@ inline CombinationResult okResult(const Combination& c) {
 inline CombinationResult crashedResult(const Combination& c) {
   CombinationResult r;
   r.combination = c;
-  r.outcome.status = "crashed";
+  r.outcome.status = WorkerStatus::kCrashed;
   r.outcome.signal = SIGSEGV;
   r.outcome.signal_name = "SIGSEGV";
   r.outcome.wall_s = 0.1;

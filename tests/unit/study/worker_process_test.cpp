@@ -53,7 +53,7 @@ bool processEnded(pid_t pid) {
 TEST(RunWorkerProcess, CleanExitIsOk) {
   WorkerLaunch launch = shell("echo 'to stderr' >&2; exit 0", "worker_ok");
   const WorkerOutcome outcome = runWorkerProcess(launch);
-  EXPECT_EQ(outcome.status, "ok");
+  EXPECT_EQ(outcome.status, WorkerStatus::kOk);
   EXPECT_TRUE(outcome.ok());
   EXPECT_EQ(outcome.exit_code, 0);
   EXPECT_EQ(outcome.signal, 0);
@@ -68,7 +68,7 @@ TEST(RunWorkerProcess, CleanExitIsOk) {
 TEST(RunWorkerProcess, NonZeroExitIsFailedWithItsCodeAndLog) {
   const WorkerOutcome outcome =
       runWorkerProcess(shell("echo 'error: the scene is bad' >&2; exit 3", "worker_exit"));
-  EXPECT_EQ(outcome.status, "failed");
+  EXPECT_EQ(outcome.status, WorkerStatus::kFailed);
   EXPECT_FALSE(outcome.ok());
   EXPECT_EQ(outcome.exit_code, 3);
   EXPECT_EQ(outcome.signal, 0);
@@ -81,7 +81,7 @@ TEST(RunWorkerProcess, SignalDeathIsCrashedWithTheSignalNamed) {
     SCOPED_TRACE(name);
     const WorkerOutcome outcome = runWorkerProcess(
         shell("echo 'building torus_a' >&2; kill -" + name + " $$", "worker_signal"));
-    EXPECT_EQ(outcome.status, "crashed");
+    EXPECT_EQ(outcome.status, WorkerStatus::kCrashed);
     EXPECT_EQ(outcome.signal, number);
     EXPECT_EQ(outcome.signal_name, "SIG" + name);
     EXPECT_EQ(outcome.exit_code, 0);
@@ -102,7 +102,7 @@ TEST(RunWorkerProcess, TimeoutKillsTheWorkerAndEverythingItStarted) {
   const Clock::time_point start = Clock::now();
   const WorkerOutcome outcome = runWorkerProcess(launch);
   const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
-  EXPECT_EQ(outcome.status, "timeout");
+  EXPECT_EQ(outcome.status, WorkerStatus::kTimeout);
   EXPECT_EQ(outcome.signal, SIGKILL);
   EXPECT_GE(outcome.wall_s, 0.5);
   EXPECT_LT(elapsed, 5.0);
@@ -132,7 +132,7 @@ TEST(RunWorkerProcess, ProgressLinesReachTheCallback) {
     seen.emplace_back(done, total);
   };
   const WorkerOutcome outcome = runWorkerProcess(launch);
-  EXPECT_EQ(outcome.status, "ok");
+  EXPECT_EQ(outcome.status, WorkerStatus::kOk);
   // A line split across writes is read whole; an unfinished last line is not a report.
   EXPECT_EQ(seen, (std::vector<std::pair<std::size_t, std::size_t>>{{2, 5}, {3, 5}, {5, 5}}));
 }
@@ -142,7 +142,7 @@ TEST(RunWorkerProcess, EnvironmentIsAddedToOurs) {
       shell("echo \"$COLLIDO_STUDY_TEST_VALUE:${HOME:+home}\" >&2; exit 1", "worker_env");
   launch.environment = {"COLLIDO_STUDY_TEST_VALUE=a=b c", "NOT AN ASSIGNMENT"};
   const WorkerOutcome outcome = runWorkerProcess(launch);
-  EXPECT_EQ(outcome.status, "failed");
+  EXPECT_EQ(outcome.status, WorkerStatus::kFailed);
   const bool has_home = std::getenv("HOME") != nullptr && *std::getenv("HOME") != '\0';
   EXPECT_EQ(outcome.log_tail, std::string("a=b c:") + (has_home ? "home" : "") + "\n");
 }
@@ -152,7 +152,7 @@ TEST(RunWorkerProcess, MissingExecutableIsFailed127) {
   launch.executable = "/no/such/collido";
   launch.arguments.clear();
   const WorkerOutcome outcome = runWorkerProcess(launch);
-  EXPECT_EQ(outcome.status, "failed");
+  EXPECT_EQ(outcome.status, WorkerStatus::kFailed);
   EXPECT_EQ(outcome.exit_code, 127);
   EXPECT_NE(outcome.log_tail.find("cannot start /no/such/collido"), std::string::npos)
       << outcome.log_tail;
@@ -167,7 +167,7 @@ TEST(RunWorkerProcess, StopRequestKillsTheWorkerAsInterrupted) {
     if (Clock::now() - start > std::chrono::milliseconds(300)) stop.store(true);
   };
   const WorkerOutcome outcome = runWorkerProcess(launch);
-  EXPECT_EQ(outcome.status, "interrupted");
+  EXPECT_EQ(outcome.status, WorkerStatus::kInterrupted);
   EXPECT_EQ(outcome.signal, SIGKILL);
   EXPECT_LT(outcome.wall_s, 5.0);
 }
@@ -206,7 +206,7 @@ TEST(RunWorkerProcess, ExitBeforeTheTimeoutIsNotATimeout) {
   WorkerLaunch launch = shell("sleep 0.2; exit 0", "worker_quick");
   launch.timeout_s = 20.0;
   const WorkerOutcome outcome = runWorkerProcess(launch);
-  EXPECT_EQ(outcome.status, "ok");
+  EXPECT_EQ(outcome.status, WorkerStatus::kOk);
   EXPECT_GE(outcome.wall_s, 0.2);
   EXPECT_LT(outcome.wall_s, 10.0);
 }

@@ -121,7 +121,7 @@ TEST(RunCombination, MeasuresEveryQueryAgainstTheOracle) {
   const Result<CombinationResult> result = runCombination(request);
   ASSERT_TRUE(result.ok()) << result.status().message();
   EXPECT_EQ(result.value().combination.id, "linked~test");
-  EXPECT_EQ(result.value().outcome.status, "ok");
+  EXPECT_EQ(result.value().outcome.status, WorkerStatus::kOk);
   ASSERT_EQ(result.value().measurements.size(), 2u);
   for (const QueryMeasurement& m : result.value().measurements) {
     SCOPED_TRACE(m.query);

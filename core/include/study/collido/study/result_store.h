@@ -14,10 +14,24 @@
 namespace collido::study {
 
 /// How a worker process ended.
+enum class WorkerStatus {
+  kOk,           ///< results written
+  kFailed,       ///< exited non-zero, or could not be started
+  kCrashed,      ///< killed by a signal
+  kTimeout,      ///< killed after the time limit
+  kInterrupted,  ///< stopped because the study was interrupted (SIGINT, SIGTERM)
+  kUnfinished,   ///< exited 0 but no result could be read
+};
+
+/// The status as records and tables spell it: "ok", "failed", "crashed", "timeout",
+/// "interrupted", "unfinished".
+const char* workerStatusName(WorkerStatus status);
+/// The status of that spelling; std::nullopt for any other text.
+std::optional<WorkerStatus> parseWorkerStatus(const std::string& name);
+
+/// How a worker process ended, with what it left for a reader.
 struct WorkerOutcome {
-  /// "ok" (results written), "failed" (exited non-zero), "crashed" (killed by a signal),
-  /// "timeout" (killed after the time limit) or "unfinished" (no result could be read).
-  std::string status = "ok";
+  WorkerStatus status = WorkerStatus::kOk;
   int exit_code = 0;
   int signal = 0;
   std::string signal_name;  ///< "SIGSEGV", ...; empty without a signal
@@ -25,7 +39,7 @@ struct WorkerOutcome {
   std::size_t peak_rss_bytes = 0;  ///< the worker's maximum resident set
   std::string log_tail;            ///< the end of its stderr, for failures
 
-  bool ok() const { return status == "ok"; }
+  bool ok() const { return status == WorkerStatus::kOk; }
   /// How it ended, for people: "ok", "crashed (SIGSEGV)", "failed (exit 2)", "timeout", ...
   std::string text() const;
 };
@@ -50,16 +64,6 @@ struct CombinationResult {
 
 nlohmann::json resultToJson(const CombinationResult& result);
 Result<CombinationResult> resultFromJson(const nlohmann::json& json, const std::string& label);
-
-/// The JSON in the file at `path`, or an error naming the file: it cannot be read, or is not
-/// valid JSON (with the parser's message).
-Result<nlohmann::json> readJsonFile(const std::string& path);
-
-/// Writes `text` to a temporary file beside `path` ("<path>.partial.<pid>.<n>"), flushes it to
-/// disk, then renames it over `path`: a reader, a study killed mid-write or a machine that loses
-/// power sees the previous file or the new one, never half a file. On failure the temporary is
-/// removed and the message names the file and the system's reason.
-Status writeFileAtomically(const std::string& path, const std::string& text);
 
 /// A study's folder: plan.json, results/<id>.json (one per finished combination, written
 /// atomically), logs/<id>.log (each worker's stderr), and the outputs made from the results.

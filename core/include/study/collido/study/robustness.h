@@ -11,6 +11,17 @@
 
 namespace collido::study {
 
+/// What a backend's answers of one kind on a stress category came to.
+enum class AnswersStatus {
+  kMeasured,     ///< some answers checked
+  kUnsupported,  ///< every query skipped: the backend does not answer this kind
+  kFailed,       ///< no answer: queries failed or workers died
+  kNone,         ///< nothing asked
+};
+
+/// "measured", "unsupported", "failed" or "none": as the tables and robustness.json spell it.
+const char* answersStatusName(AnswersStatus status);
+
 /// How one kind of question went for one backend setting on one robustness category, over every
 /// query of that kind in the category's stress scenes (each query one case, one frame).
 struct RobustnessAnswers {
@@ -33,10 +44,7 @@ struct RobustnessAnswers {
   std::optional<double> missedShare() const;
   /// extra / reported pairs; empty without reported pairs.
   std::optional<double> extraShare() const;
-  /// "measured" (some answers checked), "unsupported" (every query skipped: the backend does not
-  /// answer this kind), "failed" (no answer: queries failed or workers died) or "none" (nothing
-  /// asked).
-  std::string status() const;
+  AnswersStatus status() const;
 };
 
 /// How far a distance answer of the stress suite may be from the exact distance, relative to it.
