@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Writes docs/results/default_study.md from one finished default study (tools/study.sh): the run
+# Writes docs/results/default_study.md, and the README's headline table between its markers, from
+# one finished default study (tools/study.sh): the run
 # it came from (date, commit, machine, wall time when given), then table.txt's summary sections
 # (what to pick, the OBB tree against the field, needs, contacts, deforming and tracked scenes) as
 # the study printed them. A new run replaces the page whole; nobody edits its tables by hand.
@@ -70,3 +71,20 @@ mkdir -p "$(dirname "$out")"
   done
 } > "$out"
 echo "$out"
+
+# The README's headline table, between its markers, from the same run.
+headline=$(python3 tools/headline_table.py "$study/summary.json")
+stamp="From the published study (\`tools/study.sh\`, finished $(date -u -r "$study/.complete" '+%Y-%m-%d'), commit ${commit:0:7}, $(nproc) cores); every row of it is in [docs/results/default_study.md](docs/results/default_study.md)."
+HEADLINE="$headline" STAMP="$stamp" python3 - <<'PY'
+import os, re, sys
+path = "README.md"
+text = open(path, encoding="utf-8").read()
+begin = "<!-- headline: written by tools/publish_results.sh; do not edit -->"
+end = "<!-- headline end -->"
+if begin not in text or end not in text:
+    sys.exit(f"error: {path}: the headline markers are missing ({begin} ... {end})")
+block = begin + "\n\n" + os.environ["STAMP"] + "\n\n" + os.environ["HEADLINE"] + "\n\n" + end
+text = text[:text.index(begin)] + block + text[text.index(end) + len(end):]
+open(path, "w", encoding="utf-8").write(text)
+PY
+echo README.md
