@@ -1,6 +1,7 @@
 // Best-first distance between two OBB trees.
 #include <collido/obbtree/distance.h>
 
+#include <collido/obbtree/separating_axis.h>
 #include <collido/obbtree/triangle_intersection.h>
 #include <collido/oracle/distance_oracle.h>
 #include <collido/oracle/triangle_distance.h>
@@ -37,21 +38,19 @@ struct Map {
 double boxPairLowerBound(const Eigen::Matrix3d& r, const Eigen::Vector3d& t,
                          const Eigen::Vector3d& a, const Eigen::Vector3d& b, double slack) {
   const Eigen::Matrix3d abs_r = r.cwiseAbs();
+  const auto apart = [slack](const AxisProjection& axis) {
+    return axis.distance - axis.radius_sum - slack;
+  };
   double gap = 0.0;
   for (int i = 0; i < 3; ++i)
-    gap = std::max(gap, std::abs(t[i]) - a[i] - abs_r.row(i).dot(b) - slack);
+    gap = std::max(gap, apart(faceAxisOfA(abs_r, t, a, b, i)));
   for (int j = 0; j < 3; ++j)
-    gap = std::max(gap, std::abs(t.dot(r.col(j))) - abs_r.col(j).dot(a) - b[j] - slack);
+    gap = std::max(gap, apart(faceAxisOfB(r, abs_r, t, a, b, j)));
   for (int i = 0; i < 3; ++i) {
     const int i1 = (i + 1) % 3;
     const int i2 = (i + 2) % 3;
     for (int j = 0; j < 3; ++j) {
-      const int j1 = (j + 1) % 3;
-      const int j2 = (j + 2) % 3;
-      const double distance = std::abs(t[i2] * r(i1, j) - t[i1] * r(i2, j));
-      const double radius =
-          a[i1] * abs_r(i2, j) + a[i2] * abs_r(i1, j) + b[j1] * abs_r(i, j2) + b[j2] * abs_r(i, j1);
-      const double separation = distance - radius - slack;
+      const double separation = apart(edgeAxis(r, abs_r, t, a, b, i, j));
       if (!(separation > 0.0)) continue;
       // Axis e_i x B_j has length sqrt(r(i1,j)^2 + r(i2,j)^2) (entries of a rotation: no over-
       // or underflow that matters, and the final widening covers the roundings); nearly

@@ -18,6 +18,42 @@ struct SeparationTolerance {
   double inflation = 0.0;
 };
 
+/// One candidate axis of the separating-axis test, B given in A's box frame (see boxesOverlap):
+/// the distance of the centres along it and the sum of the boxes' radii, both scaled by the axis's
+/// length (1 for a face normal, the sine of the edges' angle for an edge cross product). The
+/// boxes are apart along it by distance - radius_sum, divided by that length.
+struct AxisProjection {
+  double distance;
+  double radius_sum;
+};
+
+/// A's face normal i. `abs_r`: the rotation's entries' magnitudes.
+inline AxisProjection faceAxisOfA(const Eigen::Matrix3d& abs_r, const Eigen::Vector3d& t,
+                                  const Eigen::Vector3d& a, const Eigen::Vector3d& b, int i) {
+  return {std::abs(t[i]), a[i] + abs_r.row(i).dot(b)};
+}
+
+/// B's face normal j.
+inline AxisProjection faceAxisOfB(const Eigen::Matrix3d& r, const Eigen::Matrix3d& abs_r,
+                                  const Eigen::Vector3d& t, const Eigen::Vector3d& a,
+                                  const Eigen::Vector3d& b, int j) {
+  return {std::abs(t.dot(r.col(j))), abs_r.col(j).dot(a) + b[j]};
+}
+
+/// The cross product of A's edge direction i and B's edge direction j, unnormalised: its length
+/// is sqrt(r(i1, j)^2 + r(i2, j)^2).
+inline AxisProjection edgeAxis(const Eigen::Matrix3d& r, const Eigen::Matrix3d& abs_r,
+                               const Eigen::Vector3d& t, const Eigen::Vector3d& a,
+                               const Eigen::Vector3d& b, int i, int j) {
+  const int i1 = (i + 1) % 3;
+  const int i2 = (i + 2) % 3;
+  const int j1 = (j + 1) % 3;
+  const int j2 = (j + 2) % 3;
+  return {
+      std::abs(t[i2] * r(i1, j) - t[i1] * r(i2, j)),
+      a[i1] * abs_r(i2, j) + a[i2] * abs_r(i1, j) + b[j1] * abs_r(i, j2) + b[j2] * abs_r(i, j1)};
+}
+
 /// Separating-axis test of two boxes, B given in A's box frame (Gottschalk, Lin & Manocha 1996;
 /// Ericson, Real-Time Collision Detection, 4.4.1): `rotation` holds B's axes as columns in A's
 /// box frame, `translation` B's centre there, `half_a`/`half_b` the half extents. Tests the 15
@@ -50,30 +86,20 @@ inline bool boxesOverlap(const Eigen::Matrix3d& rotation, const Eigen::Vector3d&
   // 1e-290: relative bounds fail where products are subnormal.
   const double slack = 5.0 * tolerance.axis_error * (t.cwiseAbs().sum() + a.sum() + b.sum()) +
                        tolerance.inflation + 1e-290;
-  const auto separated = [slack](double distance, double radius_sum) {
-    return distance > radius_sum + slack;
+  const auto separated = [slack](const AxisProjection& axis) {
+    return axis.distance > axis.radius_sum + slack;
   };
 
-  // A's face normals.
   for (int i = 0; i < 3; ++i) {
-    if (separated(std::abs(t[i]), a[i] + abs_r.row(i).dot(b))) return false;
+    if (separated(faceAxisOfA(abs_r, t, a, b, i))) return false;
   }
-  // B's face normals.
   for (int j = 0; j < 3; ++j) {
-    if (separated(std::abs(t.dot(r.col(j))), abs_r.col(j).dot(a) + b[j])) return false;
+    if (separated(faceAxisOfB(r, abs_r, t, a, b, j))) return false;
   }
   if (face_axes_only) return true;
-  // Edge cross products A_i x B_j.
   for (int i = 0; i < 3; ++i) {
-    const int i1 = (i + 1) % 3;
-    const int i2 = (i + 2) % 3;
     for (int j = 0; j < 3; ++j) {
-      const int j1 = (j + 1) % 3;
-      const int j2 = (j + 2) % 3;
-      const double distance = std::abs(t[i2] * r(i1, j) - t[i1] * r(i2, j));
-      const double radius =
-          a[i1] * abs_r(i2, j) + a[i2] * abs_r(i1, j) + b[j1] * abs_r(i, j2) + b[j2] * abs_r(i, j1);
-      if (separated(distance, radius)) return false;
+      if (separated(edgeAxis(r, abs_r, t, a, b, i, j))) return false;
     }
   }
   return true;
