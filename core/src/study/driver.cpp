@@ -13,7 +13,6 @@
 #include <fstream>
 #include <map>
 #include <set>
-#include <sstream>
 
 #include <collido/io/files.h>
 #include <collido/mesh/input_file.h>

@@ -3,7 +3,6 @@
 #include <collido/study/expected_time.h>
 
 #include <filesystem>
-#include <fstream>
 #include <numeric>
 #include <sstream>
 

@@ -1,9 +1,7 @@
 #include <collido/study/oracle_store.h>
 
 #include <filesystem>
-#include <fstream>
 #include <iostream>
-#include <sstream>
 
 #include <nlohmann/json.hpp>
 
