@@ -57,7 +57,12 @@ TEST(SceneLimits, EachGeneratorIsChargedItsTriangleCount) {
       {{"generator", "sphere"}, {"slices", 10}, {"stacks", 5}},
       {{"generator", "grid_sheet"}, {"cells_x", 7}, {"cells_y", 3}},
       {{"generator", "gear"}},
-      {{"generator", "station_module"}, {"segments", 12}, {"rings", 2}, {"truss_bays", 2}}};
+      {{"generator", "gear"}, {"teeth", 50}},  // root circle outside the base circle: no feet
+      {{"generator", "station_module"}, {"segments", 12}, {"rings", 2}, {"truss_bays", 2}},
+      {{"generator", "box"}},
+      {{"generator", "cylinder"}, {"segments", 9}},
+      {{"generator", "cylinder"}, {"segments", 9}, {"inner_radius", 0.25}},
+      {{"generator", "flange"}, {"bolt_holes", 5}}};
   for (const Json& shape : shapes) {
     SCOPED_TRACE(shape.dump());
     const Result<Scene> unlimited = parse(sceneWith(shape));

@@ -25,7 +25,7 @@ Status checkCylinder(const CylinderParams& p) {
     return invalid(where + "inner_radius = " + formatNumber(p.inner_radius) +
                    ", must be 0 (solid) or in (0, radius = " + formatNumber(p.radius) + ")");
   }
-  return checkTriangleBudget(where, "segments = " + std::to_string(p.segments), 8.0 * p.segments);
+  return checkTriangleBudget(where, "segments = " + std::to_string(p.segments), triangleCount(p));
 }
 
 // The quad a -> b -> c -> d, counter-clockwise seen from the side it faces, as two triangles.
@@ -109,12 +109,11 @@ Status checkFlange(const FlangeParams& p) {
     }
   }
   if (!status.ok()) return status;
-  const double m = 2.0 * (p.arc_segments + p.radial_segments);
   return checkTriangleBudget(
       where,
       "bolt_holes * (arc_segments + radial_segments) = " + std::to_string(p.bolt_holes) + " * (" +
           std::to_string(p.arc_segments) + " + " + std::to_string(p.radial_segments) + ")",
-      6.0 * n * m + 4.0 * n * p.arc_segments);
+      triangleCount(p));
 }
 
 // Vertex columns of a flange's bottom face (the layout of procedural.h); the top face's vertex
@@ -169,6 +168,15 @@ std::vector<int> sectorOutline(const FlangeParams& p, const FlangeLayout& layout
 }
 
 }  // namespace
+
+double triangleCount(const CylinderParams& params) {
+  return (params.inner_radius > 0.0 ? 8.0 : 4.0) * params.segments;
+}
+
+double triangleCount(const FlangeParams& params) {
+  const double outline = 2.0 * (params.arc_segments + params.radial_segments);
+  return 6.0 * params.bolt_holes * outline + 4.0 * params.bolt_holes * params.arc_segments;
+}
 
 Result<TriangleMesh> makeCylinder(const CylinderParams& params) {
   Status status = checkCylinder(params);

@@ -31,7 +31,7 @@ Status checkTorus(const std::string& where, const TorusParams& p) {
       where,
       "major_segments * minor_segments = " + std::to_string(p.major_segments) + " * " +
           std::to_string(p.minor_segments),
-      2.0 * p.major_segments * p.minor_segments);
+      triangleCount(p));
 }
 
 // ---- shared building blocks ------------------------------------------------------------------
@@ -226,12 +226,11 @@ Status checkGear(const GearParams& p) {
     return invalid(where + "pressure_angle_deg = " + formatNumber(p.pressure_angle_deg) +
                    ", must be in (0, 45)");
   }
-  const double per_tooth = 2.0 * p.flank_samples + 1.0 + p.root_samples + 2.0;
   status = checkTriangleBudget(where,
                                "teeth = " + std::to_string(p.teeth) +
                                    " with flank_samples = " + std::to_string(p.flank_samples) +
                                    " and root_samples = " + std::to_string(p.root_samples),
-                               4.0 * p.teeth * per_tooth);
+                               triangleCount(p));
   if (!status.ok()) return status;
 
   // The outline is a simple star-shaped polygon only if each tooth keeps some thickness at the
@@ -285,14 +284,46 @@ Status checkStationModule(const StationModuleParams& p) {
                    formatNumber(p.length / p.truss_bays) + " long, must be >= radius / 10 = " +
                    formatNumber(p.radius / 10.0) + " (twice the beam thickness)");
   }
-  return checkTriangleBudget(
-      where,
-      "segments * (rings + 1) = " + std::to_string(p.segments) + " * (" + std::to_string(p.rings) +
-          " + 1) with truss_bays = " + std::to_string(p.truss_bays),
-      4.0 * p.segments * (p.rings + 1.0) + 12.0 * stationBoxes(p.truss_bays));
+  return checkTriangleBudget(where,
+                             "segments * (rings + 1) = " + std::to_string(p.segments) + " * (" +
+                                 std::to_string(p.rings) +
+                                 " + 1) with truss_bays = " + std::to_string(p.truss_bays),
+                             triangleCount(p));
 }
 
 }  // namespace
+
+double triangleCount(const TorusParams& params) {
+  return 2.0 * params.major_segments * params.minor_segments;
+}
+
+double triangleCount(const ChainParams& params) {
+  return params.links * triangleCount(params.link);
+}
+
+double triangleCount(const SphereParams& params) {
+  return 2.0 * params.slices * (params.stacks - 1.0);
+}
+
+double triangleCount(const BoxParams& /*params*/) {
+  return 12.0;
+}
+
+double triangleCount(const GridSheetParams& params) {
+  return 2.0 * params.cells_x * params.cells_y;
+}
+
+double triangleCount(const GearParams& params) {
+  // Outline points per tooth (procedural.h); the two root feet only where the root circle is
+  // inside the base circle.
+  const double feet = gearGeometry(params).radial_foot ? 2.0 : 0.0;
+  const double per_tooth = 2.0 * params.flank_samples + 1.0 + params.root_samples + feet;
+  return 4.0 * params.teeth * per_tooth;
+}
+
+double triangleCount(const StationModuleParams& params) {
+  return 4.0 * params.segments * (params.rings + 1.0) + 12.0 * stationBoxes(params.truss_bays);
+}
 
 Result<TriangleMesh> makeTorus(const TorusParams& params) {
   Status status = checkTorus("torus: ", params);
@@ -328,9 +359,8 @@ Result<TriangleMesh> makeChain(const ChainParams& params) {
                    formatNumber(pitch) + ", must be > link.major_radius + link.minor_radius = " +
                    formatNumber(major + minor) + " so that links i and i + 2 do not overlap");
   }
-  const double per_link = 2.0 * params.link.major_segments * params.link.minor_segments;
-  status = checkTriangleBudget(where, "links = " + std::to_string(params.links),
-                               per_link * params.links);
+  status =
+      checkTriangleBudget(where, "links = " + std::to_string(params.links), triangleCount(params));
   if (!status.ok()) return status;
 
   const Eigen::Index link_vertices =
@@ -375,7 +405,7 @@ Result<TriangleMesh> makeSphere(const SphereParams& params) {
   status = checkTriangleBudget(
       where,
       "slices * stacks = " + std::to_string(params.slices) + " * " + std::to_string(params.stacks),
-      2.0 * params.slices * (params.stacks - 1.0));
+      triangleCount(params));
   if (!status.ok()) return status;
 
   // Layout: vertex 0 is the north pole, then rings k = 1 .. stacks - 1 at polar angle
@@ -432,7 +462,7 @@ Result<TriangleMesh> makeGridSheet(const GridSheetParams& params) {
   status = checkTriangleBudget(where,
                                "cells_x * cells_y = " + std::to_string(params.cells_x) + " * " +
                                    std::to_string(params.cells_y),
-                               2.0 * params.cells_x * params.cells_y);
+                               triangleCount(params));
   if (!status.ok()) return status;
 
   // Vertex (i, j) is column i + j (cells_x + 1). The sheet is a height field over the xy plane,

@@ -54,6 +54,13 @@ inline Result<std::string> readTextFile(const std::string& path, const std::stri
   return readInputFile(path, what);
 }
 
+/// A number as people write it: "0.25", not "0.250000".
+inline std::string shortNumber(double value) {
+  std::ostringstream out;
+  out << value;
+  return out.str();
+}
+
 inline const char* typeName(const Json& v) {
   return v.type_name();
 }
@@ -64,8 +71,10 @@ class Reader {
       : label_(std::move(label)), resolution_(resolution) {}
 
   /// A generator's sample count at the load's resolution, never below the generator's minimum
-  /// and never past the int range (a huge resolution then meets the generator's own limit).
+  /// and never past the int range (a huge resolution then meets the generator's own limit). A
+  /// count already below the minimum is returned as given, for the generator to refuse.
   int resolved(int count, int minimum) const {
+    if (count < minimum) return count;
     const double scaled = std::round(static_cast<double>(count) * resolution_);
     const double largest = static_cast<double>(std::numeric_limits<int>::max());
     return static_cast<int>(std::min(largest, std::max(static_cast<double>(minimum), scaled)));

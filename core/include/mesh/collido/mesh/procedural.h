@@ -178,6 +178,20 @@ struct BoxParams {
   Eigen::Vector3d size = Eigen::Vector3d::Ones();  ///< full side lengths, each > 0
 };
 
+/// The number of triangles each generator makes from `params`, computed in double so that a huge
+/// resolution cannot overflow, and without generating anything: a scene load charges it to its
+/// triangle limit first. The generators hold themselves to the same count (at most 50 million).
+/// Meaningful for parameters the generator accepts.
+double triangleCount(const TorusParams& params);
+double triangleCount(const ChainParams& params);
+double triangleCount(const SphereParams& params);
+double triangleCount(const BoxParams& params);
+double triangleCount(const CylinderParams& params);
+double triangleCount(const FlangeParams& params);
+double triangleCount(const GridSheetParams& params);
+double triangleCount(const GearParams& params);
+double triangleCount(const StationModuleParams& params);
+
 /// Generators. Each checks its parameters and returns kInvalidArgument naming the bad one.
 Result<TriangleMesh> makeTorus(const TorusParams& params);
 Result<TriangleMesh> makeChain(const ChainParams& params);
