@@ -1,0 +1,107 @@
+#include "support/runs/scripted_backend.h"
+
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include <collido/plugin_export.h>
+
+namespace collido::test {
+namespace {
+
+class ScriptedModel final : public BackendModel {
+ public:
+  std::size_t memoryBytes() const override { return sizeof(*this); }
+};
+
+// Counts one kind of call and fails the scripted one (0: none).
+class ScriptedCall {
+ public:
+  ScriptedCall(const char* kind, std::int64_t failing) : kind_(kind), failing_(failing) {}
+
+  Status next() {
+    ++calls_;
+    if (calls_ != failing_) return {};
+    return Status(StatusCode::kEngineFailure,
+                  "scripted failure of " + std::string(kind_) + " call " + std::to_string(calls_));
+  }
+
+ private:
+  const char* kind_;
+  std::int64_t failing_;
+  std::int64_t calls_ = 0;
+};
+
+class ScriptedBackend final : public Backend {
+ public:
+  ScriptedBackend(std::int64_t fail_build, std::int64_t fail_update, std::int64_t fail_query)
+      : build_("build", fail_build), update_("update", fail_update), query_("query", fail_query) {}
+
+  Capabilities capabilities() const override {
+    Capabilities caps;
+    caps.shape_kinds = static_cast<std::uint32_t>(ShapeKind::kTriangleMesh);
+    caps.queries = QueryKindSet(QueryKind::kBoolean) | QueryKind::kAllPairs | QueryKind::kContacts;
+    caps.update = true;
+    caps.notes = "test backend: fails where scripted";
+    return caps;
+  }
+
+  Result<std::unique_ptr<BackendModel>> build(const MeshView& /*mesh*/, const BuildNeeds& /*needs*/,
+                                              const StateSibling& /*sibling*/) override {
+    if (Status s = build_.next(); !s.ok()) return s;
+    return std::unique_ptr<BackendModel>(std::make_unique<ScriptedModel>());
+  }
+
+  Status update(BackendModel& /*model*/, const Eigen::Ref<const Eigen::Matrix3Xd>& /*positions*/,
+                UpdateCounters& /*counters*/) override {
+    return update_.next();
+  }
+
+  Status query(BackendModel& /*a*/, const Pose& /*pose_a*/, BackendModel& /*b*/,
+               const Pose& /*pose_b*/, const QueryRequest& /*request*/,
+               QueryResult& /*result*/) override {
+    return query_.next();
+  }
+
+ private:
+  ScriptedCall build_;
+  ScriptedCall update_;
+  ScriptedCall query_;
+};
+
+Result<std::unique_ptr<Backend>> create(const std::string& /*variant*/, BackendOptions& options) {
+  std::int64_t fail[3] = {0, 0, 0};
+  const char* keys[3] = {"fail_build", "fail_update", "fail_query"};
+  for (int k = 0; k < 3; ++k) {
+    const Result<std::int64_t> value = options.getInt(keys[k], 0, 0, 1 << 30);
+    if (!value.ok()) return value.status();
+    fail[k] = value.value();
+  }
+  return std::unique_ptr<Backend>(std::make_unique<ScriptedBackend>(fail[0], fail[1], fail[2]));
+}
+
+const PluginInfo& describe() {
+  static const PluginInfo info{"scripted",
+                               "1.0.0",
+                               "none (test backend)",
+                               "1.0.0",
+                               {{"scripted", "answers apart; fail_build/update/query=N fail"}},
+                               &create};
+  return info;
+}
+
+}  // namespace
+}  // namespace collido::test
+
+COLLIDO_DEFINE_PLUGIN(scripted, collido::test::describe)
+
+namespace collido::test {
+
+std::shared_ptr<PluginLibrary> scriptedBackend() {
+  Result<std::shared_ptr<PluginLibrary>> library =
+      PluginLibrary::fromTable(collido_plugin_table_scripted(), "scripted (linked in)");
+  EXPECT_TRUE(library.ok()) << library.status().toString();
+  return library.ok() ? library.value() : nullptr;
+}
+
+}  // namespace collido::test
