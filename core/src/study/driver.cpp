@@ -20,7 +20,7 @@ Status publishResults(const StudyPlan& plan, const StudyFolder& folder, StudyEnd
         << " combinations are stored; continue with the same command and --resume\n";
     return {};
   }
-  out << studyTable(all.value(), plan.not_applicable);
+  out << studyTable(all.value(), plan.not_applicable, plan.field);
   const bool robustness =
       std::filesystem::exists(std::filesystem::path(folder.store.directory()) / "robustness.txt");
   err << "results: " << folder.store.directory() << "/{table.txt,records.jsonl,summary.json"

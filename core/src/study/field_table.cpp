@@ -15,9 +15,6 @@
 namespace collido::study {
 namespace {
 
-constexpr const char* kOurs = "obbtree";
-constexpr const char* kPeer = "fcl:obb";
-
 /// A measurement with the backend text it came from.
 struct Answer {
   std::string backend;
@@ -62,6 +59,11 @@ std::string timeCell(const TimeBootstrap& time, const QueryMeasurement& m) {
   return text;
 }
 
+// The default sides: the table speaks of the OBB tree by its method's name.
+bool isTheObbTree(const FieldSides& sides) {
+  return sides.ours == FieldSides{}.ours;
+}
+
 // Their time over ours with its interval, paired by frame; "≈" where it meets the band.
 std::string ratioCell(const TimeBootstrap& theirs, const TimeBootstrap& ours) {
   const std::optional<Ratio> ratio = timeRatio(theirs, ours);
@@ -72,7 +74,13 @@ std::string ratioCell(const TimeBootstrap& theirs, const TimeBootstrap& ours) {
 
 }  // namespace
 
-std::string fieldTable(const std::vector<CombinationResult>& results) {
+std::string fieldTableTitle(const FieldSides& sides) {
+  return (isTheObbTree(sides) ? std::string("The OBB tree") : sides.ours) + " against the field";
+}
+
+std::string fieldTable(const std::vector<CombinationResult>& results, const FieldSides& sides) {
+  const std::string& ours_family = sides.ours;
+  const std::string& peer = sides.peer;
   // (scene, resolution, query) -> every setting's answer, in result order.
   using Key = std::tuple<std::string, double, std::string>;
   std::map<Key, std::vector<Answer>> groups;
@@ -83,7 +91,8 @@ std::string fieldTable(const std::vector<CombinationResult>& results) {
     if (!r.outcome.ok() || !c.category.empty() || c.needs != NeedsMode::kDeclared || c.limit != 0)
       continue;
     const std::string family = backendFamily(c.backend);
-    if (family != kOurs && std::find(families.begin(), families.end(), family) == families.end())
+    if (family != ours_family &&
+        std::find(families.begin(), families.end(), family) == families.end())
       families.push_back(family);
     for (const QueryMeasurement& m : tableMeasurements(r)) {
       if (!m.ok()) continue;
@@ -92,17 +101,17 @@ std::string fieldTable(const std::vector<CombinationResult>& results) {
       groups[key].push_back({c.backend, m});
     }
   }
-  const bool has_peer = std::any_of(groups.begin(), groups.end(), [](const auto& group) {
+  const bool has_peer = std::any_of(groups.begin(), groups.end(), [&](const auto& group) {
     return std::any_of(group.second.begin(), group.second.end(),
-                       [](const Answer& a) { return a.backend == kPeer; });
+                       [&](const Answer& a) { return a.backend == peer; });
   });
 
-  std::vector<std::string> header = {"scene",    "query",   "obbtree (fastest exact)",
+  std::vector<std::string> header = {"scene",    "query",   ours_family + " (fastest exact)",
                                      "mean us",  "B/tri",   "floor x",
                                      "box/pair", "tri/pair"};
   if (has_peer) {
-    header.push_back(std::string(kPeer) + " us");
-    header.push_back(std::string("vs ") + kPeer);
+    header.push_back(peer + " us");
+    header.push_back("vs " + peer);
   }
   for (const std::string& family : families) {
     header.push_back(family + " us");
@@ -111,12 +120,12 @@ std::string fieldTable(const std::vector<CombinationResult>& results) {
   std::vector<std::vector<std::string>> rows;
   for (const Key& key : order) {
     const std::vector<Answer>& answers = groups[key];
-    const Answer* ours = fastest(answers, [](const Answer& a) {
-      return backendFamily(a.backend) == kOurs && a.measurement.disagreements == 0 &&
+    const Answer* ours = fastest(answers, [&](const Answer& a) {
+      return backendFamily(a.backend) == ours_family && a.measurement.disagreements == 0 &&
              runsOnOneThread(a.backend);
     });
-    const bool has_comparator = std::any_of(answers.begin(), answers.end(), [](const Answer& a) {
-      return backendFamily(a.backend) != kOurs;
+    const bool has_comparator = std::any_of(answers.begin(), answers.end(), [&](const Answer& a) {
+      return backendFamily(a.backend) != ours_family;
     });
     if (!has_comparator) continue;
     const auto& [scene, resolution, query] = key;
@@ -145,7 +154,7 @@ std::string fieldTable(const std::vector<CombinationResult>& results) {
       row.push_back(timeCell(their_time, theirs->measurement));
       row.push_back(ratioCell(their_time, our_time));
     };
-    if (has_peer) compare(fastest(answers, [](const Answer& a) { return a.backend == kPeer; }));
+    if (has_peer) compare(fastest(answers, [&](const Answer& a) { return a.backend == peer; }));
     for (const std::string& family : families) {
       compare(
           fastest(answers, [&](const Answer& a) { return backendFamily(a.backend) == family; }));
@@ -158,7 +167,9 @@ std::string fieldTable(const std::vector<CombinationResult>& results) {
   out << "Times are the mean over frames of each frame's median call, in microseconds per query, "
          "with its 95% bootstrap interval [low, high]; a comparator's is its fastest setting's, "
          "and '!' marks one whose answer differed from the oracle's on some frame. 'vs X' = X's "
-         "time over the OBB tree's, its 95% interval paired by frame; '≈' marks a ratio whose "
+         "time over "
+      << (isTheObbTree(sides) ? "the OBB tree" : ours_family)
+      << "'s, its 95% interval paired by frame; '≈' marks a ratio whose "
          "interval meets the "
       << formatNumber("%g", kEquivalenceBand * 100.0)
       << "% equivalence band, a tie (docs/STUDY.md). floor x = "

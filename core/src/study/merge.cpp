@@ -35,6 +35,8 @@ int mergeImpl(const std::string& out_dir, const std::vector<std::string>& inputs
   // Every shard lists the whole study's settings not applicable; each pair is kept once.
   std::vector<NotApplicable> not_applicable;
   std::set<std::pair<std::string, std::string>> not_applicable_seen;
+  // Shards of one study share their sweep, and so its field sides.
+  FieldSides field;
   for (const std::string& input : inputs) {
     const ResultStore shard(input);
     Result<std::vector<Combination>> shard_plan = shard.readPlan();
@@ -49,6 +51,12 @@ int mergeImpl(const std::string& out_dir, const std::vector<std::string>& inputs
       err << "error: " << shard_not_applicable.status().message() << "\n";
       return 2;
     }
+    Result<FieldSides> shard_field = shard.readFieldSides();
+    if (!shard_field.ok()) {
+      err << "error: " << shard_field.status().message() << "\n";
+      return 2;
+    }
+    field = shard_field.value();
     for (NotApplicable& n : shard_not_applicable.value()) {
       if (not_applicable_seen.emplace(n.backend, n.scene).second)
         not_applicable.push_back(std::move(n));
@@ -114,7 +122,7 @@ int mergeImpl(const std::string& out_dir, const std::vector<std::string>& inputs
     }
     merged.push_back(result);
   }
-  if (Status s = store.writePlan(plan, not_applicable); !s.ok()) {
+  if (Status s = store.writePlan(plan, not_applicable, RunOrder{}, field); !s.ok()) {
     err << "error: " << s.message() << "\n";
     return 2;
   }
@@ -122,7 +130,7 @@ int mergeImpl(const std::string& out_dir, const std::vector<std::string>& inputs
     err << "error: " << s.message() << "\n";
     return 2;
   }
-  out << studyTable(merged, not_applicable);
+  out << studyTable(merged, not_applicable, field);
   const std::size_t missing = plan.size() - merged.size();
   err << "merged " << merged.size() << " of " << plan.size() << " planned combinations into "
       << out_dir << (missing != 0 ? " (" + std::to_string(missing) + " not run yet)" : "") << "\n";

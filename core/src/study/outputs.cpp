@@ -147,7 +147,8 @@ std::string benchmarkJsonWith(const std::vector<CombinationResult>& results,
 
 std::string studyTableWith(const std::vector<CombinationResult>& results,
                            const std::vector<SceneQueryPicks>& picks,
-                           const std::vector<NotApplicable>& not_applicable) {
+                           const std::vector<NotApplicable>& not_applicable,
+                           const FieldSides& sides) {
   const std::vector<std::string> header = {
       "backend",  "setting",    "scene",    "query", "frames",     "mean us [95% CI]",
       "rounds",   "repeated",   "FN",       "FP",    "recall",     "precision",
@@ -209,9 +210,9 @@ std::string studyTableWith(const std::vector<CombinationResult>& results,
            "setting, scene and query):\n";
     out << needs;
   }
-  if (const std::string field = fieldTable(results); !field.empty()) {
-    out << "\nThe OBB tree against the field (single thread, exact answers; per scene and "
-           "query):\n";
+  if (const std::string field = fieldTable(results, sides); !field.empty()) {
+    out << "\n"
+        << fieldTableTitle(sides) << " (single thread, exact answers; per scene and query):\n";
     out << field;
   }
   if (const std::string contacts = contactTable(results); !contacts.empty()) {
@@ -247,15 +248,18 @@ std::string benchmarkJson(const std::vector<CombinationResult>& results) {
 }
 
 std::string studyTable(const std::vector<CombinationResult>& results,
-                       const std::vector<NotApplicable>& not_applicable) {
-  return studyTableWith(results, whatToPick(results), not_applicable);
+                       const std::vector<NotApplicable>& not_applicable, const FieldSides& field) {
+  return studyTableWith(results, whatToPick(results), not_applicable, field);
 }
 
 Status writeStudyOutputs(const std::string& directory,
                          const std::vector<CombinationResult>& results) {
   const std::filesystem::path folder(directory);
-  Result<std::vector<NotApplicable>> not_applicable = ResultStore(directory).readNotApplicable();
+  const ResultStore store(directory);
+  Result<std::vector<NotApplicable>> not_applicable = store.readNotApplicable();
   if (!not_applicable.ok()) return not_applicable.status();
+  Result<FieldSides> field = store.readFieldSides();
+  if (!field.ok()) return field.status();
   if (Status s =
           io::writeFileAtomically((folder / "records.jsonl").string(), recordsJsonLines(results));
       !s.ok()) {
@@ -278,8 +282,9 @@ Status writeStudyOutputs(const std::string& directory,
       return s;
     }
   }
-  return io::writeFileAtomically((folder / "table.txt").string(),
-                                 studyTableWith(results, picks, not_applicable.value()));
+  return io::writeFileAtomically(
+      (folder / "table.txt").string(),
+      studyTableWith(results, picks, not_applicable.value(), field.value()));
 }
 
 std::string robustnessReport(const std::vector<CombinationResult>& results) {

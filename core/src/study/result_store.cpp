@@ -192,7 +192,7 @@ std::string ResultStore::planPath() const {
 
 Status ResultStore::writePlan(const std::vector<Combination>& plan,
                               const std::vector<NotApplicable>& not_applicable,
-                              const RunOrder& order) const {
+                              const RunOrder& order, const FieldSides& field) const {
   Json list = Json::array();
   for (const Combination& c : plan)
     list.push_back(combinationToJson(c));
@@ -200,7 +200,8 @@ Status ResultStore::writePlan(const std::vector<Combination>& plan,
                                  Json{{"collidoscope_plan", 1},
                                       {"order", {{"rounds", order.rounds}, {"seed", order.seed}}},
                                       {"combinations", list},
-                                      {"not_applicable", notApplicableToJson(not_applicable)}}
+                                      {"not_applicable", notApplicableToJson(not_applicable)},
+                                      {"field", {{"ours", field.ours}, {"peer", field.peer}}}}
                                      .dump(1));
 }
 
@@ -211,6 +212,24 @@ Result<std::optional<Json>> ResultStore::readPlanJson() const {
   Result<Json> json = io::readJsonFile(path);
   if (!json.ok()) return json.status();
   return std::optional<Json>(std::move(json).value());
+}
+
+Result<FieldSides> ResultStore::readFieldSides() const {
+  Result<std::optional<Json>> json = readPlanJson();
+  if (!json.ok()) return json.status();
+  const std::optional<Json>& plan = json.value();
+  FieldSides sides;
+  if (!plan || !plan->is_object() || !plan->contains("field")) return sides;
+  const Json& field = plan->at("field");
+  for (auto [key, side] :
+       {std::make_pair("ours", &sides.ours), std::make_pair("peer", &sides.peer)}) {
+    if (!field.is_object() || !field.contains(key) || !field.at(key).is_string()) {
+      return Status(StatusCode::kInvalidArgument,
+                    planPath() + ": /field/" + key + ": expected a backend name");
+    }
+    *side = field.at(key).get<std::string>();
+  }
+  return sides;
 }
 
 Result<std::vector<NotApplicable>> ResultStore::readNotApplicable() const {

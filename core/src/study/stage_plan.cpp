@@ -54,6 +54,7 @@ StudyPlan planCombinations(const StudyRequest& request, const StudyInputs& input
                            const StudyBackends& backends, std::ostream& err) {
   const Sweep& sweep = inputs.sweep;
   StudyPlan plan;
+  plan.field = sweep.field;
   plan.repetitions = request.repetitions > 0 ? request.repetitions : sweep.repetitions.value_or(5);
   plan.timeout_s = request.timeout_s > 0 ? request.timeout_s : sweep.timeout_s.value_or(600.0);
   plan.adaptive_s = request.adaptive_s >= 0.0 ? request.adaptive_s : sweep.adaptive_s.value_or(0.0);

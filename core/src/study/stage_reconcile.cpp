@@ -104,7 +104,8 @@ Result<StudyFolder> reconcileFolder(const StudyRequest& request, const StudyPlan
   if (Status s = checkStoredPlan(request, stored_plan.value(), plan.combinations); !s.ok())
     return s;
   if (Status s = folder.store.prepare(); !s.ok()) return s;
-  if (Status s = folder.store.writePlan(plan.combinations, plan.not_applicable, plan.order);
+  if (Status s =
+          folder.store.writePlan(plan.combinations, plan.not_applicable, plan.order, plan.field);
       !s.ok()) {
     return s;
   }

@@ -61,6 +61,7 @@ struct StudyPlan {
   double timeout_s = 600.0;
   double adaptive_s = 0.0;  ///< time for extra rounds of unstable rows
   std::string shard;        ///< "I/N" when this run is one shard of several, else ""
+  FieldSides field;         ///< the field table's sides, the sweep's
 };
 
 /// Plan: the combinations of the inputs and the settings, with the digests and plugin versions

@@ -184,7 +184,7 @@ void readPerScene(const Json& node, const std::string& where, Read read, const C
 Sweep readSweep(const Checker& c, const Json& root) {
   c.allowKeys(root, "",
               {"backends", "resolutions", "needs", "limits", "repetitions", "rounds", "adaptive_s",
-               "timeout_s", "protocol", "surfaces", "frep"});
+               "timeout_s", "protocol", "surfaces", "frep", "field"});
   Sweep sweep;
   if (root.contains("surfaces"))
     readComparison(c, root.at("surfaces"), "/surfaces", "tessellations", 1, sweep.surfaces);
@@ -237,6 +237,18 @@ Sweep readSweep(const Checker& c, const Json& root) {
       c.fail("/protocol", R"(expected "repeated" or "cycled")");
     }
     sweep.protocol = value.get<std::string>();
+  }
+  if (root.contains("field")) {
+    const Json& field = root.at("field");
+    c.allowKeys(field, "/field", {"ours", "peer"});
+    for (auto [key, side] :
+         {std::make_pair("ours", &sweep.field.ours), std::make_pair("peer", &sweep.field.peer)}) {
+      if (!field.contains(key)) continue;
+      const Json& value = field.at(key);
+      if (!value.is_string() || value.get<std::string>().empty())
+        c.fail(std::string("/field/") + key, "expected a backend name");
+      *side = value.get<std::string>();
+    }
   }
   if (root.contains("timeout_s")) {
     const Json& value = root.at("timeout_s");

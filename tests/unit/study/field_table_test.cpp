@@ -108,6 +108,26 @@ TEST(FieldTable, ARatioWithinTheBandIsMarkedATie) {
   EXPECT_EQ(cells[9], "≈1.05x");
 }
 
+// "Ours" is a study setting (the sweep's "field"): a plugin's authors put theirs first.
+TEST(FieldTable, AnotherFamilyMayBeOurs) {
+  const FieldSides sides{"bullet", "obbtree"};
+  const std::string table = fieldTable({result("obbtree", pairs("obbtree", 10, 30)),
+                                        result("bullet", pairs("bullet", 30, 50)),
+                                        result("fcl:obb", pairs("fcl:obb", 50, 110))},
+                                       sides);
+  SCOPED_TRACE(table);
+  EXPECT_EQ(fieldTableTitle(sides), "bullet against the field");
+  EXPECT_NE(table.find("bullet (fastest exact)"), std::string::npos);
+  EXPECT_NE(table.find("time over bullet's"), std::string::npos);
+  // scene, query, ours (bullet) and its 5 figures, the peer obbtree's time and ratio, then
+  // those of each other family: obbtree's and fcl's fastest.
+  const std::vector<std::string> cells = onlyRow(table);
+  ASSERT_EQ(cells.size(), 14u);
+  EXPECT_EQ(cells[2], "bullet");
+  EXPECT_EQ(cells[8], "20.0 [10.0, 30.0]");
+  EXPECT_EQ(cells[12], "80.0 [50.0, 110.0]");
+}
+
 TEST(FieldTable, EmptyWithoutAComparatorOrForStressScenes) {
   EXPECT_EQ(fieldTable({result("obbtree", pairs("obbtree", 10, 30))}), "");
   EXPECT_EQ(fieldTable({result("obbtree", pairs("obbtree", 10, 30), "near_touching"),

@@ -199,7 +199,8 @@ TEST(WriteStudyOutputs, ListsWhatThePlanLeftOutOnce) {
   const std::vector<NotApplicable> left_out = {
       {"ode", "tori", QueryKind::kDistance, {QueryKindSet(5), true}},
       {"ode", "clearance", QueryKind::kDistance, {QueryKindSet(5), true}}};
-  ASSERT_TRUE(store.writePlan({results[0].combination}, left_out).ok());
+  const FieldSides field{"fcl", "bullet"};
+  ASSERT_TRUE(store.writePlan({results[0].combination}, left_out, RunOrder{}, field).ok());
   Result<std::vector<NotApplicable>> stored = store.readNotApplicable();
   ASSERT_TRUE(stored.ok()) << stored.status().message();
   EXPECT_EQ(stored.value().size(), 2u);
@@ -208,7 +209,9 @@ TEST(WriteStudyOutputs, ListsWhatThePlanLeftOutOnce) {
   std::stringstream text;
   text << file.rdbuf();
   const std::string table = text.str();
-  EXPECT_EQ(table, studyTable(results, left_out));
+  EXPECT_EQ(table, studyTable(results, left_out, field));
+  ASSERT_TRUE(store.readFieldSides().ok());
+  EXPECT_EQ(store.readFieldSides().value().ours, "fcl");
   const std::size_t section = table.find("\nNot applicable, so not planned");
   ASSERT_NE(section, std::string::npos) << table;
   EXPECT_LT(section, table.find("\nFailures:"));
@@ -221,6 +224,7 @@ TEST(WriteStudyOutputs, ListsWhatThePlanLeftOutOnce) {
   stored = store.readNotApplicable();
   ASSERT_TRUE(stored.ok());
   EXPECT_TRUE(stored.value().empty());
+  EXPECT_EQ(store.readFieldSides().value().ours, "obbtree");
   test::writeFile(dir + "/plan.json",
                   "{\"combinations\": [], \"not_applicable\": [{\"backend\": 3}]}");
   EXPECT_NE(store.readNotApplicable().status().message().find(dir + "/plan.json"),

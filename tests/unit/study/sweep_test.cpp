@@ -44,6 +44,7 @@ TEST(Sweep, ValidFileGivesEveryList) {
     "needs": ["declared", "every"],
     "limits": [0, 16],
     "repetitions": 3,
+    "field": {"ours": "fcl"},
     "timeout_s": 2.5})",
                                           kLabel);
   ASSERT_TRUE(parsed.ok()) << parsed.status().message();
@@ -65,6 +66,8 @@ TEST(Sweep, ValidFileGivesEveryList) {
   EXPECT_EQ(sweep.limits, (std::vector<std::uint64_t>{0, 16}));
   EXPECT_EQ(sweep.repetitions, 3);
   EXPECT_EQ(sweep.timeout_s, 2.5);
+  EXPECT_EQ(sweep.field.ours, "fcl");
+  EXPECT_EQ(sweep.field.peer, "fcl:obb");
   EXPECT_EQ(sweep.backends[1].settings(),
             (std::vector<std::string>{"obbtree[max_leaf_triangles=1;split=median;margin=0.25]",
                                       "obbtree[max_leaf_triangles=1;split=median;margin=true]",
@@ -165,6 +168,8 @@ TEST(Sweep, ErrorsNameLabelPointerAndProblem) {
   expectError(R"({"repetitions": 1000001})", "/repetitions", "from 1 to 1000000");
   expectError(R"({"protocol": "shuffled"})", "/protocol", R"("repeated" or "cycled")");
   expectError(R"({"protocol": 1})", "/protocol", R"("repeated" or "cycled")");
+  expectError(R"({"field": {"ours": ""}})", "/field/ours", "expected a backend name");
+  expectError(R"({"field": {"theirs": "x"}})", "/field", "unknown key 'theirs'");
   expectError(R"({"timeout_s": 0})", "/timeout_s", "positive number of seconds");
   expectError(R"({"timeout_s": -1})", "/timeout_s", "positive number of seconds");
   expectError(R"({"timeout_s": "60"})", "/timeout_s", "positive number of seconds");

@@ -24,9 +24,10 @@ std::string benchmarkJson(const std::vector<CombinationResult>& results);
 /// (field_table.h); then the deforming scenes' update and query costs (deform_table.h); then,
 /// with stress scenes, the
 /// robustness matrix's rates; then every failure. Settings `not_applicable` lists (plan.h) come
-/// once, after the table of every setting.
+/// once, after the table of every setting; `field` names the field table's sides.
 std::string studyTable(const std::vector<CombinationResult>& results,
-                       const std::vector<NotApplicable>& not_applicable = {});
+                       const std::vector<NotApplicable>& not_applicable = {},
+                       const FieldSides& field = {});
 
 /// robustness.txt: the robustness matrix of the stress scenes (study/robustness.h); empty when
 /// the study ran none.
@@ -34,7 +35,7 @@ std::string robustnessReport(const std::vector<CombinationResult>& results);
 
 /// Writes records.jsonl, summary.json, times.json (expected_time.h) and table.txt into
 /// `directory`, and robustness.txt when the study ran stress scenes, each atomically; the
-/// settings not applicable come from the folder's plan.json.
+/// settings not applicable and the field table's sides come from the folder's plan.json.
 Status writeStudyOutputs(const std::string& directory,
                          const std::vector<CombinationResult>& results);
 

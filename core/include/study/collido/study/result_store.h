@@ -81,15 +81,18 @@ class ResultStore {
   Result<std::vector<CombinationResult>> readAll() const;
 
   /// plan.json: the combinations in the order they run, the settings not planned on some scene
-  /// (plan.h), and the rounds and seed that order came from.
+  /// (plan.h), the rounds and seed that order came from, and the field table's sides.
   Status writePlan(const std::vector<Combination>& plan,
                    const std::vector<NotApplicable>& not_applicable = {},
-                   const RunOrder& order = {}) const;
+                   const RunOrder& order = {}, const FieldSides& field = {}) const;
   /// The stored plan, or an empty one when none was written.
   Result<std::vector<Combination>> readPlan() const;
   /// The stored plan's settings not planned on some scene; none without a plan, or in a plan
   /// written before studies left them out.
   Result<std::vector<NotApplicable>> readNotApplicable() const;
+  /// The stored plan's field sides; the defaults without a plan, or in a plan written before
+  /// they were a setting.
+  Result<FieldSides> readFieldSides() const;
 
   std::string resultPath(const std::string& id) const;
   std::string logPath(const std::string& id) const;

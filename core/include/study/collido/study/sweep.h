@@ -45,6 +45,14 @@ struct SweepComparison {
 };
 
 /// The settings a study sweeps (format: docs/STUDY.md). Every list has at least one entry.
+/// Which backends the field table ("ours against the field", field_table.h) compares: the
+/// family whose fastest exact setting each row shows, and the setting it meets first, its
+/// method's direct peer. A study setting: the sweep's "field", kept in plan.json.
+struct FieldSides {
+  std::string ours = "obbtree";  ///< a backend family (a variant's name before ':')
+  std::string peer = "fcl:obb";  ///< a variant
+};
+
 struct Sweep {
   std::vector<SweepBackend> backends;    ///< empty: every variant found (or --backends)
   std::vector<double> resolutions{1.0};  ///< for scenes with no entry below
@@ -68,6 +76,7 @@ struct Sweep {
   /// "surfaces" and "frep": how the study's surface and FRep files are compared.
   SweepComparison surfaces{{}, {8, 32, 128}};
   SweepComparison frep{{}, {16, 32, 64}};
+  FieldSides field;  ///< "field": {"ours": family, "peer": variant}
 
   /// The resolutions to run `scene` at.
   const std::vector<double>& resolutionsOf(const std::string& scene) const;
