@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include <collido/io/files.h>
+#include <collido/io/html_page.h>
 #include <collido/study/report_html.h>
 #include <collido/study/result_store.h>
 
@@ -54,7 +55,7 @@ Result<nlohmann::json> withInlinePreview(nlohmann::json comparison, const std::s
                   json_path + ": /preview: " + picture.string() + " not found");
   }
   const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  comparison["preview_png"] = "data:image/png;base64," + study::base64(bytes);
+  comparison["preview_png"] = "data:image/png;base64," + io::base64(bytes);
   return comparison;
 }
 

@@ -11,8 +11,9 @@
 #include <sstream>
 
 #include <collido/host/install_layout.h>
+#include <collido/io/files.h>
+#include <collido/io/html_page.h>
 #include <collido/study/figures.h>
-#include <collido/study/html_page.h>
 #include <collido/study/robustness.h>
 #include <collido/study/selection_table.h>
 #include <collido/study/time_changes.h>
@@ -219,12 +220,13 @@ std::string webDirectory(const std::string& explicit_directory) {
 
 Result<std::string> renderReport(const Json& data, const std::string& web_directory) {
   const std::filesystem::path web(web_directory);
-  Result<std::string> page = readText(web / "report" / "template.html", "");
+  Result<std::string> page =
+      io::readTextFile((web / "report" / "template.html").string(), "not found");
   if (!page.ok()) return page.status();
   std::map<std::string, std::string> values{
-      {"@TITLE@", htmlText(data.value("title", std::string("study")))},
-      {"@DATA@", dataSafe(data.dump(-1, ' ', false, Json::error_handler_t::replace))}};
-  const Status read = readPageParts(
+      {"@TITLE@", io::htmlText(data.value("title", std::string("study")))},
+      {"@DATA@", io::dataSafe(data.dump(-1, ' ', false, Json::error_handler_t::replace))}};
+  const Status read = io::readPageParts(
       web,
       {{"@CSS@", web / "report" / "report.css", false},
        {"@VEGA@", web / "node_modules" / "vega" / "build" / "vega.min.js"},
@@ -233,7 +235,7 @@ Result<std::string> renderReport(const Json& data, const std::string& web_direct
        {"@REPORT_JS@", web / "report" / "report.js"}},
       values);
   if (!read.ok()) return read;
-  return fillTemplate(page.value(), values);
+  return io::fillTemplate(page.value(), values);
 }
 
 }  // namespace collido::study

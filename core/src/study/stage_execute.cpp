@@ -8,6 +8,7 @@
 #include <fstream>
 
 #include <collido/io/files.h>
+#include <collido/io/html_page.h>
 #include <collido/runner/time_statistic.h>
 #include <collido/study/expected_time.h>
 #include <collido/study/outputs.h>
@@ -79,7 +80,8 @@ void readComparison(const std::string& answer_path, const std::string& preview_p
     std::ifstream picture(preview_path, std::ios::binary);
     const std::string bytes((std::istreambuf_iterator<char>(picture)),
                             std::istreambuf_iterator<char>());
-    if (!bytes.empty()) result.comparison["preview_png"] = "data:image/png;base64," + base64(bytes);
+    if (!bytes.empty())
+      result.comparison["preview_png"] = "data:image/png;base64," + io::base64(bytes);
   }
 }
 

@@ -7,8 +7,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include <collido/study/html_page.h>
-#include <collido/study/report_html.h>
+#include <collido/io/files.h>
+#include <collido/io/html_page.h>
 
 namespace collido::view {
 namespace {
@@ -148,11 +148,12 @@ struct FrontEnd {
 
 Result<FrontEnd> readFrontEnd(const std::string& web_directory) {
   const std::filesystem::path web(web_directory);
-  Result<std::string> page = study::readText(web / "view" / "template.html", "");
+  Result<std::string> page =
+      io::readTextFile((web / "view" / "template.html").string(), "not found");
   if (!page.ok()) return page.status();
   FrontEnd front_end{std::move(page).value(), {}};
   const std::filesystem::path three = web / "node_modules" / "three";
-  const Status read = study::readPageParts(
+  const Status read = io::readPageParts(
       web,
       {{"@CSS@", web / "view" / "view.css", false},
        {"@THREE_CORE@", three / "build" / "three.core.js"},
@@ -200,12 +201,12 @@ Result<std::string> renderViewPage(const Scene& scene, const std::vector<ViewBac
   Result<FrontEnd> front_end = readFrontEnd(web_directory);
   if (!front_end.ok()) return front_end.status();
   std::map<std::string, std::string>& values = front_end.value().parts;
-  values["@TITLE@"] = study::htmlText(scene.name);
+  values["@TITLE@"] = io::htmlText(scene.name);
   // An engine's log in a problem may hold bytes that are not UTF-8; they are replaced, not
   // allowed to lose the page.
-  values["@DATA@"] = study::dataSafe(data.dump(-1, ' ', false, Json::error_handler_t::replace));
-  values["@GEOMETRY@"] = study::base64(buffer.bytes());
-  return study::fillTemplate(front_end.value().page, values);
+  values["@DATA@"] = io::dataSafe(data.dump(-1, ' ', false, Json::error_handler_t::replace));
+  values["@GEOMETRY@"] = io::base64(buffer.bytes());
+  return io::fillTemplate(front_end.value().page, values);
 }
 
 Status checkViewFrontEnd(const std::string& web_directory) {

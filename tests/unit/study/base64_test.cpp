@@ -3,9 +3,9 @@
 
 #include <gtest/gtest.h>
 
-#include <collido/study/report_html.h>
+#include <collido/io/html_page.h>
 
-namespace collido::study {
+namespace collido::io {
 namespace {
 
 TEST(Base64, Rfc4648Vectors) {
@@ -24,4 +24,4 @@ TEST(Base64, BinaryBytes) {
 }
 
 }  // namespace
-}  // namespace collido::study
+}  // namespace collido::io

@@ -219,10 +219,10 @@ TEST(ViewPage, AMissingLibraryIsNamedWithHowToGetIt) {
   std::filesystem::remove(std::filesystem::path(web) / "node_modules/three/build/three.core.js");
   const Status checked = view::checkViewFrontEnd(web);
   ASSERT_FALSE(checked.ok());
-  EXPECT_NE(checked.message().find("three.core.js not found"), std::string::npos);
+  EXPECT_NE(checked.message().find("three.core.js: not found"), std::string::npos);
   const Result<std::string> page = view::renderViewPage(loadTestScene(), {}, web);
   ASSERT_FALSE(page.ok());
-  EXPECT_NE(page.status().message().find("three.core.js not found"), std::string::npos);
+  EXPECT_NE(page.status().message().find("three.core.js: not found"), std::string::npos);
   EXPECT_NE(page.status().message().find("npm ci"), std::string::npos);
 }
 

@@ -27,7 +27,4 @@ std::string webDirectory(const std::string& explicit_directory);
 /// the missing file and how to get it.
 Result<std::string> renderReport(const nlohmann::json& data, const std::string& web_directory);
 
-/// Standard base64 (RFC 4648, padded) of `bytes`: pictures inlined as data URIs.
-std::string base64(const std::string& bytes);
-
 }  // namespace collido::study

@@ -2,9 +2,9 @@
 #include <boost/archive/iterators/base64_from_binary.hpp>
 #include <boost/archive/iterators/transform_width.hpp>
 
-#include <collido/study/report_html.h>
+#include <collido/io/html_page.h>
 
-namespace collido::study {
+namespace collido::io {
 
 std::string base64(const std::string& bytes) {
   using namespace boost::archive::iterators;  // NOLINT(google-build-using-namespace)
@@ -15,4 +15,4 @@ std::string base64(const std::string& bytes) {
   return text;
 }
 
-}  // namespace collido::study
+}  // namespace collido::io

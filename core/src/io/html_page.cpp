@@ -1,23 +1,12 @@
-#include <collido/study/html_page.h>
+#include <collido/io/html_page.h>
+
+#include <collido/io/files.h>
 
 #include <algorithm>
 #include <cctype>
-#include <fstream>
 #include <set>
-#include <sstream>
 
-namespace collido::study {
-
-Result<std::string> readText(const std::filesystem::path& path, const std::string& hint) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    return Status(StatusCode::kInvalidArgument,
-                  path.string() + " not found" + (hint.empty() ? "" : ": " + hint));
-  }
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  return buffer.str();
-}
+namespace collido::io {
 
 // A script inlined in the page must not close its <script> element early: only "</script"
 // (any case) does, and "<\/script" means the same inside the strings and regular expressions
@@ -100,12 +89,13 @@ Status readPageParts(const std::filesystem::path& web, const std::vector<PagePar
   const std::string npm_hint = "install the front-end with `npm ci --prefix " + web.string() +
                                "` (tools/study.sh does), or point --web / COLLIDO_WEB_DIR at it";
   for (const PagePart& part : parts) {
-    Result<std::string> text = readText(
-        part.file, part.file.string().find("node_modules") != std::string::npos ? npm_hint : "");
+    const bool from_npm = part.file.string().find("node_modules") != std::string::npos;
+    Result<std::string> text =
+        readTextFile(part.file.string(), from_npm ? "not found: " + npm_hint : "not found");
     if (!text.ok()) return text.status();
     values[part.marker] = part.script ? scriptSafe(text.value()) : std::move(text).value();
   }
   return Status();
 }
 
-}  // namespace collido::study
+}  // namespace collido::io

@@ -1,3 +1,5 @@
+// What the HTML pages (the study's dashboard, the 3D view) are made with: parts read and
+// inlined safely into a template, and pictures as base64.
 #pragma once
 
 #include <filesystem>
@@ -7,11 +9,10 @@
 
 #include <collido/status.h>
 
-namespace collido::study {
+namespace collido::io {
 
-/// The text of a file the page inlines; a missing file is an error naming it and `hint` (how to
-/// get it).
-Result<std::string> readText(const std::filesystem::path& path, const std::string& hint);
+/// Standard base64 (RFC 4648, padded) of `bytes`: pictures inlined as data URIs.
+std::string base64(const std::string& bytes);
 
 /// A script made safe to inline in a <script> element ("</script" cannot close it early).
 std::string scriptSafe(const std::string& text);
@@ -39,4 +40,4 @@ Status readPageParts(const std::filesystem::path& web, const std::vector<PagePar
 Result<std::string> fillTemplate(const std::string& page,
                                  const std::map<std::string, std::string>& values);
 
-}  // namespace collido::study
+}  // namespace collido::io
