@@ -1,4 +1,4 @@
-#include <collido/host/backend_separation.h>
+#include <collido/constraints/backend_separation.h>
 
 namespace collido {
 
