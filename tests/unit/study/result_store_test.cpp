@@ -19,6 +19,7 @@
 #include <collido/io/files.h>
 #include <collido/runner/measurement_json.h>
 
+#include "record_fields_walk.h"
 #include "study_test_data.h"
 #include "support/test_paths.h"
 
@@ -42,65 +43,24 @@ std::vector<std::string> filesIn(const std::string& folder) {
   return names;
 }
 
-void expectSameMeasurement(const QueryMeasurement& a, const QueryMeasurement& b) {
-  EXPECT_EQ(a.backend, b.backend);
-  EXPECT_EQ(a.scene, b.scene);
-  EXPECT_EQ(a.query, b.query);
-  EXPECT_EQ(a.kind, b.kind);
-  EXPECT_EQ(a.status, b.status);
-  EXPECT_EQ(a.times_us, b.times_us);
-  EXPECT_EQ(a.median_us, b.median_us);
-  EXPECT_EQ(a.p90_us, b.p90_us);
-  EXPECT_EQ(a.p99_us, b.p99_us);
-  EXPECT_EQ(a.max_us, b.max_us);
-  EXPECT_EQ(a.false_negatives, b.false_negatives);
-  EXPECT_EQ(a.false_positives, b.false_positives);
-  EXPECT_EQ(a.disagreements, b.disagreements);
-  EXPECT_EQ(a.finest_disagreements, b.finest_disagreements);
-  EXPECT_EQ(a.recall, b.recall);
-  EXPECT_EQ(a.precision, b.precision);
-  EXPECT_EQ(a.counts_bv_tests, b.counts_bv_tests);
-  EXPECT_EQ(a.counts_primitive_tests, b.counts_primitive_tests);
-  EXPECT_EQ(a.build_ms, b.build_ms);
-  EXPECT_EQ(a.triangles, b.triangles);
-  EXPECT_EQ(a.memory_bytes, b.memory_bytes);
-  EXPECT_EQ(a.heap_bytes, b.heap_bytes);
-  EXPECT_EQ(a.heap_peak_bytes, b.heap_peak_bytes);
-  EXPECT_EQ(a.heap_allocations, b.heap_allocations);
-  EXPECT_EQ(a.heap_probe, b.heap_probe);
-  ASSERT_EQ(a.frames.size(), b.frames.size());
-  for (std::size_t i = 0; i < a.frames.size(); ++i) {
-    SCOPED_TRACE("frame " + std::to_string(i));
-    const FrameRecord& x = a.frames[i];
-    const FrameRecord& y = b.frames[i];
-    EXPECT_EQ(x.frame, y.frame);
-    EXPECT_EQ(x.oracle_intersecting, y.oracle_intersecting);
-    EXPECT_EQ(x.reported_intersecting, y.reported_intersecting);
-    EXPECT_EQ(x.finest_intersecting, y.finest_intersecting);
-    EXPECT_EQ(x.oracle_pairs, y.oracle_pairs);
-    EXPECT_EQ(x.reported_pairs, y.reported_pairs);
-    EXPECT_EQ(x.matched_pairs, y.matched_pairs);
-    EXPECT_EQ(x.invalid_pairs, y.invalid_pairs);
-    EXPECT_EQ(x.truncated, y.truncated);
-    EXPECT_EQ(x.median_us, y.median_us);
-    EXPECT_EQ(x.bv_tests, y.bv_tests);
-    EXPECT_EQ(x.primitive_tests, y.primitive_tests);
-  }
-}
-
+// Walks record_fields.h's declarations: every stored field, summary figure and frame field
+// survives, and the samples set every stored field, so a new one needs a value here first.
 TEST(MeasurementJson, RoundTripsEveryField) {
-  for (const QueryMeasurement& m :
-       {testdata::pairsMeasurement("obbtree", true), testdata::pairsMeasurement("fcl:obb", false),
-        testdata::booleanMeasurement("ode"), testdata::skippedMeasurement("ode")}) {
+  const std::vector<QueryMeasurement> samples = {
+      testdata::pairsMeasurement("obbtree", true), testdata::pairsMeasurement("fcl:obb", false),
+      testdata::booleanMeasurement("ode"), testdata::skippedMeasurement("ode"),
+      testdata::everyFieldMeasurement("obbtree")};
+  EXPECT_EQ(testdata::fieldsLeftAtDefault(samples), std::vector<std::string>{});
+  for (const QueryMeasurement& m : samples) {
     SCOPED_TRACE(m.backend + " " + m.query);
     const Result<QueryMeasurement> back = measurementFromJson(measurementToJson(m));
     ASSERT_TRUE(back.ok()) << back.status().message();
-    expectSameMeasurement(back.value(), m);
+    testdata::expectSameDeclaredFields(back.value(), m);
     // Through text as well: doubles survive nlohmann's shortest round-trip form.
     const Result<QueryMeasurement> reparsed =
         measurementFromJson(nlohmann::json::parse(measurementToJson(m).dump()));
     ASSERT_TRUE(reparsed.ok()) << reparsed.status().message();
-    expectSameMeasurement(reparsed.value(), m);
+    testdata::expectSameDeclaredFields(reparsed.value(), m);
   }
 }
 
@@ -141,7 +101,7 @@ TEST(MeasurementJson, DerivedFiguresAreRecomputed) {
   json["frames"][1]["disagrees"] = false;
   const Result<QueryMeasurement> back = measurementFromJson(json);
   ASSERT_TRUE(back.ok()) << back.status().message();
-  expectSameMeasurement(back.value(), m);
+  testdata::expectSameDeclaredFields(back.value(), m);
   EXPECT_EQ(back.value().median_us, 20.0);
   EXPECT_EQ(back.value().max_us, 40.0);
   EXPECT_EQ(back.value().disagreements, 1u);
@@ -188,7 +148,7 @@ TEST(ResultJson, RoundTripsOutcomeMeasurementsAndProblems) {
   EXPECT_EQ(back.value().problems, r.problems);
   ASSERT_EQ(back.value().measurements.size(), r.measurements.size());
   for (std::size_t i = 0; i < r.measurements.size(); ++i)
-    expectSameMeasurement(back.value().measurements[i], r.measurements[i]);
+    testdata::expectSameDeclaredFields(back.value().measurements[i], r.measurements[i]);
 
   const CombinationResult crashed = testdata::crashedResult(testdata::combination("fcl:obb"));
   const Result<CombinationResult> crash = resultFromJson(resultToJson(crashed), "label.json");

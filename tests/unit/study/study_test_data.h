@@ -96,6 +96,64 @@ inline QueryMeasurement booleanMeasurement(const std::string& backend) {
   return m;
 }
 
+/// A contacts query whose frames carry every optional figure a run can record (tracking, distance,
+/// contacts, floor, update work), timed under the cycled protocol in two rounds.
+inline QueryMeasurement everyFieldMeasurement(const std::string& backend) {
+  QueryMeasurement m;
+  m.backend = backend;
+  m.scene = "tracked_tori";
+  m.query = "touch";
+  m.kind = QueryKind::kContacts;
+  m.protocol = "cycled";
+  m.rounds = 2;
+  m.times_us = {4.0, 5.0, 6.0, 7.0};
+  m.repeated_us = 3.5;
+  for (std::size_t i = 0; i < 2; ++i) {
+    FrameRecord f;
+    f.frame = i;
+    f.oracle_intersecting = true;
+    f.reported_intersecting = true;
+    f.truth_intersecting = i == 0;
+    f.possible_contact = true;
+    f.tracking_margin = 0.01 * static_cast<double>(i + 1);
+    f.invalid_pairs = i;
+    f.truncated = i == 1;
+    f.object_pairs = 3;
+    f.reused_pairs = i;
+    f.skipped_pairs = 2;
+    f.oracle_distance = 0.5;
+    f.reported_distance = 0.5 + 1e-9;
+    f.distance_below = 1e-12;
+    f.distance_above = 2e-12;
+    f.invalid_distance_witness = i == 1;
+    ContactScore contact;
+    contact.contacts = 4;
+    contact.false_pairs = 1;
+    contact.bad_normals = 1;
+    contact.bad_depths = 1;
+    contact.off_set = 1;
+    contact.position_error = 1e-9;
+    contact.surface_error = 2e-9;
+    contact.normal_error_deg = 0.5;
+    contact.depth_error = 1e-6;
+    contact.coverage = 0.75;
+    contact.covered_length = 3.0;
+    contact.total_length = 4.0;
+    f.contact = contact;
+    f.median_us = 4.5 + static_cast<double>(i);
+    f.floor_us = 0.25;
+    f.update_us = 12.0;
+    f.update_work = {10, 1, 7, true};
+    m.frames.push_back(f);
+  }
+  m.build_ms = 2.0;
+  m.triangles = 500;
+  m.memory_bytes = 32000;
+  m.heap_probe = "hooks";
+  summariseMeasurement(m);
+  return m;
+}
+
 /// A query the backend does not answer.
 inline QueryMeasurement skippedMeasurement(const std::string& backend) {
   QueryMeasurement m;
