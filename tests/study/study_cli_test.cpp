@@ -780,7 +780,7 @@ TEST(StudyCli, SweepFileSetsTheGrid) {
       EXPECT_EQ(m.status, "ok");
       // The sweep's 2 repetitions on 3 frames, raised to 12 calls (at least 12 a round).
       EXPECT_EQ(m.times_us.size(), 12u);
-      EXPECT_EQ(m.protocol, "cycled");
+      EXPECT_EQ(m.protocol, TimingProtocol::kCycled);
       EXPECT_EQ(m.disagreements, 0u);
       EXPECT_EQ(m.finest_disagreements.has_value(), r.combination.resolution != 1.0);
       if (m.kind == QueryKind::kAllPairs) {

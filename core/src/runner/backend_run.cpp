@@ -341,7 +341,7 @@ void runSceneOnBackend(const Scene& scene, const BackendSpec& spec, OracleCache&
   const std::size_t frames_total = scene.frames * scene.queries.size();
   for (const SceneQuery& query : scene.queries) {
     QueryMeasurement m = measurementOf(query);
-    m.protocol = timingProtocolName(options.protocol);
+    m.protocol = options.protocol;
     if (std::optional<MeasurementStatus> skipped = cannotAnswer(scene, query, caps, label)) {
       m.status = *skipped;
       report.measurements.push_back(m);

@@ -63,6 +63,12 @@ class JsonFieldReader {
     if (!parsed) throw MissingField("unknown query kind '" + name + "'");
     kind = *parsed;
   }
+  static void read(const Json& value, TimingProtocol& protocol) {
+    const std::string name = value.get<std::string>();
+    const std::optional<TimingProtocol> parsed = parseTimingProtocol(name);
+    if (!parsed) throw MissingField("unknown timing protocol '" + name + "'");
+    protocol = *parsed;
+  }
   static void read(const Json& value, MeasurementStatus& status) {
     status = MeasurementStatus::fromText(value.get<std::string>());
   }

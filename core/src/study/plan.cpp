@@ -46,7 +46,8 @@ std::string makeId(const Combination& c) {
   if (!c.scene_digest.empty() || !c.plugin_identity.empty() || c.repetitions != 0) {
     key += "\n" + c.scene_digest + "\n" + c.plugin_identity + "\n" + std::to_string(c.repetitions);
   }
-  if (!c.protocol.empty() && c.protocol != "repeated") key += "\n" + c.protocol;
+  if (c.protocol != TimingProtocol::kRepeated)
+    key += "\n" + std::string(timingProtocolName(c.protocol));
   if (c.round != 0) key += "\nround " + std::to_string(c.round);
   if (c.kind != InputKind::kScene) {
     key += std::string("\n") + inputKindName(c.kind);
@@ -98,7 +99,7 @@ Combination inRound(Combination c, int round) {
 
 Combination withInputs(Combination c, const std::string& scene_digest,
                        const std::string& plugin_identity, int repetitions,
-                       const std::string& protocol) {
+                       TimingProtocol protocol) {
   c.scene_digest = scene_digest;
   c.plugin_identity = plugin_identity;
   c.repetitions = repetitions;
@@ -265,7 +266,7 @@ nlohmann::json combinationToJson(const Combination& c) {
   if (!c.scene_digest.empty()) json["scene_digest"] = c.scene_digest;
   if (!c.plugin_identity.empty()) json["plugin"] = c.plugin_identity;
   if (c.repetitions != 0) json["repetitions"] = c.repetitions;
-  if (!c.protocol.empty()) json["protocol"] = c.protocol;
+  json["protocol"] = timingProtocolName(c.protocol);
   if (c.round != 0) json["round"] = c.round;
   if (c.kind != InputKind::kScene) {
     json["kind"] = inputKindName(c.kind);
@@ -292,7 +293,11 @@ Result<Combination> combinationFromJson(const nlohmann::json& json) {
     c.scene_digest = json.value("scene_digest", std::string());
     c.plugin_identity = json.value("plugin", std::string());
     c.repetitions = json.value("repetitions", 0);
-    c.protocol = json.value("protocol", std::string());
+    // Absent from studies made before there was a choice, which timed repeated.
+    const std::optional<TimingProtocol> protocol =
+        parseTimingProtocol(json.value("protocol", std::string("repeated")));
+    if (!protocol) return Status(StatusCode::kInvalidArgument, "combination: unknown protocol");
+    c.protocol = *protocol;
     c.round = json.value("round", 0);
     // Absent for mesh scenes (and from studies made before surfaces and FRep joined them).
     const std::optional<InputKind> kind = parseInputKind(json.value("kind", std::string("scene")));

@@ -62,8 +62,10 @@ StudyPlan planCombinations(const StudyRequest& request, const StudyInputs& input
       RunOrder{request.rounds > 0 ? request.rounds : sweep.rounds.value_or(1), request.order_seed};
   // Cycled by default: each timed call on another frame than the last, as an independent
   // harness and a simulation step meet them (docs/STUDY.md, "Timing protocols").
-  const std::string protocol =
-      !request.protocol.empty() ? request.protocol : sweep.protocol.value_or("cycled");
+  const TimingProtocol protocol =
+      parseTimingProtocol(!request.protocol.empty() ? request.protocol
+                                                    : sweep.protocol.value_or("cycled"))
+          .value_or(TimingProtocol::kCycled);
   const std::map<std::string, std::set<std::string>> only_scenes =
       onlyScenes(sweep, inputs.scenes, err);
   std::vector<Combination> whole =
@@ -86,7 +88,8 @@ StudyPlan planCombinations(const StudyRequest& request, const StudyInputs& input
       const std::string identity =
           c.backend == kSeedMethod ? std::string() : pluginIdentity(backends.found, c.backend);
       const std::string& digest = inputs.digests.at(c.scene_path);
-      whole.push_back(withInputs(std::move(c), digest, identity, plan.repetitions, "repeated"));
+      whole.push_back(
+          withInputs(std::move(c), digest, identity, plan.repetitions, TimingProtocol::kRepeated));
     }
   }
   if (inputs.shard_count > 1) plan.shard = request.shard;

@@ -30,9 +30,10 @@ std::string changedInputs(const std::vector<Combination>& before,
       plugins.insert("'" + (old.plugin_identity.empty() ? "?" : old.plugin_identity) + "' -> '" +
                      c.plugin_identity + "'");
     }
-    const auto named = [](const std::string& p) { return p.empty() ? std::string("repeated") : p; };
-    if (named(old.protocol) != named(c.protocol))
-      protocols.insert(named(old.protocol) + " -> " + named(c.protocol));
+    if (old.protocol != c.protocol) {
+      protocols.insert(std::string(timingProtocolName(old.protocol)) + " -> " +
+                       timingProtocolName(c.protocol));
+    }
     if (old.repetitions != c.repetitions) {
       repetitions.insert(std::to_string(old.repetitions) + " -> " + std::to_string(c.repetitions));
     }

@@ -58,8 +58,7 @@ Result<CombinationResult> runCombination(const WorkerRequest& request) {
     const auto frames = static_cast<int>(std::min<std::size_t>(scene.frames, kMinTimedCalls));
     options.repetitions = std::max(options.repetitions, (kMinTimedCalls + frames - 1) / frames);
   }
-  if (const std::optional<TimingProtocol> protocol = parseTimingProtocol(c.protocol))
-    options.protocol = *protocol;
+  options.protocol = c.protocol;
   // The secondary figure is measured in the first round only: it informs, it decides no pick,
   // and the study's time budget goes to the headline's rounds.
   if (options.protocol == TimingProtocol::kCycled && c.round == 0)

@@ -41,8 +41,8 @@ TEST(TimingProtocol, CycledTimesEveryFrameAndAnswersAlike) {
     const QueryMeasurement& c = cycled.measurements[q];
     SCOPED_TRACE(c.query);
     ASSERT_EQ(c.status, "ok");
-    EXPECT_EQ(r.protocol, "repeated");
-    EXPECT_EQ(c.protocol, "cycled");
+    EXPECT_EQ(r.protocol, TimingProtocol::kRepeated);
+    EXPECT_EQ(c.protocol, TimingProtocol::kCycled);
     EXPECT_EQ(c.times_us.size(), 4u * 3u) << "the secondary figure's calls are not the headline's";
     EXPECT_FALSE(r.repeated_us.has_value());
     ASSERT_TRUE(c.repeated_us.has_value());
@@ -57,7 +57,7 @@ TEST(TimingProtocol, CycledTimesEveryFrameAndAnswersAlike) {
     }
     const Result<QueryMeasurement> back = measurementFromJson(measurementToJson(c));
     ASSERT_TRUE(back.ok()) << back.status().message();
-    EXPECT_EQ(back.value().protocol, "cycled");
+    EXPECT_EQ(back.value().protocol, TimingProtocol::kCycled);
     EXPECT_EQ(back.value().repeated_us, c.repeated_us);
   }
   EXPECT_EQ(parseTimingProtocol("cycled"), TimingProtocol::kCycled);

@@ -104,7 +104,7 @@ inline QueryMeasurement everyFieldMeasurement(const std::string& backend) {
   m.scene = "tracked_tori";
   m.query = "touch";
   m.kind = QueryKind::kContacts;
-  m.protocol = "cycled";
+  m.protocol = TimingProtocol::kCycled;
   m.rounds = 2;
   m.times_us = {4.0, 5.0, 6.0, 7.0};
   m.repeated_us = 3.5;

@@ -56,6 +56,7 @@ class JsonFieldWriter {
   }
   static JsonT json(const ContactScore& score) { return contactScoreJson<JsonT>(score); }
   static JsonT json(QueryKind kind) { return queryKindName(kind); }
+  static JsonT json(TimingProtocol protocol) { return timingProtocolName(protocol); }
   static JsonT json(const MeasurementStatus& status) { return status.text(); }
 
   JsonT& out_;

@@ -186,7 +186,7 @@ struct QueryMeasurement {
   std::vector<double> times_us;
   /// The worker processes (a study's timing rounds) the timed calls came from.
   std::size_t rounds = 1;
-  std::string protocol = "repeated";  ///< how they were ordered (timingProtocolName)
+  TimingProtocol protocol = TimingProtocol::kRepeated;  ///< how they were ordered
   /// With RunOptions::repeated_calls: the secondary figure, the repeated protocol's, measured in
   /// the same process after the cycled calls: the mean over frames of each frame's median
   /// back-to-back call.

@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include <collido/query.h>
+#include <collido/runner/runner.h>
 #include <collido/status.h>
 #include <collido/study/not_applicable.h>
 #include <collido/study/sweep.h>
@@ -52,9 +53,8 @@ struct Combination {
   std::string scene_digest = {};
   std::string plugin_identity = {};
   int repetitions = 0;
-  /// The timing protocol ("repeated", "cycled"; TimingProtocol); "" for studies made before
-  /// there was a choice, which timed repeated.
-  std::string protocol = {};
+  /// The timing protocol (repeated for studies made before there was a choice).
+  TimingProtocol protocol = TimingProtocol::kRepeated;
   /// Which of the study's timing rounds this is: each round of a mesh combination is a worker
   /// process of its own that runs it whole, and the results join their timed calls into round
   /// 0's (rounds.h). Part of the id when not 0; not of the label, which names the combination.
@@ -72,7 +72,7 @@ struct Combination {
 /// `c` with its inputs set and its id made again from them.
 Combination withInputs(Combination c, const std::string& scene_digest,
                        const std::string& plugin_identity, int repetitions,
-                       const std::string& protocol = "");
+                       TimingProtocol protocol = TimingProtocol::kRepeated);
 
 /// `c` as timing round `round` (Combination::round), its id made again.
 Combination inRound(Combination c, int round);
