@@ -3,15 +3,16 @@
 #include <string>
 #include <vector>
 
+#include <collido/runner/measurement_columns.h>
 #include <collido/runner/runner.h>
 #include <collido/runner/text_table.h>
 
 namespace collido {
 
 std::string formatRunTable(const RunReport& report) {
-  const std::vector<std::string> header = {
-      "backend", "scene",  "query",     "frames",   "median us", "p90 us", "FN",
-      "FP",      "recall", "precision", "disagree", "build ms",  "B/tri",  "B/tri heap"};
+  std::vector<std::string> header = {"backend", "scene", "query"};
+  for (const std::string& column : measurementHeaders())
+    header.push_back(column);
   std::vector<std::vector<std::string>> rows;
   std::vector<std::string> notes;
   std::vector<std::string> tracking;
@@ -48,18 +49,13 @@ std::string formatRunTable(const RunReport& report) {
     if (m.contact)
       contacts.push_back(m.backend + " / " + m.scene + " / " + m.query + ": " +
                          contactScoreText(*m.contact));
-    const bool pairs = m.kind == QueryKind::kAllPairs;
-    rows.push_back({m.backend, m.scene, m.query, std::to_string(m.frames.size()),
-                    formatNumber("%.1f", m.median_us), formatNumber("%.1f", m.p90_us),
-                    std::to_string(m.false_negatives), std::to_string(m.false_positives),
-                    pairs ? formatNumber("%.4f", m.recall) : "-",
-                    pairs ? formatNumber("%.4f", m.precision) : "-",
-                    std::to_string(m.disagreements), formatNumber("%.2f", m.build_ms),
-                    bytesPerTriangleText(m.memory_bytes, m.triangles),
-                    m.heap_bytes ? bytesPerTriangleText(*m.heap_bytes, m.triangles) : "n/a"});
+    std::vector<std::string> row = {m.backend, m.scene, m.query};
+    for (std::string& cell : measurementCells(m))
+      row.push_back(std::move(cell));
+    rows.push_back(std::move(row));
   }
   std::ostringstream out;
-  out << formatTextTable(header, rows, 3);
+  out << formatTextTable(header, rows, 3) << measurementColumnsLegend("the --json report");
   for (const std::string& note : notes)
     out << "note: " << note << "\n";
   for (const std::string& line : tracking)

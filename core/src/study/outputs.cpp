@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include <collido/io/files.h>
+#include <collido/runner/measurement_columns.h>
 #include <collido/runner/text_table.h>
 #include <collido/runner/time_statistic.h>
 #include <collido/study/comparison_files.h>
@@ -40,20 +41,6 @@ std::string benchmarkName(const Combination& c, const QueryMeasurement& m) {
 }
 
 // "3 1.04x", "3 1.31x unstable", or "1".
-std::string roundsText(const QueryMeasurement& m) {
-  const std::optional<double> spread = roundSpread(m);
-  if (!spread) return std::to_string(m.rounds);
-  return std::to_string(m.rounds) + " " + formatNumber("%.2f", *spread) + "x" +
-         (unstable(m) ? " unstable" : "");
-}
-
-// The repeated protocol's figure over the headline's, "0.81x", or "-" where not measured.
-std::string repeatedText(const QueryMeasurement& m) {
-  const double headline = meanFrameTimeUs(m);
-  if (!m.repeated_us || headline <= 0.0) return "-";
-  return formatNumber("%.2f", *m.repeated_us / headline) + "x";
-}
-
 std::string localTime() {
   const std::time_t now = std::time(nullptr);
   std::tm parts{};
@@ -149,10 +136,10 @@ std::string studyTableWith(const std::vector<CombinationResult>& results,
                            const std::vector<SceneQueryPicks>& picks,
                            const std::vector<NotApplicable>& not_applicable,
                            const FieldSides& sides) {
-  const std::vector<std::string> header = {
-      "backend",  "setting",    "scene",    "query", "frames",     "mean us [95% CI]",
-      "rounds",   "repeated",   "FN",       "FP",    "recall",     "precision",
-      "disagree", "coarse err", "build ms", "B/tri", "B/tri heap", "RSS MiB"};
+  std::vector<std::string> header = {"backend", "setting", "scene", "query"};
+  for (const std::string& column : measurementHeaders())
+    header.push_back(column);
+  header.push_back("RSS MiB");
   std::vector<std::vector<std::string>> rows;
   std::vector<std::string> failures;
   for (const CombinationResult& r : results) {
@@ -171,18 +158,11 @@ std::string studyTableWith(const std::vector<CombinationResult>& results,
           failures.push_back(c.label() + " / " + m.query + ": " + m.status.text());
         continue;
       }
-      const bool pairs = m.kind == QueryKind::kAllPairs;
-      const TimeBootstrap time(m);
-      rows.push_back(
-          {c.backend, c.settingText(), c.scene_name, m.query, std::to_string(m.frames.size()),
-           withInterval(time.estimate(), time.ci95()), roundsText(m), repeatedText(m),
-           std::to_string(m.false_negatives), std::to_string(m.false_positives),
-           pairs ? formatNumber("%.4f", m.recall) : "-",
-           pairs ? formatNumber("%.4f", m.precision) : "-", std::to_string(m.disagreements),
-           m.finest_disagreements ? std::to_string(*m.finest_disagreements) : "-",
-           formatNumber("%.2f", m.build_ms), bytesPerTriangleText(m.memory_bytes, m.triangles),
-           m.heap_bytes ? bytesPerTriangleText(*m.heap_bytes, m.triangles) : "n/a",
-           formatNumber("%.0f", static_cast<double>(r.residentBytes()) / 1048576.0)});
+      std::vector<std::string> row = {c.backend, c.settingText(), c.scene_name, m.query};
+      for (std::string& cell : measurementCells(m))
+        row.push_back(std::move(cell));
+      row.push_back(formatNumber("%.0f", static_cast<double>(r.residentBytes()) / 1048576.0));
+      rows.push_back(std::move(row));
     }
   }
   std::ostringstream out;
@@ -190,15 +170,7 @@ std::string studyTableWith(const std::vector<CombinationResult>& results,
     out << "What to pick (per scene and query):\n" << text << "\nEvery setting:\n";
   }
   out << formatTextTable(header, rows, 4);
-  out << "mean us: the " << kTimeStatisticText
-      << "; the single calls' percentiles are in summary.json (p90_us, p99_us, max_us). rounds: "
-         "the worker processes the calls came from, and the slowest round's figure over the "
-         "fastest's; 'unstable' where the rounds cannot pin the figure down to within "
-      << formatNumber("%g", kEquivalenceBand * 100.0)
-      << "% (the 95% interval of their mean is wider), even after the extra rounds the study "
-         "gave it. repeated: the secondary figure, the repeated protocol's (each frame's calls "
-         "back to back, its data in cache: one pose checked again and again; measured in the "
-         "first round), over the mean.\n";
+  out << measurementColumnsLegend("summary.json");
   if (const std::string text = notApplicableText(not_applicable); !text.empty()) {
     out << "\nNot applicable, so not planned (the setting answers none of the query kinds the "
            "scene asks):\n"

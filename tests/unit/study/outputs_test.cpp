@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <collido/runner/measurement_columns.h>
 #include <collido/study/report_html.h>
 
 #include "study_test_data.h"
@@ -151,6 +152,28 @@ TEST(StudyTable, RowsSavingsAndFailures) {
   EXPECT_NE(tail.find("tori · fcl:obb: worker crashed (SIGSEGV)"), std::string::npos) << tail;
   EXPECT_NE(tail.find("tori · bullet: worker failed (exit 3)"), std::string::npos) << tail;
   EXPECT_EQ(tail.find("obbtree"), std::string::npos) << tail;
+}
+
+// collido run's table and the study's show a measurement through the same declared columns.
+TEST(StudyTable, SharesItsColumnsWithTheRunTable) {
+  const CombinationResult r = testdata::okResult(testdata::combination("obbtree"));
+  const QueryMeasurement& m = r.measurements.front();
+  RunReport report;
+  report.measurements = {m};
+  const std::string run = formatRunTable(report);
+  const std::string study = studyTable({r});
+  std::string cells;
+  for (const std::string& cell : measurementCells(m))
+    cells += (cells.empty() ? "" : " ") + cell;
+  for (const std::string& table : {run, study}) {
+    SCOPED_TRACE(table);
+    EXPECT_NE(table.find("mean us [95% CI]"), std::string::npos);
+    std::string squeezed;  // the row with its padding squeezed to single spaces
+    for (const char c : table) {
+      if (c != ' ' || squeezed.empty() || squeezed.back() != ' ') squeezed += c;
+    }
+    EXPECT_NE(squeezed.find(cells), std::string::npos) << cells;
+  }
 }
 
 TEST(StudyTable, NoSavingsWithoutAPairAndNoFailuresWhenAllFinish) {
