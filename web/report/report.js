@@ -1295,30 +1295,15 @@
     }
   }
 
-  // "3 1.04x" (rounds, and the slowest round's figure over the fastest's), as table.txt.
-  function roundsText(r) {
-    if (typeof r.round_spread !== 'number') return String(r.rounds || 1);
-    return `${r.rounds} ${fmt(r.round_spread, 2)}x` + (r.unstable ? ' unstable' : '');
-  }
-
   // --- the table ------------------------------------------------------------------------------
+  // table.txt's columns, declared once in the runner (measurement_columns.h), cells and all.
   {
-    const s = section('table', 'All measurements', 'Every (backend setting, scene, query). ' +
-      'mean µs: the mean over frames of each frame\'s median call, with its 95% bootstrap ' +
-      'interval [low, high]; rounds: the worker processes the calls came from, and the slowest ' +
-      'round\'s figure over the fastest\'s; repeated µs: the secondary figure, the repeated ' +
-      'protocol\'s (each frame\'s calls back to back, its data in cache: one pose checked again ' +
-      'and again; measured in the first round); the call percentiles describe single calls.');
-    laterTable(s, ['backend / setting', 'scene', 'query', 'status', 'mean µs [95% CI]', 'rounds',
-      'repeated µs', 'call p90 µs', 'call p99 µs', 'call max µs',
-      'wrong', 'recall', 'precision', 'build ms', 'B/tri', 'B/tri heap'],
-    data.rows.map((r) => [r.label, r.scene, r.query, r.status,
-      withInterval(timeOf(r), ciOf(r)), roundsText(r), fmt(r.repeated_protocol_us), fmt(r.p90_us),
-      fmt(r.p99_us), fmt(r.max_us), r.status === 'ok' ? String(r.disagreements) : '-',
-      r.kind === 'all_pairs' ? fmt(r.recall, 4) : '-', r.kind === 'all_pairs' ? fmt(r.precision, 4) : '-',
-      fmt(r.build_ms, 2), fmt(r.bytes_per_triangle, 0), fmt(r.heap_bytes_per_triangle, 0)]),
-    ['', '', '', '', 'num', 'num', 'num', 'num', 'num', 'num', 'num', 'num', 'num', 'num', 'num',
-      'num']);
+    const s = section('table', 'All measurements', 'Every (backend setting, scene, query), as ' +
+      'table.txt shows it. ' + data.columns_legend);
+    laterTable(s, ['backend / setting', 'scene', 'query', 'status', ...data.columns],
+      data.rows.map((r) => [r.label, r.scene, r.query, r.status,
+        ...(r.cells.length ? r.cells : data.columns.map(() => '-'))]),
+      ['', '', '', '', ...data.columns.map(() => 'num')]);
   }
 
   applyFilters();

@@ -123,6 +123,16 @@ test('every chart of the report renders without console errors', async () => {
     for (const l of legends) {
       assert.ok(l.entries <= MAX_LEGEND_ENTRIES, `chart ${l.view} has ${l.entries} legend entries`);
     }
+    // The table of every row has table.txt's measurement columns, declared once.
+    if (tableTxt) {
+      const header = readFileSync(tableTxt, 'utf8').split('\n')
+        .find((line) => line.startsWith('backend') && line.includes('mean us [95% CI]'));
+      assert.ok(header, 'table.txt has no table of every setting');
+      const columns = header.trim().split(/ {2,}/);
+      const pageColumns = await page.$$eval('#table th', (nodes) => nodes.map((n) => n.textContent));
+      assert.deepEqual(pageColumns.slice(4), columns.slice(4, columns.indexOf('RSS MiB')),
+        'the page and table.txt show different measurement columns');
+    }
     // The header's counts lead to their lists.
     const countLinks = await page.$$eval('#counts a', (nodes) => nodes.map((n) => n.getAttribute('href')));
     // Three counts, and a fourth where the plan left settings out of scenes (as table.txt says).

@@ -13,6 +13,7 @@
 #include <collido/host/install_layout.h>
 #include <collido/io/files.h>
 #include <collido/io/html_page.h>
+#include <collido/runner/measurement_columns.h>
 #include <collido/study/figures.h>
 #include <collido/study/robustness.h>
 #include <collido/study/selection_table.h>
@@ -41,6 +42,8 @@ Json row(const CombinationResult& r, const QueryMeasurement& m) {
   for (const Figure& figure : measurementFigures()) {
     if ((figure.uses & kInDashboard) != 0u) row[figure.name] = figure.value(r, m);
   }
+  // The cells of table.txt's row (measurement_columns.h), for the page's table of every row.
+  row["cells"] = m.ok() ? Json(measurementCells(m)) : Json::array();
   return row;
 }
 
@@ -192,6 +195,8 @@ Json reportData(const std::vector<CombinationResult>& results,
   return {{"title", title},
           {"generated", generated},
           {"rows", rowsOf(results)},
+          {"columns", measurementHeaders()},
+          {"columns_legend", measurementColumnsLegend("summary.json")},
           {"baseline_rows", rowsOf(baseline)},
           // Each setting, scene and query against the baseline: ratio, interval and verdict.
           {"baseline_changes",
