@@ -10,8 +10,8 @@
 #include <nlohmann/json.hpp>
 
 #include <collido/frep/collision.h>
-#include <collido/frep/polygonize.h>
-#include <collido/frep/preview.h>
+#include <collido/frep_mesh/polygonize.h>
+#include <collido/frep_preview/preview.h>
 #include <collido/host/backend_instance.h>
 #include <collido/io/files.h>
 #include <collido/runner/runner.h>

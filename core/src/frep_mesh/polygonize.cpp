@@ -1,6 +1,6 @@
 // Polygonization of FRep solids with OpenVDB: the comparators of the FRep study run mesh
 // backends on these meshes.
-#include <collido/frep/polygonize.h>
+#include <collido/frep_mesh/polygonize.h>
 
 #include <cmath>
 #include <mutex>

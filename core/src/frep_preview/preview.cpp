@@ -1,6 +1,6 @@
 // Preview pictures of FRep solids: interval ray casting with an orthographic camera, and PNG
 // output through libpng.
-#include <collido/frep/preview.h>
+#include <collido/frep_preview/preview.h>
 
 #include <algorithm>
 #include <cmath>

@@ -6,7 +6,7 @@
 #include <iomanip>
 #include <sstream>
 
-#include <collido/frep/polygonize.h>
+#include <collido/frep_mesh/polygonize.h>
 
 #include "frep_solid_reader.h"
 #include "generator_reader.h"

@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include <collido/frep/polygonize.h>
+#include <collido/frep_mesh/polygonize.h>
 
 namespace collido::frep {
 namespace {
