@@ -1,9 +1,6 @@
 // collido conformance PLUGIN.so: runs the conformance kit (the collido_conformance executable
 // beside this one) against one plugin file, shows each check as it ends, and prints a
 // pass/skip/fail table with every failure of every check.
-#include <fcntl.h>
-#include <spawn.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <cstdio>
@@ -20,10 +17,9 @@
 
 #include <collido/host/plugin_library.h>
 #include <collido/io/files.h>
+#include <collido/study/worker_process.h>
 
 #include "commands.h"
-
-extern char** environ;
 
 namespace collido::cli {
 namespace {
@@ -39,27 +35,18 @@ struct ConformanceArguments {
   std::string log;  // where to keep the kit's own output ("": not kept)
 };
 
-// Runs `argv` with its stdout on ours (the kit's progress lines) and its stderr into `log`;
-// returns the exit status, or -signal.
-int runTo(const std::vector<std::string>& argv, const std::string& log) {
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, log.c_str(),
-                                   O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  std::vector<char*> args;
-  args.reserve(argv.size() + 1);
-  for (const std::string& a : argv)
-    args.push_back(const_cast<char*>(a.c_str()));
-  args.push_back(nullptr);
+// Runs the kit with its progress lines shown as they come and its stderr into `log`; returns
+// its exit status, or -signal.
+int runKit(const std::string& kit, const std::vector<std::string>& arguments,
+           const std::string& log) {
+  study::WorkerLaunch launch;
+  launch.executable = kit;
+  launch.arguments = arguments;
+  launch.log_path = log;
+  launch.on_line = [](const std::string& line) { std::cout << line << std::endl; };
   std::cout.flush();
-  pid_t pid = 0;
-  const int spawned = posix_spawn(&pid, args[0], &actions, nullptr, args.data(), environ);
-  posix_spawn_file_actions_destroy(&actions);
-  if (spawned != 0) return 127;
-  int status = 0;
-  if (waitpid(pid, &status, 0) < 0) return 127;
-  if (WIFSIGNALED(status)) return -WTERMSIG(status);
-  return WEXITSTATUS(status);
+  const study::WorkerOutcome outcome = study::runWorkerProcess(launch);
+  return outcome.signal != 0 ? -outcome.signal : outcome.exit_code;
 }
 
 // A failure message without GoogleTest's "file:line" and "Failed" lines, one string per line.
@@ -137,7 +124,7 @@ int runConformance(const ConformanceArguments& args) {
   fs::create_directories(work, ec);
   const std::string json = (work / "report.json").string();
   const std::string log = (work / "kit.log").string();
-  std::vector<std::string> argv = {kit, "--plugin=" + fs::absolute(args.plugin).string(),
+  std::vector<std::string> argv = {"--plugin=" + fs::absolute(args.plugin).string(),
                                    "--gtest_output=json:" + json, "--progress"};
   if (!args.expectations_dir.empty()) argv.push_back("--expectations-dir=" + args.expectations_dir);
   if (!args.write_expectations_dir.empty()) {
@@ -145,7 +132,7 @@ int runConformance(const ConformanceArguments& args) {
   }
   if (!args.scenes_dir.empty()) argv.push_back("--scenes-dir=" + args.scenes_dir);
   if (!args.variant.empty()) argv.push_back("--variant=" + args.variant);
-  const int status = runTo(argv, log);
+  const int status = runKit(kit, argv, log);
   const std::vector<Row> rows = readReport(json);
   // The kit's own output is kept only where asked; the folder goes either way.
   std::string kept_log;

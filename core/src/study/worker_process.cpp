@@ -27,7 +27,8 @@ std::string signalName(int signal) {
                                  : "signal " + std::to_string(signal);
 }
 
-// Parses complete "progress D T" lines out of `buffer`, keeping a partial last line.
+// Parses complete "progress D T" lines out of `buffer`, and hands the others to on_line,
+// keeping a partial last line.
 void consumeProgress(std::string& buffer, const WorkerLaunch& launch) {
   std::size_t newline;
   while ((newline = buffer.find('\n')) != std::string::npos) {
@@ -35,8 +36,11 @@ void consumeProgress(std::string& buffer, const WorkerLaunch& launch) {
     buffer.erase(0, newline + 1);
     unsigned long long done = 0;
     unsigned long long total = 0;
-    if (std::sscanf(line.c_str(), "progress %llu %llu", &done, &total) == 2 && launch.on_progress) {
-      launch.on_progress(static_cast<std::size_t>(done), static_cast<std::size_t>(total));
+    if (std::sscanf(line.c_str(), "progress %llu %llu", &done, &total) == 2) {
+      if (launch.on_progress)
+        launch.on_progress(static_cast<std::size_t>(done), static_cast<std::size_t>(total));
+    } else if (launch.on_line) {
+      launch.on_line(line);
     }
   }
 }

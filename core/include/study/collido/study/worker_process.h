@@ -19,6 +19,8 @@ struct WorkerLaunch {
   double timeout_s = 0.0;                ///< 0: no limit
   /// Called with (done, total) for each "progress D T" line the worker prints on stdout.
   std::function<void(std::size_t, std::size_t)> on_progress;
+  /// Called with each other line the worker prints on stdout (without its newline).
+  std::function<void(const std::string&)> on_line;
   /// Called a few times a second while the worker runs (to redraw a progress bar).
   std::function<void()> on_tick;
   /// When it becomes true the worker is killed and the outcome is "interrupted".
