@@ -6,8 +6,8 @@
 
 #include <gtest/gtest.h>
 
-#include <collido/constraints/solve.h>
 #include <collido/constraints/backend_separation.h>
+#include <collido/constraints/solve.h>
 #include <collido/host/plugin_library.h>
 #include <collido/mesh/procedural.h>
 #include <collido/oracle/distance_oracle.h>

@@ -111,10 +111,10 @@ TEST(FieldTable, ARatioWithinTheBandIsMarkedATie) {
 // "Ours" is a study setting (the sweep's "field"): a plugin's authors put theirs first.
 TEST(FieldTable, AnotherFamilyMayBeOurs) {
   const FieldSides sides{"bullet", "obbtree"};
-  const std::string table = fieldTable({result("obbtree", pairs("obbtree", 10, 30)),
-                                        result("bullet", pairs("bullet", 30, 50)),
-                                        result("fcl:obb", pairs("fcl:obb", 50, 110))},
-                                       sides);
+  const std::string table = fieldTable(
+      {result("obbtree", pairs("obbtree", 10, 30)), result("bullet", pairs("bullet", 30, 50)),
+       result("fcl:obb", pairs("fcl:obb", 50, 110))},
+      sides);
   SCOPED_TRACE(table);
   EXPECT_EQ(fieldTableTitle(sides), "bullet against the field");
   EXPECT_NE(table.find("bullet (fastest exact)"), std::string::npos);
