@@ -5,7 +5,6 @@
 #include <atomic>
 #include <chrono>
 #include <filesystem>
-#include <fstream>
 
 #include <collido/io/files.h>
 #include <collido/io/html_page.h>
@@ -77,11 +76,9 @@ void readComparison(const std::string& answer_path, const std::string& preview_p
   result.comparison = std::move(answer).value();
   if (result.comparison.contains("preview")) {
     result.comparison.erase("preview");
-    std::ifstream picture(preview_path, std::ios::binary);
-    const std::string bytes((std::istreambuf_iterator<char>(picture)),
-                            std::istreambuf_iterator<char>());
-    if (!bytes.empty())
-      result.comparison["preview_png"] = "data:image/png;base64," + io::base64(bytes);
+    const Result<std::string> bytes = io::readTextFile(preview_path);
+    if (bytes.ok() && !bytes.value().empty())
+      result.comparison["preview_png"] = "data:image/png;base64," + io::base64(bytes.value());
   }
 }
 

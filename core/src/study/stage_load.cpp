@@ -1,6 +1,7 @@
 // The study's first stage: every input read and checked, so bad input stops the study before
 // anything runs.
 #include <filesystem>
+#include <optional>
 
 #include <collido/mesh/input_file.h>
 #include <collido/runner/digest.h>
@@ -90,6 +91,18 @@ Result<StudyInputs> loadInputs(const StudyRequest& request) {
     Result<std::pair<std::size_t, std::size_t>> shard = parseShard(request.shard);
     if (!shard.ok()) return shard.status();
     std::tie(inputs.shard_index, inputs.shard_count) = shard.value();
+  }
+  // Cycled by default: each timed call on another frame than the last, as an independent
+  // harness and a simulation step meet them (docs/STUDY.md, "Timing protocols").
+  if (!request.protocol.empty()) {
+    const std::optional<TimingProtocol> protocol = parseTimingProtocol(request.protocol);
+    if (!protocol) {
+      return Status(StatusCode::kInvalidArgument,
+                    "--protocol: '" + request.protocol + "' is not repeated or cycled");
+    }
+    inputs.protocol = *protocol;
+  } else if (inputs.sweep.protocol) {
+    inputs.protocol = *parseTimingProtocol(*inputs.sweep.protocol);  // checked by loadSweep
   }
   return inputs;
 }

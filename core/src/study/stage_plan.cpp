@@ -60,12 +60,6 @@ StudyPlan planCombinations(const StudyRequest& request, const StudyInputs& input
   plan.adaptive_s = request.adaptive_s >= 0.0 ? request.adaptive_s : sweep.adaptive_s.value_or(0.0);
   plan.order =
       RunOrder{request.rounds > 0 ? request.rounds : sweep.rounds.value_or(1), request.order_seed};
-  // Cycled by default: each timed call on another frame than the last, as an independent
-  // harness and a simulation step meet them (docs/STUDY.md, "Timing protocols").
-  const TimingProtocol protocol =
-      parseTimingProtocol(!request.protocol.empty() ? request.protocol
-                                                    : sweep.protocol.value_or("cycled"))
-          .value_or(TimingProtocol::kCycled);
   const std::map<std::string, std::set<std::string>> only_scenes =
       onlyScenes(sweep, inputs.scenes, err);
   std::vector<Combination> whole =
@@ -75,7 +69,7 @@ StudyPlan planCombinations(const StudyRequest& request, const StudyInputs& input
   for (Combination& c : whole) {
     const std::string& digest = inputs.digests.at(c.scene_path);
     const std::string identity = pluginIdentity(backends.found, c.backend);
-    c = withInputs(std::move(c), digest, identity, plan.repetitions, protocol);
+    c = withInputs(std::move(c), digest, identity, plan.repetitions, inputs.protocol);
   }
   // Surfaces and FRep files: a single input per frame, timed by the repeated protocol whatever
   // the study's (docs/STUDY.md, "Timing protocols").

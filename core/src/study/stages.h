@@ -31,10 +31,12 @@ struct StudyInputs {
   std::map<std::string, std::string> digests;
   std::size_t shard_index = 0;
   std::size_t shard_count = 1;
+  /// The mesh scenes' timing protocol: --protocol, else the sweep's, else cycled.
+  TimingProtocol protocol = TimingProtocol::kCycled;
 };
 
-/// Load: the sweep, the scenes (solving their constraints once), the surface and FRep files and
-/// the shard. Fails naming the file and the problem.
+/// Load: the sweep, the scenes (solving their constraints once), the surface and FRep files, the
+/// shard and the timing protocol. Fails naming the file and the problem.
 Result<StudyInputs> loadInputs(const StudyRequest& request);
 
 /// The backend settings to run, what each answers and the plugin file it comes from.

@@ -20,6 +20,17 @@ inline Combination combination(const std::string& backend, NeedsMode needs = Nee
   return planStudy({{"/scenes/tori.json", "tori", true}}, {backend}, sweep).front();
 }
 
+/// A measurement of `backend` on `scene`'s query `query`, with nothing measured yet.
+inline QueryMeasurement named(const std::string& backend, const std::string& scene,
+                              const std::string& query, QueryKind kind) {
+  QueryMeasurement m;
+  m.backend = backend;
+  m.scene = scene;
+  m.query = query;
+  m.kind = kind;
+  return m;
+}
+
 /// An all-pairs measurement of three frames:
 ///   frame 0: intersecting, 6 exact pairs, all 6 reported        (agrees)
 ///   frame 1: intersecting, 4 exact pairs, reported disjoint     (disagrees, false negative)
@@ -27,11 +38,7 @@ inline Combination combination(const std::string& backend, NeedsMode needs = Nee
 /// Timed calls 10, 20, 40 us: median 20, max 40; recall 6/10, precision 1.
 /// `hooks`: with the optional figures (heap counts, finest truth, work counters).
 inline QueryMeasurement pairsMeasurement(const std::string& backend, bool hooks) {
-  QueryMeasurement m;
-  m.backend = backend;
-  m.scene = "tori";
-  m.query = "all_pairs";
-  m.kind = QueryKind::kAllPairs;
+  QueryMeasurement m = named(backend, "tori", "all_pairs", QueryKind::kAllPairs);
   m.times_us = {10.0, 20.0, 40.0};
   const bool oracle[3] = {true, true, false};
   const bool reported[3] = {true, false, false};
@@ -73,11 +80,7 @@ inline QueryMeasurement pairsMeasurement(const std::string& backend, bool hooks)
 
 /// A boolean measurement of two frames, both right.
 inline QueryMeasurement booleanMeasurement(const std::string& backend) {
-  QueryMeasurement m;
-  m.backend = backend;
-  m.scene = "tori";
-  m.query = "boolean";
-  m.kind = QueryKind::kBoolean;
+  QueryMeasurement m = named(backend, "tori", "boolean", QueryKind::kBoolean);
   m.times_us = {2.0, 3.0, 2.5, 3.5};
   for (std::size_t i = 0; i < 2; ++i) {
     FrameRecord f;
@@ -99,11 +102,7 @@ inline QueryMeasurement booleanMeasurement(const std::string& backend) {
 /// A contacts query whose frames carry every optional figure a run can record (tracking, distance,
 /// contacts, floor, update work), timed under the cycled protocol in two rounds.
 inline QueryMeasurement everyFieldMeasurement(const std::string& backend) {
-  QueryMeasurement m;
-  m.backend = backend;
-  m.scene = "tracked_tori";
-  m.query = "touch";
-  m.kind = QueryKind::kContacts;
+  QueryMeasurement m = named(backend, "tracked_tori", "touch", QueryKind::kContacts);
   m.protocol = TimingProtocol::kCycled;
   m.rounds = 2;
   m.times_us = {4.0, 5.0, 6.0, 7.0};
@@ -156,11 +155,7 @@ inline QueryMeasurement everyFieldMeasurement(const std::string& backend) {
 
 /// A query the backend does not answer.
 inline QueryMeasurement skippedMeasurement(const std::string& backend) {
-  QueryMeasurement m;
-  m.backend = backend;
-  m.scene = "tori";
-  m.query = "all_pairs";
-  m.kind = QueryKind::kAllPairs;
+  QueryMeasurement m = named(backend, "tori", "all_pairs", QueryKind::kAllPairs);
   m.status = MeasurementStatus::skipped(backend + " does not answer all_pairs queries");
   summariseMeasurement(m);
   return m;
