@@ -2,8 +2,8 @@
 #include <string>
 #include <vector>
 
-#include <collido/host/backend_instance.h>
 #include <collido/host/plugin_library.h>
+#include <collido/host/variant_description.h>
 
 #include "commands.h"
 
@@ -20,16 +20,14 @@ int listBackends(const PluginOptions& options) {
     const CollidoPluginTable& t = plugin->table();
     std::cout << plugin->name() << " " << t.plugin_version << " (" << t.engine_name << " "
               << t.engine_version << ")\n  file: " << plugin->path() << "\n";
-    for (const VariantInfo& variant : plugin->variants()) {
-      std::cout << "  " << variant.name << ": " << variant.summary << "\n";
-      Result<std::unique_ptr<BackendInstance>> instance =
-          BackendInstance::create(plugin, variant.name);
-      if (!instance.ok()) {
-        std::cout << "    cannot create: " << instance.status().message() << "\n";
-        problems.push_back(variant.name + ": cannot create: " + instance.status().message());
+    for (const VariantDescription& variant : describeVariants(plugin)) {
+      std::cout << "  " << variant.info.name << ": " << variant.info.summary << "\n";
+      if (!variant.capabilities) {
+        std::cout << "    cannot create: " << variant.problem << "\n";
+        problems.push_back(variant.info.name + ": cannot create: " + variant.problem);
         continue;
       }
-      const Capabilities& caps = instance.value()->capabilities();
+      const Capabilities& caps = *variant.capabilities;
       std::cout << "    queries: " << queryKindsText(caps.queries)
                 << "; update: " << (caps.update ? "yes" : "no")
                 << "; counts box tests: " << (caps.counts_bv_tests ? "yes" : "no")

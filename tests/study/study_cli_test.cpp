@@ -887,6 +887,47 @@ TEST(StudyCli, SurfaceAndFrepFilesRunInWorkersOfTheirOwn) {
   EXPECT_NE(again.err.find("study: 6 combinations, 0 to run"), std::string::npos) << again.err;
 }
 
+// A seed method that answers otherwise than its file expects is a finding: `collido frep` exits
+// with 1, and in a study its combination fails with its answers kept and the reason shown.
+TEST(StudyCli, AFrepSeedThatContradictsItsFileFailsAndKeepsItsAnswers) {
+  const std::string dir = test::makeTempDirectory("study_frep_expected");
+  const std::string file = dir + "/overlap.json";
+  test::writeFile(file, R"({"name": "overlap", "precision": 0.01,
+    "solids": [{"name": "a", "solid": {"type": "sphere", "centre": [0, 0, 0], "radius": 1}},
+               {"name": "b", "solid": {"type": "sphere", "centre": [1, 0, 0], "radius": 1}}],
+    "pairs": [["a", "b", "separated"]]})");
+  const CommandRun alone = collido({"frep", file, "--repetitions", "1"}, dir);
+  EXPECT_EQ(alone.exit_code, 1) << describe(alone);
+  EXPECT_NE(alone.out.find("colliding (expected separated)"), std::string::npos) << alone.out;
+
+  const std::string sweep = dir + "/sweep.json";
+  test::writeFile(sweep,
+                  R"({"repetitions": 1, "frep": {"backends": ["obbtree"], "resolutions": [8]}})");
+  const std::string out = dir + "/study";
+  const CommandRun run =
+      collido({"study", "--frep", file, "--sweep", sweep, "--out", out, "--quiet"}, dir);
+  const std::vector<CombinationResult> results = readResults(out);
+  ASSERT_EQ(results.size(), 2u) << describe(run);
+  for (const CombinationResult& r : results) {
+    SCOPED_TRACE(r.combination.label());
+    ASSERT_TRUE(r.comparison.is_object()) << describe(run);
+    if (r.combination.backend != "seed") {
+      EXPECT_EQ(r.outcome.status, WorkerStatus::kOk);
+      continue;
+    }
+    EXPECT_EQ(r.outcome.status, WorkerStatus::kFailed);
+    EXPECT_EQ(r.comparison.at("seed").at(0).at("verdict"), "colliding");
+  }
+  const nlohmann::json document = nlohmann::json::parse(readText(out + "/frep/overlap.json"));
+  ASSERT_EQ(document.at("problems").size(), 1u) << document.dump(1);
+  EXPECT_NE(document.at("problems")
+                .at(0)
+                .get<std::string>()
+                .find("1 answers differ from the file's expected ones"),
+            std::string::npos)
+      << document.at("problems");
+}
+
 // The conformance kit as a plugin author meets it: progress while it runs, every failing query
 // of a scene, the command that shows the differing pairs, backend options through --variant,
 // and no scratch folder left behind.

@@ -175,18 +175,25 @@ Result<Image> renderPreview(const std::vector<PreviewSolid>& solids,
   return image;
 }
 
-Status writePng(const Image& image, const std::string& path) {
+Result<std::string> encodePng(const Image& image) {
   png_image png{};
   png.version = PNG_IMAGE_VERSION;
   png.width = static_cast<png_uint_32>(image.width);
   png.height = static_cast<png_uint_32>(image.height);
   png.format = PNG_FORMAT_RGB;
-  if (png_image_write_to_file(&png, path.c_str(), 0, image.rgb.data(), 0, nullptr) == 0) {
-    const std::string why = png.message;
-    png_image_free(&png);
-    return Status(StatusCode::kInvalidArgument, path + ": cannot write the PNG file: " + why);
+  // The first call measures, the second writes.
+  png_alloc_size_t size = 0;
+  if (png_image_write_to_memory(&png, nullptr, &size, 0, image.rgb.data(), 0, nullptr) != 0) {
+    std::string bytes(size, '\0');
+    if (png_image_write_to_memory(&png, bytes.data(), &size, 0, image.rgb.data(), 0, nullptr) !=
+        0) {
+      bytes.resize(size);
+      return bytes;
+    }
   }
-  return Status();
+  const std::string why = png.message;
+  png_image_free(&png);
+  return Status(StatusCode::kInternal, "cannot encode the PNG picture: " + why);
 }
 
 }  // namespace collido::frep

@@ -24,48 +24,15 @@ namespace {
 // How often a running study remakes its outputs (table, records, summary) from what is stored.
 constexpr std::chrono::seconds kOutputsRefresh{30};
 
-// What a combination's worker runs (after the plugin options): a mesh scene's worker mode, or a
-// surface or FRep file's own command for one backend (against the seed's certified answers,
-// computed untimed) or for the seed method alone.
-std::vector<std::string> workerCommand(const Combination& c, int repetitions,
-                                       const std::string& request_path,
-                                       const std::string& answer_path,
-                                       const std::string& preview_path,
-                                       const std::string& oracle_directory) {
-  if (c.kind == InputKind::kScene) {
-    return {"worker",
-            "--request",
-            request_path,
-            "--out",
-            answer_path,
-            "--repetitions",
-            std::to_string(repetitions),
-            "--oracle-cache",
-            oracle_directory};
-  }
-  const bool surfaces = c.kind == InputKind::kSurfaces;
-  std::vector<std::string> command = {surfaces ? "surface-distance" : "frep",
-                                      c.scene_path,
-                                      "--repetitions",
-                                      std::to_string(repetitions),
-                                      "--json",
-                                      answer_path};
-  if (c.backend == kSeedMethod) {
-    if (!surfaces) command.insert(command.end(), {"--preview", preview_path});
-    return command;
-  }
-  command.insert(command.end(), {"--backends-only", "--backends", c.backend,
-                                 surfaces ? "--tessellations" : "--resolutions", c.gridText()});
-  return command;
-}
-
-// A surface or FRep worker's answer (its command's --json), kept whatever its exit code: a seed
-// whose answers differ from the file's expected ones exits 1 and still shows them. Its preview
-// picture goes inline, so the answer does not depend on a file in the scratch folder.
-void readComparison(const std::string& answer_path, const std::string& preview_path,
-                    CombinationResult& result) {
-  // Answers are written atomically: a worker that failed before writing one keeps its status.
-  Result<nlohmann::json> answer = io::readJsonFile(answer_path, "the worker wrote no answer");
+// The worker's answer: a mesh combination's measurements when it finished; a surface or FRep
+// combination's document whatever its exit code (a seed whose answers differ from the file's
+// expected ones fails and still shows them). A worker that failed before writing keeps its status.
+void readAnswer(const std::string& answer_path, CombinationResult& result) {
+  const bool comparison = result.combination.kind != InputKind::kScene;
+  if (!comparison && !result.outcome.ok()) return;
+  const Result<nlohmann::json> json = io::readJsonFile(answer_path, "the worker wrote no answer");
+  Result<CombinationResult> answer =
+      json.ok() ? resultFromJson(json.value(), answer_path) : json.status();
   if (!answer.ok()) {
     if (result.outcome.ok()) {
       result.outcome.status = WorkerStatus::kUnfinished;
@@ -73,13 +40,10 @@ void readComparison(const std::string& answer_path, const std::string& preview_p
     }
     return;
   }
-  result.comparison = std::move(answer).value();
-  if (result.comparison.contains("preview")) {
-    result.comparison.erase("preview");
-    const Result<std::string> bytes = io::readTextFile(preview_path);
-    if (bytes.ok() && !bytes.value().empty())
-      result.comparison["preview_png"] = "data:image/png;base64," + io::base64(bytes.value());
-  }
+  result.measurements = std::move(answer.value().measurements);
+  result.problems = std::move(answer.value().problems);
+  result.backend_rss_bytes = answer.value().backend_rss_bytes;
+  result.comparison = std::move(answer.value().comparison);
 }
 
 // Runs one combination in a worker and reads its answer back.
@@ -106,14 +70,14 @@ CombinationResult runInWorker(const Combination& c, const ResultStore& store, in
     launch.arguments.push_back("--plugin");
     launch.arguments.push_back(std::filesystem::absolute(plugin_file).string());
   }
-  const std::string preview_path = store.scratchPath(c.id + ".png");
   const std::string oracle_directory =
       request.oracle_directory.empty()
           ? store.directory() + "/oracle"
           : std::filesystem::absolute(request.oracle_directory).string();
-  const std::vector<std::string> command =
-      workerCommand(c, repetitions, request_path, answer_path, preview_path, oracle_directory);
-  launch.arguments.insert(launch.arguments.end(), command.begin(), command.end());
+  launch.arguments.insert(
+      launch.arguments.end(),
+      {"worker", "--request", request_path, "--out", answer_path, "--repetitions",
+       std::to_string(repetitions), "--oracle-cache", oracle_directory});
   launch.environment = request.worker_environment;
   launch.log_path = store.logPath(c.id);
   launch.timeout_s = timeout_s;
@@ -123,24 +87,9 @@ CombinationResult runInWorker(const Combination& c, const ResultStore& store, in
   };
   launch.on_tick = [&progress] { progress.tick(); };
   result.outcome = runWorkerProcess(launch);
-  if (c.kind != InputKind::kScene) {
-    readComparison(answer_path, preview_path, result);
-  } else if (result.outcome.ok()) {
-    const Result<nlohmann::json> json = io::readJsonFile(answer_path, "the worker wrote no answer");
-    Result<CombinationResult> answer =
-        json.ok() ? resultFromJson(json.value(), answer_path) : json.status();
-    if (answer.ok()) {
-      result.measurements = std::move(answer.value().measurements);
-      result.problems = std::move(answer.value().problems);
-      result.backend_rss_bytes = answer.value().backend_rss_bytes;
-    } else {
-      result.outcome.status = WorkerStatus::kUnfinished;
-      result.outcome.log_tail = answer.status().message();
-    }
-  }
+  readAnswer(answer_path, result);
   std::filesystem::remove(answer_path);
   std::filesystem::remove(request_path);
-  std::filesystem::remove(preview_path);
   return result;
 }
 

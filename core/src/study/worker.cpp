@@ -8,6 +8,8 @@
 #include <collido/study/oracle_store.h>
 #include <collido/study/resident_memory.h>
 
+#include "comparison_worker.h"
+
 namespace collido::study {
 namespace {
 
@@ -20,6 +22,7 @@ constexpr int kMinRepeatedCalls = 3;
 
 Result<CombinationResult> runCombination(const WorkerRequest& request) {
   const Combination& c = request.combination;
+  if (c.kind != InputKind::kScene) return runComparisonCombination(request);
   // The scene's solved placement is kept beside the oracle's answers, solved once per study.
   SceneLoadOptions load{c.resolution};
   if (!request.oracle_directory.empty())

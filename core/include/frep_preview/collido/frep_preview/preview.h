@@ -42,7 +42,7 @@ Result<Image> renderPreview(const std::vector<PreviewSolid>& solids,
                             const std::optional<Eigen::Vector3d>& marker,
                             const PreviewOptions& options);
 
-/// Writes the image as PNG (libpng); the error names the file.
-Status writePng(const Image& image, const std::string& path);
+/// The image as the bytes of a PNG file (libpng).
+Result<std::string> encodePng(const Image& image);
 
 }  // namespace collido::frep

@@ -19,8 +19,8 @@
 
 namespace collido::study {
 
-/// What a combination measures, and so which command its worker runs: a mesh scene (the
-/// runner), a NURBS surface file (collido surface-distance) or an FRep file (collido frep).
+/// What a combination measures, and so what its worker runs: a mesh scene (runScene), a NURBS
+/// surface file (runSurfaces) or an FRep file (runFrep).
 enum class InputKind { kScene, kSurfaces, kFrep };
 
 /// "scene", "surfaces" or "frep".

@@ -54,8 +54,8 @@ struct CombinationResult {
   /// the worker held before (scene, oracle answers): the backend's own share (ResidentPeak).
   /// Absent when the worker did not finish or the kernel could not reset the peak.
   std::optional<std::size_t> backend_rss_bytes;
-  /// Surface and FRep combinations: what their command wrote with --json (collido
-  /// surface-distance, collido frep), for this one setting; null for mesh scenes.
+  /// Surface and FRep combinations: the run's document for this one setting (surfaceRunJson,
+  /// frepRunJson; the seed's FRep preview inline); null for mesh scenes.
   nlohmann::json comparison;
 
   /// The memory figure tables show: the backend's own share, else the worker's peak.

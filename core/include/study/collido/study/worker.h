@@ -21,10 +21,12 @@ struct WorkerRequest {
   std::function<void(std::size_t, std::size_t)> progress;  ///< frames done, frames in all
 };
 
-/// Runs one combination in this process: loads the scene at the combination's resolution
-/// (and, when coarser than 1, at resolution 1 with the same poses, as the finest truth), caps
-/// answers at its limit, builds for its needs, and measures. Errors are bad input (scene,
-/// backend); an engine's failure is recorded in the measurements instead.
+/// Runs one combination in this process. A mesh scene is loaded at the combination's resolution
+/// (and, when coarser than 1, at resolution 1 with the same poses, as the finest truth), its
+/// answers capped at its limit, built for its needs and measured. A surface or FRep file runs
+/// its seed method, or one backend on the combination's grid against the seed's answers, into
+/// CombinationResult::comparison. Errors are bad input (scene, backend); an engine's failure is
+/// recorded in the measurements or the comparison's rows instead.
 Result<CombinationResult> runCombination(const WorkerRequest& request);
 
 }  // namespace collido::study

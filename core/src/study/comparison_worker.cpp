@@ -1,0 +1,75 @@
+#include "comparison_worker.h"
+
+#include <collido/io/html_page.h>
+#include <collido/runner/frep_run.h>
+#include <collido/runner/surface_run.h>
+
+namespace collido::study {
+namespace {
+
+// The dashboard's preview picture of an FRep file.
+constexpr int kPreviewWidth = 480;
+constexpr int kPreviewHeight = 360;
+
+Result<std::vector<BackendSpec>> backendOf(const WorkerRequest& request) {
+  if (request.combination.backend == kSeedMethod) return std::vector<BackendSpec>{};
+  const PluginDiscovery found = discoverPlugins(request.plugin_paths, request.default_plugins);
+  return resolveBackends({request.combination.backend}, found.plugins);
+}
+
+Status runSurfaceCombination(const WorkerRequest& request, std::vector<BackendSpec> backends,
+                             CombinationResult& result) {
+  const Combination& c = request.combination;
+  SurfaceRunRequest run;
+  run.file = c.scene_path;
+  run.repetitions = request.repetitions;
+  run.seed_rows = backends.empty();
+  run.backends = std::move(backends);
+  run.tessellations = c.grid;
+  const Result<SurfaceRun> done = runSurfaces(run);
+  if (!done.ok()) return done.status();
+  result.comparison = surfaceRunJson(done.value());
+  if (!done.value().reference) result.problems.push_back("no bound converged");
+  return Status();
+}
+
+Status runFrepCombination(const WorkerRequest& request, std::vector<BackendSpec> backends,
+                          CombinationResult& result) {
+  const Combination& c = request.combination;
+  const Result<FrepFile> file = loadFrepFile(c.scene_path);
+  if (!file.ok()) return file.status();
+  FrepRunRequest run;
+  run.repetitions = request.repetitions;
+  run.seed_rows = backends.empty();
+  run.backends = std::move(backends);
+  run.resolutions = c.grid;
+  const Result<FrepRun> done = runFrep(file.value(), c.scene_path, run);
+  if (!done.ok()) return done.status();
+  result.comparison = frepRunJson(done.value());
+  if (done.value().unexpected > 0) {
+    result.problems.push_back(std::to_string(done.value().unexpected) +
+                              " answers differ from the file's expected ones");
+  }
+  if (!run.seed_rows) return Status();
+  const Result<std::string> png =
+      frepPreviewPng(file.value(), done.value(), std::nullopt, kPreviewWidth, kPreviewHeight);
+  if (!png.ok()) return png.status();
+  result.comparison["preview_png"] = "data:image/png;base64," + io::base64(png.value());
+  return Status();
+}
+
+}  // namespace
+
+Result<CombinationResult> runComparisonCombination(const WorkerRequest& request) {
+  Result<std::vector<BackendSpec>> backends = backendOf(request);
+  if (!backends.ok()) return backends.status();
+  CombinationResult result;
+  result.combination = request.combination;
+  const Status run = request.combination.kind == InputKind::kSurfaces
+                         ? runSurfaceCombination(request, std::move(backends).value(), result)
+                         : runFrepCombination(request, std::move(backends).value(), result);
+  if (!run.ok()) return run;
+  return result;
+}
+
+}  // namespace collido::study
