@@ -18,6 +18,7 @@
 #include <collido/runner/statistics.h>
 #include <collido/runner/timed_calls.h>
 
+#include "check.h"
 #include "frame_observers.h"
 #include "scene_models.h"
 
@@ -373,6 +374,13 @@ void runSceneOnBackend(const Scene& scene, const BackendSpec& spec, OracleCache&
     if (finest_oracle != nullptr) observers.push_back(&finest.emplace(*finest_oracle, query));
     if (truth_oracle) {
       observers.push_back(&tracking.emplace(scene, *truth_oracle, query, options.tracking_sigmas));
+    }
+    std::vector<std::unique_ptr<FrameObserver>> checks;
+    for (const std::unique_ptr<Check>& check : registeredChecks()) {
+      if (std::unique_ptr<FrameObserver> observer = check->observe(query)) {
+        observers.push_back(observer.get());
+        checks.push_back(std::move(observer));
+      }
     }
 
     std::optional<BroadPhase> broad_phase;

@@ -2,6 +2,7 @@
 
 #include <optional>
 
+#include <collido/runner/checks.h>
 #include <collido/runner/text_table.h>
 #include <collido/runner/time_statistic.h>
 
@@ -32,11 +33,32 @@ std::string pairFigure(const QueryMeasurement& m, double value) {
   return m.kind == QueryKind::kAllPairs ? formatNumber("%.4f", value) : "-";
 }
 
+// The registered checks' figures that declare a column (runner/checks.h), after the runner's.
+std::vector<MeasurementColumn> withCheckColumns(std::vector<MeasurementColumn> columns) {
+  for (const CheckFigure& figure : checkFigures()) {
+    if (figure.column.empty()) continue;
+    columns.push_back({figure.column, [&figure](const QueryMeasurement& m) {
+                         const std::optional<double> value = figure.value(m);
+                         return value ? formatNumber(figure.format, *value) : std::string("-");
+                       }});
+  }
+  return columns;
+}
+
+// The registered checks' columns explained, each after a space.
+std::string checkLegends() {
+  std::string text;
+  for (const CheckFigure& figure : checkFigures()) {
+    if (!figure.column.empty()) text += " " + figure.column + ": " + figure.legend;
+  }
+  return text;
+}
+
 }  // namespace
 
 const std::vector<MeasurementColumn>& measurementColumns() {
   using M = const QueryMeasurement&;
-  static const std::vector<MeasurementColumn> columns = {
+  static const std::vector<MeasurementColumn> columns = withCheckColumns({
       {"frames", [](M m) { return std::to_string(m.frames.size()); }},
       {"mean us [95% CI]", &meanTime},
       {"rounds", &rounds},
@@ -57,7 +79,7 @@ const std::vector<MeasurementColumn>& measurementColumns() {
          return m.heap_bytes ? bytesPerTriangleText(*m.heap_bytes, m.triangles)
                              : std::string("n/a");
        }},
-  };
+  });
   return columns;
 }
 
@@ -85,7 +107,8 @@ std::string measurementColumnsLegend(const std::string& percentiles) {
          "% (the 95% interval of their mean is wider), even after the extra rounds the study "
          "gave it. repeated: the secondary figure, the repeated protocol's (each frame's calls "
          "back to back, its data in cache: one pose checked again and again; measured in the "
-         "first round), over the mean.\n";
+         "first round), over the mean." +
+         checkLegends() + "\n";
 }
 
 }  // namespace collido

@@ -36,6 +36,10 @@ class JsonFieldReader {
   void operator()(const char* name, CountedField<Count> field, Absent absent) const {
     if (const Json* value = find(name, absent)) field.value = value->get<Count>();
   }
+  template <typename Values>
+  void operator()(const char* name, CheckValueField<Values> field, Absent absent) const {
+    if (const Json* value = find(name, absent)) field.values[field.name] = value->get<double>();
+  }
 
  private:
   const Json* find(const char* name, Absent absent) const {

@@ -2,6 +2,7 @@
 
 #include <cstdint>
 
+#include <collido/runner/checks.h>
 #include <collido/runner/measurement_json.h>
 #include <collido/runner/time_statistic.h>
 
@@ -46,12 +47,23 @@ Json mib(std::size_t bytes) {
 
 constexpr unsigned kBoth = kInSummary | kInDashboard;
 
+// The registered checks' own figures (runner/checks.h) after the runner's.
+std::vector<Figure> withCheckFigures(std::vector<Figure> figures) {
+  for (const CheckFigure& check : checkFigures()) {
+    figures.push_back({check.name, kBoth,
+                       [value = check.value](const CombinationResult&, const QueryMeasurement& m) {
+                         return nullable(value(m));
+                       }});
+  }
+  return figures;
+}
+
 }  // namespace
 
 const std::vector<Figure>& measurementFigures() {
   using R = const CombinationResult&;
   using M = const QueryMeasurement&;
-  static const std::vector<Figure> figures = {
+  static const std::vector<Figure> figures = withCheckFigures({
       // The statistic every time figure shows (meanFrameTimeUs), with its interval; the call
       // percentiles after it describe single calls.
       {"time_us", kInDashboard, [](R, M m) { return Json(meanFrameTimeUs(m)); }},
@@ -134,7 +146,7 @@ const std::vector<Figure>& measurementFigures() {
        [](R, M m) { return perQuery(m.counts_bv_tests, &FrameRecord::bv_tests, m); }},
       {"primitive_tests", kBoth,
        [](R, M m) { return perQuery(m.counts_primitive_tests, &FrameRecord::primitive_tests, m); }},
-  };
+  });
   return figures;
 }
 

@@ -19,6 +19,10 @@ template <typename T>
 struct IsCounted : std::false_type {};
 template <typename T>
 struct IsCounted<CountedField<T>> : std::true_type {};
+template <typename T>
+struct IsCheckValue : std::false_type {};
+template <typename T>
+struct IsCheckValue<CheckValueField<T>> : std::true_type {};
 
 template <typename T>
 bool sameValue(const T& a, const T& b);
@@ -40,6 +44,8 @@ template <typename T>
 bool sameValue(const T& a, const T& b) {
   if constexpr (IsCounted<T>::value) {
     return a.counted == b.counted && (!a.counted || a.value == b.value);
+  } else if constexpr (IsCheckValue<T>::value) {
+    return a.get() == b.get();
   } else if constexpr (std::is_same_v<T, UpdateCounters>) {
     return a.counted == b.counted && a.nodes_refit == b.nodes_refit && a.rebuilds == b.rebuilds &&
            a.nodes_rebuilt == b.nodes_rebuilt;

@@ -5,6 +5,7 @@
 #include <csignal>
 #include <string>
 
+#include <collido/runner/checks.h>
 #include <collido/runner/runner.h>
 #include <collido/study/plan.h>
 #include <collido/study/result_store.h>
@@ -143,6 +144,9 @@ inline QueryMeasurement everyFieldMeasurement(const std::string& backend) {
     f.floor_us = 0.25;
     f.update_us = 12.0;
     f.update_work = {10, 1, 7, true};
+    // Every registered check's values, whatever checks there are (runner/checks.h).
+    for (const std::string& name : checkFrameValues())
+      f.values[name] = 0.125 * static_cast<double>(i + 1);
     m.frames.push_back(f);
   }
   m.build_ms = 2.0;

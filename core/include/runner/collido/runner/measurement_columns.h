@@ -3,6 +3,7 @@
 // The columns a measurement's row shows in the text tables (collido run's, the study's
 // table.txt), declared once: both tables are these columns between their own identity columns
 // (backend, scene, query; the study adds the setting before and the worker's memory after).
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -12,12 +13,12 @@ namespace collido {
 
 /// One column: its header and its cell for a measurement that answered.
 struct MeasurementColumn {
-  const char* header;
-  std::string (*cell)(const QueryMeasurement& m);
+  std::string header;
+  std::function<std::string(const QueryMeasurement& m)> cell;
 };
 
 /// frames, mean us [95% CI], rounds, repeated, FN, FP, recall, precision, disagree, coarse err,
-/// build ms, B/tri, B/tri heap.
+/// build ms, B/tri, B/tri heap, then the registered checks' columns (runner/checks.h).
 const std::vector<MeasurementColumn>& measurementColumns();
 
 /// The headers of measurementColumns(), in order.

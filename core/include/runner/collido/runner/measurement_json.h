@@ -44,6 +44,10 @@ class JsonFieldWriter {
   void operator()(const char* name, const CountedField<Count>& field, Absent /*absent*/) const {
     out_[name] = field.counted ? JsonT(field.value) : JsonT();
   }
+  template <typename Values>
+  void operator()(const char* name, const CheckValueField<Values>& field, Absent /*absent*/) const {
+    out_[name] = json(field.get());
+  }
 
  private:
   template <typename T>

@@ -8,6 +8,10 @@
 // missing or null: Absent::kError for fields every stored record has, Absent::kKeep for fields
 // added later (the reader leaves the record's default).
 
+#include <string>
+#include <type_traits>
+
+#include <collido/runner/checks.h>
 #include <collido/runner/runner.h>
 
 namespace collido {
@@ -26,6 +30,19 @@ template <typename Count>
 CountedField<Count> countedField(Count& value, bool counted) {
   return {value, counted};
 }
+
+/// A registered check's per-frame value (runner/checks.h): `name` in FrameRecord::values, null in
+/// JSON where the check did not measure the frame.
+template <typename Values>
+struct CheckValueField {
+  Values& values;
+  const std::string& name;
+
+  std::optional<double> get() const {
+    const auto found = values.find(name);
+    return found == values.end() ? std::nullopt : std::optional<double>(found->second);
+  }
+};
 
 template <typename Score, typename Visit>
 void visitContactScoreFields(Score& c, Visit&& visit) {
@@ -74,6 +91,10 @@ void visitFrameFields(Frame& f, bool counts_bv_tests, bool counts_primitive_test
   visit("update", f.update_work, Absent::kKeep);  // update_nodes_refit, _rebuilds, _nodes_rebuilt
   visit("bv_tests", countedField(f.bv_tests, counts_bv_tests), Absent::kKeep);
   visit("primitive_tests", countedField(f.primitive_tests, counts_primitive_tests), Absent::kKeep);
+  for (const std::string& name : checkFrameValues())
+    visit(name.c_str(),
+          CheckValueField<std::remove_reference_t<decltype((f.values))>>{f.values, name},
+          Absent::kKeep);
 }
 
 /// A measurement's stored fields (its frames apart): what it was, how it was built, every timed
@@ -129,6 +150,8 @@ void visitMeasurementSummary(const QueryMeasurement& m, Visit&& visit) {
   visit("skipped_pairs", m.skipped_pairs);
   visit("update_median_us", m.update_median_us);
   visit("update_rebuilds", m.update_rebuilds);
+  for (const CheckFigure& figure : checkFigures())
+    visit(figure.name.c_str(), figure.value(m));
 }
 
 }  // namespace collido

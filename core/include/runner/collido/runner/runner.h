@@ -159,6 +159,9 @@ struct FrameRecord {
   std::size_t skipped_pairs = 0;
   /// With RunOptions::keep_answers: the answers of every object pair asked, in order.
   std::vector<PairAnswers> answers;
+  /// The registered checks' per-frame values (runner/checks.h), by their declared names; a
+  /// check that did not measure this frame leaves its names out.
+  std::map<std::string, double> values;
 
   /// Whether the answer differs from the oracle's in any way this query asks about.
   bool disagrees(QueryKind kind) const;

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <functional>
+#include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -18,9 +20,9 @@ enum FigureUse : unsigned {
 /// them: its name, where it is shown, and its value — null where the backend, the scene or the
 /// query gives none (summary.json then leaves it out; the dashboard shows a gap).
 struct Figure {
-  const char* name;
+  std::string name;
   unsigned uses;
-  nlohmann::json (*value)(const CombinationResult& result, const QueryMeasurement& m);
+  std::function<nlohmann::json(const CombinationResult& result, const QueryMeasurement& m)> value;
 };
 
 /// The fields that name a measurement's setting, scene and query: the start of every
