@@ -6,9 +6,12 @@
 namespace collido {
 namespace detail {
 
+std::unique_ptr<Check> makeWitnessGapCheck();
+
 const std::vector<std::unique_ptr<Check>>& registeredChecks() {
   static const std::vector<std::unique_ptr<Check>> checks = [] {
     std::vector<std::unique_ptr<Check>> all;
+    all.push_back(makeWitnessGapCheck());
     return all;
   }();
   return checks;

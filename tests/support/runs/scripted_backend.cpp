@@ -34,13 +34,18 @@ class ScriptedCall {
 
 class ScriptedBackend final : public Backend {
  public:
-  ScriptedBackend(std::int64_t fail_build, std::int64_t fail_update, std::int64_t fail_query)
-      : build_("build", fail_build), update_("update", fail_update), query_("query", fail_query) {}
+  ScriptedBackend(std::int64_t fail_build, std::int64_t fail_update, std::int64_t fail_query,
+                  double distance)
+      : build_("build", fail_build),
+        update_("update", fail_update),
+        query_("query", fail_query),
+        distance_(distance) {}
 
   Capabilities capabilities() const override {
     Capabilities caps;
     caps.shape_kinds = static_cast<std::uint32_t>(ShapeKind::kTriangleMesh);
-    caps.queries = QueryKindSet(QueryKind::kBoolean) | QueryKind::kAllPairs | QueryKind::kContacts;
+    caps.queries = QueryKindSet(QueryKind::kBoolean) | QueryKind::kAllPairs | QueryKind::kContacts |
+                   QueryKind::kDistance;
     caps.update = true;
     caps.notes = "test backend: fails where scripted";
     return caps;
@@ -58,8 +63,12 @@ class ScriptedBackend final : public Backend {
   }
 
   Status query(BackendModel& /*a*/, const Pose& /*pose_a*/, BackendModel& /*b*/,
-               const Pose& /*pose_b*/, const QueryRequest& /*request*/,
-               QueryResult& /*result*/) override {
+               const Pose& /*pose_b*/, const QueryRequest& request, QueryResult& result) override {
+    if (request.kind == QueryKind::kDistance) {
+      result.distance.distance = distance_;
+      result.distance.point_a = Eigen::Vector3d::Zero();
+      result.distance.point_b = Eigen::Vector3d::Zero();
+    }
     return query_.next();
   }
 
@@ -67,6 +76,7 @@ class ScriptedBackend final : public Backend {
   ScriptedCall build_;
   ScriptedCall update_;
   ScriptedCall query_;
+  double distance_;
 };
 
 Result<std::unique_ptr<Backend>> create(const std::string& /*variant*/, BackendOptions& options) {
@@ -77,16 +87,20 @@ Result<std::unique_ptr<Backend>> create(const std::string& /*variant*/, BackendO
     if (!value.ok()) return value.status();
     fail[k] = value.value();
   }
-  return std::unique_ptr<Backend>(std::make_unique<ScriptedBackend>(fail[0], fail[1], fail[2]));
+  const Result<double> distance = options.getDouble("distance", 0.0, 0.0, 1e9);
+  if (!distance.ok()) return distance.status();
+  return std::unique_ptr<Backend>(
+      std::make_unique<ScriptedBackend>(fail[0], fail[1], fail[2], distance.value()));
 }
 
 const PluginInfo& describe() {
-  static const PluginInfo info{"scripted",
-                               "1.0.0",
-                               "none (test backend)",
-                               "1.0.0",
-                               {{"scripted", "answers apart; fail_build/update/query=N fail"}},
-                               &create};
+  static const PluginInfo info{
+      "scripted",
+      "1.0.0",
+      "none (test backend)",
+      "1.0.0",
+      {{"scripted", "answers apart; fail_build/update/query=N fail; distance=D"}},
+      &create};
   return info;
 }
 
