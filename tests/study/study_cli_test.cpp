@@ -842,7 +842,8 @@ TEST(StudyCli, SurfaceAndFrepFilesRunInWorkersOfTheirOwn) {
       EXPECT_EQ(r.outcome.signal_name, "SIGSEGV");
     } else {
       EXPECT_EQ(r.outcome.status, WorkerStatus::kOk) << r.outcome.log_tail;
-      EXPECT_TRUE(r.comparison.is_object());
+      EXPECT_EQ(r.surfaces.has_value(), r.combination.kind == InputKind::kSurfaces);
+      EXPECT_EQ(r.frep.has_value(), r.combination.kind == InputKind::kFrep);
     }
   }
 
@@ -910,13 +911,15 @@ TEST(StudyCli, AFrepSeedThatContradictsItsFileFailsAndKeepsItsAnswers) {
   ASSERT_EQ(results.size(), 2u) << describe(run);
   for (const CombinationResult& r : results) {
     SCOPED_TRACE(r.combination.label());
-    ASSERT_TRUE(r.comparison.is_object()) << describe(run);
+    ASSERT_TRUE(r.frep.has_value()) << describe(run);
     if (r.combination.backend != "seed") {
       EXPECT_EQ(r.outcome.status, WorkerStatus::kOk);
       continue;
     }
     EXPECT_EQ(r.outcome.status, WorkerStatus::kFailed);
-    EXPECT_EQ(r.comparison.at("seed").at(0).at("verdict"), "colliding");
+    ASSERT_EQ(r.frep->seed.size(), 1u);
+    EXPECT_EQ(r.frep->seed[0].result.verdict, frep::CollisionVerdict::kColliding);
+    EXPECT_EQ(r.frep->unexpected, 1u);
   }
   const nlohmann::json document = nlohmann::json::parse(readText(out + "/frep/overlap.json"));
   ASSERT_EQ(document.at("problems").size(), 1u) << document.dump(1);

@@ -60,6 +60,15 @@ const char* verdictName(CollisionVerdict verdict) {
   return "undecided";
 }
 
+std::optional<CollisionVerdict> parseVerdict(const std::string& name) {
+  for (const CollisionVerdict verdict :
+       {CollisionVerdict::kColliding, CollisionVerdict::kSeparated, CollisionVerdict::kTouching,
+        CollisionVerdict::kUndecided}) {
+    if (name == verdictName(verdict)) return verdict;
+  }
+  return std::nullopt;
+}
+
 CollisionResult collide(const Solid& a, const Solid& b, const CollisionOptions& options) {
   if (!(options.precision > 0) || !std::isfinite(options.precision))
     throw std::invalid_argument("collision precision must be finite and > 0");

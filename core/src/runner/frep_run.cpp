@@ -28,18 +28,18 @@ std::string pairName(const FrepFile& file, std::size_t pair) {
 }
 
 // How a mesh backend's boolean answer compares with the guaranteed one.
-std::string outcomeOf(frep::CollisionVerdict truth, bool intersecting) {
+MeshAnswerOutcome outcomeOf(frep::CollisionVerdict truth, bool intersecting) {
   switch (truth) {
     case frep::CollisionVerdict::kColliding:
-      return intersecting ? "agrees" : "missed overlap";
+      return intersecting ? MeshAnswerOutcome::kAgrees : MeshAnswerOutcome::kMissedOverlap;
     case frep::CollisionVerdict::kSeparated:
-      return intersecting ? "false contact" : "agrees";
+      return intersecting ? MeshAnswerOutcome::kFalseContact : MeshAnswerOutcome::kAgrees;
     case frep::CollisionVerdict::kTouching:
-      return "within precision";
+      return MeshAnswerOutcome::kWithinPrecision;
     case frep::CollisionVerdict::kUndecided:
       break;
   }
-  return "no reference";
+  return MeshAnswerOutcome::kNoReference;
 }
 
 // A polygonized solid: its mesh (or why there is none) and what it cost.
@@ -142,10 +142,36 @@ bool FrepSeedAnswer::asExpected() const {
   return expected.empty() || expected == frep::verdictName(result.verdict);
 }
 
-std::size_t FrepBackendRow::count(const std::string& outcome) const {
+const char* meshAnswerOutcomeName(MeshAnswerOutcome outcome) {
+  switch (outcome) {
+    case MeshAnswerOutcome::kAgrees:
+      return "agrees";
+    case MeshAnswerOutcome::kMissedOverlap:
+      return "missed overlap";
+    case MeshAnswerOutcome::kFalseContact:
+      return "false contact";
+    case MeshAnswerOutcome::kWithinPrecision:
+      return "within precision";
+    case MeshAnswerOutcome::kNoReference:
+      break;
+  }
+  return "no reference";
+}
+
+std::optional<MeshAnswerOutcome> parseMeshAnswerOutcome(const std::string& name) {
+  for (const MeshAnswerOutcome outcome :
+       {MeshAnswerOutcome::kAgrees, MeshAnswerOutcome::kMissedOverlap,
+        MeshAnswerOutcome::kFalseContact, MeshAnswerOutcome::kWithinPrecision,
+        MeshAnswerOutcome::kNoReference}) {
+    if (name == meshAnswerOutcomeName(outcome)) return outcome;
+  }
+  return std::nullopt;
+}
+
+std::size_t FrepBackendRow::count(MeshAnswerOutcome outcome) const {
   return static_cast<std::size_t>(
       std::count_if(answers.begin(), answers.end(),
-                    [&outcome](const FrepMeshAnswer& a) { return a.outcome == outcome; }));
+                    [outcome](const FrepMeshAnswer& a) { return a.outcome == outcome; }));
 }
 
 Result<FrepRun> runFrep(const FrepFile& file, const std::string& path,
@@ -208,60 +234,6 @@ Result<FrepRun> runFrep(const FrepFile& file, const std::string& path,
   return run;
 }
 
-Json frepRunJson(const FrepRun& run) {
-  Json json = {{"collidoscope_frep", 1}, {"file", run.file},
-               {"name", run.name},       {"precision", run.precision},
-               {"seed", Json::array()},  {"comparators", Json::array()}};
-  for (const FrepSeedAnswer& answer : run.seed) {
-    const frep::CollisionResult& result = answer.result;
-    Json levels = Json::array();
-    for (const frep::CollisionLevel& level : result.levels)
-      levels.push_back(
-          {{"cells", level.cells}, {"discarded", level.discarded}, {"split", level.split}});
-    Json entry = {{"time", answer.time},
-                  {"pair", answer.pair},
-                  {"verdict", frep::verdictName(result.verdict)},
-                  {"expected", answer.expected},
-                  {"cells", result.cells},
-                  {"max_depth", result.max_depth},
-                  {"undecided_cells", result.undecided_cells},
-                  {"median_ms", answer.median_ms},
-                  {"levels", levels}};
-    if (result.verdict == frep::CollisionVerdict::kColliding)
-      entry["witness"] = {result.witness.x(), result.witness.y(), result.witness.z()};
-    json["seed"].push_back(entry);
-  }
-  for (const FrepBackendRow& row : run.comparators) {
-    Json frames = Json::array();
-    std::vector<double> query_us;
-    for (const FrepMeshAnswer& a : row.answers) {
-      query_us.push_back(a.query_us);
-      frames.push_back({{"time", a.time},
-                        {"pair", a.pair},
-                        {"intersecting", a.intersecting},
-                        {"outcome", a.outcome},
-                        {"query_us", a.query_us},
-                        {"ms_with_meshing", a.ms_with_meshing}});
-    }
-    const std::size_t missed = row.count("missed overlap");
-    const std::size_t false_contacts = row.count("false contact");
-    json["comparators"].push_back(
-        {{"backend", row.backend},
-         {"resolution", row.resolution},
-         {"triangles_first_pair", row.triangles_first_pair},
-         {"agrees", row.count("agrees")},
-         {"missed", missed},
-         {"false_contacts", false_contacts},
-         {"within_precision", row.count("within precision")},
-         {"wrong", missed + false_contacts},
-         {"ms_per_query_with_meshing", row.ms_per_query_with_meshing},
-         {"median_query_us", query_us.empty() ? 0.0 : quantile(query_us, 0.5)},
-         {"status", row.failure.empty() ? "ok" : row.failure},
-         {"frames", frames}});
-  }
-  return json;
-}
-
 std::string frepRunText(const FrepRun& run) {
   std::string text;
   if (!run.seed.empty()) {
@@ -289,8 +261,10 @@ std::string frepRunText(const FrepRun& run) {
     }
     summary.push_back(
         {row.backend, std::to_string(row.resolution), std::to_string(row.triangles_first_pair),
-         std::to_string(row.count("agrees")), std::to_string(row.count("missed overlap")),
-         std::to_string(row.count("false contact")), std::to_string(row.count("within precision")),
+         std::to_string(row.count(MeshAnswerOutcome::kAgrees)),
+         std::to_string(row.count(MeshAnswerOutcome::kMissedOverlap)),
+         std::to_string(row.count(MeshAnswerOutcome::kFalseContact)),
+         std::to_string(row.count(MeshAnswerOutcome::kWithinPrecision)),
          row.failure.empty() ? formatNumber("%.3f", row.ms_per_query_with_meshing) : "-",
          row.failure.empty() ? "ok" : "failed: " + row.failure});
   }

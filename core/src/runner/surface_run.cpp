@@ -2,7 +2,6 @@
 
 #include <chrono>
 #include <cmath>
-#include <filesystem>
 
 #include <collido/host/backend_instance.h>
 #include <collido/nurbs/tessellate.h>
@@ -29,10 +28,6 @@ double modelSize(const nurbs::NurbsSurface& a, const nurbs::NurbsSurface& b) {
   Eigen::Matrix3Xd all(3, static_cast<Eigen::Index>(a.control.size() + b.control.size()));
   all << a.controlPoints(), b.controlPoints();
   return (all.rowwise().maxCoeff() - all.rowwise().minCoeff()).norm();
-}
-
-const char* boundName(nurbs::PatchBound bound) {
-  return bound == nurbs::PatchBound::kConvexHull ? "hull" : "box";
 }
 
 // The seed method, per bound, as published (corners only) and with the descent.
@@ -143,8 +138,12 @@ std::string shapeText(const SurfaceBackendRow& row) {
 
 }  // namespace
 
+const char* patchBoundName(nurbs::PatchBound bound) {
+  return bound == nurbs::PatchBound::kConvexHull ? "hull" : "box";
+}
+
 std::string SeedDistanceRow::label() const {
-  return std::string(boundName(bound)) + (descent ? " + descent" : " (seed)");
+  return std::string(patchBoundName(bound)) + (descent ? " + descent" : " (seed)");
 }
 
 Result<SurfaceRun> runSurfaces(const SurfaceRunRequest& request) {
@@ -187,55 +186,6 @@ Result<SurfaceRun> runSurfaces(const SurfaceRunRequest& request) {
   const double truth = 0.5 * (run.reference->lower + run.reference->upper);
   run.backends = backendRows(request, *a, *b, run.tolerance, truth);
   return run;
-}
-
-Json surfaceRunJson(const SurfaceRun& run) {
-  Json json = {{"collidoscope_surface_distance", 1},
-               {"file", run.file},
-               {"name", std::filesystem::path(run.file).stem().string()},
-               {"a", run.a},
-               {"b", run.b},
-               {"model_size", run.model_size},
-               {"tolerance", run.tolerance},
-               {"seed", Json::array()},
-               {"backends", Json::array()}};
-  for (const SeedDistanceRow& row : run.seed) {
-    const nurbs::SurfaceDistance& d = row.distance;
-    Json levels = Json::array();
-    for (const nurbs::LevelWork& w : d.levels)
-      levels.push_back({{"pairs_bounded", w.pairs_bounded},
-                        {"pairs_opened", w.pairs_opened},
-                        {"ms", w.seconds * 1e3}});
-    json["seed"].push_back({{"bound", boundName(row.bound)},
-                            {"descent", row.descent},
-                            {"lower", d.lower},
-                            {"upper", d.upper},
-                            {"converged", d.converged},
-                            {"pairs_bounded", d.pairs_bounded},
-                            {"pairs_opened", d.pairs_opened},
-                            {"median_ms", row.median_ms},
-                            {"levels", levels}});
-  }
-  if (run.backends_asked && run.reference)
-    json["reference"] = {{"lower", run.reference->lower}, {"upper", run.reference->upper}};
-  for (const SurfaceBackendRow& row : run.backends) {
-    if (row.end != SurfaceRowEnd::kOk) {
-      json["backends"].push_back(
-          {{"backend", row.backend},
-           {"segments", row.end == SurfaceRowEnd::kFailed ? row.segments : 0},
-           {"status", row.failure}});
-      continue;
-    }
-    json["backends"].push_back({{"backend", row.backend},
-                                {"segments", row.segments},
-                                {"triangles", row.triangles},
-                                {"distance", row.distance},
-                                {"error", row.error},
-                                {"median_us", row.median_us},
-                                {"build_ms", row.build_ms},
-                                {"status", "ok"}});
-  }
-  return json;
 }
 
 std::string surfaceRunText(const SurfaceRun& run, bool levels) {

@@ -23,27 +23,89 @@ std::string workerEnd(const WorkerOutcome& outcome) {
   return text;
 }
 
-// The rows of one kind's documents: "backends" (surfaces) or "comparators" (FRep).
-const char* rowsKey(InputKind kind) {
-  return kind == InputKind::kSurfaces ? "backends" : "comparators";
+using Parts = std::vector<const CombinationResult*>;
+
+// A surface file's run joined from its parts: the seed's figures and rows, the first reference a
+// backend's part has, every backend's rows, and for a worker without rows one row saying how it
+// ended. `problems` gets the seed's failure.
+SurfaceRun joinSurfaces(const Parts& parts, std::vector<std::string>& problems) {
+  const Combination& first = parts.front()->combination;
+  SurfaceRun run;
+  run.file = first.scene_path;
+  for (const CombinationResult* part : parts) {
+    if (!part->surfaces) continue;
+    run = *part->surfaces;
+    run.backends.clear();
+    run.reference.reset();
+    if (part->combination.backend != kSeedMethod) run.seed.clear();
+    break;
+  }
+  for (const CombinationResult* part : parts) {
+    const bool seed = part->combination.backend == kSeedMethod;
+    if (part->surfaces) {
+      if (!run.reference && !seed) run.reference = part->surfaces->reference;
+      run.backends.insert(run.backends.end(), part->surfaces->backends.begin(),
+                          part->surfaces->backends.end());
+    }
+    if (part->outcome.ok()) continue;
+    if (seed) {
+      problems.push_back("seed method: " + workerEnd(part->outcome));
+    } else if (!part->surfaces || part->surfaces->backends.empty()) {
+      SurfaceBackendRow row;
+      row.backend = part->combination.backend;
+      row.end = SurfaceRowEnd::kNotCreated;
+      row.failure = workerEnd(part->outcome);
+      run.backends.push_back(std::move(row));
+    }
+  }
+  run.backends_asked = !run.backends.empty();
+  return run;
 }
 
-// A document with no answer to start from: the format marker, the file and empty rows.
-Json emptyDocument(const Combination& c) {
-  const char* marker =
-      c.kind == InputKind::kSurfaces ? "collidoscope_surface_distance" : "collidoscope_frep";
-  return Json{{marker, 1},
-              {"file", c.scene_path},
-              {"name", c.scene_name},
-              {"seed", Json::array()},
-              {rowsKey(c.kind), Json::array()}};
+// An FRep file's run joined likewise; a worker without rows gets one row per resolution of its
+// grid.
+FrepRun joinFrep(const Parts& parts, std::vector<std::string>& problems) {
+  const Combination& first = parts.front()->combination;
+  FrepRun run;
+  run.file = first.scene_path;
+  run.name = first.scene_name;
+  for (const CombinationResult* part : parts) {
+    if (!part->frep) continue;
+    run = *part->frep;
+    run.comparators.clear();
+    if (part->combination.backend != kSeedMethod) {
+      run.seed.clear();
+      run.preview_png.clear();
+    }
+    break;
+  }
+  for (const CombinationResult* part : parts) {
+    if (part->frep) {
+      run.comparators.insert(run.comparators.end(), part->frep->comparators.begin(),
+                             part->frep->comparators.end());
+    }
+    if (part->outcome.ok()) continue;
+    if (part->combination.backend == kSeedMethod) {
+      problems.push_back("seed method: " + workerEnd(part->outcome));
+    } else if (!part->frep || part->frep->comparators.empty()) {
+      for (const int resolution : part->combination.grid) {
+        FrepBackendRow row;
+        row.backend = part->combination.backend;
+        row.resolution = resolution;
+        row.created = false;
+        row.failure = workerEnd(part->outcome);
+        run.comparators.push_back(std::move(row));
+      }
+    }
+  }
+  return run;
 }
 
 }  // namespace
 
 std::map<std::string, Json> comparisonDocuments(const std::vector<CombinationResult>& results) {
   // Per document, the seed combination first, then the backends in the order of their text.
-  std::map<std::string, std::vector<const CombinationResult*>> by_document;
+  std::map<std::string, Parts> by_document;
   for (const CombinationResult& r : results) {
     const Combination& c = r.combination;
     if (c.kind == InputKind::kScene) continue;
@@ -59,44 +121,10 @@ std::map<std::string, Json> comparisonDocuments(const std::vector<CombinationRes
                 if (x_seed != y_seed) return x_seed;
                 return x->combination.backend < y->combination.backend;
               });
-    const InputKind kind = parts.front()->combination.kind;
-    const char* rows = rowsKey(kind);
-    // The file's figures (model size, precision, surface names) from the first answer there is,
-    // the seed's when it has one; every part's rows are added below.
-    Json document = emptyDocument(parts.front()->combination);
-    for (const CombinationResult* part : parts) {
-      if (!part->comparison.is_object()) continue;
-      document = part->comparison;
-      document[rows] = Json::array();
-      if (part->combination.backend != kSeedMethod) document["seed"] = Json::array();
-      break;
-    }
-    Json problems = Json::array();
-    for (const CombinationResult* part : parts) {
-      const Combination& c = part->combination;
-      const bool seed = c.backend == kSeedMethod;
-      const Json& answer = part->comparison;
-      if (answer.is_object()) {
-        if (!document.contains("reference") && answer.contains("reference"))
-          document["reference"] = answer["reference"];
-        for (const Json& row : answer.value(rows, Json::array()))
-          document[rows].push_back(row);
-      }
-      if (!part->outcome.ok()) {
-        const std::string ended = workerEnd(part->outcome);
-        if (seed) {
-          problems.push_back("seed method: " + ended);
-        } else if (!answer.is_object() || answer.value(rows, Json::array()).empty()) {
-          Json row = {{"backend", c.backend}, {"status", ended}};
-          if (kind == InputKind::kSurfaces) {
-            row["segments"] = 0;
-          } else {
-            row["resolution"] = c.gridText();
-          }
-          document[rows].push_back(row);
-        }
-      }
-    }
+    std::vector<std::string> problems;
+    Json document = parts.front()->combination.kind == InputKind::kSurfaces
+                        ? surfaceRunJson(joinSurfaces(parts, problems))
+                        : frepRunJson(joinFrep(parts, problems));
     if (!problems.empty()) document["problems"] = problems;
     documents[key] = std::move(document);
   }

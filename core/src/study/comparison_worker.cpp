@@ -28,8 +28,8 @@ Status runSurfaceCombination(const WorkerRequest& request, std::vector<BackendSp
   run.tessellations = c.grid;
   const Result<SurfaceRun> done = runSurfaces(run);
   if (!done.ok()) return done.status();
-  result.comparison = surfaceRunJson(done.value());
   if (!done.value().reference) result.problems.push_back("no bound converged");
+  result.surfaces = std::move(done).value();
   return Status();
 }
 
@@ -45,16 +45,16 @@ Status runFrepCombination(const WorkerRequest& request, std::vector<BackendSpec>
   run.resolutions = c.grid;
   const Result<FrepRun> done = runFrep(file.value(), c.scene_path, run);
   if (!done.ok()) return done.status();
-  result.comparison = frepRunJson(done.value());
-  if (done.value().unexpected > 0) {
-    result.problems.push_back(std::to_string(done.value().unexpected) +
+  result.frep = std::move(done).value();
+  if (result.frep->unexpected > 0) {
+    result.problems.push_back(std::to_string(result.frep->unexpected) +
                               " answers differ from the file's expected ones");
   }
   if (!run.seed_rows) return Status();
   const Result<std::string> png =
-      frepPreviewPng(file.value(), done.value(), std::nullopt, kPreviewWidth, kPreviewHeight);
+      frepPreviewPng(file.value(), *result.frep, std::nullopt, kPreviewWidth, kPreviewHeight);
   if (!png.ok()) return png.status();
-  result.comparison["preview_png"] = "data:image/png;base64," + io::base64(png.value());
+  result.frep->preview_png = "data:image/png;base64," + io::base64(png.value());
   return Status();
 }
 

@@ -67,7 +67,8 @@ Json resultToJson(const CombinationResult& r) {
                {"measurements", measurements},
                {"problems", r.problems},
                {"backend_rss_bytes", r.backend_rss_bytes ? Json(*r.backend_rss_bytes) : Json()}};
-  if (!r.comparison.is_null()) json["comparison"] = r.comparison;
+  if (r.surfaces) json["comparison"] = surfaceRunJson(*r.surfaces);
+  if (r.frep) json["comparison"] = frepRunJson(*r.frep);
   return json;
 }
 
@@ -103,9 +104,15 @@ Result<CombinationResult> resultFromJson(const Json& json, const std::string& la
     // Absent from results stored before backends' memory was measured apart.
     if (json.contains("backend_rss_bytes") && !json.at("backend_rss_bytes").is_null())
       r.backend_rss_bytes = json.at("backend_rss_bytes").get<std::size_t>();
-    if (json.contains("comparison")) {
-      r.comparison = json.at("comparison");
-      if (!r.comparison.is_object()) return bad("/comparison: expected an object");
+    if (json.contains("comparison") && r.combination.kind == InputKind::kSurfaces) {
+      Result<SurfaceRun> run = surfaceRunFromJson(json.at("comparison"));
+      if (!run.ok()) return bad("/comparison: " + run.status().message());
+      r.surfaces = std::move(run).value();
+    }
+    if (json.contains("comparison") && r.combination.kind == InputKind::kFrep) {
+      Result<FrepRun> run = frepRunFromJson(json.at("comparison"));
+      if (!run.ok()) return bad("/comparison: " + run.status().message());
+      r.frep = std::move(run).value();
     }
     return r;
   } catch (const Json::exception& e) {

@@ -43,7 +43,8 @@ void readAnswer(const std::string& answer_path, CombinationResult& result) {
   result.measurements = std::move(answer.value().measurements);
   result.problems = std::move(answer.value().problems);
   result.backend_rss_bytes = answer.value().backend_rss_bytes;
-  result.comparison = std::move(answer.value().comparison);
+  result.surfaces = std::move(answer.value().surfaces);
+  result.frep = std::move(answer.value().frep);
 }
 
 // Runs one combination in a worker and reads its answer back.

@@ -1,6 +1,8 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include <Eigen/Core>
@@ -29,6 +31,9 @@ enum class CollisionVerdict {
 
 /// "colliding", "separated", "touching", "undecided".
 const char* verdictName(CollisionVerdict verdict);
+
+/// The verdict verdictName names, if any.
+std::optional<CollisionVerdict> parseVerdict(const std::string& name);
 
 /// Cells handled at one octree level (the common bounds are level 0).
 struct CollisionLevel {

@@ -35,12 +35,25 @@ struct FrepSeedAnswer {
   bool asExpected() const;
 };
 
+/// How a mesh backend's boolean answer compares with the guaranteed one.
+enum class MeshAnswerOutcome {
+  kAgrees,
+  kMissedOverlap,    ///< the solids collide; the meshes were reported apart
+  kFalseContact,     ///< the solids are separated; the meshes were reported in contact
+  kWithinPrecision,  ///< the solids touch within the precision: either answer is right
+  kNoReference,      ///< the seed could not decide
+};
+
+/// "agrees", "missed overlap", "false contact", "within precision", "no reference".
+const char* meshAnswerOutcomeName(MeshAnswerOutcome outcome);
+std::optional<MeshAnswerOutcome> parseMeshAnswerOutcome(const std::string& name);
+
 /// A mesh backend's answer for one pair at one frame, against the guaranteed one.
 struct FrepMeshAnswer {
   double time = 0.0;
   std::string pair;
   bool intersecting = false;
-  std::string outcome;  ///< "agrees", "missed overlap", "false contact", "within precision"
+  MeshAnswerOutcome outcome = MeshAnswerOutcome::kAgrees;
   double query_us = 0.0;
   double ms_with_meshing = 0.0;  ///< polygonization and build where a mesh changed, and query
 };
@@ -55,7 +68,7 @@ struct FrepBackendRow {
   std::vector<FrepMeshAnswer> answers;
   double ms_per_query_with_meshing = 0.0;
 
-  std::size_t count(const std::string& outcome) const;
+  std::size_t count(MeshAnswerOutcome outcome) const;
 };
 
 /// An FRep run: the seed's guaranteed answers and each backend's rows.
@@ -66,6 +79,8 @@ struct FrepRun {
   std::vector<FrepSeedAnswer> seed;  ///< per frame, then pair; empty unless seed rows were asked
   std::vector<FrepBackendRow> comparators;
   std::size_t unexpected = 0;  ///< seed answers that differ from the file's expected ones
+  /// The preview picture as a data URI ("data:image/png;base64,..."), where one was made.
+  std::string preview_png;
 };
 
 /// Runs the seed method, then each backend on polygonizations of the solids, every answer timed
@@ -76,6 +91,10 @@ Result<FrepRun> runFrep(const FrepFile& file, const std::string& path,
 
 /// The run as `collido frep --json` writes it (what the dashboard reads).
 nlohmann::json frepRunJson(const FrepRun& run);
+
+/// Reads what frepRunJson wrote (a seed answer keeps its verdict, witness and work, not its
+/// touching cells); errors name the field.
+Result<FrepRun> frepRunFromJson(const nlohmann::json& json);
 
 /// The run's text tables: the seed's answers (when asked) and the backends' rows.
 std::string frepRunText(const FrepRun& run);

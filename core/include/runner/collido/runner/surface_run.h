@@ -30,6 +30,9 @@ struct SurfaceRunRequest {
   std::vector<int> tessellations{8, 32, 128};  ///< segments per parameter
 };
 
+/// "hull" or "box".
+const char* patchBoundName(nurbs::PatchBound bound);
+
 /// One setting of the seed method: its certified interval, its work and its median time.
 struct SeedDistanceRow {
   nurbs::PatchBound bound = nurbs::PatchBound::kConvexHull;
@@ -82,6 +85,10 @@ Result<SurfaceRun> runSurfaces(const SurfaceRunRequest& request);
 
 /// The run as `collido surface-distance --json` writes it (what the dashboard reads).
 nlohmann::json surfaceRunJson(const SurfaceRun& run);
+
+/// Reads what surfaceRunJson wrote (a backend row that is not "ok" reads as kFailed); errors
+/// name the field.
+Result<SurfaceRun> surfaceRunFromJson(const nlohmann::json& json);
 
 /// The run's text tables: the seed rows (unless none), the work per level when asked, and the
 /// backends' rows with their failures.

@@ -7,7 +7,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include <collido/runner/frep_run.h>
 #include <collido/runner/runner.h>
+#include <collido/runner/surface_run.h>
 #include <collido/status.h>
 #include <collido/study/plan.h>
 
@@ -54,9 +56,12 @@ struct CombinationResult {
   /// the worker held before (scene, oracle answers): the backend's own share (ResidentPeak).
   /// Absent when the worker did not finish or the kernel could not reset the peak.
   std::optional<std::size_t> backend_rss_bytes;
-  /// Surface and FRep combinations: the run's document for this one setting (surfaceRunJson,
-  /// frepRunJson; the seed's FRep preview inline); null for mesh scenes.
-  nlohmann::json comparison;
+  /// A surface file's combination: its run for this one setting (the seed's rows, or one
+  /// backend's against the certified reference); absent for other inputs and workers that
+  /// wrote no answer.
+  std::optional<SurfaceRun> surfaces;
+  /// An FRep file's combination: likewise, the seed's run with its preview picture inline.
+  std::optional<FrepRun> frep;
 
   /// The memory figure tables show: the backend's own share, else the worker's peak.
   std::size_t residentBytes() const { return backend_rss_bytes.value_or(outcome.peak_rss_bytes); }

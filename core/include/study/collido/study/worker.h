@@ -25,8 +25,8 @@ struct WorkerRequest {
 /// (and, when coarser than 1, at resolution 1 with the same poses, as the finest truth), its
 /// answers capped at its limit, built for its needs and measured. A surface or FRep file runs
 /// its seed method, or one backend on the combination's grid against the seed's answers, into
-/// CombinationResult::comparison. Errors are bad input (scene, backend); an engine's failure is
-/// recorded in the measurements or the comparison's rows instead.
+/// CombinationResult::surfaces or ::frep. Errors are bad input (scene, backend); an engine's
+/// failure is recorded in the measurements or the comparison's rows instead.
 Result<CombinationResult> runCombination(const WorkerRequest& request);
 
 }  // namespace collido::study

@@ -1,0 +1,140 @@
+// A surface run as JSON: the document collido surface-distance --json writes, the dashboard
+// reads and a study stores per combination.
+#include <filesystem>
+
+#include <collido/runner/measurement_status.h>
+#include <collido/runner/surface_run.h>
+
+namespace collido {
+namespace {
+
+using Json = nlohmann::json;
+
+// A row's status as its document writes it: "ok" (MeasurementStatus's text), else why it failed.
+std::string okStatus() {
+  return MeasurementStatus().text();
+}
+
+nurbs::SurfaceDistance distanceFromJson(const Json& row) {
+  nurbs::SurfaceDistance d;
+  d.lower = row.at("lower").get<double>();
+  d.upper = row.at("upper").get<double>();
+  d.converged = row.at("converged").get<bool>();
+  d.pairs_bounded = row.at("pairs_bounded").get<std::size_t>();
+  d.pairs_opened = row.at("pairs_opened").get<std::size_t>();
+  for (const Json& level : row.at("levels")) {
+    d.levels.push_back({level.at("pairs_bounded").get<std::size_t>(),
+                        level.at("pairs_opened").get<std::size_t>(),
+                        level.at("ms").get<double>() * 1e-3});
+  }
+  return d;
+}
+
+SurfaceBackendRow backendRowFromJson(const Json& json) {
+  SurfaceBackendRow row;
+  row.backend = json.at("backend").get<std::string>();
+  row.segments = json.at("segments").get<int>();
+  const MeasurementStatus status =
+      MeasurementStatus::fromText(json.at("status").get<std::string>());
+  if (!status.ok()) {
+    row.end = SurfaceRowEnd::kFailed;
+    row.failure = status.reason();
+    return row;
+  }
+  row.triangles = json.at("triangles").get<std::size_t>();
+  row.distance = json.at("distance").get<double>();
+  row.error = json.at("error").get<double>();
+  row.median_us = json.at("median_us").get<double>();
+  row.build_ms = json.at("build_ms").get<double>();
+  return row;
+}
+
+}  // namespace
+
+Json surfaceRunJson(const SurfaceRun& run) {
+  Json json = {{"collidoscope_surface_distance", 1},
+               {"file", run.file},
+               {"name", std::filesystem::path(run.file).stem().string()},
+               {"a", run.a},
+               {"b", run.b},
+               {"model_size", run.model_size},
+               {"tolerance", run.tolerance},
+               {"seed", Json::array()},
+               {"backends", Json::array()}};
+  for (const SeedDistanceRow& row : run.seed) {
+    const nurbs::SurfaceDistance& d = row.distance;
+    Json levels = Json::array();
+    for (const nurbs::LevelWork& w : d.levels)
+      levels.push_back({{"pairs_bounded", w.pairs_bounded},
+                        {"pairs_opened", w.pairs_opened},
+                        {"ms", w.seconds * 1e3}});
+    json["seed"].push_back({{"bound", patchBoundName(row.bound)},
+                            {"descent", row.descent},
+                            {"lower", d.lower},
+                            {"upper", d.upper},
+                            {"converged", d.converged},
+                            {"pairs_bounded", d.pairs_bounded},
+                            {"pairs_opened", d.pairs_opened},
+                            {"median_ms", row.median_ms},
+                            {"levels", levels}});
+  }
+  if (run.backends_asked && run.reference)
+    json["reference"] = {{"lower", run.reference->lower}, {"upper", run.reference->upper}};
+  for (const SurfaceBackendRow& row : run.backends) {
+    if (row.end != SurfaceRowEnd::kOk) {
+      json["backends"].push_back(
+          {{"backend", row.backend},
+           {"segments", row.end == SurfaceRowEnd::kFailed ? row.segments : 0},
+           {"status", row.failure}});
+      continue;
+    }
+    json["backends"].push_back({{"backend", row.backend},
+                                {"segments", row.segments},
+                                {"triangles", row.triangles},
+                                {"distance", row.distance},
+                                {"error", row.error},
+                                {"median_us", row.median_us},
+                                {"build_ms", row.build_ms},
+                                {"status", okStatus()}});
+  }
+  return json;
+}
+Result<SurfaceRun> surfaceRunFromJson(const Json& json) {
+  try {
+    if (json.value("collidoscope_surface_distance", 0) != 1)
+      return Status(StatusCode::kInvalidArgument,
+                    "not a surface run (collidoscope_surface_distance != 1)");
+    SurfaceRun run;
+    run.file = json.at("file").get<std::string>();
+    run.a = json.at("a").get<std::string>();
+    run.b = json.at("b").get<std::string>();
+    run.model_size = json.at("model_size").get<double>();
+    run.tolerance = json.at("tolerance").get<double>();
+    for (const Json& row : json.at("seed")) {
+      const std::string bound = row.at("bound").get<std::string>();
+      SeedDistanceRow seed;
+      seed.bound = bound == patchBoundName(nurbs::PatchBound::kBox)
+                       ? nurbs::PatchBound::kBox
+                       : nurbs::PatchBound::kConvexHull;
+      seed.descent = row.at("descent").get<bool>();
+      seed.distance = distanceFromJson(row);
+      seed.median_ms = row.at("median_ms").get<double>();
+      run.seed.push_back(std::move(seed));
+    }
+    if (json.contains("reference")) {
+      nurbs::SurfaceDistance reference;
+      reference.lower = json.at("reference").at("lower").get<double>();
+      reference.upper = json.at("reference").at("upper").get<double>();
+      reference.converged = true;
+      run.reference = reference;
+    }
+    for (const Json& row : json.at("backends"))
+      run.backends.push_back(backendRowFromJson(row));
+    run.backends_asked = !run.backends.empty();
+    return run;
+  } catch (const Json::exception& e) {
+    return Status(StatusCode::kInvalidArgument, std::string("surface run: ") + e.what());
+  }
+}
+
+}  // namespace collido
