@@ -1,6 +1,5 @@
 // collido pose-error: how tracking noise, marker count, layout and dropouts become pose error,
-// per solver, on a scene object's mesh (core/pose/error_sweep.h).
-#include <fstream>
+// per solver, on a scene object's mesh (core/pose/error_sweep.h, runner/pose_error_report.h).
 #include <iostream>
 #include <map>
 
@@ -8,7 +7,7 @@
 
 #include <collido/io/files.h>
 #include <collido/pose/error_sweep.h>
-#include <collido/runner/text_table.h>
+#include <collido/runner/pose_error_report.h>
 #include <collido/scene/scene.h>
 
 #include "commands.h"
@@ -31,30 +30,6 @@ struct PoseErrorArguments {
   std::uint64_t seed = 1;
   std::string json_path;
 };
-
-nlohmann::json rowJson(const pose::ErrorSweepRow& r) {
-  const auto number = [](double v) { return std::isnan(v) ? nlohmann::json() : nlohmann::json(v); };
-  return {{"solver", pose::poseSolverName(r.solver)},
-          {"layout", pose::layoutKindName(r.layout)},
-          {"markers", r.markers},
-          {"noise", r.noise},
-          {"dropout", r.dropout},
-          {"trials", r.trials},
-          {"failed", r.failed},
-          {"first_failure", r.first_failure},
-          {"rotation_deg_median", number(r.rotation_deg_median)},
-          {"rotation_deg_p90", number(r.rotation_deg_p90)},
-          {"translation_median", number(r.translation_median)},
-          {"translation_p90", number(r.translation_p90)},
-          {"worst_vertex_median", number(r.worst_vertex_median)},
-          {"worst_vertex_p90", number(r.worst_vertex_p90)},
-          {"pose_worst_vertex_median", number(r.pose_worst_vertex_median)},
-          {"solve_us_median", number(r.solve_us_median)}};
-}
-
-std::string cell(const char* format, double value) {
-  return std::isnan(value) ? "-" : formatNumber(format, value);
-}
 
 int poseError(const PoseErrorArguments& args) {
   Result<Scene> scene = loadScene(args.scene);
@@ -112,46 +87,16 @@ int poseError(const PoseErrorArguments& args) {
     std::cerr << "error: " << rows.status().message() << "\n";
     return 2;
   }
-  std::vector<std::vector<std::string>> table;
-  for (const pose::ErrorSweepRow& r : rows.value()) {
-    table.push_back(
-        {pose::poseSolverName(r.solver), pose::layoutKindName(r.layout), std::to_string(r.markers),
-         formatNumber("%g", r.noise), formatNumber("%g", r.dropout),
-         std::to_string(r.failed) + "/" + std::to_string(r.trials),
-         cell("%.3f", r.rotation_deg_median), cell("%.3f", r.rotation_deg_p90),
-         cell("%.2f", 1000.0 * r.translation_median), cell("%.2f", 1000.0 * r.worst_vertex_median),
-         cell("%.2f", 1000.0 * r.worst_vertex_p90),
-         cell("%.2f", 1000.0 * r.pose_worst_vertex_median), cell("%.1f", r.solve_us_median)});
-  }
   std::cout << object->name << " (" << object->mesh->vertexCount() << " vertices), " << args.trials
             << " random true poses a row, seed " << args.seed << "\n"
-            << formatTextTable(
-                   {"solver", "layout", "markers", "noise", "dropout", "failed", "rot deg median",
-                    "rot deg p90", "transl median x1e-3", "worst vertex median x1e-3",
-                    "worst vertex p90 x1e-3", "rigid pose worst x1e-3", "solve us"},
-                   table, 2)
-            << "Errors against the true pose; 'worst vertex' is the largest displacement of the "
-               "object's mesh by the fit's own map (the affine fit's 12 coefficients), 'rigid "
-               "pose worst' by the rigid pose that drives the collision query; lengths in "
-               "thousandths of the scene unit; 'failed' fits were refused (first reason in the "
-               "JSON).\n";
-  for (const pose::ErrorSweepRow& r : rows.value()) {
-    if (r.failed > 0) {
-      std::cout << "note: " << pose::poseSolverName(r.solver) << " / "
-                << pose::layoutKindName(r.layout) << " / " << r.markers << " markers: " << r.failed
-                << " refused, e.g. " << r.first_failure << "\n";
-      break;
-    }
-  }
+            << errorSweepText(rows.value());
   if (!args.json_path.empty()) {
     nlohmann::json json = {{"collidoscope_pose_error", 1},
                            {"scene", scene.value().name},
                            {"object", object->name},
                            {"trials", args.trials},
                            {"seed", args.seed},
-                           {"rows", nlohmann::json::array()}};
-    for (const pose::ErrorSweepRow& r : rows.value())
-      json["rows"].push_back(rowJson(r));
+                           {"rows", errorSweepRowsJson(rows.value())}};
     if (Status s = io::writeFileAtomically(args.json_path, json.dump(1) + "\n"); !s.ok()) {
       std::cerr << "error: " << s.message() << "\n";
       return 2;

@@ -26,7 +26,7 @@ Status runSurfaceCombination(const WorkerRequest& request, std::vector<BackendSp
   run.seed_rows = backends.empty();
   run.backends = std::move(backends);
   run.tessellations = c.grid;
-  const Result<SurfaceRun> done = runSurfaces(run);
+  Result<SurfaceRun> done = runSurfaces(run);
   if (!done.ok()) return done.status();
   if (!done.value().reference) result.problems.push_back("no bound converged");
   result.surfaces = std::move(done).value();
@@ -43,7 +43,7 @@ Status runFrepCombination(const WorkerRequest& request, std::vector<BackendSpec>
   run.seed_rows = backends.empty();
   run.backends = std::move(backends);
   run.resolutions = c.grid;
-  const Result<FrepRun> done = runFrep(file.value(), c.scene_path, run);
+  Result<FrepRun> done = runFrep(file.value(), c.scene_path, run);
   if (!done.ok()) return done.status();
   result.frep = std::move(done).value();
   if (result.frep->unexpected > 0) {
