@@ -1,8 +1,12 @@
 // An FRep run as JSON: the document collido frep --json writes, the dashboard reads and a study
 // stores per combination.
+#include <stdexcept>
+
 #include <collido/runner/frep_run.h>
 #include <collido/runner/measurement_status.h>
 #include <collido/runner/statistics.h>
+
+#include "json_number.h"
 
 namespace collido {
 namespace {
@@ -16,7 +20,7 @@ std::string okStatus() {
 
 FrepSeedAnswer seedAnswerFromJson(const Json& json) {
   FrepSeedAnswer answer;
-  answer.time = json.at("time").get<double>();
+  answer.time = detail::numberAt(json, "time");
   answer.pair = json.at("pair").get<std::string>();
   answer.expected = json.at("expected").get<std::string>();
   const std::string verdict = json.at("verdict").get<std::string>();
@@ -36,7 +40,7 @@ FrepSeedAnswer seedAnswerFromJson(const Json& json) {
     const Json& w = json.at("witness");
     result.witness = {w.at(0).get<double>(), w.at(1).get<double>(), w.at(2).get<double>()};
   }
-  answer.median_ms = json.at("median_ms").get<double>();
+  answer.median_ms = detail::numberAt(json, "median_ms");
   return answer;
 }
 
@@ -48,15 +52,15 @@ FrepBackendRow backendRowFromJson(const Json& json) {
       MeasurementStatus::fromText(json.at("status").get<std::string>());
   if (!status.ok()) row.failure = status.reason();
   row.triangles_first_pair = json.at("triangles_first_pair").get<std::size_t>();
-  row.ms_per_query_with_meshing = json.at("ms_per_query_with_meshing").get<double>();
+  row.ms_per_query_with_meshing = detail::numberAt(json, "ms_per_query_with_meshing");
   for (const Json& frame : json.at("frames")) {
     const std::string outcome = frame.at("outcome").get<std::string>();
     const std::optional<MeshAnswerOutcome> parsed = parseMeshAnswerOutcome(outcome);
     if (!parsed) throw std::invalid_argument("unknown outcome '" + outcome + "'");
-    row.answers.push_back({frame.at("time").get<double>(), frame.at("pair").get<std::string>(),
+    row.answers.push_back({detail::numberAt(frame, "time"), frame.at("pair").get<std::string>(),
                            frame.at("intersecting").get<bool>(), *parsed,
-                           frame.at("query_us").get<double>(),
-                           frame.at("ms_with_meshing").get<double>()});
+                           detail::numberAt(frame, "query_us"),
+                           detail::numberAt(frame, "ms_with_meshing")});
   }
   return row;
 }
@@ -124,7 +128,7 @@ Result<FrepRun> frepRunFromJson(const Json& json) {
     FrepRun run;
     run.file = json.at("file").get<std::string>();
     run.name = json.at("name").get<std::string>();
-    run.precision = json.at("precision").get<double>();
+    run.precision = detail::numberAt(json, "precision");
     for (const Json& answer : json.at("seed")) {
       run.seed.push_back(seedAnswerFromJson(answer));
       if (!run.seed.back().asExpected()) ++run.unexpected;

@@ -98,6 +98,12 @@ SurfaceBackendRow backendRow(BackendInstance& backend, const std::string& label,
     row.failure = timed.status().message();
     return row;
   }
+  // An answer with no finite distance is a failure, not a row with an infinite error.
+  if (!std::isfinite(result.distance.distance)) {
+    row.end = SurfaceRowEnd::kFailed;
+    row.failure = "no finite distance reported";
+    return row;
+  }
   row.distance = result.distance.distance;
   row.error = row.distance - truth;
   row.median_us = quantile(timed.value(), 0.5);

@@ -5,6 +5,8 @@
 #include <collido/runner/measurement_status.h>
 #include <collido/runner/surface_run.h>
 
+#include "json_number.h"
+
 namespace collido {
 namespace {
 
@@ -17,15 +19,15 @@ std::string okStatus() {
 
 nurbs::SurfaceDistance distanceFromJson(const Json& row) {
   nurbs::SurfaceDistance d;
-  d.lower = row.at("lower").get<double>();
-  d.upper = row.at("upper").get<double>();
+  d.lower = detail::numberAt(row, "lower");
+  d.upper = detail::numberAt(row, "upper");
   d.converged = row.at("converged").get<bool>();
   d.pairs_bounded = row.at("pairs_bounded").get<std::size_t>();
   d.pairs_opened = row.at("pairs_opened").get<std::size_t>();
   for (const Json& level : row.at("levels")) {
     d.levels.push_back({level.at("pairs_bounded").get<std::size_t>(),
                         level.at("pairs_opened").get<std::size_t>(),
-                        level.at("ms").get<double>() * 1e-3});
+                        detail::numberAt(level, "ms") * 1e-3});
   }
   return d;
 }
@@ -42,10 +44,10 @@ SurfaceBackendRow backendRowFromJson(const Json& json) {
     return row;
   }
   row.triangles = json.at("triangles").get<std::size_t>();
-  row.distance = json.at("distance").get<double>();
-  row.error = json.at("error").get<double>();
-  row.median_us = json.at("median_us").get<double>();
-  row.build_ms = json.at("build_ms").get<double>();
+  row.distance = detail::numberAt(json, "distance");
+  row.error = detail::numberAt(json, "error");
+  row.median_us = detail::numberAt(json, "median_us");
+  row.build_ms = detail::numberAt(json, "build_ms");
   return row;
 }
 
@@ -108,8 +110,8 @@ Result<SurfaceRun> surfaceRunFromJson(const Json& json) {
     run.file = json.at("file").get<std::string>();
     run.a = json.at("a").get<std::string>();
     run.b = json.at("b").get<std::string>();
-    run.model_size = json.at("model_size").get<double>();
-    run.tolerance = json.at("tolerance").get<double>();
+    run.model_size = detail::numberAt(json, "model_size");
+    run.tolerance = detail::numberAt(json, "tolerance");
     for (const Json& row : json.at("seed")) {
       const std::string bound = row.at("bound").get<std::string>();
       SeedDistanceRow seed;
@@ -118,7 +120,7 @@ Result<SurfaceRun> surfaceRunFromJson(const Json& json) {
                        : nurbs::PatchBound::kConvexHull;
       seed.descent = row.at("descent").get<bool>();
       seed.distance = distanceFromJson(row);
-      seed.median_ms = row.at("median_ms").get<double>();
+      seed.median_ms = detail::numberAt(row, "median_ms");
       run.seed.push_back(std::move(seed));
     }
     if (json.contains("reference")) {

@@ -2,6 +2,7 @@
 // apart. The oracle check (compareWithOracle) flags a frame whose points miss by more than
 // rounding; this gives the size of the miss, so a backend whose points are loosely tied to its
 // distance shows by how much.
+#include <algorithm>
 #include <cmath>
 
 #include "../check.h"
@@ -16,6 +17,9 @@ class WitnessGapObserver final : public FrameObserver {
   void pair(const AskedPair& asked, FrameRecord& record) override {
     const DistanceResult& d = asked.reported.distance;
     const double gap = std::abs((d.point_b - d.point_a).norm() - d.distance);
+    // No finite distance or points: the oracle comparison already counts the answer wrong, and
+    // a gap that is not a number would not survive the records' JSON.
+    if (!std::isfinite(gap)) return;
     double& value = record.values[kFrameValue];
     value = std::max(value, gap);
   }
