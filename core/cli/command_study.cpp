@@ -70,12 +70,10 @@ int runWorkerMode(const std::string& request_path, const std::string& out_path, 
     std::cerr << "error: " << s.message() << "\n";
     return 2;
   }
-  // A seed method that certified nothing, or answered otherwise than its file expects, fails its
-  // combination: its answer is kept beside the failure.
-  if (result.value().combination.kind == study::InputKind::kScene) return 0;
+  if (!study::failsItsWorker(result.value())) return 0;
   for (const std::string& problem : result.value().problems)
     std::cerr << "error: " << problem << "\n";
-  return result.value().problems.empty() ? 0 : 1;
+  return 1;
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 // same question answered by surface backends (OpenCASCADE, the seed as a plugin) and by mesh
 // backends on tessellations of the surfaces: run time against error (runner/surface_run.h).
 #include <iostream>
+#include <optional>
 
 #include <collido/io/files.h>
 #include <collido/runner/surface_run.h>
@@ -24,12 +25,12 @@ struct SurfaceDistanceArguments {
 int surfaceDistance(SurfaceDistanceArguments& args, const PluginOptions& plugin_options) {
   args.run.bounds.clear();
   for (const std::string& bound : args.bounds) {
-    if (bound != "hull" && bound != "box") {
+    const std::optional<nurbs::PatchBound> parsed = parsePatchBound(bound);
+    if (!parsed) {
       std::cerr << "error: --bounds: '" << bound << "' is not hull or box\n";
       return 2;
     }
-    args.run.bounds.push_back(bound == "hull" ? nurbs::PatchBound::kConvexHull
-                                              : nurbs::PatchBound::kBox);
+    args.run.bounds.push_back(*parsed);
   }
   args.run.seed_rows = !args.backends_only;
   if (!args.backends.empty()) {

@@ -3,20 +3,14 @@
 #include <stdexcept>
 
 #include <collido/runner/frep_run.h>
-#include <collido/runner/measurement_status.h>
 #include <collido/runner/statistics.h>
 
-#include "json_number.h"
+#include "run_json.h"
 
 namespace collido {
 namespace {
 
 using Json = nlohmann::json;
-
-// A row's status as its document writes it: "ok" (MeasurementStatus's text), else why it failed.
-std::string okStatus() {
-  return MeasurementStatus().text();
-}
 
 FrepSeedAnswer seedAnswerFromJson(const Json& json) {
   FrepSeedAnswer answer;
@@ -48,9 +42,7 @@ FrepBackendRow backendRowFromJson(const Json& json) {
   FrepBackendRow row;
   row.backend = json.at("backend").get<std::string>();
   row.resolution = json.at("resolution").get<int>();
-  const MeasurementStatus status =
-      MeasurementStatus::fromText(json.at("status").get<std::string>());
-  if (!status.ok()) row.failure = status.reason();
+  row.failure = detail::rowFailure(json);
   row.triangles_first_pair = json.at("triangles_first_pair").get<std::size_t>();
   row.ms_per_query_with_meshing = detail::numberAt(json, "ms_per_query_with_meshing");
   for (const Json& frame : json.at("frames")) {
@@ -115,7 +107,7 @@ Json frepRunJson(const FrepRun& run) {
          {"wrong", missed + false_contacts},
          {"ms_per_query_with_meshing", row.ms_per_query_with_meshing},
          {"median_query_us", query_us.empty() ? 0.0 : quantile(query_us, 0.5)},
-         {"status", row.failure.empty() ? okStatus() : row.failure},
+         {"status", detail::rowStatus(row.failure)},
          {"frames", frames}});
   }
   if (!run.preview_png.empty()) json["preview_png"] = run.preview_png;

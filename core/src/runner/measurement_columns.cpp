@@ -37,7 +37,7 @@ std::string pairFigure(const QueryMeasurement& m, double value) {
 std::vector<MeasurementColumn> withCheckColumns(std::vector<MeasurementColumn> columns) {
   for (const CheckFigure& figure : checkFigures()) {
     if (figure.column.empty()) continue;
-    columns.push_back({figure.column, [&figure](const QueryMeasurement& m) {
+    columns.push_back({figure.column, [figure](const QueryMeasurement& m) {
                          const std::optional<double> value = figure.value(m);
                          return value ? formatNumber(figure.format, *value) : std::string("-");
                        }});

@@ -148,6 +148,13 @@ const char* patchBoundName(nurbs::PatchBound bound) {
   return bound == nurbs::PatchBound::kConvexHull ? "hull" : "box";
 }
 
+std::optional<nurbs::PatchBound> parsePatchBound(const std::string& name) {
+  for (const nurbs::PatchBound bound : {nurbs::PatchBound::kConvexHull, nurbs::PatchBound::kBox}) {
+    if (name == patchBoundName(bound)) return bound;
+  }
+  return std::nullopt;
+}
+
 std::string SeedDistanceRow::label() const {
   return std::string(patchBoundName(bound)) + (descent ? " + descent" : " (seed)");
 }

@@ -1,21 +1,16 @@
 // A surface run as JSON: the document collido surface-distance --json writes, the dashboard
 // reads and a study stores per combination.
 #include <filesystem>
+#include <stdexcept>
 
-#include <collido/runner/measurement_status.h>
 #include <collido/runner/surface_run.h>
 
-#include "json_number.h"
+#include "run_json.h"
 
 namespace collido {
 namespace {
 
 using Json = nlohmann::json;
-
-// A row's status as its document writes it: "ok" (MeasurementStatus's text), else why it failed.
-std::string okStatus() {
-  return MeasurementStatus().text();
-}
 
 nurbs::SurfaceDistance distanceFromJson(const Json& row) {
   nurbs::SurfaceDistance d;
@@ -36,11 +31,9 @@ SurfaceBackendRow backendRowFromJson(const Json& json) {
   SurfaceBackendRow row;
   row.backend = json.at("backend").get<std::string>();
   row.segments = json.at("segments").get<int>();
-  const MeasurementStatus status =
-      MeasurementStatus::fromText(json.at("status").get<std::string>());
-  if (!status.ok()) {
+  row.failure = detail::rowFailure(json);
+  if (!row.failure.empty()) {
     row.end = SurfaceRowEnd::kFailed;
-    row.failure = status.reason();
     return row;
   }
   row.triangles = json.at("triangles").get<std::size_t>();
@@ -97,10 +90,11 @@ Json surfaceRunJson(const SurfaceRun& run) {
                                 {"error", row.error},
                                 {"median_us", row.median_us},
                                 {"build_ms", row.build_ms},
-                                {"status", okStatus()}});
+                                {"status", detail::rowStatus({})}});
   }
   return json;
 }
+
 Result<SurfaceRun> surfaceRunFromJson(const Json& json) {
   try {
     if (json.value("collidoscope_surface_distance", 0) != 1)
@@ -114,10 +108,10 @@ Result<SurfaceRun> surfaceRunFromJson(const Json& json) {
     run.tolerance = detail::numberAt(json, "tolerance");
     for (const Json& row : json.at("seed")) {
       const std::string bound = row.at("bound").get<std::string>();
+      const std::optional<nurbs::PatchBound> parsed = parsePatchBound(bound);
+      if (!parsed) throw std::invalid_argument("unknown bound '" + bound + "'");
       SeedDistanceRow seed;
-      seed.bound = bound == patchBoundName(nurbs::PatchBound::kBox)
-                       ? nurbs::PatchBound::kBox
-                       : nurbs::PatchBound::kConvexHull;
+      seed.bound = *parsed;
       seed.descent = row.at("descent").get<bool>();
       seed.distance = distanceFromJson(row);
       seed.median_ms = detail::numberAt(row, "median_ms");
@@ -135,6 +129,8 @@ Result<SurfaceRun> surfaceRunFromJson(const Json& json) {
     run.backends_asked = !run.backends.empty();
     return run;
   } catch (const Json::exception& e) {
+    return Status(StatusCode::kInvalidArgument, std::string("surface run: ") + e.what());
+  } catch (const std::invalid_argument& e) {
     return Status(StatusCode::kInvalidArgument, std::string("surface run: ") + e.what());
   }
 }

@@ -11,12 +11,6 @@ namespace {
 constexpr int kPreviewWidth = 480;
 constexpr int kPreviewHeight = 360;
 
-Result<std::vector<BackendSpec>> backendOf(const WorkerRequest& request) {
-  if (request.combination.backend == kSeedMethod) return std::vector<BackendSpec>{};
-  const PluginDiscovery found = discoverPlugins(request.plugin_paths, request.default_plugins);
-  return resolveBackends({request.combination.backend}, found.plugins);
-}
-
 Status runSurfaceCombination(const WorkerRequest& request, std::vector<BackendSpec> backends,
                              CombinationResult& result) {
   const Combination& c = request.combination;
@@ -60,14 +54,13 @@ Status runFrepCombination(const WorkerRequest& request, std::vector<BackendSpec>
 
 }  // namespace
 
-Result<CombinationResult> runComparisonCombination(const WorkerRequest& request) {
-  Result<std::vector<BackendSpec>> backends = backendOf(request);
-  if (!backends.ok()) return backends.status();
+Result<CombinationResult> runComparisonCombination(const WorkerRequest& request,
+                                                   std::vector<BackendSpec> backends) {
   CombinationResult result;
   result.combination = request.combination;
   const Status run = request.combination.kind == InputKind::kSurfaces
-                         ? runSurfaceCombination(request, std::move(backends).value(), result)
-                         : runFrepCombination(request, std::move(backends).value(), result);
+                         ? runSurfaceCombination(request, std::move(backends), result)
+                         : runFrepCombination(request, std::move(backends), result);
   if (!run.ok()) return run;
   return result;
 }

@@ -18,11 +18,25 @@ constexpr int kMinTimedCalls = 12;
 /// The fewest back-to-back calls a frame gets for the repeated protocol's secondary figure.
 constexpr int kMinRepeatedCalls = 3;
 
+// The combination's backend setting, found among the worker's plugins; none for a seed method.
+Result<std::vector<BackendSpec>> backendsOf(const WorkerRequest& request) {
+  if (request.combination.backend == kSeedMethod) return std::vector<BackendSpec>{};
+  const PluginDiscovery found = discoverPlugins(request.plugin_paths, request.default_plugins);
+  return resolveBackends({request.combination.backend}, found.plugins);
+}
+
 }  // namespace
+
+bool failsItsWorker(const CombinationResult& result) {
+  return result.combination.kind != InputKind::kScene && !result.problems.empty();
+}
 
 Result<CombinationResult> runCombination(const WorkerRequest& request) {
   const Combination& c = request.combination;
-  if (c.kind != InputKind::kScene) return runComparisonCombination(request);
+  Result<std::vector<BackendSpec>> specs = backendsOf(request);
+  if (!specs.ok()) return specs.status();
+  if (c.kind != InputKind::kScene)
+    return runComparisonCombination(request, std::move(specs).value());
   // The scene's solved placement is kept beside the oracle's answers, solved once per study.
   SceneLoadOptions load{c.resolution};
   if (!request.oracle_directory.empty())
@@ -48,10 +62,6 @@ Result<CombinationResult> runCombination(const WorkerRequest& request) {
       if (q.request.kind == QueryKind::kContacts) q.request.max_contacts = c.limit;
     }
   }
-
-  const PluginDiscovery found = discoverPlugins(request.plugin_paths, request.default_plugins);
-  Result<std::vector<BackendSpec>> specs = resolveBackends({c.backend}, found.plugins);
-  if (!specs.ok()) return specs.status();
 
   RunOptions options;
   options.repetitions = request.repetitions;

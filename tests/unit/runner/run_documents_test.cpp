@@ -74,6 +74,11 @@ TEST(RunDocuments, ASurfaceRunReadBackWritesTheSameDocument) {
   ASSERT_TRUE(tolerant.ok()) << tolerant.status().toString();
   EXPECT_TRUE(std::isnan(tolerant.value().backends[1].median_us));
   EXPECT_FALSE(surfaceRunFromJson(nlohmann::json::object()).ok());
+  nlohmann::json unknown = written;
+  unknown["seed"][0]["bound"] = "sphere";
+  const Result<SurfaceRun> refused = surfaceRunFromJson(unknown);
+  ASSERT_FALSE(refused.ok());
+  EXPECT_NE(refused.status().message().find("unknown bound 'sphere'"), std::string::npos);
 }
 
 TEST(RunDocuments, AnFrepRunReadBackWritesTheSameDocument) {

@@ -32,6 +32,7 @@ struct SurfaceRunRequest {
 
 /// "hull" or "box".
 const char* patchBoundName(nurbs::PatchBound bound);
+std::optional<nurbs::PatchBound> parsePatchBound(const std::string& name);
 
 /// One setting of the seed method: its certified interval, its work and its median time.
 struct SeedDistanceRow {

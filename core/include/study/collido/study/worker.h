@@ -29,4 +29,9 @@ struct WorkerRequest {
 /// failure is recorded in the measurements or the comparison's rows instead.
 Result<CombinationResult> runCombination(const WorkerRequest& request);
 
+/// Whether a finished combination fails its worker (exit code 1, its answer written all the
+/// same): a surface or FRep seed method that certified nothing or answered otherwise than its
+/// file expects, as its problems say.
+bool failsItsWorker(const CombinationResult& result);
+
 }  // namespace collido::study
