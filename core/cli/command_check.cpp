@@ -48,6 +48,7 @@ int checkScenes(const std::vector<std::string>& paths) {
       std::cout << "  object " << o.name << ": " << o.report.summary()
                 << (o.parent ? ", on " + scene.objects[*o.parent].name : std::string())
                 << (o.poses.size() == 1 ? ", fixed pose" : ", moving");
+      if (!o.present.everyFrame()) std::cout << ", exists in " << o.present.text();
       if (o.states.size() > 1) std::cout << ", " << o.states.size() << " active states";
       if (o.deformation) {
         const std::size_t rules = o.deformation->rules.size();
@@ -73,6 +74,7 @@ int checkScenes(const std::vector<std::string>& paths) {
         std::cout << scene.objects[q.a].name << " vs " << scene.objects[q.b].name;
       }
       if (q.request.max_pairs != 0) std::cout << ", at most " << q.request.max_pairs << " pairs";
+      if (!q.asked.everyFrame()) std::cout << ", asked in " << q.asked.text();
       std::cout << "\n";
     }
   }

@@ -127,7 +127,8 @@ TEST(SceneBadInput, UnknownTopLevelKey) {
                         "allowed: constraints, description, frames, name, objects, queries"}));
 }
 
-// "bad.json: /objects/0: unknown key 'shpe' (allowed: deform, markers, motion, name, parent, pose,
+// "bad.json: /objects/0: unknown key 'shpe' (allowed: deform, frames, markers, motion, name,
+// parent, pose,
 //  schedule, shape, states)"
 TEST(SceneBadInput, UnknownKeyInObject) {
   Json scene = validScene();
@@ -135,7 +136,8 @@ TEST(SceneBadInput, UnknownKeyInObject) {
   EXPECT_TRUE(
       rejected(parse(scene),
                {"/objects/0:", "unknown key 'shpe'",
-                "allowed: deform, markers, motion, name, parent, pose, schedule, shape, states"}));
+                "allowed: deform, frames, markers, motion, name, parent, pose, schedule, shape, "
+                "states"}));
 }
 
 // "bad.json: /objects/1/shape: unknown key 'minor_raduis' (allowed: generator, major_radius,
@@ -171,8 +173,25 @@ TEST(SceneBadInput, UnknownKeyInQuery) {
   Json scene = validScene();
   scene["queries"][0]["max_pair"] = 3;
   EXPECT_TRUE(rejected(parse(scene), {"/queries/0:", "unknown key 'max_pair'",
-                                      "allowed: a, abs_tolerance, among, b, kind, max_contacts, "
-                                      "max_pairs, name, rel_tolerance"}));
+                                      "allowed: a, abs_tolerance, among, b, frames, kind, "
+                                      "max_contacts, max_pairs, name, rel_tolerance"}));
+}
+
+// "bad.json: /queries/0/frames/1: ranges must be ascending and apart: this one starts at frame 1,
+//  the one before ends at 0"
+TEST(SceneBadInput, FrameRangesThatTouch) {
+  Json scene = validScene();
+  scene["queries"][0]["frames"] = Json::parse("[[0, 0], [1, 1]]");
+  EXPECT_TRUE(rejected(parse(scene), {"/queries/0/frames/1:", "ascending and apart"}));
+}
+
+// "bad.json: /queries/0/frames: query 'q' is asked in frame 0, where object 'b' does not exist"
+TEST(SceneBadInput, QueryAskedWhereItsObjectDoesNotExist) {
+  Json scene = validScene();
+  scene["objects"][1]["frames"] = Json::parse("[[1, 1]]");
+  scene["queries"][0]["frames"] = Json::parse("[[0, 1]]");
+  EXPECT_TRUE(rejected(parse(scene),
+                       {"/queries/0/frames:", "asked in frame 0", "object 'b' does not exist"}));
 }
 
 TEST(SceneBadInput, ADistanceQueryWithTolerancesLoads) {

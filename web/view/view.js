@@ -275,6 +275,8 @@ async function main() {
       const pose = d.poses.length === 1 ? d.poses[0] : d.poses[frame];
       o.group.matrix.copy(composeMatrix(THREE, pose));
       o.group.matrixWorldNeedsUpdate = true;
+      // An object added or removed mid-run (a recording) is drawn only while it exists.
+      o.group.visible = !d.present || d.present.some(([from, to]) => frame >= from && frame <= to);
       const active = d.schedule ? d.schedule[frame] : 0;
       o.states.forEach((s, k) => { s.mesh.visible = k === active; });
       if (d.deformed) o.setVertices(o.states[active], floats(buffer, d.deformed[frame]));

@@ -184,6 +184,7 @@ std::vector<FrameWork> stepFrames(const QueryRun& run, const std::optional<Broad
   Shapes before;
   std::map<std::pair<std::size_t, std::size_t>, QueryResult> last_answers;
   for (std::size_t frame = 0; frame < run.scene.frames && m.ok(); ++frame) {
+    if (!run.query.asked.contains(frame)) continue;
     const ObjectPairs candidates = objectPairsAt(broad_phase, run.query, frame);
     FrameRecord record;
     record.frame = frame;
@@ -339,7 +340,9 @@ void runSceneOnBackend(const Scene& scene, const BackendSpec& spec, OracleCache&
   if (scene.hasTrackedObjects()) truth_oracle.emplace(truth_scene, /*witness_only=*/true);
 
   std::size_t frames_done = 0;
-  const std::size_t frames_total = scene.frames * scene.queries.size();
+  std::size_t frames_total = 0;
+  for (const SceneQuery& query : scene.queries)
+    frames_total += query.asked.countIn(scene.frames);
   for (const SceneQuery& query : scene.queries) {
     QueryMeasurement m = measurementOf(query);
     m.protocol = options.protocol;
@@ -358,7 +361,7 @@ void runSceneOnBackend(const Scene& scene, const BackendSpec& spec, OracleCache&
     addBuildFigures(scene, models, run.objects, m);
     if (options.progress) {
       options.progress(label + ": " + scene.name + " / " + query.name + " (" +
-                       std::to_string(scene.frames) + " frames)");
+                       std::to_string(query.asked.countIn(scene.frames)) + " frames)");
     }
 
     // The observers this scene and these options call for.

@@ -234,6 +234,7 @@ void precomputeOracleAnswers(OracleCache& oracle, bool distances) {
     if (query.isGroup()) broad_phase.emplace(scene, query);
     const bool distance = distances && query.request.kind == QueryKind::kDistance;
     for (std::size_t frame = 0; frame < scene.frames; ++frame) {
+      if (!query.asked.contains(frame)) continue;
       const std::vector<std::pair<std::size_t, std::size_t>> candidates =
           detail::objectPairsAt(broad_phase, query, frame);
       for (const auto& [ia, ib] : candidates)

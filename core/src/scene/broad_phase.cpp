@@ -48,6 +48,7 @@ std::vector<std::pair<std::size_t, std::size_t>> BroadPhase::pairsAt(std::size_t
   std::vector<WorldBox> world;
   world.reserve(boxes_.size());
   for (const LocalBox& box : boxes_) {
+    if (!scene_.objects[box.object].present.contains(frame)) continue;
     const Pose& pose = scene_.objects[box.object].poseAt(frame);
     const Eigen::Matrix3d r = pose.linear();
     const Eigen::Vector3d t = pose.translation();

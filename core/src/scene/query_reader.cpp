@@ -1,5 +1,7 @@
 #include "query_reader.h"
 
+#include "frame_ranges_reader.h"
+
 #include <algorithm>
 #include <cstdint>
 #include <iterator>
@@ -112,7 +114,7 @@ void readQueries(const Reader& r, const Node& queries,
   for (std::size_t i = 0; i < queries.value.size(); ++i) {
     const Node node = queries.at(i);
     r.expectObject(node, {"name", "a", "b", "among", "kind", "max_pairs", "max_contacts",
-                          "abs_tolerance", "rel_tolerance"});
+                          "abs_tolerance", "rel_tolerance", "frames"});
     SceneQuery query;
     std::string label;
     if (node.has("among")) {
@@ -147,6 +149,7 @@ void readQueries(const Reader& r, const Node& queries,
       if (value < 0.0) r.fail(node.at(key), std::string(key) + " must be >= 0");
       (key[0] == 'a' ? query.request.abs_tolerance : query.request.rel_tolerance) = value;
     }
+    if (node.has("frames")) query.asked = readFrameRanges(r, node.at("frames"), scene.frames);
     if (node.has("name")) {
       query.name = r.string(node.at("name"));
     } else if (label.empty()) {
@@ -160,6 +163,7 @@ void readQueries(const Reader& r, const Node& queries,
     }
     scene.queries.push_back(query);
   }
+  checkQueryFrames(r, queries, scene);
 }
 
 }  // namespace collido::scene_reading

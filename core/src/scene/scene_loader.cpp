@@ -20,6 +20,7 @@
 
 #include "constraint_reader.h"
 #include "deformation_reader.h"
+#include "frame_ranges_reader.h"
 #include "hierarchy_reader.h"
 #include "marker_reader.h"
 #include "motion_reader.h"
@@ -160,9 +161,10 @@ Scene readScene(const Reader& r, const Json& document, const std::string& base_d
   }
 
   ShapeLoader shapes(r, base_directory, options.max_triangles);
-  const scene_reading::Hierarchy hierarchy = scene_reading::readHierarchy(
-      r, objects,
-      {"name", "parent", "shape", "states", "schedule", "deform", "pose", "motion", "markers"});
+  const scene_reading::Hierarchy hierarchy =
+      scene_reading::readHierarchy(r, objects,
+                                   {"name", "parent", "shape", "states", "schedule", "deform",
+                                    "pose", "motion", "markers", "frames"});
   // Objects are read parents first (a child's poses compose with its parent's) but keep their
   // file order in the scene; `index_of` holds the objects read so far.
   std::map<std::string, std::size_t> index_of;
@@ -193,6 +195,8 @@ Scene readScene(const Reader& r, const Json& document, const std::string& base_d
     if (node.has("markers"))
       scene_reading::readMarkers(r, node.at("markers"), base_directory, scene.frames, object);
     readDeform(r, node, base_directory, scene, index_of, object);
+    if (node.has("frames"))
+      object.present = scene_reading::readFrameRanges(r, node.at("frames"), scene.frames);
     markDrapes(node, index_of, sources, i);
     index_of.emplace(object.name, i);
   }

@@ -129,6 +129,7 @@ Json objectJson(const Scene& scene, const SceneObject& object, GeometryBuffer& b
           {"schedule", std::move(schedule)},
           {"deformed", std::move(deformed)},
           {"poses", posesJson(object.poses)},
+          {"present", object.present.everyFrame() ? Json(nullptr) : Json(object.present.ranges)},
           {"true_poses", std::move(true_poses)},
           {"markers", markersJson(object)}};
 }

@@ -145,6 +145,10 @@ TEST(BroadPhase, CullsSeparatedObjectsAndReportsOverlapsOnce) {
   EXPECT_EQ(BroadPhase(scene, query).pairsAt(0), (PairList{{0, 1}}));
   query.among = {0, 2};
   EXPECT_TRUE(BroadPhase(scene, query).pairsAt(0).empty());
+  // An object that does not exist in the frame (scene key "frames") is in no pair.
+  scene.objects[1].present.ranges = {{1, 1}};
+  query.among = {0, 1, 2};
+  EXPECT_TRUE(BroadPhase(scene, query).pairsAt(0).empty());
 }
 
 // The runner asks the backend every candidate pair and sums the answers: the exact OBB tree

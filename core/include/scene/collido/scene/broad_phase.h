@@ -25,9 +25,9 @@ class BroadPhase {
   /// outlive this object.
   BroadPhase(const Scene& scene, const SceneQuery& query);
 
-  /// Candidate pairs in `frame` (those the query asks: across its two sets, for a query of
-  /// two subtrees): object indices (into Scene::objects) with first < second,
-  /// in ascending order.
+  /// Candidate pairs in `frame` of objects that exist in it (those the query asks: across its
+  /// two sets, for a query of two subtrees): object indices (into Scene::objects) with first <
+  /// second, in ascending order.
   std::vector<std::pair<std::size_t, std::size_t>> pairsAt(std::size_t frame) const;
 
  private:

@@ -18,6 +18,19 @@
 
 namespace collido {
 
+/// The frames an object exists in, or a query is asked in: inclusive [first, last] ranges,
+/// ascending and apart (scene key "frames"). Empty: every frame.
+struct FrameRanges {
+  std::vector<std::pair<std::size_t, std::size_t>> ranges;
+
+  bool everyFrame() const { return ranges.empty(); }
+  bool contains(std::size_t frame) const;
+  /// How many of the first `frames` frames it holds.
+  std::size_t countIn(std::size_t frames) const;
+  /// "every frame", or "frames 0-9, 20, 22-24".
+  std::string text() const;
+};
+
 /// One precomputed shape of an object with active states.
 struct ObjectState {
   std::shared_ptr<const TriangleMesh> mesh;
@@ -52,6 +65,9 @@ struct SceneObject {
   /// Set when an ancestor is tracked and this object is not: the nearest tracked ancestor,
   /// whose fitting noise moves this object with it (Scene::trackingSpreadAt).
   std::optional<std::size_t> tracked_ancestor;
+  /// The frames it exists in (an application's object added or removed mid-run); its poses
+  /// outside them are placeholders that no query reads.
+  FrameRanges present;
 
   /// The object's world pose in `frame`: what every query uses (recovered, when tracked).
   const Pose& poseAt(std::size_t frame) const {
@@ -80,8 +96,9 @@ struct SceneObject {
   std::shared_ptr<const TriangleMesh> shapeAt(std::size_t frame) const;
 };
 
-/// One question asked in every frame: of two objects, or of a group of objects after a shared
-/// broad phase (a pile: every object pair whose bounds may touch gets the question).
+/// One question asked in every frame (or those of `asked`): of two objects, or of a group of
+/// objects after a shared broad phase (a pile: every object pair whose bounds may touch gets the
+/// question).
 struct SceneQuery {
   std::string name;   ///< unique in the scene
   std::size_t a = 0;  ///< index into Scene::objects (a two-object query)
@@ -94,6 +111,8 @@ struct SceneQuery {
   /// not are asked. Empty: every pair of `among` is.
   std::vector<std::size_t> side_b;
   QueryRequest request;
+  /// The frames it is asked in; a group query skips a pair whose object is absent.
+  FrameRanges asked;
 
   bool isGroup() const { return !among.empty(); }
   /// Whether the query asks anything of `object`.

@@ -1,0 +1,86 @@
+#include "frame_ranges_reader.h"
+
+#include <algorithm>
+#include <string>
+
+namespace collido {
+
+bool FrameRanges::contains(std::size_t frame) const {
+  if (ranges.empty()) return true;
+  // The first range ending at or after `frame` is the only one that can hold it.
+  const auto found = std::lower_bound(ranges.begin(), ranges.end(), frame,
+                                      [](const std::pair<std::size_t, std::size_t>& range,
+                                         std::size_t f) { return range.second < f; });
+  return found != ranges.end() && found->first <= frame;
+}
+
+std::size_t FrameRanges::countIn(std::size_t frames) const {
+  if (ranges.empty()) return frames;
+  std::size_t count = 0;
+  for (const auto& [first, last] : ranges) {
+    if (first >= frames) break;
+    count += std::min(last, frames - 1) - first + 1;
+  }
+  return count;
+}
+
+std::string FrameRanges::text() const {
+  if (ranges.empty()) return "every frame";
+  std::string out =
+      ranges.size() == 1 && ranges[0].first == ranges[0].second ? "frame " : "frames ";
+  for (const auto& [first, last] : ranges) {
+    if (&first != &ranges.front().first) out += ", ";
+    out += std::to_string(first) + (last == first ? "" : "-" + std::to_string(last));
+  }
+  return out;
+}
+
+namespace scene_reading {
+
+FrameRanges readFrameRanges(const Reader& r, const Node& node, std::size_t frames) {
+  r.expectArray(node);
+  if (node.value.empty()) r.fail(node, "expected at least one [first, last] range of frames");
+  FrameRanges read;
+  const auto last_frame = static_cast<std::int64_t>(frames) - 1;
+  for (std::size_t i = 0; i < node.value.size(); ++i) {
+    const Node range = node.at(i);
+    r.expectArray(range);
+    if (range.value.size() != 2) {
+      r.fail(range, "expected [first, last] (two frames), got " +
+                        std::to_string(range.value.size()) + " numbers");
+    }
+    const auto first = static_cast<std::size_t>(r.integer(range.at(0), 0, last_frame));
+    const auto last = static_cast<std::size_t>(r.integer(range.at(1), 0, last_frame));
+    if (last < first) r.fail(range, "the last frame comes before the first");
+    // Ranges in order and apart, so that one list of frames has one way to be written.
+    if (!read.ranges.empty() && first <= read.ranges.back().second + 1) {
+      r.fail(range, "ranges must be ascending and apart: this one starts at frame " +
+                        std::to_string(first) + ", the one before ends at " +
+                        std::to_string(read.ranges.back().second));
+    }
+    read.ranges.emplace_back(first, last);
+  }
+  return read;
+}
+
+void checkQueryFrames(const Reader& r, const Node& queries, const Scene& scene) {
+  for (std::size_t i = 0; i < scene.queries.size(); ++i) {
+    const SceneQuery& query = scene.queries[i];
+    if (query.isGroup()) continue;  // the broad phase passes only pairs of present objects
+    for (const std::size_t object : {query.a, query.b}) {
+      const FrameRanges& present = scene.objects[object].present;
+      if (present.everyFrame()) continue;
+      for (std::size_t frame = 0; frame < scene.frames; ++frame) {
+        if (query.asked.contains(frame) && !present.contains(frame)) {
+          const Node node = queries.at(i);
+          r.fail(node.has("frames") ? node.at("frames") : node,
+                 "query '" + query.name + "' is asked in frame " + std::to_string(frame) +
+                     ", where object '" + scene.objects[object].name + "' does not exist");
+        }
+      }
+    }
+  }
+}
+
+}  // namespace scene_reading
+}  // namespace collido
