@@ -8,7 +8,7 @@ cmake_minimum_required(VERSION 3.16)
 
 # Lowest first. Backends (collido_backend_*) sit beside host and scene: they link the plugin API
 # and what they compute with, never the host or the scenes.
-set(layer_0 plugin_api random)
+set(layer_0 plugin_api random record)
 set(layer_1 mesh_types pose constraints convex frep io)
 set(layer_2 oracle mesh)
 set(layer_3 nurbs stress frep_mesh frep_preview obbtree)

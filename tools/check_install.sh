@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
-# Installs a built tree into a temporary prefix and uses it as a stranger would: builds both
-# examples (examples/brute_force_plugin, examples/obbtree_query, the latter as without assimp) out
-# of tree, from copies, with find_package(Collidoscope), and a small program on Collidoscope::core; runs them; runs the
-# installed tool on an installed scene (a run and a 3D view) and the installed conformance kit on
-# the example plugin. CTest runs it
+# Installs a built tree into a temporary prefix and uses it as a stranger would: builds the
+# examples (examples/brute_force_plugin, examples/obbtree_query, the latter as without assimp, and
+# examples/record_fcl_app where FCL is installed) out of tree, from copies, with
+# find_package(Collidoscope), and a small program on Collidoscope::core; runs them; studies the
+# recording the FCL example makes; runs the installed tool on an installed scene (a run and a 3D
+# view) and the installed conformance kit on the example plugin. CTest runs it
 # (install.sdk_examples_and_kit); by hand:
 #   tools/check_install.sh build/release [WORK_DIR]
 # Extra arguments after WORK_DIR go to `collido conformance` (e.g. --scenes-dir DIR).
@@ -86,6 +87,26 @@ cat "$work/run.out"
 "$prefix/bin/collido" view "$prefix/share/collido/scenes/interlocked_tori.json" \
   --backends obbtree -o "$work/view.html" > /dev/null
 grep -q "OrbitControls" "$work/view.html"
+
+# An application recorded with Collidoscope::record (Eigen only), then its recording studied: the
+# path a user takes from their own FCL loop to a study. Only where the build had FCL.
+if [[ -x "$build/examples/record_fcl_app/record_fcl_app" ]]; then
+  echo "== build examples/record_fcl_app against the install, record its run, study the recording"
+  cp -r "$source_dir/examples/record_fcl_app" "$work/record_fcl_app"
+  cmake -S "$work/record_fcl_app" -B "$work/record_fcl_app/build" \
+        -DCMAKE_PREFIX_PATH="$prefix" > "$work/record_fcl_app.configure.log"
+  cmake --build "$work/record_fcl_app/build" > "$work/record_fcl_app.build.log"
+  if grep -E "^(CGAL|TBB|assimp|PNG|Imath|nlohmann_json)_DIR:" \
+       "$work/record_fcl_app/build/CMakeCache.txt"; then
+    echo "error: find_package(Collidoscope COMPONENTS record) looked for more than Eigen" >&2
+    exit 1
+  fi
+  "$work/record_fcl_app/build/record_fcl_app" "$work/recording"
+  "$prefix/bin/collido" study "$work/recording/scene.json" --backends obbtree fcl:obbrss \
+    --repetitions 1 --quiet --out "$work/recording_study" > "$work/recording_study.out"
+  cat "$work/recording_study/table.txt"
+  grep -q '"backend":"fcl' "$work/recording_study/records.jsonl"
+fi
 
 echo "== the installed conformance kit on the example plugin"
 "$prefix/bin/collido" conformance "$work/brute_force_plugin/build/libbrute_force.so" "$@"
