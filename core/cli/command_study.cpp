@@ -86,7 +86,10 @@ void addStudyCommands(CLI::App& app, const PluginOptions& plugins, int& exit_cod
       "OUT/table.txt, OUT/records.jsonl, OUT/summary.json (Google Benchmark format) and "
       "OUT/results/. Exit code: 0 done, 2 bad input, 130 interrupted (resume with --resume)");
   auto args = std::make_shared<study::StudyRequest>();
-  command->add_option("scenes", args->scenes, "scene files (JSON)");
+  command->add_option("scenes", args->scenes,
+                      "scene files (JSON), or mesh files (any other extension): scenes of the "
+                      "meshes are written into OUT/scenes and run with the default sweep unless "
+                      "--sweep is given");
   command->add_option("--surfaces", args->surface_files,
                       "NURBS surface files, each compared as collido surface-distance does: the "
                       "seed method and every backend setting in workers of their own (the "

@@ -809,6 +809,56 @@ TEST(StudyCli, SweepFileSetsTheGrid) {
   EXPECT_FALSE(fs::exists(dir + "/bad/plan.json"));
 }
 
+// `collido study part.obj fixture.stl`: mesh files become two scenes written beside the results
+// (overlapping at random, and a close approach through first contact), run with the default
+// sweep, every other option still applying.
+TEST(StudyCli, MeshFilesBecomeScenesWrittenBesideTheResults) {
+  const std::string dir = test::makeTempDirectory("study_meshes");
+  const std::string out = dir + "/study";
+  test::writeFile(dir + "/part.obj",
+                  "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nv 0 0 1\nv 1 0 1\nv 0 1 1\nv 1 1 1\n"
+                  "f 1 3 4\nf 1 4 2\nf 5 6 8\nf 5 8 7\nf 1 2 6\nf 1 6 5\n"
+                  "f 3 7 8\nf 3 8 4\nf 1 5 7\nf 1 7 3\nf 2 4 8\nf 2 8 6\n");
+  std::string stl = "solid fixture\n";
+  const char* faces[4][3] = {{"0 0 0", "0 2 0", "2 0 0"},
+                             {"0 0 0", "2 0 0", "0 0 2"},
+                             {"0 0 0", "0 0 2", "0 2 0"},
+                             {"2 0 0", "0 2 0", "0 0 2"}};
+  for (const auto& face : faces) {
+    stl += " facet normal 0 0 0\n  outer loop\n";
+    for (const char* corner : face)
+      stl += std::string("   vertex ") + corner + "\n";
+    stl += "  endloop\n endfacet\n";
+  }
+  test::writeFile(dir + "/fixture.stl", stl + "endsolid fixture\n");
+  const CommandRun run =
+      collido({"study", dir + "/part.obj", dir + "/fixture.stl", "--backends", "obbtree",
+               "--rounds", "1", "--adaptive-seconds", "0", "--repetitions", "1", "--out", out},
+              dir);
+  ASSERT_EQ(run.exit_code, 0) << describe(run);
+  for (const char* scene : {"part_vs_fixture_overlap", "part_vs_fixture_approach"}) {
+    const std::string path = out + "/scenes/" + scene + ".json";
+    EXPECT_NE(run.err.find("scene of the meshes: " + path), std::string::npos) << run.err;
+    const Result<Scene> loaded = loadScene(path);
+    ASSERT_TRUE(loaded.ok()) << loaded.status().toString();
+    EXPECT_EQ(loaded.value().queries.size(), 3u);  // boolean, all pairs, distance
+  }
+  const std::vector<CombinationResult> results = readResults(out);
+  ASSERT_EQ(results.size(), 4u);  // the default sweep's two OBB tree settings on each scene
+  for (const CombinationResult& r : results) {
+    SCOPED_TRACE(r.combination.label());
+    EXPECT_EQ(r.outcome.status, WorkerStatus::kOk);
+    for (const QueryMeasurement& m : r.measurements) {
+      EXPECT_EQ(m.disagreements, 0u) << m.query;
+      if (m.kind != QueryKind::kBoolean || r.combination.scene_name != "part_vs_fixture_approach")
+        continue;
+      // Through first contact: apart in the first frame, touching in the last.
+      EXPECT_FALSE(m.frames.front().oracle_intersecting);
+      EXPECT_TRUE(m.frames.back().oracle_intersecting);
+    }
+  }
+}
+
 // Surface and FRep files run as combinations too: the seed method and each backend setting in a
 // worker of its own (a crashing backend costs its own rows only), stored, resumable, joined per
 // file into what collido report shows.

@@ -33,7 +33,7 @@ int runStudy(const StudyRequest& request, std::ostream& out, std::ostream& err) 
     err << "error: " << status.message() << "\n";
     return 2;
   };
-  const Result<StudyInputs> inputs = loadInputs(request);
+  const Result<StudyInputs> inputs = loadInputs(request, err);
   if (!inputs.ok()) return stopped(inputs.status());
   const Result<StudyBackends> backends = probeBackends(request, inputs.value(), err);
   if (!backends.ok()) return stopped(backends.status());

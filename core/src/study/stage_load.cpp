@@ -1,5 +1,6 @@
 // The study's first stage: every input read and checked, so bad input stops the study before
 // anything runs.
+#include <algorithm>
 #include <filesystem>
 #include <optional>
 
@@ -9,6 +10,9 @@
 #include <collido/scene/scene.h>
 #include <collido/scene/surface_file.h>
 
+#include <collido/host/install_layout.h>
+
+#include "mesh_workload.h"
 #include "stages.h"
 
 namespace collido::study {
@@ -29,13 +33,37 @@ std::string plannedPath(const std::string& path) {
   return std::filesystem::absolute(path).lexically_normal().string();
 }
 
-Status loadScenes(const StudyRequest& request, StudyInputs& inputs) {
+// The scene files, and in place of mesh files the scenes written of them.
+Result<std::vector<std::string>> sceneFiles(const StudyRequest& request, std::ostream& err) {
+  std::vector<std::string> scenes;
+  std::vector<std::string> meshes;
+  for (const std::string& path : request.scenes)
+    (isMeshInput(path) ? meshes : scenes).push_back(path);
+  if (meshes.empty()) return scenes;
+  Result<std::vector<std::string>> written = writeMeshWorkload(meshes, request.out + "/scenes");
+  if (!written.ok()) return written.status();
+  for (const std::string& path : written.value()) {
+    err << "scene of the meshes: " << path << " (edit it and study it again)\n";
+    scenes.push_back(path);
+  }
+  return scenes;
+}
+
+// The bundled default sweep: an install's, else the source tree's this build came from.
+std::string defaultSweepPath() {
+  const std::string installed = installedDataDirectory();
+  return (installed.empty() ? std::string(COLLIDO_SCENES_SOURCE_DIR) : installed + "/scenes") +
+         "/sweeps/default.json";
+}
+
+Status loadScenes(const StudyRequest& request, const std::vector<std::string>& paths,
+                  StudyInputs& inputs) {
   // Scenes placed by constraints are solved here once; the workers read the stored solve.
   SceneLoadOptions load;
   load.placement_store =
       (request.oracle_directory.empty() ? request.out + "/oracle" : request.oracle_directory) +
       "/placements";
-  for (const std::string& path : request.scenes) {
+  for (const std::string& path : paths) {
     Result<Scene> scene = loadScene(path, load);
     if (!scene.ok()) return scene.status();
     QueryKindSet asked;
@@ -75,17 +103,22 @@ Status loadComparisonFiles(const StudyRequest& request, StudyInputs& inputs) {
 
 }  // namespace
 
-Result<StudyInputs> loadInputs(const StudyRequest& request) {
+Result<StudyInputs> loadInputs(const StudyRequest& request, std::ostream& err) {
   StudyInputs inputs;
-  if (!request.sweep_path.empty()) {
-    Result<Sweep> sweep = loadSweep(request.sweep_path);
+  const bool meshes = std::any_of(request.scenes.begin(), request.scenes.end(), isMeshInput);
+  const std::string sweep_path =
+      request.sweep_path.empty() && meshes ? defaultSweepPath() : request.sweep_path;
+  if (!sweep_path.empty()) {
+    Result<Sweep> sweep = loadSweep(sweep_path);
     if (!sweep.ok()) return sweep.status();
     inputs.sweep = std::move(sweep).value();
   }
   if (request.scenes.empty() && request.surface_files.empty() && request.frep_files.empty()) {
     return Status(StatusCode::kInvalidArgument, "no scene, surface or FRep file to study");
   }
-  if (Status s = loadScenes(request, inputs); !s.ok()) return s;
+  const Result<std::vector<std::string>> scenes = sceneFiles(request, err);
+  if (!scenes.ok()) return scenes.status();
+  if (Status s = loadScenes(request, scenes.value(), inputs); !s.ok()) return s;
   if (Status s = loadComparisonFiles(request, inputs); !s.ok()) return s;
   if (!request.shard.empty()) {
     Result<std::pair<std::size_t, std::size_t>> shard = parseShard(request.shard);

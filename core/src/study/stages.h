@@ -36,8 +36,10 @@ struct StudyInputs {
 };
 
 /// Load: the sweep, the scenes (solving their constraints once), the surface and FRep files, the
-/// shard and the timing protocol. Fails naming the file and the problem.
-Result<StudyInputs> loadInputs(const StudyRequest& request);
+/// shard and the timing protocol. Mesh files among the scenes become scenes written into
+/// OUT/scenes (said on `err`), studied with the default sweep unless one is given. Fails naming
+/// the file and the problem.
+Result<StudyInputs> loadInputs(const StudyRequest& request, std::ostream& err);
 
 /// The backend settings to run, what each answers and the plugin file it comes from.
 struct StudyBackends {
