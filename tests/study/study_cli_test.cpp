@@ -857,6 +857,16 @@ TEST(StudyCli, MeshFilesBecomeScenesWrittenBesideTheResults) {
       EXPECT_TRUE(m.frames.back().oracle_intersecting);
     }
   }
+
+  // The same command again keeps a scene the user edited (the folder's study then stops it).
+  const std::string edited = out + "/scenes/part_vs_fixture_overlap.json";
+  test::writeFile(edited, readText(edited) + " ");
+  const CommandRun again =
+      collido({"study", dir + "/part.obj", dir + "/fixture.stl", "--out", out}, dir);
+  EXPECT_NE(again.err.find("scene of the meshes: " + edited + " (edited: kept as it is"),
+            std::string::npos)
+      << again.err;
+  EXPECT_EQ(readText(edited).back(), ' ');
 }
 
 // Surface and FRep files run as combinations too: the seed method and each backend setting in a

@@ -379,6 +379,11 @@ async function main() {
 
   // Every backend's verdict on the chosen query in this frame, beside the oracle's.
   function drawVerdicts(query) {
+    // A query asked in some frames only (a recording's) has no answers in the others.
+    if (query.asked && !query.asked.some(([from, to]) => state.frame >= from && state.frame <= to)) {
+      ui.verdicts.innerHTML = `<p>${escapeHtml(query.name)} is not asked in frame ${state.frame}.</p>`;
+      return;
+    }
     const rows = data.backends.map((backend) => {
       const found = frameAnswers(backend, query.name, state.frame);
       if (!found || !found.record) {

@@ -80,9 +80,9 @@ class BlockReader {
     Replay::Object o;
     if (!(in >> id >> o.mesh_file) || id != replay_.objects.size())
       fail("expected the next object id and a mesh file");
-    in >> std::ws;
+    in.get();  // the one space before the name, which may hold spaces of its own
     std::getline(in, o.name);
-    if (o.name.empty()) fail("expected an object name");
+    if (const std::string problem = nameProblem(o.name); !problem.empty()) fail(problem);
     o.first = frame;
     replay_.objects.push_back(std::move(o));
   }
@@ -114,6 +114,28 @@ class BlockReader {
 };
 
 }  // namespace
+
+std::string nameProblem(const std::string& name) {
+  if (name.empty()) return "an object needs a name";
+  if (name.front() == ' ' || name.back() == ' ') return "the name begins or ends with a space";
+  for (std::size_t i = 0; i < name.size();) {
+    const auto c = static_cast<unsigned char>(name[i]);
+    if (c < 0x20 || c == 0x7f)
+      return "the name has a control character at byte " + std::to_string(i);
+    // A UTF-8 sequence: its lead byte gives its length, each further byte is 10xxxxxx.
+    const std::size_t length = c < 0x80           ? 1
+                               : (c >> 5) == 0x6  ? 2
+                               : (c >> 4) == 0xe  ? 3
+                               : (c >> 3) == 0x1e ? 4
+                                                  : 0;
+    bool valid = length != 0 && i + length <= name.size() && !(c == 0xc0 || c == 0xc1);
+    for (std::size_t k = 1; valid && k < length; ++k)
+      valid = (static_cast<unsigned char>(name[i + k]) & 0xc0) == 0x80;
+    if (!valid) return "the name is not UTF-8 (byte " + std::to_string(i) + ")";
+    i += length;
+  }
+  return "";
+}
 
 const char* kindName(RecordedKind kind) {
   switch (kind) {

@@ -29,6 +29,11 @@ using PoseNumbers = std::array<double, 12>;
 
 const char* kindName(RecordedKind kind);
 
+/// Why `name` cannot name an object, or "": it must be non-empty UTF-8 without control
+/// characters or surrounding spaces, since it is the last field of a journal line and a JSON
+/// string in the scene.
+std::string nameProblem(const std::string& name);
+
 /// The shortest text that reads back as the same double.
 std::string numberText(double value);
 

@@ -49,14 +49,18 @@ std::uint64_t mixed(std::uint64_t z) {
   return z ^ (z >> 31);
 }
 
+// 64 bits of the key on every platform: the hash table's, and what query_fraction samples by.
+std::uint64_t keyBits(const QueryKey& k) {
+  std::uint64_t bits = 0;
+  static_assert(sizeof bits == sizeof k.tolerance);
+  std::memcpy(&bits, &k.tolerance, sizeof bits);
+  return mixed(static_cast<std::uint64_t>(k.a) * 0x9e3779b97f4a7c15ull ^
+               mixed(static_cast<std::uint64_t>(k.b) + 31 * static_cast<std::uint64_t>(k.kind)) ^
+               bits);
+}
+
 struct QueryKeyHash {
-  std::size_t operator()(const QueryKey& k) const {
-    std::uint64_t bits = 0;
-    static_assert(sizeof bits == sizeof k.tolerance);
-    std::memcpy(&bits, &k.tolerance, sizeof bits);
-    return mixed(k.a * 0x9e3779b97f4a7c15ull ^
-                 mixed(k.b + 31 * static_cast<std::uint64_t>(k.kind)) ^ bits);
-  }
+  std::size_t operator()(const QueryKey& k) const { return static_cast<std::size_t>(keyBits(k)); }
 };
 
 }  // namespace
@@ -154,7 +158,12 @@ struct Recorder::State {
     text += "\nE " + std::to_string(frames) + "\n";
     journal.write(text.data(), static_cast<std::streamsize>(text.size()));
     journal.flush();
-    if (!journal) refuse("endFrame()", "the journal in " + folder + " cannot be written");
+    if (!journal) {
+      closed = true;
+      refuse("endFrame()", "the journal in " + folder +
+                               " cannot be written: the recording has ended (collido record-close "
+                               "writes the scene of the frames completed)");
+    }
     text.clear();
     asked.clear();
     ++frames;
@@ -195,11 +204,8 @@ Recorder::ObjectId Recorder::addMesh(const std::string& name, const Eigen::Matri
   State& s = *state_;
   const std::string where = "addMesh('" + name + "')";
   s.expectOpen(where);
-  if (name.empty()) State::refuse(where, "an object needs a name");
-  for (const char c : name) {
-    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f)
-      State::refuse(where, "the name has a control character");
-  }
+  if (const std::string problem = record::nameProblem(name); !problem.empty())
+    State::refuse(where, problem);
   if (triangles.cols() == 0) State::refuse(where, "the mesh has no triangles");
   for (Eigen::Index v = 0; v < vertices.cols(); ++v) {
     if (!vertices.col(v).allFinite() || vertices.col(v).cwiseAbs().maxCoeff() > kMaxCoordinate) {
@@ -213,6 +219,11 @@ Recorder::ObjectId Recorder::addMesh(const std::string& name, const Eigen::Matri
   }
   const std::string digest = record::meshDigest(vertices, triangles);
   if (const auto found = s.by_name.find(name); found != s.by_name.end()) {
+    if (s.objects[found->second].removed) {
+      State::refuse(where, "'" + name +
+                               "' was removed, and a scene's object exists in one span of frames: "
+                               "add it again under another name");
+    }
     if (s.objects[found->second].digest != digest) {
       State::refuse(where, "'" + name +
                                "' was added with another mesh (other vertices or "
@@ -221,12 +232,13 @@ Recorder::ObjectId Recorder::addMesh(const std::string& name, const Eigen::Matri
     return found->second;
   }
   const std::string file = "meshes/" + digest + ".ply";
-  if (!std::filesystem::exists(s.folder + "/" + file))
+  // Past max_frames nothing more is written: the object is only checked.
+  if (s.recording() && !std::filesystem::exists(s.folder + "/" + file))
     record::writeFileAtomically(s.folder + "/" + file, record::plyBytes(vertices, triangles));
   const ObjectId id = s.objects.size();
   s.objects.push_back(Object{name, digest});
   s.by_name.emplace(name, id);
-  s.pending += "O " + std::to_string(id) + " " + file + " " + name + "\n";
+  if (s.recording()) s.pending += "O " + std::to_string(id) + " " + file + " " + name + "\n";
   return id;
 }
 
@@ -239,7 +251,7 @@ void Recorder::removeObject(ObjectId id) {
   // Gone at once: it exists in the open frame only if that frame asked about it already.
   const bool asked_now = s.frame_open && o.asked_in == s.frames_seen;
   const long long last = static_cast<long long>(s.frames) - (asked_now ? 0 : 1);
-  s.pending += "X " + std::to_string(id) + " " + std::to_string(last) + "\n";
+  if (s.recording()) s.pending += "X " + std::to_string(id) + " " + std::to_string(last) + "\n";
 }
 
 void Recorder::beginFrame() {
@@ -279,12 +291,11 @@ void Recorder::ask(ObjectId a, ObjectId b, RecordedKind kind, double abs_toleran
     State::refuse(where, "a tolerance applies to distance queries only");
   oa.asked_in = ob.asked_in = s.frames_seen;
   if (!s.recording()) return;
-  const QueryKey key{a, b, kind, abs_tolerance};
+  const QueryKey key{a, b, kind, abs_tolerance + 0.0};  // -0 is 0, to the hash too
   auto found = s.queries.find(key);
   if (found == s.queries.end()) {
     const double fraction = s.options.query_fraction;
-    if (fraction < 1.0 && static_cast<double>(QueryKeyHash()(key) >> 11) * 0x1p-53 >= fraction)
-      return;
+    if (fraction < 1.0 && static_cast<double>(keyBits(key) >> 11) * 0x1p-53 >= fraction) return;
     const std::size_t id = s.queries.size();
     found = s.queries.emplace(key, id).first;
     s.query_asked_in.push_back(kNone);

@@ -3,6 +3,7 @@
 // depend on the standard library and Eigen only; what it writes is read back by the scene
 // loader (nlohmann::json), which every test of a recording goes through.
 #include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <set>
 #include <string>
@@ -19,9 +20,17 @@ using record::numberText;
 using record::PoseNumbers;
 using record::Replay;
 
+// A JSON string of UTF-8 text (object names are checked to be; the folder's name is replaced
+// when it is not).
 std::string jsonString(const std::string& text) {
   std::string out = "\"";
   for (const char c : text) {
+    if (static_cast<unsigned char>(c) < 0x20) {
+      char escaped[8];
+      std::snprintf(escaped, sizeof escaped, "\\u%04x", static_cast<unsigned>(c));
+      out += escaped;
+      continue;
+    }
     if (c == '"' || c == '\\') out.push_back('\\');
     out.push_back(c);
   }
@@ -115,8 +124,9 @@ std::size_t closeRecording(const std::string& folder) {
 
   std::filesystem::path path = std::filesystem::absolute(folder).lexically_normal();
   if (path.filename().empty()) path = path.parent_path();
-  const std::string name = path.filename().string();
-  const std::string scene = "{\n  \"name\": " + jsonString(name.empty() ? "recording" : name) +
+  std::string name = path.filename().string();
+  if (!record::nameProblem(name).empty()) name = "recording";
+  const std::string scene = "{\n  \"name\": " + jsonString(name) +
                             ",\n  \"description\": \"recorded by collido::Recorder\",\n" +
                             "  \"frames\": " + std::to_string(replay.frames) +
                             ",\n  \"objects\": [\n" + objects + "\n  ],\n  \"queries\": [\n" +

@@ -73,7 +73,6 @@ struct QueryRun {
   const SceneModels& models;
   BackendInstance& backend;
   OracleCache& oracle;
-  std::size_t asked_pairs = 0;  ///< object pairs the query asks about, culled or not
 
   ModelHandle modelAt(std::size_t object, std::size_t frame) const {
     return models.at(object)[scene.objects[object].stateAt(frame)].handle;
@@ -86,13 +85,17 @@ struct QueryRun {
 
 using Shapes = std::map<std::size_t, std::shared_ptr<const TriangleMesh>>;
 
-// The object pairs `query` asks about: its one pair, or those of its group it asks.
-std::size_t askedPairCount(const SceneQuery& query) {
+// The object pairs `query` asks about in `frame`: its one pair, or those of its group it asks
+// whose objects both exist then (an absent object's pairs are not the broad phase's culling).
+std::size_t askedPairCount(const Scene& scene, const SceneQuery& query, std::size_t frame) {
   if (!query.isGroup()) return 1;
+  const auto exists = [&](std::size_t i) { return scene.objects[i].present.contains(frame); };
   std::size_t count = 0;
   for (std::size_t i = 0; i < query.among.size(); ++i) {
-    for (std::size_t j = i + 1; j < query.among.size(); ++j)
-      count += query.asksPair(query.among[i], query.among[j]) ? 1 : 0;
+    if (!exists(query.among[i])) continue;
+    for (std::size_t j = i + 1; j < query.among.size(); ++j) {
+      count += exists(query.among[j]) && query.asksPair(query.among[i], query.among[j]) ? 1 : 0;
+    }
   }
   return count;
 }
@@ -105,16 +108,19 @@ Shapes shapesAt(const QueryRun& run, std::size_t frame) {
   return shapes;
 }
 
-// The query's objects that are as they were in the frame before (`before`, empty in frame 0):
-// the same pose, active state and vertices, to the bit.
-std::set<std::size_t> heldObjects(const QueryRun& run, std::size_t frame, const Shapes& now,
+// The query's objects that are as they were in the frame the query was last asked in
+// (`previous`, with its shapes `before`; none in its first frame): the same pose, active state
+// and vertices, to the bit. A query asked in some frames only compares with its last one, not
+// with the frame before, which it may not have asked.
+std::set<std::size_t> heldObjects(const QueryRun& run, std::size_t frame,
+                                  std::optional<std::size_t> previous, const Shapes& now,
                                   const Shapes& before) {
   std::set<std::size_t> held;
-  if (frame == 0 || before.empty()) return held;
+  if (!previous || before.empty()) return held;
   for (std::size_t i : run.objects) {
     const SceneObject& o = run.scene.objects[i];
-    if (o.poseAt(frame).matrix() != o.poseAt(frame - 1).matrix()) continue;
-    if (o.stateAt(frame) != o.stateAt(frame - 1)) continue;
+    if (o.poseAt(frame).matrix() != o.poseAt(*previous).matrix()) continue;
+    if (o.stateAt(frame) != o.stateAt(*previous)) continue;
     const TriangleMesh& a = *now.at(i);
     const TriangleMesh& b = *before.at(i);
     if (&a != &b && a.vertices != b.vertices) continue;
@@ -182,6 +188,7 @@ std::vector<FrameWork> stepFrames(const QueryRun& run, const std::optional<Broad
   std::vector<FrameWork> frame_work;
   QueryResult result;
   Shapes before;
+  std::optional<std::size_t> last_frame;  // the frame the query was last asked in
   std::map<std::pair<std::size_t, std::size_t>, QueryResult> last_answers;
   for (std::size_t frame = 0; frame < run.scene.frames && m.ok(); ++frame) {
     if (!run.query.asked.contains(frame)) continue;
@@ -189,10 +196,10 @@ std::vector<FrameWork> stepFrames(const QueryRun& run, const std::optional<Broad
     FrameRecord record;
     record.frame = frame;
     record.object_pairs = candidates.size();
-    record.skipped_pairs = run.asked_pairs - candidates.size();
+    record.skipped_pairs = askedPairCount(run.scene, run.query, frame) - candidates.size();
     const Shapes shapes = shapesAt(run, frame);
     FrameWork work;
-    if (options.reuse_unchanged) work.held = heldObjects(run, frame, shapes, before);
+    if (options.reuse_unchanged) work.held = heldObjects(run, frame, last_frame, shapes, before);
     updateDeforming(run, frame, shapes, work.held, &record, m);
     if (!m.ok()) break;
     std::map<std::pair<std::size_t, std::size_t>, QueryResult> answers;
@@ -234,6 +241,7 @@ std::vector<FrameWork> stepFrames(const QueryRun& run, const std::optional<Broad
     work.all_reused = !candidates.empty() && record.reused_pairs == candidates.size();
     last_answers = std::move(answers);
     before = shapes;
+    last_frame = frame;
 
     std::vector<double> frame_times;
     const int repetitions = options.protocol == TimingProtocol::kRepeated ? options.repetitions : 0;
@@ -351,8 +359,7 @@ void runSceneOnBackend(const Scene& scene, const BackendSpec& spec, OracleCache&
       report.measurements.push_back(m);
       continue;
     }
-    const QueryRun run{scene,   query,  query.objects(),      models,
-                       backend, oracle, askedPairCount(query)};
+    const QueryRun run{scene, query, query.objects(), models, backend, oracle};
     if (const std::string error = buildError(models, run.objects); !error.empty()) {
       m.status = MeasurementStatus::failed("build: " + error);
       report.measurements.push_back(m);

@@ -1,6 +1,7 @@
 #include "frame_ranges_reader.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <string>
 
 namespace collido {
@@ -47,10 +48,20 @@ FrameRanges readFrameRanges(const Reader& r, const Node& node, std::size_t frame
     r.expectArray(range);
     if (range.value.size() != 2) {
       r.fail(range, "expected [first, last] (two frames), got " +
-                        std::to_string(range.value.size()) + " numbers");
+                        std::to_string(range.value.size()) + " items");
     }
-    const auto first = static_cast<std::size_t>(r.integer(range.at(0), 0, last_frame));
-    const auto last = static_cast<std::size_t>(r.integer(range.at(1), 0, last_frame));
+    std::size_t ends[2] = {0, 0};
+    for (std::size_t k = 0; k < 2; ++k) {
+      const std::int64_t frame = r.integer(range.at(k), 0, INT64_MAX);
+      if (frame > last_frame) {
+        r.fail(range.at(k), "frame " + std::to_string(frame) + " is past the scene's last (" +
+                                std::to_string(last_frame) + ": it has " + std::to_string(frames) +
+                                " frames)");
+      }
+      ends[k] = static_cast<std::size_t>(frame);
+    }
+    const std::size_t first = ends[0];
+    const std::size_t last = ends[1];
     if (last < first) r.fail(range, "the last frame comes before the first");
     // Ranges in order and apart, so that one list of frames has one way to be written.
     if (!read.ranges.empty() && first <= read.ranges.back().second + 1) {

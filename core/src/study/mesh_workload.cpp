@@ -126,8 +126,8 @@ bool isMeshInput(const std::string& path) {
   return extension != ".json";
 }
 
-Result<std::vector<std::string>> writeMeshWorkload(const std::vector<std::string>& meshes,
-                                                   const std::string& folder) {
+Result<std::vector<MeshWorkloadScene>> writeMeshWorkload(const std::vector<std::string>& meshes,
+                                                         const std::string& folder) {
   std::error_code error;
   fs::create_directories(folder, error);
   if (error) {
@@ -155,15 +155,20 @@ Result<std::vector<std::string>> writeMeshWorkload(const std::vector<std::string
   }
   std::string name = parts[0].name + "_vs_" + parts[1].name;
   if (parts.size() > 2) name += "_and_" + std::to_string(parts.size() - 2) + "_more";
-  std::vector<std::string> written;
+  std::vector<MeshWorkloadScene> written;
   for (const bool approach : {false, true}) {
     const std::string scene = name + (approach ? "_approach" : "_overlap");
-    std::string path = folder + "/";
-    path += scene + ".json";
-    if (Status s = io::writeFileAtomically(path, sceneOf(parts, scene, approach).dump(1) + "\n");
-        !s.ok())
-      return s;
-    written.push_back(path);
+    MeshWorkloadScene file{(fs::path(folder) / (scene + ".json")).string()};
+    const std::string text = sceneOf(parts, scene, approach).dump(1) + "\n";
+    // A file of other content is the user's edit of an earlier run's: theirs to keep.
+    if (fs::exists(file.path)) {
+      Result<std::string> existing = io::readTextFile(file.path);
+      file.kept = existing.ok() && existing.value() != text;
+    }
+    if (!file.kept) {
+      if (Status s = io::writeFileAtomically(file.path, text); !s.ok()) return s;
+    }
+    written.push_back(std::move(file));
   }
   return written;
 }

@@ -17,9 +17,14 @@ bool isMeshInput(const std::string& path);
 /// copy of it, when only one is given) at seeded random poses whose bounding spheres overlap by
 /// 30 to 90 percent ("<name>_overlap"), and in a close approach along an axis through first
 /// contact, found by the exact oracle ("<name>_approach"); each asks boolean, all pairs and
-/// distance of the first against every other. Returns the scene files' paths. Fails naming a mesh
-/// that does not load.
-Result<std::vector<std::string>> writeMeshWorkload(const std::vector<std::string>& meshes,
-                                                   const std::string& folder);
+/// distance of the first against every other. A scene file already there with other content
+/// (the user's edit of an earlier run's) is kept, not overwritten. Fails naming a mesh that does
+/// not load.
+struct MeshWorkloadScene {
+  std::string path;
+  bool kept = false;  ///< an edited file was found and kept
+};
+Result<std::vector<MeshWorkloadScene>> writeMeshWorkload(const std::vector<std::string>& meshes,
+                                                         const std::string& folder);
 
 }  // namespace collido::study

@@ -40,11 +40,15 @@ Result<std::vector<std::string>> sceneFiles(const StudyRequest& request, std::os
   for (const std::string& path : request.scenes)
     (isMeshInput(path) ? meshes : scenes).push_back(path);
   if (meshes.empty()) return scenes;
-  Result<std::vector<std::string>> written = writeMeshWorkload(meshes, request.out + "/scenes");
+  Result<std::vector<MeshWorkloadScene>> written =
+      writeMeshWorkload(meshes, request.out + "/scenes");
   if (!written.ok()) return written.status();
-  for (const std::string& path : written.value()) {
-    err << "scene of the meshes: " << path << " (edit it and study it again)\n";
-    scenes.push_back(path);
+  for (const MeshWorkloadScene& scene : written.value()) {
+    err << "scene of the meshes: " << scene.path
+        << (scene.kept ? " (edited: kept as it is; delete it for the meshes' own)"
+                       : " (edit it and study it again)")
+        << "\n";
+    scenes.push_back(scene.path);
   }
   return scenes;
 }

@@ -138,7 +138,8 @@ Json queryJson(const SceneQuery& query) {
   return {{"name", query.name},
           {"kind", queryKindName(query.request.kind)},
           {"objects", query.objects()},
-          {"side_b", query.side_b}};
+          {"side_b", query.side_b},
+          {"asked", query.asked.everyFrame() ? Json(nullptr) : Json(query.asked.ranges)}};
 }
 
 // The page template and the scripts and style it inlines.

@@ -131,6 +131,9 @@ TEST(RecordedScene, RefusesBadCallsNamingThemAndKeepsRecording) {
   refused([&] { rec.ask(a, b, RecordedKind::kBoolean); }, "ask(0, 1): no frame is open");
   refused([&] { rec.addMesh("a", 2.0 * cube.vertices, cube.triangles); },
           "addMesh('a'): 'a' was added with another mesh");
+  refused([&] { rec.addMesh(" a", cube.vertices, cube.triangles); }, "begins or ends with a space");
+  refused([&] { rec.addMesh("Geh\xe4use", cube.vertices, cube.triangles); },
+          "the name is not UTF-8 (byte 3)");
   Eigen::Matrix3Xd nan_vertices = cube.vertices;
   nan_vertices(1, 3) = std::nan("");
   refused([&] { rec.addMesh("n", nan_vertices, cube.triangles); }, "vertex 3 is not finite");
@@ -143,6 +146,7 @@ TEST(RecordedScene, RefusesBadCallsNamingThemAndKeepsRecording) {
   sheared(0, 1) = 0.1;
   refused([&] { rec.setPose(a, sheared); }, "the rotation is not a rotation");
   rec.ask(a, b, RecordedKind::kDistance);
+  rec.ask(a, b, RecordedKind::kDistance, -0.0);  // the same question: one query
   refused([&] { rec.setPose(a, at(1.0)); }, "'a' was already asked about in this frame");
   refused([&] { rec.ask(a, b, RecordedKind::kBoolean, 0.5); }, "distance queries only");
   rec.endFrame();
@@ -154,11 +158,15 @@ TEST(RecordedScene, RefusesBadCallsNamingThemAndKeepsRecording) {
     rec.endFrame();
   }
   EXPECT_EQ(rec.framesRecorded(), 2u);
+  const auto c = rec.addMesh("c", cube.vertices, cube.triangles);
+  rec.removeObject(c);
+  refused([&] { rec.addMesh("c", cube.vertices, cube.triangles); }, "'c' was removed");
   rec.close();
   refused([&] { rec.beginFrame(); }, "the recording is closed");
   Result<Scene> loaded = loadScene(folder + "/scene.json");
   ASSERT_TRUE(loaded.ok()) << loaded.status().toString();
   EXPECT_EQ(loaded.value().frames, 2u);
+  EXPECT_EQ(loaded.value().queries.size(), 1u);
 }
 
 TEST(RecordedScene, AKilledRecordingClosesWithItsCompletedFrames) {

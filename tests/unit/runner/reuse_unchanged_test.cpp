@@ -1,6 +1,7 @@
 // Reusing the answer of the frame before for an object pair that did not change: the same
 // answers as asking, the held frames untimed and unworked, a deforming object always asked.
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <collido/runner/measurement_json.h>
 #include <collido/runner/runner.h>
@@ -92,6 +93,21 @@ TEST(ReuseUnchanged, HeldFramesTakeTheAnswerBeforeAndAgreeWithTheOracle) {
     // The held frames of the first query intersect: reusing is not only reusing "apart".
     EXPECT_GT(warm.measurements[0].frames[3].oracle_pairs, 0u);
   }
+}
+
+// A query asked in frames 1 and 3 only compares frame 3 with frame 1, not with frame 2: ring b
+// moves from frame 1 to 2 and holds from 2 to 3, so frame 3 is asked again, not reused.
+TEST(ReuseUnchanged, AQueryAskedInSomeFramesComparesWithTheLastItAsked) {
+  nlohmann::json json = nlohmann::json::parse(kScene);
+  json["queries"] = nlohmann::json::parse(
+      R"([{"name": "gaps", "a": "a", "b": "b", "kind": "all_pairs", "frames": [[1, 1], [3, 3]]}])");
+  const Result<Scene> scene = parseScene(json.dump(), "gaps.json", ".");
+  ASSERT_TRUE(scene.ok()) << scene.status().toString();
+  const QueryMeasurement m = run(scene.value(), TimingProtocol::kCycled, true).measurements[0];
+  ASSERT_EQ(m.frames.size(), 2u);
+  for (const FrameRecord& f : m.frames)
+    EXPECT_EQ(f.reused_pairs, 0u) << "frame " << f.frame;
+  EXPECT_EQ(m.disagreements, 0u);
 }
 
 // Two spheres of radius 1, the second at x = 5, 3, then 1.5: apart, apart, overlapping.

@@ -20,15 +20,17 @@ enum class RecordedKind { kBoolean, kAllPairs, kContacts, kDistance };
 
 /// Bounds that keep a long recording small.
 struct RecorderOptions {
-  /// Frames recorded at most (0: no limit); later frames are checked but not recorded.
+  /// Frames recorded at most (0: no limit; a scene loads at most 1,000,000 frames); later
+  /// frames, and objects added in them, are checked but not recorded.
   std::size_t max_frames = 0;
   /// The share of asked object pairs recorded, in (0, 1]. A pair is chosen by a hash of the two
   /// objects and the question, so a kept pair is kept in every frame it is asked.
   double query_fraction = 1.0;
 };
 
-/// A Recorder call refused: the message names the call and the problem. The call changed
-/// nothing, so the recording goes on.
+/// A Recorder call refused: the message names the call and the problem. A refused call changed
+/// nothing and the recording goes on, except for a journal that cannot be written (endFrame) and
+/// close(), which end the recording.
 class RecordError : public std::invalid_argument {
  public:
   using std::invalid_argument::invalid_argument;
@@ -56,9 +58,10 @@ class Recorder {
   Recorder(const Recorder&) = delete;
   Recorder& operator=(const Recorder&) = delete;
 
-  /// Adds an object named `name` (unique, printable) with a mesh: 3 x V vertices, 3 x T
-  /// triangles of vertex indices. Identical meshes are stored once, by content. Adding a name
-  /// again with the same mesh returns its id; with another mesh it is refused.
+  /// Adds an object named `name` (UTF-8, no control characters, no surrounding spaces) with a
+  /// mesh: 3 x V vertices, 3 x T triangles of vertex indices. Identical meshes are stored once,
+  /// by content. Adding a name again with the same mesh returns its id; with another mesh, or
+  /// after it was removed, it is refused.
   ObjectId addMesh(const std::string& name, const Eigen::Matrix3Xd& vertices,
                    const Eigen::Matrix3Xi& triangles);
   /// The object no longer exists: from the open frame on, or from the next one if the open frame
@@ -79,8 +82,8 @@ class Recorder {
   void endFrame();
 
   /// Writes scene.json from the frames completed and ends the recording (later calls are
-  /// refused). Throws RecordError when no frame was completed or no query asked: there is no
-  /// scene to write.
+  /// refused), even when it throws: RecordError when no frame was completed or no query asked
+  /// (there is no scene to write), or when the scene cannot be written.
   void close();
 
   std::size_t framesRecorded() const;
