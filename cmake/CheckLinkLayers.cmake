@@ -12,7 +12,7 @@ set(layer_0 plugin_api random record)
 set(layer_1 mesh_types pose constraints convex frep io)
 set(layer_2 oracle mesh)
 set(layer_3 nurbs stress frep_mesh frep_preview obbtree)
-set(layer_4 host scene backend)
+set(layer_4 host scene urdf backend)
 set(layer_5 backend_separation runner)
 set(layer_6 study view)
 # Links a library must not have whatever the layers say.

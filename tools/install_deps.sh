@@ -13,7 +13,7 @@ set -euo pipefail
 packages=(
   build-essential cmake ninja-build ccache pkg-config
   libeigen3-dev libcgal-dev libgmp-dev libmpfr-dev libboost-dev libpng-dev
-  libassimp-dev nlohmann-json3-dev libcli11-dev libfccp-dev libxxhash-dev
+  libassimp-dev nlohmann-json3-dev libcli11-dev libfccp-dev libxxhash-dev liburdfdom-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libfcl-dev libbullet-dev libode-dev libtbb-dev libembree-dev
   libocct-modeling-algorithms-dev libocct-data-exchange-dev libopenvdb-dev

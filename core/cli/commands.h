@@ -33,6 +33,7 @@ void addPlaceCommand(CLI::App& app, int& exit_code);
 void addPoseErrorCommand(CLI::App& app, int& exit_code);
 void addTracksCommand(CLI::App& app, int& exit_code);
 void addRecordCloseCommand(CLI::App& app, int& exit_code);
+void addImportCommand(CLI::App& app, int& exit_code);
 void addSurfaceDistanceCommand(CLI::App& app, const PluginOptions& plugins, int& exit_code);
 void addFrepCommand(CLI::App& app, const PluginOptions& plugins, int& exit_code);
 void addRunCommand(CLI::App& app, const PluginOptions& plugins, int& exit_code);

@@ -34,6 +34,7 @@ int main(int argc, char** argv) {
   collido::cli::addPoseErrorCommand(app, exit_code);
   collido::cli::addTracksCommand(app, exit_code);
   collido::cli::addRecordCloseCommand(app, exit_code);
+  collido::cli::addImportCommand(app, exit_code);
   collido::cli::addSurfaceDistanceCommand(app, plugins, exit_code);
   collido::cli::addFrepCommand(app, plugins, exit_code);
   collido::cli::addRunCommand(app, plugins, exit_code);

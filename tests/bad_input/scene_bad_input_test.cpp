@@ -620,6 +620,9 @@ TEST(SceneBadInput, NegativeMeshScale) {
   Json scene = validScene();
   scene["objects"][0]["shape"] = {{"mesh", "meshes/rob.obj"}, {"scale", -2}};
   EXPECT_TRUE(rejected(parse(scene), {"/objects/0/shape/scale", "> 0"}));
+  // One factor per axis (a URDF mesh's scale), each held to the same rule.
+  scene["objects"][0]["shape"]["scale"] = Json::array({1, 0, 1});
+  EXPECT_TRUE(rejected(parse(scene), {"/objects/0/shape/scale", "factors must be > 0"}));
 }
 
 // ---- frames ----------------------------------------------------------------------------------

@@ -57,19 +57,27 @@ LoadedShape ShapeLoader::loadFile(const Node& node) {
   const Reader& r = reader_;
   r.expectObject(node, {"mesh", "scale"});
   const std::string relative = r.string(node.at("mesh"));
-  const double scale = r.positive(node, "scale", 1.0);
+  // One factor, or one per axis (a URDF mesh's scale).
+  Eigen::Vector3d scale = Eigen::Vector3d::Ones();
+  if (node.has("scale") && node.at("scale").value.is_array()) {
+    scale = r.vector3(node.at("scale"));
+    if (!(scale.minCoeff() > 0.0)) r.fail(node.at("scale"), "scale factors must be > 0");
+  } else {
+    scale.setConstant(r.positive(node, "scale", 1.0));
+  }
   const std::filesystem::path file = std::filesystem::path(base_) / relative;
-  const std::string key = file.lexically_normal().string() + "|" + std::to_string(scale);
+  const std::string key = file.lexically_normal().string() + "|" + std::to_string(scale.x()) + "|" +
+                          std::to_string(scale.y()) + "|" + std::to_string(scale.z());
   if (const auto hit = cache_.find(key); hit != cache_.end()) return hit->second;
 
   MeshReport report;
   Result<TriangleMesh> mesh = loadMesh(file.lexically_normal().string(), &report);
   if (!mesh.ok()) r.fail(node.at("mesh"), mesh.status().message());
-  if (scale != 1.0) {
-    mesh.value().vertices *= scale;
+  if (scale != Eigen::Vector3d::Ones()) {
+    mesh.value().vertices = scale.asDiagonal() * mesh.value().vertices;
     // A large scale can take finite coordinates past the double range.
     if (Status s = validateMesh(mesh.value(), file.lexically_normal().string()); !s.ok()) {
-      r.fail(node.at("scale"), "scaled by " + shortNumber(scale) + ": " + s.message());
+      r.fail(node.at("scale"), "scaled by " + shortNumber(scale.maxCoeff()) + ": " + s.message());
     }
   }
   LoadedShape shape{std::make_shared<const TriangleMesh>(std::move(mesh).value()), report};

@@ -1,0 +1,51 @@
+// collido import urdf: a robot described in URDF written as a scene (collido/urdf/urdf_import.h).
+#include <iostream>
+
+#include <collido/urdf/urdf_import.h>
+
+#include "commands.h"
+
+namespace collido::cli {
+
+void addImportCommand(CLI::App& app, int& exit_code) {
+  CLI::App* command = app.add_subcommand("import", "Write a scene from another description");
+  command->require_subcommand(1);
+  CLI::App* urdf = command->add_subcommand(
+      "urdf",
+      "A robot in URDF as a scene: its links' collision geometry as objects mounted on their "
+      "parents, its joints driving the frames; self-collision of every link pair but adjacent "
+      "ones and those in contact at the reference configuration, robot against environment, and "
+      "the clearance of its last link (scenes/README.md, \"Robots from URDF\")");
+  auto request = std::make_shared<UrdfImportRequest>();
+  urdf->add_option("robot", request->urdf, "the URDF file")->required();
+  urdf->add_option("--trajectory", request->trajectory,
+                   "joints CSV: a header of joint names, one row of values per frame (radians, "
+                   "metres); default: seeded random configurations within the limits");
+  urdf->add_option("--environment", request->environment, "mesh files fixed in the world");
+  urdf->add_option("-o,--output", request->output, "the scene file to write")->required();
+  urdf->add_option("--frames", request->frames, "random configurations (default 24)")
+      ->check(CLI::Range(1, 1000000));
+  urdf->add_option("--seed", request->seed, "their seed (default 1)");
+  urdf->add_option("--disable-pair", request->disable_pairs,
+                   "LINK LINK: a pair never asked for self-collision (repeatable)");
+  urdf->add_option("--enable-pair", request->enable_pairs,
+                   "LINK LINK: a pair asked whatever the rules say (repeatable)");
+  urdf->callback([request, &exit_code] {
+    const Result<UrdfImport> imported = importUrdf(*request);
+    if (!imported.ok()) {
+      std::cerr << "error: " << imported.status().message() << "\n";
+      exit_code = 2;
+      return;
+    }
+    const UrdfImport& i = imported.value();
+    std::cout << request->output << ": robot '" << i.robot << "', " << i.objects << " objects, "
+              << i.moving_joints << " moving joints, " << i.frames << " frames; " << i.self_queries
+              << " self-collision queries (left out: " << i.adjacent_pairs
+              << " adjacent link pairs, " << i.touching_pairs
+              << " in contact at the reference configuration, " << i.disabled_pairs
+              << " disabled)\n";
+    exit_code = 0;
+  });
+}
+
+}  // namespace collido::cli

@@ -1,0 +1,49 @@
+// `collido import urdf`: a robot described in URDF (read by urdfdom) becomes a scene: its links'
+// collision geometry as objects mounted on their parents, its joints driving the frames, and the
+// questions a robot's planner asks (self-collision, robot against environment, clearance).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <collido/status.h>
+
+namespace collido {
+
+/// What an import is asked.
+struct UrdfImportRequest {
+  std::string urdf;        ///< the robot
+  std::string trajectory;  ///< joints CSV (a header of joint names, a row per frame); "": random
+  std::vector<std::string> environment;  ///< mesh files fixed in the world
+  std::string output;                    ///< the scene file written
+  std::size_t frames = 24;  ///< without a trajectory: seeded random configurations in the limits
+  std::uint64_t seed = 1;
+  /// Link pairs never asked, and link pairs asked whatever the rules say (names as in the URDF).
+  std::vector<std::pair<std::string, std::string>> disable_pairs;
+  std::vector<std::pair<std::string, std::string>> enable_pairs;
+};
+
+/// What an import wrote.
+struct UrdfImport {
+  std::string robot;
+  std::size_t objects = 0;        ///< collision elements (a link may have several) and environment
+  std::size_t moving_joints = 0;  ///< revolute, continuous and prismatic
+  std::size_t frames = 0;
+  std::size_t self_queries = 0;    ///< object pairs of two links asked for self-collision
+  std::size_t adjacent_pairs = 0;  ///< link pairs left out: joined by a joint
+  std::size_t touching_pairs = 0;  ///< left out: in contact at the reference configuration
+  std::size_t disabled_pairs = 0;  ///< left out: --disable-pair
+};
+
+/// Reads the robot, its trajectory and its environment and writes the scene file. Self-collision
+/// asks every pair of links but adjacent ones and those in contact at the reference
+/// configuration (every joint at 0, or its limit nearest 0), as MoveIt's setup assistant
+/// disables them; robot against environment is one group query of all pairs, and the last link
+/// of the longest chain gets a distance query to each environment object. Errors name the file
+/// and the link, joint or column.
+Result<UrdfImport> importUrdf(const UrdfImportRequest& request);
+
+}  // namespace collido

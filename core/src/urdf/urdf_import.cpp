@@ -1,0 +1,387 @@
+#include <collido/urdf/urdf_import.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <set>
+
+#include <nlohmann/json.hpp>
+
+#include <collido/io/files.h>
+#include <collido/mesh/mesh_io.h>
+#include <collido/mesh/procedural.h>
+#include <collido/oracle/exact_oracle.h>
+
+#include "robot_model.h"
+#include "trajectory.h"
+
+namespace collido {
+namespace {
+
+using Json = nlohmann::json;
+using urdf_import::Geometry;
+using urdf_import::RobotModel;
+namespace fs = std::filesystem;
+
+// One object of the scene: a link's collision element, or an environment mesh.
+struct SceneObjectPlan {
+  std::string name;
+  std::optional<std::size_t> link;
+  Json shape;
+  std::shared_ptr<const TriangleMesh> mesh;  // robot objects: for the reference contacts
+  std::vector<Eigen::Isometry3d> world;      // per frame
+  Eigen::Isometry3d reference = Eigen::Isometry3d::Identity();
+  std::optional<std::size_t> parent;  // object index
+};
+
+Json poseJson(const Eigen::Isometry3d& pose) {
+  const Eigen::Matrix3d r = pose.linear();
+  const Eigen::Vector3d t = pose.translation();
+  return {{"translation", {t.x(), t.y(), t.z()}},
+          {"rotation",
+           {{"matrix",
+             {{r(0, 0), r(0, 1), r(0, 2)},
+              {r(1, 0), r(1, 1), r(1, 2)},
+              {r(2, 0), r(2, 1), r(2, 2)}}}}}};
+}
+
+std::string relativePath(const std::string& file, const fs::path& folder) {
+  return fs::relative(fs::absolute(file), folder).generic_string();
+}
+
+// The scene shape of a collision element and its mesh; errors name the link.
+Result<std::pair<Json, TriangleMesh>> shapeOf(const Geometry& g, const std::string& link,
+                                              const fs::path& folder, const std::string& label) {
+  Result<TriangleMesh> mesh = Status(StatusCode::kInternal, "no geometry");
+  Json shape;
+  switch (g.kind) {
+    case Geometry::Kind::kBox:
+      shape = {{"generator", "box"}, {"size", {g.size.x(), g.size.y(), g.size.z()}}};
+      mesh = makeBox(BoxParams{g.size});
+      break;
+    case Geometry::Kind::kCylinder: {
+      CylinderParams params;
+      params.radius = g.radius;
+      params.height = g.length;
+      shape = {{"generator", "cylinder"}, {"radius", g.radius}, {"height", g.length}};
+      mesh = makeCylinder(params);
+      break;
+    }
+    case Geometry::Kind::kSphere: {
+      SphereParams params;
+      params.radius = g.radius;
+      shape = {{"generator", "sphere"}, {"radius", g.radius}};
+      mesh = makeSphere(params);
+      break;
+    }
+    case Geometry::Kind::kMesh:
+      shape = {{"mesh", relativePath(g.mesh_file, folder)}};
+      if (g.scale != Eigen::Vector3d::Ones())
+        shape["scale"] = {g.scale.x(), g.scale.y(), g.scale.z()};
+      mesh = loadMesh(g.mesh_file);
+      if (mesh.ok()) mesh.value().vertices = g.scale.asDiagonal() * mesh.value().vertices;
+      break;
+  }
+  if (!mesh.ok()) {
+    return Status(StatusCode::kInvalidArgument,
+                  label + ": link '" + link + "': " + mesh.status().message());
+  }
+  return std::make_pair(std::move(shape), std::move(mesh).value());
+}
+
+// The link's nearest ancestor with collision geometry.
+std::optional<std::size_t> geometricAncestor(const RobotModel& robot, std::size_t link) {
+  for (std::optional<std::size_t> joint = robot.links[link].parent_joint; joint;
+       joint = robot.links[robot.joints[*joint].parent].parent_joint) {
+    const std::size_t parent = robot.joints[*joint].parent;
+    if (!robot.links[parent].collisions.empty()) return parent;
+  }
+  return std::nullopt;
+}
+
+std::pair<std::size_t, std::size_t> ordered(std::size_t a, std::size_t b) {
+  return {std::min(a, b), std::max(a, b)};
+}
+
+// The link pairs a --disable-pair or --enable-pair list names; errors name an unknown link.
+Result<std::set<std::pair<std::size_t, std::size_t>>> linkPairs(
+    const std::vector<std::pair<std::string, std::string>>& names, const RobotModel& robot,
+    const char* option) {
+  std::set<std::pair<std::size_t, std::size_t>> pairs;
+  for (const auto& [a, b] : names) {
+    const std::optional<std::size_t> la = robot.linkNamed(a);
+    const std::optional<std::size_t> lb = robot.linkNamed(b);
+    if (!la || !lb) {
+      std::string message = option;
+      message += " " + a;
+      message += " " + b;
+      message += ": '";
+      message += la ? b : a;
+      return Status(StatusCode::kInvalidArgument,
+                    message + "' is no link of robot '" + robot.name + "'");
+    }
+    pairs.insert(ordered(*la, *lb));
+  }
+  return pairs;
+}
+
+class SceneBuilder {
+ public:
+  SceneBuilder(const UrdfImportRequest& request, const RobotModel& robot)
+      : request_(request), robot_(robot) {}
+
+  Status addRobot(const urdf_import::Trajectory& frames) {
+    std::vector<std::vector<Eigen::Isometry3d>> link_poses;
+    for (const std::vector<double>& values : frames)
+      link_poses.push_back(robot_.linkPoses(values));
+    const std::vector<Eigen::Isometry3d> reference =
+        robot_.linkPoses(urdf_import::referenceConfiguration(robot_));
+    for (const std::size_t link : robot_.order) {
+      const urdf_import::Link& l = robot_.links[link];
+      for (std::size_t k = 0; k < l.collisions.size(); ++k) {
+        Result<std::pair<Json, TriangleMesh>> shape =
+            shapeOf(l.collisions[k].geometry, l.name, folder(), request_.urdf);
+        if (!shape.ok()) return shape.status();
+        SceneObjectPlan o;
+        o.name = uniqueName(k == 0 ? l.name : l.name + "_" + std::to_string(k + 1));
+        o.link = link;
+        o.shape = std::move(shape.value().first);
+        o.mesh = std::make_shared<const TriangleMesh>(std::move(shape.value().second));
+        for (const std::vector<Eigen::Isometry3d>& poses : link_poses)
+          o.world.push_back(poses[link] * l.collisions[k].origin);
+        o.reference = reference[link] * l.collisions[k].origin;
+        // Mounted on its link's first element, else its nearest ancestor's, else the robot's
+        // first object, so that the robot is one subtree.
+        if (k > 0) {
+          o.parent = first_of_link_.at(link);
+        } else if (const std::optional<std::size_t> up = geometricAncestor(robot_, link)) {
+          o.parent = first_of_link_.at(*up);
+        } else if (!objects_.empty()) {
+          o.parent = 0;
+        }
+        if (k == 0) first_of_link_[link] = objects_.size();
+        objects_.push_back(std::move(o));
+      }
+    }
+    if (objects_.empty()) {
+      return Status(StatusCode::kInvalidArgument, request_.urdf + ": no link of robot '" +
+                                                      robot_.name + "' has collision geometry");
+    }
+    robot_objects_ = objects_.size();
+    return {};
+  }
+
+  Status addEnvironment(std::size_t frames) {
+    for (const std::string& file : request_.environment) {
+      Result<TriangleMesh> mesh = loadMesh(file);
+      if (!mesh.ok()) return mesh.status();
+      SceneObjectPlan o;
+      o.name = uniqueName("env_" + fs::path(file).stem().string());
+      o.shape = {{"mesh", relativePath(file, folder())}};
+      o.world.assign(frames, Eigen::Isometry3d::Identity());
+      if (objects_.size() > robot_objects_) o.parent = robot_objects_;
+      objects_.push_back(std::move(o));
+    }
+    return {};
+  }
+
+  // Self-collision: every pair of links with geometry but adjacent ones, those in contact at the
+  // reference configuration and disabled ones (enabled ones whatever the rules), one boolean
+  // query per pair of their objects.
+  Status addSelfCollision(UrdfImport& summary) {
+    Result<std::set<std::pair<std::size_t, std::size_t>>> disabled =
+        linkPairs(request_.disable_pairs, robot_, "--disable-pair");
+    if (!disabled.ok()) return disabled.status();
+    Result<std::set<std::pair<std::size_t, std::size_t>>> enabled =
+        linkPairs(request_.enable_pairs, robot_, "--enable-pair");
+    if (!enabled.ok()) return enabled.status();
+    std::set<std::pair<std::size_t, std::size_t>> adjacent;
+    for (std::size_t link = 0; link < robot_.links.size(); ++link) {
+      if (robot_.links[link].collisions.empty()) continue;
+      if (const std::optional<std::size_t> up = geometricAncestor(robot_, link))
+        adjacent.insert(ordered(link, *up));
+    }
+    std::vector<std::size_t> links;
+    for (const std::size_t link : robot_.order) {
+      if (!robot_.links[link].collisions.empty()) links.push_back(link);
+    }
+    for (std::size_t i = 0; i < links.size(); ++i) {
+      for (std::size_t j = i + 1; j < links.size(); ++j) {
+        const auto pair = ordered(links[i], links[j]);
+        const bool forced = enabled.value().count(pair) != 0;
+        if (!forced && disabled.value().count(pair) != 0) {
+          ++summary.disabled_pairs;
+          continue;
+        }
+        if (!forced && adjacent.count(pair) != 0) {
+          ++summary.adjacent_pairs;
+          continue;
+        }
+        if (!forced && touchAtReference(links[i], links[j])) {
+          ++summary.touching_pairs;
+          continue;
+        }
+        for (const std::size_t a : objectsOf(links[i])) {
+          for (const std::size_t b : objectsOf(links[j])) {
+            queries_.push_back({{"name", "self: " + objects_[a].name + "-" + objects_[b].name},
+                                {"a", objects_[a].name},
+                                {"b", objects_[b].name},
+                                {"kind", "boolean"}});
+            ++summary.self_queries;
+          }
+        }
+      }
+    }
+    return {};
+  }
+
+  // The robot against its environment (one group query of all pairs), and the clearance of the
+  // last link of the longest chain to each environment object.
+  void addEnvironmentQueries() {
+    if (objects_.size() == robot_objects_) return;
+    queries_.push_back({{"name", "robot vs environment"},
+                        {"a", {{"subtree", objects_[0].name}}},
+                        {"b", {{"subtree", objects_[robot_objects_].name}}},
+                        {"kind", "all_pairs"}});
+    std::size_t tool = 0;
+    std::size_t deepest = 0;
+    for (std::size_t o = 0; o < robot_objects_; ++o) {
+      std::size_t depth = 0;
+      for (std::optional<std::size_t> up = objects_[o].parent; up; up = objects_[*up].parent)
+        ++depth;
+      if (depth > deepest) {
+        deepest = depth;
+        tool = o;
+      }
+    }
+    for (std::size_t e = robot_objects_; e < objects_.size(); ++e) {
+      queries_.push_back({{"name", "clearance: " + objects_[tool].name + "-" + objects_[e].name},
+                          {"a", objects_[tool].name},
+                          {"b", objects_[e].name},
+                          {"kind", "distance"}});
+    }
+  }
+
+  Json scene(std::size_t frames, const std::string& description) const {
+    Json objects = Json::array();
+    for (const SceneObjectPlan& o : objects_) {
+      Json object = {{"name", o.name}, {"shape", o.shape}};
+      std::vector<Eigen::Isometry3d> relative;
+      for (std::size_t f = 0; f < frames; ++f) {
+        relative.push_back(o.parent ? objects_[*o.parent].world[f].inverse() * o.world[f]
+                                    : o.world[f]);
+      }
+      if (o.parent) object["parent"] = objects_[*o.parent].name;
+      const bool still = std::all_of(relative.begin(), relative.end(), [&](const auto& p) {
+        return p.matrix() == relative[0].matrix();
+      });
+      if (still) {
+        object["pose"] = poseJson(relative[0]);
+      } else {
+        Json poses = Json::array();
+        for (const Eigen::Isometry3d& p : relative)
+          poses.push_back(poseJson(p));
+        object["motion"] = {{"poses", std::move(poses)}};
+      }
+      objects.push_back(std::move(object));
+    }
+    return {{"name", robot_.name},
+            {"description", description},
+            {"frames", frames},
+            {"objects", std::move(objects)},
+            {"queries", queries_}};
+  }
+
+  bool hasQueries() const { return !queries_.empty(); }
+  std::size_t objectCount() const { return objects_.size(); }
+
+ private:
+  fs::path folder() const { return fs::absolute(request_.output).parent_path(); }
+
+  std::string uniqueName(const std::string& wanted) {
+    std::string name = wanted;
+    for (int copy = 2; !names_.insert(name).second; ++copy)
+      name = wanted + "_" + std::to_string(copy);
+    return name;
+  }
+
+  std::vector<std::size_t> objectsOf(std::size_t link) const {
+    std::vector<std::size_t> out;
+    for (std::size_t o = 0; o < robot_objects_; ++o) {
+      if (objects_[o].link == link) out.push_back(o);
+    }
+    return out;
+  }
+
+  bool touchAtReference(std::size_t link_a, std::size_t link_b) const {
+    for (const std::size_t a : objectsOf(link_a)) {
+      for (const std::size_t b : objectsOf(link_b)) {
+        const SceneObjectPlan& oa = objects_[a];
+        const SceneObjectPlan& ob = objects_[b];
+        if (exactIntersectingPairs(*oa.mesh, oa.reference, *ob.mesh, ob.reference,
+                                   OracleMode::kFirstPair)
+                .intersecting)
+          return true;
+      }
+    }
+    return false;
+  }
+
+  const UrdfImportRequest& request_;
+  const RobotModel& robot_;
+  std::vector<SceneObjectPlan> objects_;
+  std::size_t robot_objects_ = 0;
+  std::map<std::size_t, std::size_t> first_of_link_;
+  std::set<std::string> names_;
+  Json queries_ = Json::array();
+};
+
+}  // namespace
+
+Result<UrdfImport> importUrdf(const UrdfImportRequest& request) {
+  Result<RobotModel> robot = urdf_import::readRobot(request.urdf);
+  if (!robot.ok()) return robot.status();
+  Result<urdf_import::Trajectory> frames =
+      request.trajectory.empty() ? Result<urdf_import::Trajectory>(urdf_import::randomTrajectory(
+                                       robot.value(), request.frames, request.seed))
+                                 : urdf_import::readTrajectory(request.trajectory, robot.value());
+  if (!frames.ok()) return frames.status();
+  if (frames.value().empty())
+    return Status(StatusCode::kInvalidArgument, "--frames: a scene needs at least one frame");
+
+  UrdfImport summary;
+  summary.robot = robot.value().name;
+  summary.frames = frames.value().size();
+  for (const urdf_import::Joint& joint : robot.value().joints)
+    summary.moving_joints += joint.moves() && !joint.mimics ? 1 : 0;
+  SceneBuilder builder(request, robot.value());
+  if (Status s = builder.addRobot(frames.value()); !s.ok()) return s;
+  if (Status s = builder.addEnvironment(summary.frames); !s.ok()) return s;
+  if (Status s = builder.addSelfCollision(summary); !s.ok()) return s;
+  builder.addEnvironmentQueries();
+  if (!builder.hasQueries()) {
+    return Status(StatusCode::kInvalidArgument,
+                  request.urdf +
+                      ": nothing to ask: no pair of links is left for self-collision "
+                      "and no --environment was given");
+  }
+  summary.objects = builder.objectCount();
+  const std::string source =
+      request.trajectory.empty()
+          ? std::to_string(summary.frames) + " seeded random configurations (seed " +
+                std::to_string(request.seed) + ")"
+          : "the trajectory " + fs::path(request.trajectory).filename().string();
+  const std::string description = "Robot '" + summary.robot + "' imported from " +
+                                  fs::path(request.urdf).filename().string() +
+                                  " by collido import urdf: " + source + ".";
+  std::error_code error;
+  fs::create_directories(fs::absolute(request.output).parent_path(), error);
+  if (Status s = io::writeFileAtomically(request.output,
+                                         builder.scene(summary.frames, description).dump(1) + "\n");
+      !s.ok())
+    return s;
+  return summary;
+}
+
+}  // namespace collido

@@ -1,0 +1,227 @@
+// collido import urdf: a robot with every joint kind (continuous, revolute, prismatic, fixed, a
+// mimic) and every geometry kind (box, cylinder, sphere, a package:// mesh scaled per axis)
+// imported, loaded back, its link poses checked against forward kinematics written out here,
+// and its self-collision rule checked against the exact oracle; then URDFs that are refused.
+#include <collido/urdf/urdf_import.h>
+
+#include <cmath>
+#include <filesystem>
+#include <set>
+
+#include <gtest/gtest.h>
+
+#include <collido/oracle/exact_oracle.h>
+#include <collido/scene/scene.h>
+
+#include "support/test_paths.h"
+
+namespace collido {
+namespace {
+
+constexpr const char* kRobot = R"(<robot name="every_kind">
+  <link name="base"><collision><geometry><box size="0.4 0.4 0.2"/></geometry></collision>
+    <collision><origin xyz="0.19 0.06 0.3"/><geometry><box size="0.04 0.04 0.7"/></geometry>
+    </collision></link>
+  <link name="column"><collision><origin xyz="0 0 0.25"/>
+    <geometry><cylinder radius="0.05" length="0.5"/></geometry></collision></link>
+  <link name="arm">
+    <collision><origin xyz="0.2 0 0"/><geometry><box size="0.4 0.06 0.06"/></geometry></collision>
+    <collision><origin xyz="0.4 0 0"/><geometry><sphere radius="0.05"/></geometry></collision>
+  </link>
+  <link name="slider"><collision><origin xyz="0.02 0 0"/><geometry>
+    <mesh filename="package://parts/meshes/part.obj" scale="0.1 0.05 0.2"/></geometry></collision>
+  </link>
+  <link name="flange"/>
+  <link name="tool"><collision><geometry><sphere radius="0.03"/></geometry></collision></link>
+  <joint name="yaw" type="continuous"><parent link="base"/><child link="column"/>
+    <origin xyz="0 0 0.1"/><axis xyz="0 0 1"/></joint>
+  <joint name="shoulder" type="revolute"><parent link="column"/><child link="arm"/>
+    <origin xyz="0 0 0.5" rpy="0 0 0.3"/><axis xyz="0 1 0"/>
+    <limit lower="-1" upper="1" effort="1" velocity="1"/></joint>
+  <joint name="extend" type="prismatic"><parent link="arm"/><child link="slider"/>
+    <origin xyz="0.4 0 0"/><axis xyz="1 0 0"/><limit lower="0" upper="0.3" effort="1" velocity="1"/>
+  </joint>
+  <joint name="mount" type="fixed"><parent link="slider"/><child link="flange"/>
+    <origin xyz="0.1 0 0" rpy="1.5707963 0 0"/></joint>
+  <joint name="wrist" type="revolute"><parent link="flange"/><child link="tool"/>
+    <origin xyz="0 0 0.05"/><axis xyz="0 0 1"/><limit lower="-2" upper="2" effort="1" velocity="1"/>
+    <mimic joint="shoulder" multiplier="-1" offset="0.1"/></joint>
+</robot>
+)";
+
+// A unit cube with a corner at the origin.
+constexpr const char* kCube =
+    "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nv 0 0 1\nv 1 0 1\nv 0 1 1\nv 1 1 1\n"
+    "f 1 3 4\nf 1 4 2\nf 5 6 8\nf 5 8 7\nf 1 2 6\nf 1 6 5\nf 3 7 8\nf 3 8 4\nf 1 5 7\nf 1 7 3\n"
+    "f 2 4 8\nf 2 8 6\n";
+
+Pose move(double x, double y, double z) {
+  return Pose(Eigen::Translation3d(x, y, z));
+}
+Pose turn(double angle, const Eigen::Vector3d& axis) {
+  return Pose(Eigen::AngleAxisd(angle, axis));
+}
+
+// Every object's world pose for (yaw, shoulder, extend), written out from the URDF above.
+std::map<std::string, Pose> expectedPoses(double yaw, double shoulder, double extend) {
+  const Pose column = move(0, 0, 0.1) * turn(yaw, Eigen::Vector3d::UnitZ());
+  const Pose arm = column * move(0, 0, 0.5) * turn(0.3, Eigen::Vector3d::UnitZ()) *
+                   turn(shoulder, Eigen::Vector3d::UnitY());
+  const Pose slider = arm * move(0.4, 0, 0) * move(extend, 0, 0);
+  const Pose flange = slider * move(0.1, 0, 0) * turn(1.5707963, Eigen::Vector3d::UnitX());
+  const Pose tool = flange * move(0, 0, 0.05) * turn(-shoulder + 0.1, Eigen::Vector3d::UnitZ());
+  return {{"base", Pose::Identity()},
+          {"base_2", move(0.19, 0.06, 0.3)},
+          {"column", column * move(0, 0, 0.25)},
+          {"arm", arm * move(0.2, 0, 0)},
+          {"arm_2", arm * move(0.4, 0, 0)},
+          {"slider", slider * move(0.02, 0, 0)},
+          {"tool", tool}};
+}
+
+struct Files {
+  std::string dir;
+  std::string urdf;
+  std::string csv;
+};
+
+Files writeRobot(const std::string& robot, const std::string& csv) {
+  Files f;
+  f.dir = test::makeTempDirectory("urdf");
+  std::filesystem::create_directories(f.dir + "/parts/urdf");
+  std::filesystem::create_directories(f.dir + "/parts/meshes");
+  test::writeFile(f.dir + "/parts/meshes/part.obj", kCube);
+  test::writeFile(f.dir + "/far_box.obj", kCube);
+  f.urdf = f.dir + "/parts/urdf/robot.urdf";
+  test::writeFile(f.urdf, robot);
+  f.csv = f.dir + "/joints.csv";
+  test::writeFile(f.csv, csv);
+  return f;
+}
+
+TEST(UrdfImport, LinksFollowForwardKinematicsAndSelfCollisionFollowsTheRules) {
+  // Frame 0 is the reference configuration (every joint at 0), where the post on the base
+  // (base_2) touches the arm.
+  const Files f = writeRobot(kRobot, "yaw, shoulder,extend\n0,0,0\n0.5,-0.4,0.1\n3.0,0.9,0.3\n");
+  UrdfImportRequest request;
+  request.urdf = f.urdf;
+  request.trajectory = f.csv;
+  request.environment = {f.dir + "/far_box.obj"};
+  request.output = f.dir + "/scene/robot.json";
+  request.disable_pairs = {{"tool", "base"}};
+  request.enable_pairs = {{"base", "column"}};
+  const Result<UrdfImport> imported = importUrdf(request);
+  ASSERT_TRUE(imported.ok()) << imported.status().toString();
+  EXPECT_EQ(imported.value().moving_joints, 3u);  // the mimic follows the shoulder
+  EXPECT_EQ(imported.value().disabled_pairs, 1u);
+
+  const Result<Scene> loaded = loadScene(request.output);
+  ASSERT_TRUE(loaded.ok()) << loaded.status().toString();
+  const Scene& scene = loaded.value();
+  ASSERT_EQ(scene.frames, 3u);
+  const double values[3][3] = {{0, 0, 0}, {0.5, -0.4, 0.1}, {3.0, 0.9, 0.3}};
+  std::map<std::string, std::size_t> index;
+  for (std::size_t i = 0; i < scene.objects.size(); ++i)
+    index[scene.objects[i].name] = i;
+  for (std::size_t frame = 0; frame < 3; ++frame) {
+    for (const auto& [name, pose] :
+         expectedPoses(values[frame][0], values[frame][1], values[frame][2])) {
+      ASSERT_EQ(index.count(name), 1u) << name;
+      const Pose& got = scene.objects[index[name]].poseAt(frame);
+      EXPECT_LT((got.matrix() - pose.matrix()).cwiseAbs().maxCoeff(), 1e-12)
+          << name << " in frame " << frame;
+    }
+  }
+  // Mounted on their parents: the arm on the column, its second element on its first, the tool
+  // on the slider (the flange has no geometry), the environment on its own.
+  EXPECT_EQ(scene.objects[index["arm"]].parent, index["column"]);
+  EXPECT_EQ(scene.objects[index["arm_2"]].parent, index["arm"]);
+  EXPECT_EQ(scene.objects[index["tool"]].parent, index["slider"]);
+  EXPECT_FALSE(scene.objects[index["env_far_box"]].parent.has_value());
+  // The slider's mesh, a unit cube scaled per axis.
+  EXPECT_DOUBLE_EQ(scene.objects[index["slider"]].mesh->vertices.row(2).maxCoeff(), 0.2);
+
+  // Self-collision: a query per object pair of two links, unless adjacent (but the enabled base
+  // and column), disabled (tool and base) or in contact in frame 0, the reference.
+  const std::map<std::string, std::string> link_of = {
+      {"base", "base"}, {"base_2", "base"},   {"column", "column"}, {"arm", "arm"},
+      {"arm_2", "arm"}, {"slider", "slider"}, {"tool", "tool"}};
+  const std::set<std::set<std::string>> adjacent = {
+      {"base", "column"}, {"column", "arm"}, {"arm", "slider"}, {"slider", "tool"}};
+  std::set<std::pair<std::string, std::string>> asked;
+  for (const SceneQuery& q : scene.queries) {
+    if (q.name.rfind("self: ", 0) != 0) continue;
+    EXPECT_EQ(q.request.kind, QueryKind::kBoolean);
+    asked.insert({scene.objects[q.a].name, scene.objects[q.b].name});
+  }
+  std::size_t touching_links = 0;
+  std::set<std::set<std::string>> touching;
+  for (const auto& [a, link_a] : link_of) {
+    for (const auto& [b, link_b] : link_of) {
+      if (link_a >= link_b) continue;
+      const SceneObject& oa = scene.objects[index[a]];
+      const SceneObject& ob = scene.objects[index[b]];
+      if (exactIntersectingPairs(*oa.mesh, oa.poseAt(0), *ob.mesh, ob.poseAt(0),
+                                 OracleMode::kFirstPair)
+              .intersecting)
+        touching.insert({link_a, link_b});
+    }
+  }
+  for (const auto& [a, link_a] : link_of) {
+    for (const auto& [b, link_b] : link_of) {
+      if (link_a == link_b) continue;
+      const std::set<std::string> links = {link_a, link_b};
+      const bool expected = links == std::set<std::string>{"base", "column"} ||
+                            (adjacent.count(links) == 0 && touching.count(links) == 0 &&
+                             links != std::set<std::string>{"base", "tool"});
+      const bool got = asked.count({a, b}) + asked.count({b, a}) != 0;
+      EXPECT_EQ(got, expected) << a << " - " << b;
+    }
+  }
+  for (const auto& links : touching)
+    touching_links += adjacent.count(links) == 0 ? 1 : 0;
+  EXPECT_EQ(imported.value().touching_pairs, touching_links);
+  EXPECT_GT(touching_links, 0u) << "the test robot has no touching pair to leave out";
+
+  // The robot against its environment, and the tool's clearance.
+  EXPECT_EQ(queryKindName(scene.queries[scene.queries.size() - 2].request.kind),
+            std::string("all_pairs"));
+  EXPECT_EQ(scene.queries.back().name, "clearance: tool-env_far_box");
+}
+
+TEST(UrdfImport, BadRobotsAreRefusedNamingTheLinkJointOrColumn) {
+  const auto refused = [](const std::string& robot, const std::string& csv,
+                          const std::vector<std::string>& words) {
+    const Files f = writeRobot(robot, csv);
+    UrdfImportRequest request;
+    request.urdf = f.urdf;
+    request.trajectory = f.csv;
+    request.output = f.dir + "/robot.json";
+    const Result<UrdfImport> imported = importUrdf(request);
+    ASSERT_FALSE(imported.ok());
+    for (const std::string& word : words)
+      EXPECT_NE(imported.status().message().find(word), std::string::npos)
+          << imported.status().message();
+    EXPECT_FALSE(std::filesystem::exists(request.output));
+  };
+  const std::string robot = kRobot;
+  const auto replaced = [&](const std::string& from, const std::string& to) {
+    std::string text = robot;
+    text.replace(text.find(from), from.size(), to);
+    return text;
+  };
+  const std::string csv = "yaw\n0\n";
+  refused(replaced("meshes/part.obj", "meshes/missing.obj"), csv,
+          {"robot.urdf", "link 'slider'", "package://parts/meshes/missing.obj", "not found"});
+  refused(replaced("type=\"prismatic\"", "type=\"spherical\""), csv,
+          {"robot.urdf", "extend", "spherical"});
+  refused(replaced("</robot>",
+                   "<joint name=\"loop\" type=\"fixed\"><parent link=\"tool\"/>"
+                   "<child link=\"base\"/></joint></robot>"),
+          csv, {"robot.urdf", "'loop'", "make a cycle of links"});
+  refused(robot, "yaw,elbow\n0,0\n", {"joints.csv", "column 'elbow' names no moving joint"});
+  refused(robot, "shoulder\n1.5\n", {"joints.csv", "line 2, column 'shoulder'", "beyond"});
+}
+
+}  // namespace
+}  // namespace collido
