@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <iomanip>
 #include <sstream>
@@ -66,8 +67,10 @@ LoadedShape ShapeLoader::loadFile(const Node& node) {
     scale.setConstant(r.positive(node, "scale", 1.0));
   }
   const std::filesystem::path file = std::filesystem::path(base_) / relative;
-  const std::string key = file.lexically_normal().string() + "|" + std::to_string(scale.x()) + "|" +
-                          std::to_string(scale.y()) + "|" + std::to_string(scale.z());
+  // Every bit of the scale (std::to_string keeps six decimals).
+  char factors[80];
+  std::snprintf(factors, sizeof factors, "|%.17g|%.17g|%.17g", scale.x(), scale.y(), scale.z());
+  const std::string key = file.lexically_normal().string() + factors;
   if (const auto hit = cache_.find(key); hit != cache_.end()) return hit->second;
 
   MeshReport report;

@@ -21,8 +21,14 @@ namespace fs = std::filesystem;
 // error names what urdfdom named, instead of going to the terminal.
 class MessageCollector final : public console_bridge::OutputHandler {
  public:
-  MessageCollector() { console_bridge::useOutputHandler(this); }
-  ~MessageCollector() override { console_bridge::restorePreviousOutputHandler(); }
+  MessageCollector() : saved_(console_bridge::getOutputHandler()) {
+    console_bridge::useOutputHandler(this);
+  }
+  // Twice, so that console_bridge's "previous handler" is not left pointing at this one.
+  ~MessageCollector() override {
+    console_bridge::useOutputHandler(saved_);
+    console_bridge::useOutputHandler(saved_);
+  }
   MessageCollector(const MessageCollector&) = delete;
   MessageCollector& operator=(const MessageCollector&) = delete;
 
@@ -38,6 +44,7 @@ class MessageCollector final : public console_bridge::OutputHandler {
   }
 
  private:
+  console_bridge::OutputHandler* saved_;
   std::vector<std::string> errors_;
 };
 
@@ -102,23 +109,24 @@ std::optional<fs::path> resolveMesh(const std::string& uri, const fs::path& urdf
   const std::string file = "file://";
   if (uri.rfind(file, 0) == 0) {
     looked.push_back(uri.substr(file.size()));
-    return fs::exists(looked.back()) ? std::optional<fs::path>(looked.back()) : std::nullopt;
+    return fs::is_regular_file(looked.back()) ? std::optional<fs::path>(looked.back())
+                                              : std::nullopt;
   }
   if (uri.rfind(package, 0) != 0) {
     const fs::path path = fs::path(uri).is_absolute() ? fs::path(uri) : urdf_folder / uri;
     looked.push_back(path.string());
-    return fs::exists(path) ? std::optional<fs::path>(path) : std::nullopt;
+    return fs::is_regular_file(path) ? std::optional<fs::path>(path) : std::nullopt;
   }
   const std::string rest = uri.substr(package.size());
   const std::size_t slash = rest.find('/');
   const std::string name = rest.substr(0, slash);
   const std::string inside = slash == std::string::npos ? "" : rest.substr(slash + 1);
-  for (fs::path folder = fs::absolute(urdf_folder);; folder = folder.parent_path()) {
+  for (fs::path folder = urdf_folder;; folder = folder.parent_path()) {
     for (const fs::path& candidate :
          {folder / name / inside, folder.filename() == name ? folder / inside : fs::path()}) {
       if (candidate.empty()) continue;
       looked.push_back(candidate.string());
-      if (fs::exists(candidate)) return candidate;
+      if (fs::is_regular_file(candidate)) return candidate;
     }
     if (folder == folder.parent_path()) break;
   }
@@ -150,6 +158,11 @@ Result<Geometry> geometryOf(const urdf::Geometry& g, const std::string& link,
       const auto& mesh = static_cast<const urdf::Mesh&>(g);
       out.kind = Geometry::Kind::kMesh;
       out.scale = Eigen::Vector3d(mesh.scale.x, mesh.scale.y, mesh.scale.z);
+      if (!(out.scale.minCoeff() > 0.0)) {
+        return Status(StatusCode::kInvalidArgument,
+                      label + ": link '" + link + "': collision mesh '" + mesh.filename +
+                          "': a scale factor is not > 0 (a mirrored mesh is not imported)");
+      }
       std::vector<std::string> looked;
       const std::optional<fs::path> found = resolveMesh(mesh.filename, urdf_folder, looked);
       if (!found) {
@@ -232,13 +245,18 @@ std::optional<std::size_t> RobotModel::jointNamed(const std::string& wanted) con
   return std::nullopt;
 }
 
+double RobotModel::valueOf(std::size_t joint, const std::vector<double>& values) const {
+  // A mimic follows its joint, which may follow another (readRobot refused cycles).
+  const Joint& j = joints[joint];
+  return j.mimics ? j.multiplier * valueOf(*j.mimics, values) + j.offset : values[joint];
+}
+
 std::vector<Eigen::Isometry3d> RobotModel::linkPoses(const std::vector<double>& values) const {
   std::vector<Eigen::Isometry3d> poses(links.size(), Eigen::Isometry3d::Identity());
   for (const std::size_t link : order) {
     if (!links[link].parent_joint) continue;
     const Joint& joint = joints[*links[link].parent_joint];
-    const double q = joint.mimics ? joint.multiplier * values[*joint.mimics] + joint.offset
-                                  : values[*links[link].parent_joint];
+    const double q = valueOf(*links[link].parent_joint, values);
     Eigen::Isometry3d motion = Eigen::Isometry3d::Identity();
     if (joint.kind == Joint::Kind::kRevolute || joint.kind == Joint::Kind::kContinuous)
       motion.linear() = Eigen::AngleAxisd(q, joint.axis).toRotationMatrix();
@@ -260,7 +278,9 @@ Result<RobotModel> readRobot(const std::string& path) {
   }
   if (!model) {
     const std::string cycle = cycleOf(xml.value());
-    return Status(StatusCode::kInvalidArgument, path + ": " + (cycle.empty() ? messages : cycle));
+    return Status(
+        StatusCode::kInvalidArgument,
+        path + ": " + (cycle.empty() ? messages : cycle + " (urdfdom: " + messages + ")"));
   }
   RobotModel robot;
   robot.name = model->getName();
@@ -269,7 +289,8 @@ Result<RobotModel> readRobot(const std::string& path) {
     link_index[name] = robot.links.size();
     robot.links.push_back(Link{name, std::nullopt, {}});
   }
-  const fs::path folder = fs::path(path).parent_path();
+  // Absolute, so that a URDF named without a folder still has ancestors to search.
+  const fs::path folder = fs::absolute(path).lexically_normal().parent_path();
   for (const auto& [name, link] : model->links_) {
     for (const urdf::CollisionSharedPtr& collision : link->collision_array) {
       if (!collision || !collision->geometry) continue;
@@ -282,7 +303,15 @@ Result<RobotModel> readRobot(const std::string& path) {
   for (const auto& [name, j] : model->joints_) {
     Result<Joint> joint = jointOf(*j, link_index, path);
     if (!joint.ok()) return joint.status();
-    robot.links[joint.value().child].parent_joint = robot.joints.size();
+    Link& child = robot.links[joint.value().child];
+    if (child.parent_joint) {
+      std::string message = path + ": link '" + child.name + "' is the child of joints '";
+      message += robot.joints[*child.parent_joint].name;
+      message += "' and '";
+      message += name;
+      return Status(StatusCode::kInvalidArgument, message + "' (a robot is a tree)");
+    }
+    child.parent_joint = robot.joints.size();
     robot.joints.push_back(std::move(joint).value());
   }
   for (const auto& [name, j] : model->joints_) {
@@ -299,6 +328,15 @@ Result<RobotModel> readRobot(const std::string& path) {
     joint.multiplier = j->mimic->multiplier;
     joint.offset = j->mimic->offset;
   }
+  for (const Joint& joint : robot.joints) {
+    std::optional<std::size_t> at = joint.mimics;
+    for (std::size_t steps = 0; at; at = robot.joints[*at].mimics) {
+      if (++steps > robot.joints.size()) {
+        return Status(StatusCode::kInvalidArgument,
+                      path + ": joint '" + joint.name + "' mimics a joint that mimics it back");
+      }
+    }
+  }
   // Parents first: from the root, child joints in name order.
   std::vector<std::size_t> stack = {link_index.at(model->getRoot()->name)};
   while (!stack.empty()) {
@@ -308,6 +346,18 @@ Result<RobotModel> readRobot(const std::string& path) {
     for (auto j = robot.joints.rbegin(); j != robot.joints.rend(); ++j) {
       if (j->parent == link) stack.push_back(j->child);
     }
+  }
+  // urdfdom checks for one root only: links on a cycle apart from it are never reached.
+  if (robot.order.size() != robot.links.size()) {
+    const std::string cycle = cycleOf(xml.value());
+    std::string unreached;
+    for (std::size_t link = 0; link < robot.links.size(); ++link) {
+      if (std::find(robot.order.begin(), robot.order.end(), link) == robot.order.end())
+        unreached += (unreached.empty() ? "'" : ", '") + robot.links[link].name + "'";
+    }
+    return Status(
+        StatusCode::kInvalidArgument,
+        path + ": " + (cycle.empty() ? "links " + unreached + " are not under the root" : cycle));
   }
   return robot;
 }

@@ -63,6 +63,8 @@ struct RobotModel {
 
   std::optional<std::size_t> linkNamed(const std::string& name) const;
   std::optional<std::size_t> jointNamed(const std::string& name) const;
+  /// A joint's value: its own, or for a mimic joint the one it follows, scaled and offset.
+  double valueOf(std::size_t joint, const std::vector<double>& values) const;
   /// Every link's world pose for joint values (by joint; mimic joints' own are ignored).
   std::vector<Eigen::Isometry3d> linkPoses(const std::vector<double>& values) const;
 };

@@ -1,5 +1,6 @@
 #include "trajectory.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <sstream>
@@ -30,9 +31,12 @@ Cells cellsOf(const std::string& line) {
 }  // namespace
 
 std::vector<double> referenceConfiguration(const RobotModel& robot) {
+  // MoveIt's default state: 0, or the middle of the limits when they exclude 0.
   std::vector<double> values(robot.joints.size(), 0.0);
-  for (std::size_t j = 0; j < robot.joints.size(); ++j)
-    values[j] = robot.joints[j].clamped(0.0);
+  for (std::size_t j = 0; j < robot.joints.size(); ++j) {
+    const Joint& joint = robot.joints[j];
+    if (joint.clamped(0.0) != 0.0) values[j] = 0.5 * (joint.lower + joint.upper);
+  }
   return values;
 }
 
@@ -55,11 +59,14 @@ Result<Trajectory> readTrajectory(const std::string& path, const RobotModel& rob
       if (columns.empty()) {
         for (const std::string& name : cells) {
           const std::optional<std::size_t> joint = robot.jointNamed(name);
+          const std::string where = "line " + std::to_string(number);
           if (!joint || !robot.joints[*joint].moves() || robot.joints[*joint].mimics) {
-            return fail("line 1", "column '" + name + "' names no moving joint of robot '" +
-                                      robot.name + "'" +
-                                      (joint ? " (it is fixed, or mimics another)" : ""));
+            return fail(where, "column '" + name + "' names no moving joint of robot '" +
+                                   robot.name + "'" +
+                                   (joint ? " (it is fixed, or mimics another)" : ""));
           }
+          if (std::find(columns.begin(), columns.end(), *joint) != columns.end())
+            return fail(where, "joint '" + name + "' has two columns");
           columns.push_back(*joint);
         }
         continue;

@@ -15,7 +15,8 @@ namespace collido::urdf_import {
 /// Per frame, a value per joint (by joint index; fixed and mimic joints' unused).
 using Trajectory = std::vector<std::vector<double>>;
 
-/// The reference configuration: every moving joint at 0, or at its limit nearest 0.
+/// The reference configuration (MoveIt's default state): every moving joint at 0, or at the
+/// middle of its limits when they exclude 0.
 std::vector<double> referenceConfiguration(const RobotModel& robot);
 
 /// Reads a joints CSV: a header of joint names (moving, not mimic), then one row of values per

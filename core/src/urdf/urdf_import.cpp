@@ -47,7 +47,11 @@ Json poseJson(const Eigen::Isometry3d& pose) {
 }
 
 std::string relativePath(const std::string& file, const fs::path& folder) {
-  return fs::relative(fs::absolute(file), folder).generic_string();
+  // Lexical, as the scene loader joins them: a symbolic link in between is kept, not resolved.
+  return fs::absolute(file)
+      .lexically_normal()
+      .lexically_relative(folder.lexically_normal())
+      .generic_string();
 }
 
 // The scene shape of a collision element and its mesh; errors name the link.
@@ -102,6 +106,36 @@ std::optional<std::size_t> geometricAncestor(const RobotModel& robot, std::size_
 
 std::pair<std::size_t, std::size_t> ordered(std::size_t a, std::size_t b) {
   return {std::min(a, b), std::max(a, b)};
+}
+
+// Link pairs joined by a joint, where a link without geometry joins all its neighbours to each
+// other (repeatedly), as MoveIt's setup assistant builds its connection graph: two fingers on a
+// bare flange are adjacent, and so are the first links under a bare world link.
+std::set<std::pair<std::size_t, std::size_t>> adjacentLinks(const RobotModel& robot) {
+  std::vector<std::set<std::size_t>> neighbours(robot.links.size());
+  for (const urdf_import::Joint& joint : robot.joints) {
+    neighbours[joint.parent].insert(joint.child);
+    neighbours[joint.child].insert(joint.parent);
+  }
+  for (bool changed = true; changed;) {
+    changed = false;
+    for (std::size_t link = 0; link < robot.links.size(); ++link) {
+      if (!robot.links[link].collisions.empty()) continue;
+      for (const std::size_t a : neighbours[link]) {
+        for (const std::size_t b : neighbours[link]) {
+          if (a != b && neighbours[a].insert(b).second) changed = true;
+        }
+      }
+    }
+  }
+  std::set<std::pair<std::size_t, std::size_t>> pairs;
+  for (std::size_t a = 0; a < robot.links.size(); ++a) {
+    for (const std::size_t b : neighbours[a]) {
+      if (!robot.links[a].collisions.empty() && !robot.links[b].collisions.empty())
+        pairs.insert(ordered(a, b));
+    }
+  }
+  return pairs;
 }
 
 // The link pairs a --disable-pair or --enable-pair list names; errors name an unknown link.
@@ -196,12 +230,7 @@ class SceneBuilder {
     Result<std::set<std::pair<std::size_t, std::size_t>>> enabled =
         linkPairs(request_.enable_pairs, robot_, "--enable-pair");
     if (!enabled.ok()) return enabled.status();
-    std::set<std::pair<std::size_t, std::size_t>> adjacent;
-    for (std::size_t link = 0; link < robot_.links.size(); ++link) {
-      if (robot_.links[link].collisions.empty()) continue;
-      if (const std::optional<std::size_t> up = geometricAncestor(robot_, link))
-        adjacent.insert(ordered(link, *up));
-    }
+    const std::set<std::pair<std::size_t, std::size_t>> adjacent = adjacentLinks(robot_);
     std::vector<std::size_t> links;
     for (const std::size_t link : robot_.order) {
       if (!robot_.links[link].collisions.empty()) links.push_back(link);
@@ -224,10 +253,11 @@ class SceneBuilder {
         }
         for (const std::size_t a : objectsOf(links[i])) {
           for (const std::size_t b : objectsOf(links[j])) {
-            queries_.push_back({{"name", "self: " + objects_[a].name + "-" + objects_[b].name},
-                                {"a", objects_[a].name},
-                                {"b", objects_[b].name},
-                                {"kind", "boolean"}});
+            queries_.push_back(
+                {{"name", uniqueQueryName("self: " + objects_[a].name + "-" + objects_[b].name)},
+                 {"a", objects_[a].name},
+                 {"b", objects_[b].name},
+                 {"kind", "boolean"}});
             ++summary.self_queries;
           }
         }
@@ -244,22 +274,25 @@ class SceneBuilder {
                         {"a", {{"subtree", objects_[0].name}}},
                         {"b", {{"subtree", objects_[robot_objects_].name}}},
                         {"kind", "all_pairs"}});
+    // The tool: the first element of the link with the most joints above it.
     std::size_t tool = 0;
     std::size_t deepest = 0;
-    for (std::size_t o = 0; o < robot_objects_; ++o) {
+    for (const auto& [link, first] : first_of_link_) {
       std::size_t depth = 0;
-      for (std::optional<std::size_t> up = objects_[o].parent; up; up = objects_[*up].parent)
+      for (std::optional<std::size_t> j = robot_.links[link].parent_joint; j;
+           j = robot_.links[robot_.joints[*j].parent].parent_joint)
         ++depth;
-      if (depth > deepest) {
+      if (depth > deepest || (depth == deepest && first < tool)) {
         deepest = depth;
-        tool = o;
+        tool = first;
       }
     }
     for (std::size_t e = robot_objects_; e < objects_.size(); ++e) {
-      queries_.push_back({{"name", "clearance: " + objects_[tool].name + "-" + objects_[e].name},
-                          {"a", objects_[tool].name},
-                          {"b", objects_[e].name},
-                          {"kind", "distance"}});
+      queries_.push_back(
+          {{"name", uniqueQueryName("clearance: " + objects_[tool].name + "-" + objects_[e].name)},
+           {"a", objects_[tool].name},
+           {"b", objects_[e].name},
+           {"kind", "distance"}});
     }
   }
 
@@ -273,8 +306,9 @@ class SceneBuilder {
                                     : o.world[f]);
       }
       if (o.parent) object["parent"] = objects_[*o.parent].name;
+      // Fixed on its parent up to rounding (a second element, a fixed joint): one pose.
       const bool still = std::all_of(relative.begin(), relative.end(), [&](const auto& p) {
-        return p.matrix() == relative[0].matrix();
+        return (p.matrix() - relative[0].matrix()).cwiseAbs().maxCoeff() <= 1e-14;
       });
       if (still) {
         object["pose"] = poseJson(relative[0]);
@@ -298,6 +332,14 @@ class SceneBuilder {
 
  private:
   fs::path folder() const { return fs::absolute(request_.output).parent_path(); }
+
+  // Names joined with "-" can meet ("x-y" and "z", "x" and "y-z"): the second gets a number.
+  std::string uniqueQueryName(const std::string& wanted) {
+    std::string name = wanted;
+    for (int copy = 2; !query_names_.insert(name).second; ++copy)
+      name = wanted + " #" + std::to_string(copy);
+    return name;
+  }
 
   std::string uniqueName(const std::string& wanted) {
     std::string name = wanted;
@@ -334,6 +376,7 @@ class SceneBuilder {
   std::size_t robot_objects_ = 0;
   std::map<std::size_t, std::size_t> first_of_link_;
   std::set<std::string> names_;
+  std::set<std::string> query_names_ = {"robot vs environment"};
   Json queries_ = Json::array();
 };
 

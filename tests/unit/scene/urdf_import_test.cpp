@@ -1,7 +1,8 @@
 // collido import urdf: a robot with every joint kind (continuous, revolute, prismatic, fixed, a
-// mimic) and every geometry kind (box, cylinder, sphere, a package:// mesh scaled per axis)
-// imported, loaded back, its link poses checked against forward kinematics written out here,
-// and its self-collision rule checked against the exact oracle; then URDFs that are refused.
+// mimic, a mimic of a mimic) and every geometry kind (box, cylinder, sphere, a package:// mesh
+// scaled per axis) imported, loaded back, its link poses checked against forward kinematics written
+// out here, and its self-collision rule checked against the exact oracle; then URDFs that are
+// refused.
 #include <collido/urdf/urdf_import.h>
 
 #include <cmath>
@@ -46,6 +47,10 @@ constexpr const char* kRobot = R"(<robot name="every_kind">
   <joint name="wrist" type="revolute"><parent link="flange"/><child link="tool"/>
     <origin xyz="0 0 0.05"/><axis xyz="0 0 1"/><limit lower="-2" upper="2" effort="1" velocity="1"/>
     <mimic joint="shoulder" multiplier="-1" offset="0.1"/></joint>
+  <link name="finger"><collision><geometry><sphere radius="0.01"/></geometry></collision></link>
+  <joint name="grip" type="revolute"><parent link="tool"/><child link="finger"/>
+    <origin xyz="0 0 0.03"/><axis xyz="0 1 0"/><limit lower="-3" upper="3" effort="1" velocity="1"/>
+    <mimic joint="wrist" multiplier="2"/></joint>
 </robot>
 )";
 
@@ -70,13 +75,15 @@ std::map<std::string, Pose> expectedPoses(double yaw, double shoulder, double ex
   const Pose slider = arm * move(0.4, 0, 0) * move(extend, 0, 0);
   const Pose flange = slider * move(0.1, 0, 0) * turn(1.5707963, Eigen::Vector3d::UnitX());
   const Pose tool = flange * move(0, 0, 0.05) * turn(-shoulder + 0.1, Eigen::Vector3d::UnitZ());
-  return {{"base", Pose::Identity()},
-          {"base_2", move(0.19, 0.06, 0.3)},
-          {"column", column * move(0, 0, 0.25)},
-          {"arm", arm * move(0.2, 0, 0)},
-          {"arm_2", arm * move(0.4, 0, 0)},
-          {"slider", slider * move(0.02, 0, 0)},
-          {"tool", tool}};
+  return {
+      {"base", Pose::Identity()},
+      {"base_2", move(0.19, 0.06, 0.3)},
+      {"column", column * move(0, 0, 0.25)},
+      {"arm", arm * move(0.2, 0, 0)},
+      {"arm_2", arm * move(0.4, 0, 0)},
+      {"slider", slider * move(0.02, 0, 0)},
+      {"tool", tool},
+      {"finger", tool * move(0, 0, 0.03) * turn(2 * (-shoulder + 0.1), Eigen::Vector3d::UnitY())}};
 }
 
 struct Files {
@@ -145,9 +152,12 @@ TEST(UrdfImport, LinksFollowForwardKinematicsAndSelfCollisionFollowsTheRules) {
   // and column), disabled (tool and base) or in contact in frame 0, the reference.
   const std::map<std::string, std::string> link_of = {
       {"base", "base"}, {"base_2", "base"},   {"column", "column"}, {"arm", "arm"},
-      {"arm_2", "arm"}, {"slider", "slider"}, {"tool", "tool"}};
-  const std::set<std::set<std::string>> adjacent = {
-      {"base", "column"}, {"column", "arm"}, {"arm", "slider"}, {"slider", "tool"}};
+      {"arm_2", "arm"}, {"slider", "slider"}, {"tool", "tool"},     {"finger", "finger"}};
+  const std::set<std::set<std::string>> adjacent = {{"base", "column"},
+                                                    {"column", "arm"},
+                                                    {"arm", "slider"},
+                                                    {"slider", "tool"},
+                                                    {"tool", "finger"}};
   std::set<std::pair<std::string, std::string>> asked;
   for (const SceneQuery& q : scene.queries) {
     if (q.name.rfind("self: ", 0) != 0) continue;
@@ -186,7 +196,7 @@ TEST(UrdfImport, LinksFollowForwardKinematicsAndSelfCollisionFollowsTheRules) {
   // The robot against its environment, and the tool's clearance.
   EXPECT_EQ(queryKindName(scene.queries[scene.queries.size() - 2].request.kind),
             std::string("all_pairs"));
-  EXPECT_EQ(scene.queries.back().name, "clearance: tool-env_far_box");
+  EXPECT_EQ(scene.queries.back().name, "clearance: finger-env_far_box");
 }
 
 TEST(UrdfImport, BadRobotsAreRefusedNamingTheLinkJointOrColumn) {
@@ -220,6 +230,13 @@ TEST(UrdfImport, BadRobotsAreRefusedNamingTheLinkJointOrColumn) {
                    "<child link=\"base\"/></joint></robot>"),
           csv, {"robot.urdf", "'loop'", "make a cycle of links"});
   refused(robot, "yaw,elbow\n0,0\n", {"joints.csv", "column 'elbow' names no moving joint"});
+  refused(robot, "yaw,yaw\n0,0\n", {"joints.csv", "joint 'yaw' has two columns"});
+  refused(replaced("scale=\"0.1 0.05 0.2\"", "scale=\"-0.1 0.05 0.2\""), csv,
+          {"robot.urdf", "link 'slider'", "not > 0"});
+  refused(replaced("</robot>",
+                   "<joint name=\"again\" type=\"fixed\"><parent link=\"base\"/>"
+                   "<child link=\"tool\"/></joint></robot>"),
+          csv, {"robot.urdf", "link 'tool' is the child of joints"});
   refused(robot, "shoulder\n1.5\n", {"joints.csv", "line 2, column 'shoulder'", "beyond"});
 }
 

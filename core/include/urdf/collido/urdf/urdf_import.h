@@ -34,16 +34,16 @@ struct UrdfImport {
   std::size_t frames = 0;
   std::size_t self_queries = 0;    ///< object pairs of two links asked for self-collision
   std::size_t adjacent_pairs = 0;  ///< link pairs left out: joined by a joint
-  std::size_t touching_pairs = 0;  ///< left out: in contact at the reference configuration
+  std::size_t touching_pairs = 0;  ///< left out: in contact in MoveIt's default state
   std::size_t disabled_pairs = 0;  ///< left out: --disable-pair
 };
 
 /// Reads the robot, its trajectory and its environment and writes the scene file. Self-collision
 /// asks every pair of links but adjacent ones and those in contact at the reference
-/// configuration (every joint at 0, or its limit nearest 0), as MoveIt's setup assistant
-/// disables them; robot against environment is one group query of all pairs, and the last link
-/// of the longest chain gets a distance query to each environment object. Errors name the file
-/// and the link, joint or column.
+/// configuration (MoveIt's default state), as MoveIt's setup assistant applies those two rules;
+/// robot against environment is one group query of all pairs, and the link with the most joints
+/// above it gets a distance query to each environment object. Errors name the file and the
+/// link, joint or column.
 Result<UrdfImport> importUrdf(const UrdfImportRequest& request);
 
 }  // namespace collido
