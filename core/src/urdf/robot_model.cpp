@@ -269,6 +269,10 @@ std::vector<Eigen::Isometry3d> RobotModel::linkPoses(const std::vector<double>& 
 Result<RobotModel> readRobot(const std::string& path) {
   Result<std::string> xml = readInputFile(path, "URDF file");
   if (!xml.ok()) return xml.status();
+  // Cycles first: urdfdom's links hold their children by shared pointer, so it leaks a cyclic
+  // robot it refuses, and says only that it found no root.
+  if (const std::string cycle = cycleOf(xml.value()); !cycle.empty())
+    return Status(StatusCode::kInvalidArgument, path + ": " + cycle);
   urdf::ModelInterfaceSharedPtr model;
   std::string messages;
   {
@@ -276,12 +280,7 @@ Result<RobotModel> readRobot(const std::string& path) {
     model = urdf::parseURDF(xml.value());
     messages = collector.text();
   }
-  if (!model) {
-    const std::string cycle = cycleOf(xml.value());
-    return Status(
-        StatusCode::kInvalidArgument,
-        path + ": " + (cycle.empty() ? messages : cycle + " (urdfdom: " + messages + ")"));
-  }
+  if (!model) return Status(StatusCode::kInvalidArgument, path + ": " + messages);
   RobotModel robot;
   robot.name = model->getName();
   std::map<std::string, std::size_t> link_index;
@@ -347,17 +346,15 @@ Result<RobotModel> readRobot(const std::string& path) {
       if (j->parent == link) stack.push_back(j->child);
     }
   }
-  // urdfdom checks for one root only: links on a cycle apart from it are never reached.
+  // urdfdom checks for one root; a link it did not hang under it is refused, not dropped.
   if (robot.order.size() != robot.links.size()) {
-    const std::string cycle = cycleOf(xml.value());
     std::string unreached;
     for (std::size_t link = 0; link < robot.links.size(); ++link) {
       if (std::find(robot.order.begin(), robot.order.end(), link) == robot.order.end())
         unreached += (unreached.empty() ? "'" : ", '") + robot.links[link].name + "'";
     }
-    return Status(
-        StatusCode::kInvalidArgument,
-        path + ": " + (cycle.empty() ? "links " + unreached + " are not under the root" : cycle));
+    return Status(StatusCode::kInvalidArgument,
+                  path + ": links " + unreached + " are not under the root link");
   }
   return robot;
 }
