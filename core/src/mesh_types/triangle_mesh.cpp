@@ -66,4 +66,13 @@ Status validateMesh(const TriangleMesh& mesh, const std::string& source) {
   return {};
 }
 
+BoundingSphere boundingSphere(const TriangleMesh& mesh) {
+  const Eigen::Vector3d low = mesh.vertices.rowwise().minCoeff();
+  const Eigen::Vector3d high = mesh.vertices.rowwise().maxCoeff();
+  BoundingSphere sphere;
+  sphere.centre = 0.5 * (low + high);
+  sphere.radius = (mesh.vertices.colwise() - sphere.centre).colwise().norm().maxCoeff();
+  return sphere;
+}
+
 }  // namespace collido

@@ -84,13 +84,36 @@ struct Recorder::State {
     throw RecordError("Recorder::" + call + ": " + problem);
   }
 
+  // A call of an object or two, put into words only when it is refused: setPose and ask, the
+  // calls an application makes per frame, build no string.
+  struct Call {
+    const char* name;
+    ObjectId a = kNone;
+    ObjectId b = kNone;
+  };
+
+  // "setPose(object 'arm')", "setPose(id 7)", "ask(0, 1)".
+  std::string text(const Call& c) const {
+    std::string out = std::string(c.name) + "(";
+    if (c.b != kNone) return out + std::to_string(c.a) + ", " + std::to_string(c.b) + ")";
+    if (c.a < objects.size()) return out + "object '" + objects[c.a].name + "')";
+    return out + "id " + std::to_string(c.a) + ")";
+  }
+
+  [[noreturn]] void refuse(const Call& call, const std::string& problem) const {
+    refuse(text(call), problem);
+  }
+
   void expectOpen(const std::string& call) const {
+    if (closed) refuse(call, "the recording is closed");
+  }
+  void expectOpen(const Call& call) const {
     if (closed) refuse(call, "the recording is closed");
   }
 
   bool recording() const { return options.max_frames == 0 || frames < options.max_frames; }
 
-  Object& object(const std::string& call, ObjectId id) {
+  Object& object(const Call& call, ObjectId id) {
     if (id >= objects.size()) {
       refuse(call, "unknown object id " + std::to_string(id) + " (" +
                        std::to_string(objects.size()) + " objects added)");
@@ -100,14 +123,8 @@ struct Recorder::State {
     return o;
   }
 
-  std::string call(const char* name, ObjectId id) const {
-    std::string text = std::string(name) + "(";
-    if (id < objects.size()) return text + "object '" + objects[id].name + "')";
-    return text + "id " + std::to_string(id) + ")";
-  }
-
   void setPose(ObjectId id, const Eigen::Matrix3d& rotation, const Eigen::Vector3d& translation) {
-    const std::string where = call("setPose", id);
+    const Call where{"setPose", id};
     expectOpen(where);
     Object& o = object(where, id);
     if (!rotation.allFinite() || !translation.allFinite())
@@ -244,7 +261,7 @@ Recorder::ObjectId Recorder::addMesh(const std::string& name, const Eigen::Matri
 
 void Recorder::removeObject(ObjectId id) {
   State& s = *state_;
-  const std::string where = s.call("removeObject", id);
+  const State::Call where{"removeObject", id};
   s.expectOpen(where);
   Object& o = s.object(where, id);
   o.removed = true;
@@ -267,8 +284,8 @@ void Recorder::setPose(ObjectId id, const Eigen::Isometry3d& pose) {
 
 void Recorder::setPose(ObjectId id, const Eigen::Matrix4d& matrix) {
   if (matrix.row(3) != Eigen::RowVector4d(0, 0, 0, 1)) {
-    State::refuse(state_->call("setPose", id),
-                  "a 4 x 4 pose's bottom row must be (0, 0, 0, 1), as a rigid transform's is");
+    state_->refuse(State::Call{"setPose", id},
+                   "a 4 x 4 pose's bottom row must be (0, 0, 0, 1), as a rigid transform's is");
   }
   state_->setPose(id, matrix.topLeftCorner<3, 3>(), matrix.topRightCorner<3, 1>());
 }
@@ -279,16 +296,16 @@ void Recorder::setPose(ObjectId id, const Eigen::Matrix<double, 3, 4>& matrix) {
 
 void Recorder::ask(ObjectId a, ObjectId b, RecordedKind kind, double abs_tolerance) {
   State& s = *state_;
-  const std::string where = "ask(" + std::to_string(a) + ", " + std::to_string(b) + ")";
+  const State::Call where{"ask", a, b};
   s.expectOpen(where);
-  if (!s.frame_open) State::refuse(where, "no frame is open: call beginFrame() first");
+  if (!s.frame_open) s.refuse(where, "no frame is open: call beginFrame() first");
   Object& oa = s.object(where, a);
   Object& ob = s.object(where, b);
-  if (a == b) State::refuse(where, "a query needs two different objects");
+  if (a == b) s.refuse(where, "a query needs two different objects");
   if (!(abs_tolerance >= 0.0) || !std::isfinite(abs_tolerance))
-    State::refuse(where, "the tolerance must be finite and >= 0");
+    s.refuse(where, "the tolerance must be finite and >= 0");
   if (abs_tolerance > 0.0 && kind != RecordedKind::kDistance)
-    State::refuse(where, "a tolerance applies to distance queries only");
+    s.refuse(where, "a tolerance applies to distance queries only");
   oa.asked_in = ob.asked_in = s.frames_seen;
   if (!s.recording()) return;
   const QueryKey key{a, b, kind, abs_tolerance + 0.0};  // -0 is 0, to the hash too

@@ -190,13 +190,20 @@ std::vector<FrameWork> stepFrames(const QueryRun& run, const std::optional<Broad
   Shapes before;
   std::optional<std::size_t> last_frame;  // the frame the query was last asked in
   std::map<std::pair<std::size_t, std::size_t>, QueryResult> last_answers;
+  // The pairs asked, culled or not: counted once, unless an object of the query comes and goes.
+  const bool comes_and_goes = std::any_of(run.objects.begin(), run.objects.end(), [&](auto i) {
+    return !run.scene.objects[i].present.everyFrame();
+  });
+  const std::size_t every_pair = askedPairCount(run.scene, run.query, 0);
   for (std::size_t frame = 0; frame < run.scene.frames && m.ok(); ++frame) {
     if (!run.query.asked.contains(frame)) continue;
     const ObjectPairs candidates = objectPairsAt(broad_phase, run.query, frame);
     FrameRecord record;
     record.frame = frame;
     record.object_pairs = candidates.size();
-    record.skipped_pairs = askedPairCount(run.scene, run.query, frame) - candidates.size();
+    record.skipped_pairs =
+        (comes_and_goes ? askedPairCount(run.scene, run.query, frame) : every_pair) -
+        candidates.size();
     const Shapes shapes = shapesAt(run, frame);
     FrameWork work;
     if (options.reuse_unchanged) work.held = heldObjects(run, frame, last_frame, shapes, before);

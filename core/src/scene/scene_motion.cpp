@@ -11,20 +11,6 @@ namespace {
 // Scenes' poses must be the same with any standard library (PortableRandom says why).
 using Sampler = PortableRandom;
 
-struct Sphere {
-  Eigen::Vector3d center;
-  double radius;
-};
-
-// Centre of the axis-aligned bounds and the farthest vertex from it: a loose but stable sphere.
-Sphere boundingSphere(const TriangleMesh& mesh) {
-  const Eigen::Vector3d lo = mesh.vertices.rowwise().minCoeff();
-  const Eigen::Vector3d hi = mesh.vertices.rowwise().maxCoeff();
-  const Eigen::Vector3d center = 0.5 * (lo + hi);
-  const double radius = (mesh.vertices.colwise() - center).colwise().norm().maxCoeff();
-  return {center, radius};
-}
-
 }  // namespace
 
 std::vector<Pose> randomOverlapPoses(const RandomOverlapMotion& spec,
@@ -33,8 +19,8 @@ std::vector<Pose> randomOverlapPoses(const RandomOverlapMotion& spec,
                                      const TriangleMesh& mesh, const Pose& base,
                                      std::size_t frames) {
   Sampler sampler(spec.seed);
-  const Sphere reference = boundingSphere(reference_mesh);
-  const Sphere own = boundingSphere(mesh);
+  const BoundingSphere reference = boundingSphere(reference_mesh);
+  const BoundingSphere own = boundingSphere(mesh);
   std::vector<Pose> poses;
   poses.reserve(frames);
   for (std::size_t f = 0; f < frames; ++f) {
@@ -44,10 +30,10 @@ std::vector<Pose> randomOverlapPoses(const RandomOverlapMotion& spec,
     const Eigen::Vector3d direction = sampler.direction();
     const double overlap = sampler.uniform(spec.overlap_low, spec.overlap_high);
     const double distance = (1.0 - overlap) * (reference.radius + own.radius);
-    const Eigen::Vector3d target = reference_pose * reference.center + distance * direction;
+    const Eigen::Vector3d target = reference_pose * reference.centre + distance * direction;
     Pose pose = Pose::Identity();
     pose.linear() = rotation;
-    pose.translation() = target - rotation * own.center;
+    pose.translation() = target - rotation * own.centre;
     poses.push_back(pose);
   }
   return poses;

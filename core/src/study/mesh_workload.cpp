@@ -34,15 +34,6 @@ struct Part {
   double radius = 0.0;
 };
 
-// The bounding sphere the scene's random motion uses (scene_motion.cpp): the box centre and the
-// farthest vertex from it.
-void boundingSphere(const TriangleMesh& mesh, Part& part) {
-  const Eigen::Vector3d low = mesh.vertices.rowwise().minCoeff();
-  const Eigen::Vector3d high = mesh.vertices.rowwise().maxCoeff();
-  part.centre = 0.5 * (low + high);
-  part.radius = (mesh.vertices.colwise() - part.centre).colwise().norm().maxCoeff();
-}
-
 Json translationPose(const Eigen::Vector3d& t) {
   return {{"translation", {t.x(), t.y(), t.z()}}};
 }
@@ -150,7 +141,10 @@ Result<std::vector<MeshWorkloadScene>> writeMeshWorkload(const std::vector<std::
     names.insert(part.name);
     part.path = fs::relative(fs::absolute(file), fs::absolute(folder)).generic_string();
     part.mesh = shared;
-    boundingSphere(*shared, part);
+    // The sphere the scene's random motion places objects by.
+    const BoundingSphere sphere = boundingSphere(*shared);
+    part.centre = sphere.centre;
+    part.radius = sphere.radius;
     parts.push_back(std::move(part));
   }
   std::string name = parts[0].name + "_vs_" + parts[1].name;

@@ -231,18 +231,20 @@ double Joint::clamped(double value) const {
   return limited() ? std::clamp(value, lower, upper) : value;
 }
 
-std::optional<std::size_t> RobotModel::linkNamed(const std::string& wanted) const {
-  for (std::size_t i = 0; i < links.size(); ++i) {
-    if (links[i].name == wanted) return i;
+template <typename Named>
+std::optional<std::size_t> indexNamed(const std::vector<Named>& items, const std::string& wanted) {
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    if (items[i].name == wanted) return i;
   }
   return std::nullopt;
 }
 
+std::optional<std::size_t> RobotModel::linkNamed(const std::string& wanted) const {
+  return indexNamed(links, wanted);
+}
+
 std::optional<std::size_t> RobotModel::jointNamed(const std::string& wanted) const {
-  for (std::size_t i = 0; i < joints.size(); ++i) {
-    if (joints[i].name == wanted) return i;
-  }
-  return std::nullopt;
+  return indexNamed(joints, wanted);
 }
 
 double RobotModel::valueOf(std::size_t joint, const std::vector<double>& values) const {

@@ -30,6 +30,14 @@ struct TriangleMesh {
   }
 };
 
+/// A sphere holding every vertex: the centre of the axis-aligned bounds and the farthest vertex
+/// from it. Loose but stable; what a scene's random overlap motion places objects by.
+struct BoundingSphere {
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  double radius = 0.0;
+};
+BoundingSphere boundingSphere(const TriangleMesh& mesh);
+
 /// The largest coordinate magnitude a mesh (or a scene's translation) may have: |x| <= 1e18.
 /// Far beyond any scene's size (the stress suite goes to 1e15 from the origin and scales to
 /// 1e15), yet small enough that what backends compute from coordinates stays finite: squared
