@@ -73,6 +73,7 @@ int checkScenes(const std::vector<std::string>& paths) {
       } else {
         std::cout << scene.objects[q.a].name << " vs " << scene.objects[q.b].name;
       }
+      if (!q.except.empty()) std::cout << ", except " << q.except.size() << " object pairs";
       if (q.request.max_pairs != 0) std::cout << ", at most " << q.request.max_pairs << " pairs";
       if (!q.asked.everyFrame()) std::cout << ", asked in " << q.asked.text();
       std::cout << "\n";

@@ -39,8 +39,8 @@ void addImportCommand(CLI::App& app, int& exit_code) {
     }
     const UrdfImport& i = imported.value();
     std::cout << request->output << ": robot '" << i.robot << "', " << i.objects << " objects, "
-              << i.moving_joints << " moving joints, " << i.frames << " frames; " << i.self_queries
-              << " self-collision queries (left out: " << i.adjacent_pairs
+              << i.moving_joints << " moving joints, " << i.frames << " frames; " << i.self_pairs
+              << " object pairs asked for self-collision (left out: " << i.adjacent_pairs
               << " adjacent link pairs, " << i.touching_pairs
               << " in contact at the reference configuration, " << i.disabled_pairs
               << " disabled)\n";

@@ -167,13 +167,13 @@ TEST(SceneBadInput, UnknownKeyInRotation) {
                                       "allowed: axis, degrees, matrix, quaternion"}));
 }
 
-// "bad.json: /queries/0: unknown key 'max_pair' (allowed: a, abs_tolerance, among, b, kind,
-//  max_contacts, max_pairs, name, rel_tolerance)"
+// "bad.json: /queries/0: unknown key 'max_pair' (allowed: a, abs_tolerance, among, b, except,
+//  frames, kind, max_contacts, max_pairs, name, rel_tolerance)"
 TEST(SceneBadInput, UnknownKeyInQuery) {
   Json scene = validScene();
   scene["queries"][0]["max_pair"] = 3;
   EXPECT_TRUE(rejected(parse(scene), {"/queries/0:", "unknown key 'max_pair'",
-                                      "allowed: a, abs_tolerance, among, b, frames, kind, "
+                                      "allowed: a, abs_tolerance, among, b, except, frames, kind, "
                                       "max_contacts, max_pairs, name, rel_tolerance"}));
 }
 
@@ -388,6 +388,30 @@ TEST(SceneBadInput, RandomMotionWithoutOverlap) {
   Json scene = validScene();
   scene["objects"][1]["motion"] = {{"random", {{"relative_to", "a"}}}};
   EXPECT_TRUE(rejected(parse(scene), {"/objects/1/motion/random:", "missing 'overlap'"}));
+}
+
+// "bad.json: /queries/0/except/0/1: object 'c' is not in the query's group", a pair named twice,
+// and "except" on a query of two objects
+TEST(SceneBadInput, ExceptPairsOutsideTheGroup) {
+  Json scene = validScene();
+  scene["objects"].push_back(scene["objects"][1]);
+  scene["objects"][2]["name"] = "c";
+  scene["queries"][0] =
+      Json::parse(R"({"among": ["a", "b"], "except": [["a", "c"]], "kind": "all_pairs"})");
+  EXPECT_TRUE(
+      rejected(parse(scene), {"/queries/0/except/0/1:", "'c' is not in the query's group"}));
+  scene["queries"][0]["except"] = Json::parse(R"([["a", "b"], ["b", "a"]])");
+  EXPECT_TRUE(rejected(parse(scene), {"/queries/0/except/1:", "named twice"}));
+  scene["queries"][0] =
+      Json::parse(R"({"a": "a", "b": "b", "except": [["a", "b"]], "kind": "boolean"})");
+  EXPECT_TRUE(rejected(parse(scene), {"/queries/0/except:", "group queries"}));
+}
+
+// "bad.json: /up: must be a non-zero direction"
+TEST(SceneBadInput, ZeroUpDirection) {
+  Json scene = validScene();
+  scene["up"] = {0, 0, 0};
+  EXPECT_TRUE(rejected(parse(scene), {"/up:", "must be a non-zero direction"}));
 }
 
 // "bad.json: /objects: a scene needs at least one object"

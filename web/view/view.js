@@ -132,11 +132,18 @@ async function main() {
   const scene = new THREE.Scene();
   const BACKGROUND = 0xeef1f5;
   scene.background = new THREE.Color(BACKGROUND);
-  scene.add(new THREE.HemisphereLight(0xffffff, 0x8090a0, 2.2));
+  // The scene's up (+y unless it says otherwise; robots from URDF are +z up): sky, sun, camera
+  // and orbit all turn with it.
+  const up = new THREE.Vector3().fromArray(data.scene.up || [0, 1, 0]).normalize();
+  const fromYUp = new THREE.Quaternion().setFromUnitVectors(new THREE.Vector3(0, 1, 0), up);
+  const sky = new THREE.HemisphereLight(0xffffff, 0x8090a0, 2.2);
+  sky.position.copy(up);
+  scene.add(sky);
   const sun = new THREE.DirectionalLight(0xffffff, 1.6);
-  sun.position.set(1, 2, 3);
+  sun.position.set(1, 2, 3).applyQuaternion(fromYUp);
   scene.add(sun);
   const camera = new THREE.PerspectiveCamera(45, 1, 0.01, 1000);
+  camera.up.copy(up);
   const controls = new OrbitControls(camera, canvas);
   controls.addEventListener('change', () => render());
 
@@ -213,7 +220,8 @@ async function main() {
     controls.target.copy(sphere.center);
     camera.near = radius / 1000;
     camera.far = radius * 100;
-    camera.position.copy(sphere.center).add(new THREE.Vector3(1.2, 0.9, 1.6).multiplyScalar(radius * 1.4));
+    camera.position.copy(sphere.center).add(
+      new THREE.Vector3(1.2, 0.9, 1.6).applyQuaternion(fromYUp).multiplyScalar(radius * 1.4));
     camera.updateProjectionMatrix();
     controls.update();
   };

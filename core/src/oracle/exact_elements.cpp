@@ -53,6 +53,24 @@ constexpr ExactTest kExactTests[3][3] = {
     {&pointTri, &pointSeg, &pointPoint},
 };
 
+// Whether the corners are certainly not collinear, decided on their interval approximations: a
+// projection onto a coordinate plane whose orientation interval excludes 0. A triangle in an
+// axis-aligned plane (a box's face) projects to a segment on one coordinate plane; CGAL's
+// filtered collinear_3 tries the xy projection first, which is such a segment for faces in the
+// planes x = c and y = c, cannot decide its sign in intervals and evaluates the corners exactly:
+// most of the oracle's time on a scene of boxes (the robot cell). Undecided here, CGAL decides.
+bool certainlyNotCollinear(const Point& a, const Point& b, const Point& c) {
+  const CGAL::Protect_FPU_rounding<true> rounding_up;
+  const auto& pa = CGAL::approx(a);
+  const auto& pb = CGAL::approx(b);
+  const auto& pc = CGAL::approx(c);
+  for (const auto& [i, j] : {std::pair{0, 1}, std::pair{1, 2}, std::pair{0, 2}}) {
+    const auto orientation = (pb[i] - pa[i]) * (pc[j] - pa[j]) - (pb[j] - pa[j]) * (pc[i] - pa[i]);
+    if (orientation.inf() > 0 || orientation.sup() < 0) return true;
+  }
+  return false;
+}
+
 }  // namespace
 
 std::vector<Point> poseVertices(const TriangleMesh& mesh, const Pose& pose) {
@@ -79,7 +97,7 @@ std::vector<Point> poseVertices(const TriangleMesh& mesh, const Pose& pose) {
 
 Element classify(const Point& a, const Point& b, const Point& c) {
   Element e;
-  if (!CGAL::collinear(a, b, c)) {
+  if (certainlyNotCollinear(a, b, c) || !CGAL::collinear(a, b, c)) {
     e.kind = kTriangleElement;
     e.p[0] = a;
     e.p[1] = b;

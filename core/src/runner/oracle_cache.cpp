@@ -76,6 +76,12 @@ std::string OracleCache::fingerprint() const {
     d.value(q.side_b.size());
     for (std::size_t index : q.side_b)
       d.value(index);
+    // Only when given, so that the stored answers of scenes without it keep their digests.
+    if (!q.except.empty()) d.value(q.except.size());
+    for (const auto& [i, j] : q.except) {
+      d.value(i);
+      d.value(j);
+    }
   }
   return d.hex();
 }

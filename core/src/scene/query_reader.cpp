@@ -7,6 +7,7 @@
 #include <iterator>
 #include <optional>
 #include <set>
+#include <utility>
 #include <vector>
 
 namespace collido::scene_reading {
@@ -104,6 +105,36 @@ void readSides(const Reader& r, const Node& node, const Scene& scene,
   query.side_b = b;
 }
 
+// "except": object pairs of a group query not asked, each two objects the query names.
+void readExcept(const Reader& r, const Node& node,
+                const std::map<std::string, std::size_t>& index_of, SceneQuery& query) {
+  if (!query.isGroup()) {
+    r.fail(node, "'except' applies to group queries ('among', or subtrees) only");
+  }
+  r.expectArray(node);
+  for (std::size_t k = 0; k < node.value.size(); ++k) {
+    const Node pair = node.at(k);
+    r.expectArray(pair);
+    if (pair.value.size() != 2) r.fail(pair, "expected two object names");
+    std::size_t ends[2];
+    for (std::size_t e = 0; e < 2; ++e) {
+      const std::string name = r.string(pair.at(e));
+      const auto found = index_of.find(name);
+      if (found == index_of.end()) r.fail(pair.at(e), "no object named '" + name + "'");
+      if (!query.names(found->second)) {
+        r.fail(pair.at(e), "object '" + name + "' is not in the query's group");
+      }
+      ends[e] = found->second;
+    }
+    if (ends[0] == ends[1]) r.fail(pair, "a pair needs two different objects");
+    if (!query.asksPair(ends[0], ends[1])) {
+      r.fail(pair, "the query does not ask this pair (named twice, or both on one side)");
+    }
+    const std::pair<std::size_t, std::size_t> key = std::minmax(ends[0], ends[1]);
+    query.except.insert(std::lower_bound(query.except.begin(), query.except.end(), key), key);
+  }
+}
+
 }  // namespace
 
 void readQueries(const Reader& r, const Node& queries,
@@ -113,7 +144,7 @@ void readQueries(const Reader& r, const Node& queries,
   std::set<std::string> query_names;
   for (std::size_t i = 0; i < queries.value.size(); ++i) {
     const Node node = queries.at(i);
-    r.expectObject(node, {"name", "a", "b", "among", "kind", "max_pairs", "max_contacts",
+    r.expectObject(node, {"name", "a", "b", "among", "except", "kind", "max_pairs", "max_contacts",
                           "abs_tolerance", "rel_tolerance", "frames"});
     SceneQuery query;
     std::string label;
@@ -125,6 +156,7 @@ void readQueries(const Reader& r, const Node& queries,
     } else {
       readSides(r, node, scene, index_of, query, label);
     }
+    if (node.has("except")) readExcept(r, node.at("except"), index_of, query);
     if (!node.has("kind")) r.fail(node, "missing 'kind'");
     query.request.kind = readQueryKind(r, node.at("kind"));
     // A group's answer is the union over its object pairs: pairs and contacts add up, a

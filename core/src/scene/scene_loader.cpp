@@ -11,6 +11,7 @@
 #include <map>
 #include <memory>
 #include <sstream>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -123,11 +124,17 @@ void markDrapes(const Node& node, const std::map<std::string, std::size_t>& inde
 Scene readScene(const Reader& r, const Json& document, const std::string& base_directory,
                 const SceneLoadOptions& options) {
   const Node root{document, ""};
-  r.expectObject(root,
-                 {"name", "description", "frames", "objects", "constraints", "queries", "stress"});
+  r.expectObject(
+      root, {"name", "description", "up", "frames", "objects", "constraints", "queries", "stress"});
   Scene scene;
   scene.name = root.has("name") ? r.string(root.at("name")) : "";
   scene.description = root.has("description") ? r.string(root.at("description")) : "";
+  if (root.has("up")) {
+    const Eigen::Vector3d up = r.vector3(root.at("up"));
+    if (!(up.norm() > 0.0) || !std::isfinite(up.norm()))
+      r.fail(root.at("up"), "must be a non-zero direction");
+    scene.up = up.normalized();
+  }
   if (root.has("stress")) {
     scene_reading::readStress(r, root, base_directory, options, scene);
     return scene;
@@ -216,6 +223,8 @@ Scene readScene(const Reader& r, const Json& document, const std::string& base_d
 bool SceneQuery::asksPair(std::size_t i, std::size_t j) const {
   if (!isGroup()) return (i == a && j == b) || (i == b && j == a);
   if (i == j || !names(i) || !names(j)) return false;
+  const std::pair<std::size_t, std::size_t> pair = std::minmax(i, j);
+  if (std::binary_search(except.begin(), except.end(), pair)) return false;
   return side_b.empty() || std::binary_search(side_b.begin(), side_b.end(), i) !=
                                std::binary_search(side_b.begin(), side_b.end(), j);
 }

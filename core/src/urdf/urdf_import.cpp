@@ -221,8 +221,8 @@ class SceneBuilder {
   }
 
   // Self-collision: every pair of links with geometry but adjacent ones, those in contact at the
-  // reference configuration and disabled ones (enabled ones whatever the rules), one boolean
-  // query per pair of their objects.
+  // reference configuration and disabled ones (enabled ones whatever the rules): the object
+  // pairs of one group query over the robot.
   Status addSelfCollision(UrdfImport& summary) {
     Result<std::set<std::pair<std::size_t, std::size_t>>> disabled =
         linkPairs(request_.disable_pairs, robot_, "--disable-pair");
@@ -235,6 +235,7 @@ class SceneBuilder {
     for (const std::size_t link : robot_.order) {
       if (!robot_.links[link].collisions.empty()) links.push_back(link);
     }
+    std::set<std::pair<std::size_t, std::size_t>> asked;  // object pairs
     for (std::size_t i = 0; i < links.size(); ++i) {
       for (std::size_t j = i + 1; j < links.size(); ++j) {
         const auto pair = ordered(links[i], links[j]);
@@ -252,17 +253,25 @@ class SceneBuilder {
           continue;
         }
         for (const std::size_t a : objectsOf(links[i])) {
-          for (const std::size_t b : objectsOf(links[j])) {
-            queries_.push_back(
-                {{"name", uniqueQueryName("self: " + objects_[a].name + "-" + objects_[b].name)},
-                 {"a", objects_[a].name},
-                 {"b", objects_[b].name},
-                 {"kind", "boolean"}});
-            ++summary.self_queries;
-          }
+          for (const std::size_t b : objectsOf(links[j]))
+            asked.insert(ordered(a, b));
         }
       }
     }
+    summary.self_pairs = asked.size();
+    if (asked.empty()) return {};
+    // One group query over the robot, as a planner asks it of a state, with the pairs left out
+    // (and those of one link's elements) as its allowed-collision list.
+    Json except = Json::array();
+    for (std::size_t a = 0; a < robot_objects_; ++a) {
+      for (std::size_t b = a + 1; b < robot_objects_; ++b) {
+        if (asked.count({a, b}) == 0) except.push_back({objects_[a].name, objects_[b].name});
+      }
+    }
+    queries_.push_back({{"name", uniqueQueryName("self-collision")},
+                        {"among", {{{"subtree", objects_[0].name}}}},
+                        {"except", std::move(except)},
+                        {"kind", "all_pairs"}});
     return {};
   }
 
@@ -320,8 +329,10 @@ class SceneBuilder {
       }
       objects.push_back(std::move(object));
     }
-    return {{"name", robot_.name},
-            {"description", description},
+    // No "name": the scene is named after its file (robot_cell.json: robot_cell), the robot in
+    // the description.
+    return {{"description", description},
+            {"up", {0, 0, 1}},  // URDF's world is z up (ROS's REP 103)
             {"frames", frames},
             {"objects", std::move(objects)},
             {"queries", queries_}};
@@ -415,9 +426,14 @@ Result<UrdfImport> importUrdf(const UrdfImportRequest& request) {
           ? std::to_string(summary.frames) + " seeded random configurations (seed " +
                 std::to_string(request.seed) + ")"
           : "the trajectory " + fs::path(request.trajectory).filename().string();
-  const std::string description = "Robot '" + summary.robot + "' imported from " +
-                                  fs::path(request.urdf).filename().string() +
-                                  " by collido import urdf: " + source + ".";
+  std::string description = "Robot '" + summary.robot + "' imported from " +
+                            fs::path(request.urdf).filename().string() +
+                            " by collido import urdf: " + source;
+  for (std::size_t e = 0; e < request.environment.size(); ++e) {
+    description += e == 0 ? "; its environment: " : ", ";
+    description += fs::path(request.environment[e]).filename().string();
+  }
+  description += ".";
   std::error_code error;
   fs::create_directories(fs::absolute(request.output).parent_path(), error);
   if (Status s = io::writeFileAtomically(request.output,

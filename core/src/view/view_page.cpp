@@ -195,6 +195,7 @@ Result<std::string> renderViewPage(const Scene& scene, const std::vector<ViewBac
                       {{"name", scene.name},
                        {"description", scene.description},
                        {"path", scene.path},
+                       {"up", {scene.up.x(), scene.up.y(), scene.up.z()}},
                        {"frames", scene.frames}}},
                      {"objects", std::move(objects)},
                      {"queries", std::move(queries)},

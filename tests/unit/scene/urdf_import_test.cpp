@@ -126,6 +126,7 @@ TEST(UrdfImport, LinksFollowForwardKinematicsAndSelfCollisionFollowsTheRules) {
   ASSERT_TRUE(loaded.ok()) << loaded.status().toString();
   const Scene& scene = loaded.value();
   ASSERT_EQ(scene.frames, 3u);
+  EXPECT_EQ(scene.up, Eigen::Vector3d::UnitZ());  // the view keeps URDF's z up
   const double values[3][3] = {{0, 0, 0}, {0.5, -0.4, 0.1}, {3.0, 0.9, 0.3}};
   std::map<std::string, std::size_t> index;
   for (std::size_t i = 0; i < scene.objects.size(); ++i)
@@ -148,8 +149,9 @@ TEST(UrdfImport, LinksFollowForwardKinematicsAndSelfCollisionFollowsTheRules) {
   // The slider's mesh, a unit cube scaled per axis.
   EXPECT_DOUBLE_EQ(scene.objects[index["slider"]].mesh->vertices.row(2).maxCoeff(), 0.2);
 
-  // Self-collision: a query per object pair of two links, unless adjacent (but the enabled base
-  // and column), disabled (tool and base) or in contact in frame 0, the reference.
+  // Self-collision: one group query over the robot asking each object pair of two links, unless
+  // adjacent (but the enabled base and column), disabled (tool and base) or in contact in frame
+  // 0, the reference; the rest are its `except` pairs, and so are a link's own elements.
   const std::map<std::string, std::string> link_of = {
       {"base", "base"}, {"base_2", "base"},   {"column", "column"}, {"arm", "arm"},
       {"arm_2", "arm"}, {"slider", "slider"}, {"tool", "tool"},     {"finger", "finger"}};
@@ -158,11 +160,15 @@ TEST(UrdfImport, LinksFollowForwardKinematicsAndSelfCollisionFollowsTheRules) {
                                                     {"arm", "slider"},
                                                     {"slider", "tool"},
                                                     {"tool", "finger"}};
+  const SceneQuery& self = scene.queries.front();
+  ASSERT_EQ(self.name, "self-collision");
+  EXPECT_EQ(self.request.kind, QueryKind::kAllPairs);
+  EXPECT_FALSE(self.asksPair(index["base"], index["base_2"]));
   std::set<std::pair<std::string, std::string>> asked;
-  for (const SceneQuery& q : scene.queries) {
-    if (q.name.rfind("self: ", 0) != 0) continue;
-    EXPECT_EQ(q.request.kind, QueryKind::kBoolean);
-    asked.insert({scene.objects[q.a].name, scene.objects[q.b].name});
+  for (const auto& [a, link_a] : link_of) {
+    for (const auto& [b, link_b] : link_of) {
+      if (self.asksPair(index[a], index[b])) asked.insert({a, b});
+    }
   }
   std::size_t touching_links = 0;
   std::set<std::set<std::string>> touching;
@@ -184,10 +190,11 @@ TEST(UrdfImport, LinksFollowForwardKinematicsAndSelfCollisionFollowsTheRules) {
       const bool expected = links == std::set<std::string>{"base", "column"} ||
                             (adjacent.count(links) == 0 && touching.count(links) == 0 &&
                              links != std::set<std::string>{"base", "tool"});
-      const bool got = asked.count({a, b}) + asked.count({b, a}) != 0;
+      const bool got = asked.count({a, b}) != 0;
       EXPECT_EQ(got, expected) << a << " - " << b;
     }
   }
+  EXPECT_EQ(imported.value().self_pairs, asked.size() / 2);  // both orders are in `asked`
   for (const auto& links : touching)
     touching_links += adjacent.count(links) == 0 ? 1 : 0;
   EXPECT_EQ(imported.value().touching_pairs, touching_links);

@@ -12,8 +12,9 @@ namespace collido {
 struct ProximityAnswer {
   bool within = false;
   /// The smallest distance found between candidate triangle pairs (those whose boxes come
-  /// within the distance); infinity when there was none. With `within`, the search stopped at
-  /// the first pair within the distance, so this is that pair's distance.
+  /// within the distance), leaving out pairs that the plane of one triangle proves farther than
+  /// the distance; infinity when there was none. With `within`, the search stopped at the first
+  /// pair within the distance, so this is that pair's distance.
   double closest = std::numeric_limits<double>::infinity();
   std::size_t candidate_pairs = 0;
 };

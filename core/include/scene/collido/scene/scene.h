@@ -110,6 +110,9 @@ struct SceneQuery {
   /// the second set (ascending, within `among`); only pairs with one object in it and the other
   /// not are asked. Empty: every pair of `among` is.
   std::vector<std::size_t> side_b;
+  /// A group query's object pairs not asked (the file's "except": a robot's allowed-collision
+  /// pairs), each (low, high) index, sorted.
+  std::vector<std::pair<std::size_t, std::size_t>> except;
   QueryRequest request;
   /// The frames it is asked in; a group query skips a pair whose object is absent.
   FrameRanges asked;
@@ -117,8 +120,8 @@ struct SceneQuery {
   bool isGroup() const { return !among.empty(); }
   /// Whether the query asks anything of `object`.
   bool names(std::size_t object) const;
-  /// Whether the query asks about the object pair (i, j), i != j: both named and, for a query
-  /// of two sets, on different sides.
+  /// Whether the query asks about the object pair (i, j), i != j: both named, not an `except`
+  /// pair and, for a query of two sets, on different sides.
   bool asksPair(std::size_t i, std::size_t j) const;
   /// The objects it asks about: `among`, or {a, b}.
   std::vector<std::size_t> objects() const;
@@ -151,6 +154,9 @@ struct Scene {
   std::string name;
   std::string description;
   std::size_t frames = 1;
+  /// The direction the 3D view keeps up (the file's "up", a unit vector): +y by default, +z for
+  /// robots from URDF (ROS's convention). Nothing but the view reads it.
+  Eigen::Vector3d up = Eigen::Vector3d::UnitY();
   std::vector<SceneObject> objects;
   std::vector<SceneQuery> queries;
   double resolution = 1.0;  ///< the SceneLoadOptions::resolution it was loaded with

@@ -32,15 +32,16 @@ struct UrdfImport {
   std::size_t objects = 0;        ///< collision elements (a link may have several) and environment
   std::size_t moving_joints = 0;  ///< revolute, continuous and prismatic
   std::size_t frames = 0;
-  std::size_t self_queries = 0;    ///< object pairs of two links asked for self-collision
+  std::size_t self_pairs = 0;      ///< object pairs of two links the self-collision query asks
   std::size_t adjacent_pairs = 0;  ///< link pairs left out: joined by a joint
   std::size_t touching_pairs = 0;  ///< left out: in contact in MoveIt's default state
   std::size_t disabled_pairs = 0;  ///< left out: --disable-pair
 };
 
 /// Reads the robot, its trajectory and its environment and writes the scene file. Self-collision
-/// asks every pair of links but adjacent ones and those in contact at the reference
-/// configuration (MoveIt's default state), as MoveIt's setup assistant applies those two rules;
+/// is one group query (all pairs) over every pair of links but adjacent ones and those in
+/// contact at the reference configuration (MoveIt's default state), as MoveIt's setup assistant
+/// applies those two rules, the pairs left out being its `except` list;
 /// robot against environment is one group query of all pairs, and the link with the most joints
 /// above it gets a distance query to each environment object. Errors name the file and the
 /// link, joint or column.

@@ -1,0 +1,330 @@
+// Writes the bundled robot cell's sources into a folder: a 6-axis arm with a parallel gripper in
+// URDF (arm6.urdf), its links' collision meshes and the cell's (shelves, two bins, a fixture),
+// each made by our generators (boxes and cylinders, solid or bored, overlapping in one mesh as
+// station_module's parts do), and a pick-and-place trajectory as a joints CSV. The scene is then
+// `collido import urdf` of these files (tools/make_robot_cell.sh); ctest robot_cell.regenerates
+// checks that the committed files are what this program and the import write.
+//
+// Usage: collido_make_robot_cell FOLDER
+#include <array>
+#include <charconv>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include <Eigen/Geometry>
+
+#include <collido/mesh/procedural.h>
+
+namespace {
+
+using collido::TriangleMesh;
+
+// Numbers as the shortest text that reads back to the same double, so the files are stable and
+// keep the generators' double precision (assimp's exporters would round through float).
+std::string number(double value) {
+  std::array<char, 32> text{};
+  const auto written = std::to_chars(text.data(), text.data() + text.size(), value);
+  return std::string(text.data(), written.ptr);
+}
+
+// Generated parts in one mesh: their vertices and triangles appended, each part placed by a pose.
+class MeshAssembly {
+ public:
+  void add(const collido::Result<TriangleMesh>& part, const Eigen::Isometry3d& pose) {
+    if (!part.ok()) {
+      std::cerr << "collido_make_robot_cell: " << part.status().toString() << "\n";
+      std::exit(1);
+    }
+    const TriangleMesh& mesh = part.value();
+    const Eigen::Index first = mesh_.vertices.cols();
+    mesh_.vertices.conservativeResize(3, first + mesh.vertices.cols());
+    mesh_.vertices.rightCols(mesh.vertices.cols()) = pose * mesh.vertices;
+    const Eigen::Index first_triangle = mesh_.triangles.cols();
+    mesh_.triangles.conservativeResize(3, first_triangle + mesh.triangles.cols());
+    mesh_.triangles.rightCols(mesh.triangles.cols()) =
+        mesh.triangles.array() + static_cast<int>(first);
+  }
+
+  void write(const std::filesystem::path& path) const {
+    std::ofstream out(path, std::ios::binary);
+    out << "# " << path.filename().string() << ", written by collido_make_robot_cell\n";
+    for (Eigen::Index v = 0; v < mesh_.vertices.cols(); ++v)
+      out << "v " << number(mesh_.vertices(0, v)) << " " << number(mesh_.vertices(1, v)) << " "
+          << number(mesh_.vertices(2, v)) << "\n";
+    for (Eigen::Index t = 0; t < mesh_.triangles.cols(); ++t)
+      out << "f " << mesh_.triangles(0, t) + 1 << " " << mesh_.triangles(1, t) + 1 << " "
+          << mesh_.triangles(2, t) + 1 << "\n";
+    if (!out) {
+      std::cerr << "collido_make_robot_cell: cannot write " << path.string() << "\n";
+      std::exit(1);
+    }
+  }
+
+ private:
+  TriangleMesh mesh_;
+};
+
+enum class Axis { kX, kY, kZ };
+
+// The generators' cylinders run along z; these exact permutations (no rounding) turn z to x or y.
+Eigen::Isometry3d placed(const Eigen::Vector3d& centre, Axis along = Axis::kZ) {
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+  if (along == Axis::kX) pose.linear() << 0, 0, 1, 1, 0, 0, 0, 1, 0;
+  if (along == Axis::kY) pose.linear() << 0, 1, 0, 0, 0, 1, 1, 0, 0;
+  pose.translation() = centre;
+  return pose;
+}
+
+void box(MeshAssembly& mesh, const Eigen::Vector3d& size, const Eigen::Vector3d& centre) {
+  mesh.add(collido::makeBox({size}), placed(centre));
+}
+
+void cylinder(MeshAssembly& mesh, double radius, double length, const Eigen::Vector3d& centre,
+              Axis along, int segments = 32, double bore = 0.0) {
+  mesh.add(collido::makeCylinder({radius, length, segments, bore}), placed(centre, along));
+}
+
+// An open box standing on the floor: a bottom and four walls, `wall` thick. The walls stand half
+// a wall deep in the bottom and the end walls half a wall into the side walls, so that no two
+// parts share a corner (a mesh with coincident vertices would be reported as duplicates).
+void bin(MeshAssembly& mesh, const Eigen::Vector3d& size, const Eigen::Vector3d& floor_centre,
+         double wall) {
+  const Eigen::Vector3d c = floor_centre;
+  box(mesh, {size.x(), size.y(), wall}, c + Eigen::Vector3d(0, 0, wall / 2));
+  const double height = size.z() - wall / 2;
+  const double z = wall / 2 + height / 2;
+  for (const double side : {-1.0, 1.0}) {
+    box(mesh, {size.x(), wall, height}, c + Eigen::Vector3d(0, side * (size.y() - wall) / 2, z));
+    box(mesh, {wall, size.y() - wall, height},
+        c + Eigen::Vector3d(side * (size.x() - wall) / 2, 0, z));
+  }
+}
+
+// The arm's links, each in its own frame (the frame of the joint that moves it). Hubs turn in the
+// forks of the link before with 5 mm to spare on each side.
+void writeLinks(const std::filesystem::path& folder) {
+  MeshAssembly base;  // a floor plate and a pedestal up to the first joint, at z = 0.2
+  box(base, {0.34, 0.34, 0.02}, {0, 0, 0.01});
+  cylinder(base, 0.12, 0.18, {0, 0, 0.11}, Axis::kZ, 48);
+  base.write(folder / "base.obj");
+
+  MeshAssembly turret;  // turns about z; a fork of two cheeks holds the shoulder at (0.08, 0, 0.22)
+  cylinder(turret, 0.11, 0.10, {0, 0, 0.05}, Axis::kZ, 48);
+  box(turret, {0.20, 0.24, 0.03}, {0.06, 0, 0.085});
+  for (const double side : {-1.0, 1.0})
+    box(turret, {0.16, 0.04, 0.20}, {0.08, side * 0.10, 0.17});
+  turret.write(folder / "turret.obj");
+
+  MeshAssembly upper_arm;  // turns about y; 0.45 up to the elbow
+  cylinder(upper_arm, 0.08, 0.15, {0, 0, 0}, Axis::kY);
+  box(upper_arm, {0.10, 0.10, 0.45}, {0, 0, 0.225});
+  cylinder(upper_arm, 0.07, 0.12, {0, 0, 0.45}, Axis::kY);
+  upper_arm.write(folder / "upper_arm.obj");
+
+  MeshAssembly forearm;  // turns about y; a fork round the elbow, a motor behind, a tube forward
+  for (const double side : {-1.0, 1.0})
+    box(forearm, {0.12, 0.03, 0.14}, {0, side * 0.08, 0});
+  box(forearm, {0.10, 0.19, 0.08}, {-0.08, 0, 0.04});
+  cylinder(forearm, 0.05, 0.20, {0.10, 0, 0.04}, Axis::kX);
+  forearm.write(folder / "forearm.obj");
+
+  MeshAssembly wrist;  // rolls about x; a fork holds the hand at 0.22
+  cylinder(wrist, 0.045, 0.16, {0.08, 0, 0}, Axis::kX);
+  for (const double side : {-1.0, 1.0})
+    box(wrist, {0.10, 0.02, 0.07}, {0.21, side * 0.05, 0});
+  wrist.write(folder / "wrist.obj");
+
+  MeshAssembly hand;  // bends about y; the flange at 0.08
+  cylinder(hand, 0.035, 0.07, {0, 0, 0}, Axis::kY, 24);
+  cylinder(hand, 0.03, 0.08, {0.04, 0, 0}, Axis::kX, 24);
+  hand.write(folder / "hand.obj");
+
+  MeshAssembly gripper;  // rolls about x; a flange and a palm the fingers slide along
+  cylinder(gripper, 0.045, 0.015, {0.0075, 0, 0}, Axis::kX);
+  box(gripper, {0.045, 0.13, 0.05}, {0.0375, 0, 0});
+  gripper.write(folder / "gripper.obj");
+
+  for (const double side : {1.0, -1.0}) {  // slide along ±y from ±0.02, 0.07 long
+    MeshAssembly finger;
+    box(finger, {0.07, 0.015, 0.03}, {0.035, side * 0.0075, 0});
+    finger.write(folder / (side > 0 ? "finger_left.obj" : "finger_right.obj"));
+  }
+}
+
+// The cell, in world coordinates (the arm's base at the origin, z up).
+void writeCell(const std::filesystem::path& folder) {
+  MeshAssembly shelf;  // open towards the arm (-y): two sides, a back, four boards
+  for (const double side : {-1.0, 1.0})
+    box(shelf, {0.02, 0.30, 1.0}, {side * 0.29, 0.60, 0.50});
+  box(shelf, {0.56, 0.01, 1.0}, {0, 0.745, 0.50});
+  for (const double z : {0.02, 0.29, 0.57, 0.85})
+    box(shelf, {0.56, 0.29, 0.02}, {0, 0.595, z});
+  shelf.write(folder / "shelf.obj");
+
+  for (const auto& [name, y] : {std::pair<const char*, double>{"bin_a.obj", 0.22},
+                                std::pair<const char*, double>{"bin_b.obj", -0.12}}) {
+    MeshAssembly part_bin;
+    bin(part_bin, {0.30, 0.22, 0.15}, {0.55, y, 0}, 0.01);
+    part_bin.write(folder / name);
+  }
+
+  MeshAssembly fixture;  // a pedestal, a nest ring the part sits in, two clamps
+  box(fixture, {0.24, 0.24, 0.26}, {0.05, -0.55, 0.13});
+  cylinder(fixture, 0.05, 0.04, {0.05, -0.55, 0.28}, Axis::kZ, 48, 0.035);
+  for (const double side : {-1.0, 1.0})
+    box(fixture, {0.04, 0.06, 0.05}, {0.05 + side * 0.09, -0.55, 0.285});
+  fixture.write(folder / "fixture.obj");
+}
+
+// The arm: joint origins and axes; the meshes above give each link's shape.
+constexpr const char* kUrdf = R"(<?xml version="1.0"?>
+<!-- The bundled robot cell's arm (scenes/robot_cell.json): six revolute joints and a parallel
+     gripper whose right finger mimics the left. Written by collido_make_robot_cell. -->
+<robot name="arm6">
+  <link name="base"><collision><geometry>
+    <mesh filename="package://robot_cell/meshes/base.obj"/></geometry></collision></link>
+  <link name="turret"><collision><geometry>
+    <mesh filename="package://robot_cell/meshes/turret.obj"/></geometry></collision></link>
+  <link name="upper_arm"><collision><geometry>
+    <mesh filename="package://robot_cell/meshes/upper_arm.obj"/></geometry></collision></link>
+  <link name="forearm"><collision><geometry>
+    <mesh filename="package://robot_cell/meshes/forearm.obj"/></geometry></collision></link>
+  <link name="wrist"><collision><geometry>
+    <mesh filename="package://robot_cell/meshes/wrist.obj"/></geometry></collision></link>
+  <link name="hand"><collision><geometry>
+    <mesh filename="package://robot_cell/meshes/hand.obj"/></geometry></collision></link>
+  <link name="gripper"><collision><geometry>
+    <mesh filename="package://robot_cell/meshes/gripper.obj"/></geometry></collision></link>
+  <link name="finger_left"><collision><geometry>
+    <mesh filename="package://robot_cell/meshes/finger_left.obj"/></geometry></collision></link>
+  <link name="finger_right"><collision><geometry>
+    <mesh filename="package://robot_cell/meshes/finger_right.obj"/></geometry></collision></link>
+  <link name="tool_centre"/>
+  <joint name="base_yaw" type="revolute"><parent link="base"/><child link="turret"/>
+    <origin xyz="0 0 0.2"/><axis xyz="0 0 1"/>
+    <limit lower="-2.9" upper="2.9" effort="100" velocity="2"/></joint>
+  <joint name="shoulder" type="revolute"><parent link="turret"/><child link="upper_arm"/>
+    <origin xyz="0.08 0 0.22"/><axis xyz="0 1 0"/>
+    <limit lower="-1.6" upper="1.6" effort="100" velocity="2"/></joint>
+  <joint name="elbow" type="revolute"><parent link="upper_arm"/><child link="forearm"/>
+    <origin xyz="0 0 0.45"/><axis xyz="0 1 0"/>
+    <limit lower="-1.2" upper="2.4" effort="60" velocity="2.5"/></joint>
+  <joint name="forearm_roll" type="revolute"><parent link="forearm"/><child link="wrist"/>
+    <origin xyz="0.2 0 0.04"/><axis xyz="1 0 0"/>
+    <limit lower="-3.1" upper="3.1" effort="20" velocity="4"/></joint>
+  <joint name="wrist_bend" type="revolute"><parent link="wrist"/><child link="hand"/>
+    <origin xyz="0.22 0 0"/><axis xyz="0 1 0"/>
+    <limit lower="-2" upper="2" effort="20" velocity="4"/></joint>
+  <joint name="flange_roll" type="revolute"><parent link="hand"/><child link="gripper"/>
+    <origin xyz="0.08 0 0"/><axis xyz="1 0 0"/>
+    <limit lower="-3.1" upper="3.1" effort="10" velocity="5"/></joint>
+  <joint name="finger_left_slide" type="prismatic"><parent link="gripper"/>
+    <child link="finger_left"/><origin xyz="0.06 0.02 0"/><axis xyz="0 1 0"/>
+    <limit lower="0" upper="0.03" effort="50" velocity="0.1"/></joint>
+  <joint name="finger_right_slide" type="prismatic"><parent link="gripper"/>
+    <child link="finger_right"/><origin xyz="0.06 -0.02 0"/><axis xyz="0 -1 0"/>
+    <limit lower="0" upper="0.03" effort="50" velocity="0.1"/>
+    <mimic joint="finger_left_slide"/></joint>
+  <joint name="tool_centre_point" type="fixed"><parent link="gripper"/><child link="tool_centre"/>
+    <origin xyz="0.1 0 0"/></joint>
+</robot>
+)";
+
+constexpr int kJoints = 7;
+constexpr double kOpen = 0.03;     // fingers 0.1 apart
+constexpr double kClosed = 0.008;  // on a 56 mm part
+
+// The pick-and-place cycle as joint-space waypoints (solved once for the tool centre's targets),
+// each reached in `frames` frames with a smooth (cosine) start and stop.
+struct Waypoint {
+  const char* what;
+  int frames;
+  std::array<double, kJoints> joints;  // base_yaw ... flange_roll, finger_left_slide
+};
+
+const std::vector<Waypoint>& cycle() {
+  static const std::vector<Waypoint> waypoints = {
+      {"home, the tool forward at 0.75 m", 0, {0, -0.531, 0.764, 0, -0.233, 0, kOpen}},
+      {"above bin a, pointing down", 4, {0.381, 0.56, 0.401, 0, 0.61, 0.381, kOpen}},
+      {"into bin a: the fingertips scrape its floor, 1 mm deep",
+       4,
+       {0.381, 1.096, 0.301, 0, 0.174, 0.381, kOpen}},
+      {"grip", 2, {0.381, 1.096, 0.301, 0, 0.174, 0.381, kClosed}},
+      {"lift out of bin a", 4, {0.381, 0.476, 0.378, 0, 0.718, 0.381, kClosed}},
+      {"above the fixture's nest", 6, {-1.48, 0.161, 0.257, 0, 1.152, 0.091, kClosed}},
+      {"into the nest", 4, {-1.48, 0.408, 0.488, 0, 0.675, 0.091, kClosed}},
+      {"release", 2, {-1.48, 0.408, 0.488, 0, 0.675, 0.091, kOpen}},
+      {"back above the fixture", 3, {-1.48, 0.161, 0.257, 0, 1.152, 0.091, kOpen}},
+      {"home", 5, {0, -0.531, 0.764, 0, -0.233, 0, kOpen}},
+      {"before the shelf's middle compartment", 5, {1.571, -1.102, 1.146, 0, -0.044, 0, kOpen}},
+      {"into the compartment, the flange 1 cm over the board",
+       4,
+       {1.571, -0.023, 0.709, 0, -0.685, 0, kOpen}},
+      {"grip", 2, {1.571, -0.023, 0.709, 0, -0.685, 0, kClosed}},
+      {"back out", 4, {1.571, -1.102, 1.146, 0, -0.044, 0, kClosed}},
+      {"home", 5, {0, -0.531, 0.764, 0, -0.233, 0, kClosed}},
+      {"above bin b", 4, {-0.215, 0.516, 0.483, 0, 0.572, -0.215, kClosed}},
+      {"release", 2, {-0.215, 0.516, 0.483, 0, 0.572, -0.215, kOpen}},
+      {"home", 4, {0, -0.531, 0.764, 0, -0.233, 0, kOpen}},
+  };
+  return waypoints;
+}
+
+void writeTrajectory(const std::filesystem::path& path) {
+  std::ofstream out(path, std::ios::binary);
+  out << "base_yaw,shoulder,elbow,forearm_roll,wrist_bend,flange_roll,finger_left_slide\n";
+  const auto row = [&out](const std::array<double, kJoints>& joints) {
+    for (int j = 0; j < kJoints; ++j)  // micro-radian steps keep the file readable
+      out << (j > 0 ? "," : "") << number(std::round(joints[j] * 1e6) / 1e6 + 0.0);
+    out << "\n";
+  };
+  const std::vector<Waypoint>& waypoints = cycle();
+  row(waypoints.front().joints);
+  for (std::size_t w = 1; w < waypoints.size(); ++w) {
+    for (int f = 1; f <= waypoints[w].frames; ++f) {
+      const double s = 0.5 - 0.5 * std::cos(M_PI * f / waypoints[w].frames);
+      std::array<double, kJoints> joints{};
+      for (int j = 0; j < kJoints; ++j)
+        joints[j] =
+            waypoints[w - 1].joints[j] + s * (waypoints[w].joints[j] - waypoints[w - 1].joints[j]);
+      row(joints);
+    }
+  }
+  if (!out) {
+    std::cerr << "collido_make_robot_cell: cannot write " << path.string() << "\n";
+    std::exit(1);
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc != 2) {
+    std::cerr << "usage: collido_make_robot_cell FOLDER\n";
+    return 2;
+  }
+  const std::filesystem::path folder = argv[1];
+  std::error_code error;
+  for (const char* sub : {"meshes", "cell"}) {
+    if (std::filesystem::create_directories(folder / sub, error); error) {
+      std::cerr << "collido_make_robot_cell: " << (folder / sub).string() << ": " << error.message()
+                << "\n";
+      return 1;
+    }
+  }
+  writeLinks(folder / "meshes");
+  writeCell(folder / "cell");
+  std::ofstream urdf(folder / "arm6.urdf", std::ios::binary);
+  if (!(urdf << kUrdf)) {
+    std::cerr << "collido_make_robot_cell: cannot write " << (folder / "arm6.urdf").string()
+              << "\n";
+    return 1;
+  }
+  writeTrajectory(folder / "pick_and_place.csv");
+  return 0;
+}
