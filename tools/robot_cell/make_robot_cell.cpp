@@ -94,7 +94,7 @@ void cylinder(MeshAssembly& mesh, double radius, double length, const Eigen::Vec
 // parts share a corner (a mesh with coincident vertices would be reported as duplicates).
 void bin(MeshAssembly& mesh, const Eigen::Vector3d& size, const Eigen::Vector3d& floor_centre,
          double wall) {
-  const Eigen::Vector3d c = floor_centre;
+  const Eigen::Vector3d& c = floor_centre;
   box(mesh, {size.x(), size.y(), wall}, c + Eigen::Vector3d(0, 0, wall / 2));
   const double height = size.z() - wall / 2;
   const double z = wall / 2 + height / 2;
