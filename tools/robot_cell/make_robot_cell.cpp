@@ -24,6 +24,11 @@ namespace {
 
 using collido::TriangleMesh;
 
+[[noreturn]] void fail(const std::string& problem) {
+  std::cerr << "collido_make_robot_cell: " << problem << "\n";
+  std::exit(1);
+}
+
 // Numbers as the shortest text that reads back to the same double, so the files are stable and
 // keep the generators' double precision (assimp's exporters would round through float).
 std::string number(double value) {
@@ -36,10 +41,7 @@ std::string number(double value) {
 class MeshAssembly {
  public:
   void add(const collido::Result<TriangleMesh>& part, const Eigen::Isometry3d& pose) {
-    if (!part.ok()) {
-      std::cerr << "collido_make_robot_cell: " << part.status().toString() << "\n";
-      std::exit(1);
-    }
+    if (!part.ok()) fail(part.status().toString());
     const TriangleMesh& mesh = part.value();
     const Eigen::Index first = mesh_.vertices.cols();
     mesh_.vertices.conservativeResize(3, first + mesh.vertices.cols());
@@ -59,10 +61,7 @@ class MeshAssembly {
     for (Eigen::Index t = 0; t < mesh_.triangles.cols(); ++t)
       out << "f " << mesh_.triangles(0, t) + 1 << " " << mesh_.triangles(1, t) + 1 << " "
           << mesh_.triangles(2, t) + 1 << "\n";
-    if (!out) {
-      std::cerr << "collido_make_robot_cell: cannot write " << path.string() << "\n";
-      std::exit(1);
-    }
+    if (!out) fail("cannot write " + path.string());
   }
 
  private:
@@ -181,30 +180,12 @@ void writeCell(const std::filesystem::path& folder) {
   fixture.write(folder / "fixture.obj");
 }
 
-// The arm: joint origins and axes; the meshes above give each link's shape.
-constexpr const char* kUrdf = R"(<?xml version="1.0"?>
-<!-- The bundled robot cell's arm (scenes/robot_cell.json): six revolute joints and a parallel
-     gripper whose right finger mimics the left. Written by collido_make_robot_cell. -->
-<robot name="arm6">
-  <link name="base"><collision><geometry>
-    <mesh filename="package://robot_cell/meshes/base.obj"/></geometry></collision></link>
-  <link name="turret"><collision><geometry>
-    <mesh filename="package://robot_cell/meshes/turret.obj"/></geometry></collision></link>
-  <link name="upper_arm"><collision><geometry>
-    <mesh filename="package://robot_cell/meshes/upper_arm.obj"/></geometry></collision></link>
-  <link name="forearm"><collision><geometry>
-    <mesh filename="package://robot_cell/meshes/forearm.obj"/></geometry></collision></link>
-  <link name="wrist"><collision><geometry>
-    <mesh filename="package://robot_cell/meshes/wrist.obj"/></geometry></collision></link>
-  <link name="hand"><collision><geometry>
-    <mesh filename="package://robot_cell/meshes/hand.obj"/></geometry></collision></link>
-  <link name="gripper"><collision><geometry>
-    <mesh filename="package://robot_cell/meshes/gripper.obj"/></geometry></collision></link>
-  <link name="finger_left"><collision><geometry>
-    <mesh filename="package://robot_cell/meshes/finger_left.obj"/></geometry></collision></link>
-  <link name="finger_right"><collision><geometry>
-    <mesh filename="package://robot_cell/meshes/finger_right.obj"/></geometry></collision></link>
-  <link name="tool_centre"/>
+// The links with geometry, each with its mesh of the same name (writeLinks), in the URDF's order.
+constexpr const char* kMeshLinks[] = {"base", "turret",  "upper_arm",   "forearm",     "wrist",
+                                      "hand", "gripper", "finger_left", "finger_right"};
+
+// The tool centre (no geometry) and the joints: origins, axes and limits.
+constexpr const char* kJointsUrdf = R"(  <link name="tool_centre"/>
   <joint name="base_yaw" type="revolute"><parent link="base"/><child link="turret"/>
     <origin xyz="0 0 0.2"/><axis xyz="0 0 1"/>
     <limit lower="-2.9" upper="2.9" effort="100" velocity="2"/></joint>
@@ -234,6 +215,22 @@ constexpr const char* kUrdf = R"(<?xml version="1.0"?>
     <origin xyz="0.1 0 0"/></joint>
 </robot>
 )";
+
+// The arm's URDF: the links, then the joints.
+std::string urdfText() {
+  std::string text = R"(<?xml version="1.0"?>
+<!-- The bundled robot cell's arm (scenes/robot_cell.json): six revolute joints and a parallel
+     gripper whose right finger mimics the left. Written by collido_make_robot_cell. -->
+<robot name="arm6">
+)";
+  for (const char* link : kMeshLinks) {
+    text.append("  <link name=\"").append(link).append("\"><collision><geometry>\n");
+    text.append("    <mesh filename=\"package://robot_cell/meshes/")
+        .append(link)
+        .append(".obj\"/></geometry></collision></link>\n");
+  }
+  return text + kJointsUrdf;
+}
 
 constexpr int kJoints = 7;
 constexpr double kOpen = 0.03;     // fingers 0.1 apart
@@ -295,10 +292,7 @@ void writeTrajectory(const std::filesystem::path& path) {
       row(joints);
     }
   }
-  if (!out) {
-    std::cerr << "collido_make_robot_cell: cannot write " << path.string() << "\n";
-    std::exit(1);
-  }
+  if (!out) fail("cannot write " + path.string());
 }
 
 }  // namespace
@@ -311,20 +305,13 @@ int main(int argc, char** argv) {
   const std::filesystem::path folder = argv[1];
   std::error_code error;
   for (const char* sub : {"meshes", "cell"}) {
-    if (std::filesystem::create_directories(folder / sub, error); error) {
-      std::cerr << "collido_make_robot_cell: " << (folder / sub).string() << ": " << error.message()
-                << "\n";
-      return 1;
-    }
+    if (std::filesystem::create_directories(folder / sub, error); error)
+      fail((folder / sub).string() + ": " + error.message());
   }
   writeLinks(folder / "meshes");
   writeCell(folder / "cell");
   std::ofstream urdf(folder / "arm6.urdf", std::ios::binary);
-  if (!(urdf << kUrdf)) {
-    std::cerr << "collido_make_robot_cell: cannot write " << (folder / "arm6.urdf").string()
-              << "\n";
-    return 1;
-  }
+  if (!(urdf << urdfText())) fail("cannot write " + (folder / "arm6.urdf").string());
   writeTrajectory(folder / "pick_and_place.csv");
   return 0;
 }

@@ -27,13 +27,22 @@ enum Kind { kTriangle, kSegment, kPoint };
 struct Element {
   Kind kind = kTriangle;
   std::array<Point, 3> p;
+  std::array<Eigen::Vector3d, 3> corners;  // p in doubles, for the plane bound
   Eigen::Vector3d lo;
   Eigen::Vector3d hi;
+  // A triangle's plane for the bound of separatedByPlaneOf, worked out once per triangle rather
+  // than once per candidate pair: (p1 - p0) x (p2 - p0) and its length, 0 where there is no
+  // usable plane (a segment, a point, or a sliver whose computed normal can point far off: its
+  // error grows as 1 / sin of the smallest angle, and below sin 1e-3 the slack would not cover
+  // it).
+  Eigen::Vector3d normal = Eigen::Vector3d::Zero();
+  double normal_length = 0.0;
 };
 
 Element element(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
   Element e;
   e.p = {Point(a.x(), a.y(), a.z()), Point(b.x(), b.y(), b.z()), Point(c.x(), c.y(), c.z())};
+  e.corners = {a, b, c};
   e.lo = a.cwiseMin(b).cwiseMin(c);
   e.hi = a.cwiseMax(b).cwiseMax(c);
   if (CGAL::collinear(e.p[0], e.p[1], e.p[2])) {
@@ -43,6 +52,17 @@ Element element(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen:
     e.kind = q[0] == q[2] ? kPoint : kSegment;
     e.p[0] = q[0];
     e.p[1] = q[2];
+    for (std::size_t i = 0; i < 2; ++i)
+      e.corners[i] = Eigen::Vector3d(e.p[i].x(), e.p[i].y(), e.p[i].z());
+    return e;
+  }
+  const Eigen::Vector3d u = b - a;
+  const Eigen::Vector3d v = c - a;
+  const Eigen::Vector3d normal = u.cross(v);
+  const double length = normal.norm();
+  if (length > 1e-3 * u.norm() * v.norm()) {
+    e.normal = normal;
+    e.normal_length = length;
   }
   return e;
 }
@@ -87,23 +107,15 @@ double squaredDistance(const Element& x, const Element& y) {
 // pairs of two near-parallel faces (a docking face, a tracked part resting on another) before
 // CGAL's triangle distance, which was most of a tracked scene's run time.
 bool separatedByPlaneOf(const Element& x, const Element& y, double distance) {
-  if (x.kind != kTriangle) return false;
-  const auto vec = [](const Point& p) { return Eigen::Vector3d(p.x(), p.y(), p.z()); };
-  const Eigen::Vector3d origin = vec(x.p[0]);
-  const Eigen::Vector3d u = vec(x.p[1]) - origin;
-  const Eigen::Vector3d v = vec(x.p[2]) - origin;
-  const Eigen::Vector3d normal = u.cross(v);
-  const double length = normal.norm();
-  // A sliver's computed normal can point far off (its error grows as 1 / sin of its smallest
-  // angle); below sin 1e-3 the slack below would not cover it, and CGAL decides instead.
-  if (!(length > 1e-3 * u.norm() * v.norm())) return false;
+  if (x.normal_length == 0.0) return false;
+  const Eigen::Vector3d& origin = x.corners[0];
   const int corners = y.kind == kTriangle ? 3 : y.kind == kSegment ? 2 : 1;
   double lowest = std::numeric_limits<double>::infinity();
   double highest = -lowest;
   double scale = origin.cwiseAbs().maxCoeff();
   for (int i = 0; i < corners; ++i) {
-    const Eigen::Vector3d corner = vec(y.p[static_cast<std::size_t>(i)]);
-    const double side = normal.dot(corner - origin) / length;
+    const Eigen::Vector3d& corner = y.corners[static_cast<std::size_t>(i)];
+    const double side = x.normal.dot(corner - origin) / x.normal_length;
     lowest = std::min(lowest, side);
     highest = std::max(highest, side);
     scale = std::max(scale, corner.cwiseAbs().maxCoeff());

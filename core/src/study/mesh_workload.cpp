@@ -30,8 +30,7 @@ struct Part {
   std::string name;
   std::string path;  // relative to the scenes' folder
   std::shared_ptr<const TriangleMesh> mesh;
-  Eigen::Vector3d centre;
-  double radius = 0.0;
+  BoundingSphere sphere;  // what the scene's random motion places objects by
 };
 
 Json translationPose(const Eigen::Vector3d& t) {
@@ -54,9 +53,9 @@ Json queriesOf(const std::vector<Part>& parts) {
 Json approachMotion(const Part& fixed, const Part& moving, std::size_t index) {
   Eigen::Vector3d direction = Eigen::Vector3d::Zero();
   direction((index - 1) / 2 % 3) = (index - 1) % 2 == 0 ? 1.0 : -1.0;
-  const double reach = fixed.radius + moving.radius;
+  const double reach = fixed.sphere.radius + moving.sphere.radius;
   const auto translation = [&](double share) {
-    return Eigen::Vector3d(fixed.centre + share * reach * direction - moving.centre);
+    return Eigen::Vector3d(fixed.sphere.centre + share * reach * direction - moving.sphere.centre);
   };
   const auto touching = [&](double share) {
     Pose pose = Pose::Identity();
@@ -141,10 +140,7 @@ Result<std::vector<MeshWorkloadScene>> writeMeshWorkload(const std::vector<std::
     names.insert(part.name);
     part.path = fs::relative(fs::absolute(file), fs::absolute(folder)).generic_string();
     part.mesh = shared;
-    // The sphere the scene's random motion places objects by.
-    const BoundingSphere sphere = boundingSphere(*shared);
-    part.centre = sphere.centre;
-    part.radius = sphere.radius;
+    part.sphere = boundingSphere(*shared);
     parts.push_back(std::move(part));
   }
   std::string name = parts[0].name + "_vs_" + parts[1].name;

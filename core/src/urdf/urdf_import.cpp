@@ -268,7 +268,7 @@ class SceneBuilder {
         if (asked.count({a, b}) == 0) except.push_back({objects_[a].name, objects_[b].name});
       }
     }
-    queries_.push_back({{"name", uniqueQueryName("self-collision")},
+    queries_.push_back({{"name", "self-collision"},
                         {"among", {{{"subtree", objects_[0].name}}}},
                         {"except", std::move(except)},
                         {"kind", "all_pairs"}});
@@ -297,11 +297,10 @@ class SceneBuilder {
       }
     }
     for (std::size_t e = robot_objects_; e < objects_.size(); ++e) {
-      queries_.push_back(
-          {{"name", uniqueQueryName("clearance: " + objects_[tool].name + "-" + objects_[e].name)},
-           {"a", objects_[tool].name},
-           {"b", objects_[e].name},
-           {"kind", "distance"}});
+      queries_.push_back({{"name", "clearance: " + objects_[tool].name + "-" + objects_[e].name},
+                          {"a", objects_[tool].name},
+                          {"b", objects_[e].name},
+                          {"kind", "distance"}});
     }
   }
 
@@ -344,14 +343,6 @@ class SceneBuilder {
  private:
   fs::path folder() const { return fs::absolute(request_.output).parent_path(); }
 
-  // Names joined with "-" can meet ("x-y" and "z", "x" and "y-z"): the second gets a number.
-  std::string uniqueQueryName(const std::string& wanted) {
-    std::string name = wanted;
-    for (int copy = 2; !query_names_.insert(name).second; ++copy)
-      name = wanted + " #" + std::to_string(copy);
-    return name;
-  }
-
   std::string uniqueName(const std::string& wanted) {
     std::string name = wanted;
     for (int copy = 2; !names_.insert(name).second; ++copy)
@@ -387,7 +378,6 @@ class SceneBuilder {
   std::size_t robot_objects_ = 0;
   std::map<std::size_t, std::size_t> first_of_link_;
   std::set<std::string> names_;
-  std::set<std::string> query_names_ = {"robot vs environment"};
   Json queries_ = Json::array();
 };
 
