@@ -30,8 +30,12 @@ std::string progressBar(double fraction, std::size_t width) {
   return bar;
 }
 
-StudyProgress::StudyProgress(std::ostream& out, std::size_t combinations, bool interactive)
-    : out_(out), combinations_(combinations), interactive_(interactive) {}
+StudyProgress::StudyProgress(std::ostream& out, std::size_t combinations, bool interactive, Now now)
+    : out_(out),
+      combinations_(combinations),
+      interactive_(interactive),
+      now_(std::move(now)),
+      started_(now_()) {}
 
 void StudyProgress::start(std::size_t index, const std::string& label) {
   index_ = index;
@@ -51,7 +55,7 @@ void StudyProgress::setExpected(std::vector<double> seconds) {
 }
 
 std::string StudyProgress::estimateLeft() const {
-  const double elapsed = std::chrono::duration<double>(Clock::now() - started_).count();
+  const double elapsed = std::chrono::duration<double>(now_() - started_).count();
   const double current =
       frames_total_ == 0 ? 0.0 : static_cast<double>(frames_done_) / frames_total_;
   if (expected_.size() == combinations_) {
@@ -88,13 +92,13 @@ void StudyProgress::finish(const std::string& outcome) {
 
 void StudyProgress::tick() {
   if (!interactive_) return;
-  if (Clock::now() - last_draw_ < std::chrono::milliseconds(100)) return;
+  if (now_() - last_draw_ < std::chrono::milliseconds(100)) return;
   draw();
 }
 
 void StudyProgress::draw() {
   if (!interactive_) return;
-  last_draw_ = Clock::now();
+  last_draw_ = now_();
   const double current =
       frames_total_ == 0 ? 0.0 : static_cast<double>(frames_done_) / frames_total_;
   const double overall =

@@ -16,8 +16,8 @@
 // studies of the same settings. COLLIDO_TEST_QUERY_SLOWDOWN=F makes each whole query (that
 // spin and the answer) 1 + F times as long, a known slowdown `collido compare` must find. With
 // COLLIDO_TEST_QUERY_JITTER=J and COLLIDO_TEST_QUERY_JITTER_FILE=F, every other instance created
-// (counted by appending a byte to F) spins 1 + J times as long: worker processes, and so a
-// study's rounds, that disagree.
+// (counted by appending a byte to F) makes each whole query 1 + J times as long as well: worker
+// processes, and so a study's rounds, that disagree by a known factor.
 // Built as libcollido_plugin_misbehaving.so into the tests' own plugin folder, so only tests
 // that pass that folder with --plugin see it.
 #include <array>
@@ -126,18 +126,24 @@ double environmentNumber(const char* name) {
   return text == nullptr ? 0.0 : std::strtod(text, nullptr);
 }
 
-// The extra microseconds each query spends, from the environment (0 without it).
-double extraQueryMicroseconds() {
-  const double extra = environmentNumber("COLLIDO_TEST_QUERY_EXTRA_US");
-  const double jitter = environmentNumber("COLLIDO_TEST_QUERY_JITTER");
+// Whether this instance is one of the jittered ones: every other instance created, counted in
+// the file COLLIDO_TEST_QUERY_JITTER_FILE names; none without it or without a jitter.
+bool jitteredInstance() {
   const char* counter = std::getenv("COLLIDO_TEST_QUERY_JITTER_FILE");
-  if (jitter == 0.0 || counter == nullptr) return extra;
+  if (environmentNumber("COLLIDO_TEST_QUERY_JITTER") == 0.0 || counter == nullptr) return false;
   const int file = open(counter, O_WRONLY | O_APPEND | O_CREAT, 0644);
-  if (file < 0) return extra;
+  if (file < 0) return false;
   struct stat status {};
   const bool counted = write(file, "+", 1) == 1 && fstat(file, &status) == 0;
   close(file);
-  return counted && status.st_size % 2 == 0 ? extra * (1.0 + jitter) : extra;
+  return counted && status.st_size % 2 == 0;
+}
+
+// How much longer than itself each whole query is made: the slowdown, plus the jitter on the
+// jittered instances.
+double querySlowdown() {
+  const double slowdown = environmentNumber("COLLIDO_TEST_QUERY_SLOWDOWN");
+  return jitteredInstance() ? slowdown + environmentNumber("COLLIDO_TEST_QUERY_JITTER") : slowdown;
 }
 
 // Spins (a sleep would give the core away and wake late) until `microseconds` have passed.
@@ -153,8 +159,8 @@ class MisbehavingBackend final : public collido::Backend {
   MisbehavingBackend(Mode mode, std::size_t ballast_bytes)
       : mode_(mode),
         ballast_bytes_(ballast_bytes),
-        extra_us_(extraQueryMicroseconds()),
-        slowdown_(environmentNumber("COLLIDO_TEST_QUERY_SLOWDOWN")) {}
+        extra_us_(environmentNumber("COLLIDO_TEST_QUERY_EXTRA_US")),
+        slowdown_(querySlowdown()) {}
 
   collido::Capabilities capabilities() const override {
     collido::Capabilities caps;

@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cstddef>
+#include <functional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -13,7 +14,12 @@ namespace collido::study {
 /// terminal it prints one line per finished combination instead.
 class StudyProgress {
  public:
-  StudyProgress(std::ostream& out, std::size_t combinations, bool interactive);
+  using Clock = std::chrono::steady_clock;
+  /// Where the time comes from: the steady clock, or a test's own.
+  using Now = std::function<Clock::time_point()>;
+
+  StudyProgress(std::ostream& out, std::size_t combinations, bool interactive,
+                Now now = Clock::now);
 
   void start(std::size_t index, const std::string& label);
   void frames(std::size_t done, std::size_t total);
@@ -28,13 +34,13 @@ class StudyProgress {
   void setExpected(std::vector<double> seconds);
 
  private:
-  using Clock = std::chrono::steady_clock;
   void draw();
 
   std::ostream& out_;
   std::size_t combinations_;
   bool interactive_;
-  Clock::time_point started_ = Clock::now();
+  Now now_;
+  Clock::time_point started_;
   Clock::time_point last_draw_{};
   std::size_t finished_ = 0;
   std::size_t index_ = 0;
