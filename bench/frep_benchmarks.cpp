@@ -125,7 +125,7 @@ void collisionBenchmark(benchmark::State& state, int which, double precision) {
   state.counters["us_max"] = quantileOf(micros, 1.0);
 }
 
-[[maybe_unused]] const bool registered = [] {
+[[maybe_unused]] const bool frep_registered = [] {
   for (int which = 0; which < 5; ++which) {
     for (const double precision : {1e-2, 1e-3}) {
       const std::string name =

@@ -23,7 +23,7 @@ struct SurfacePair {
   double size;  // of the model, for the tolerance
 };
 
-SurfacePair makePair(int which) {
+SurfacePair makeSurfacePair(int which) {
   switch (which) {
     case 0:  // the seed's experiment: two convex patches facing each other
       return {"sphere_zones", nurbs::sphereZone(Eigen::Vector3d::Zero(), 1.0, -45.0),
@@ -41,7 +41,7 @@ SurfacePair makePair(int which) {
 }
 
 void distanceBenchmark(benchmark::State& state, int which, nurbs::PatchBound bound, bool refine) {
-  const SurfacePair pair = makePair(which);
+  const SurfacePair pair = makeSurfacePair(which);
   nurbs::SurfaceDistanceOptions options;
   options.bound = bound;
   options.refine = refine;
@@ -60,9 +60,9 @@ void distanceBenchmark(benchmark::State& state, int which, nurbs::PatchBound bou
   state.counters["distance"] = last.upper;
 }
 
-[[maybe_unused]] const bool registered = [] {
+[[maybe_unused]] const bool nurbs_registered = [] {
   for (int which = 0; which < 4; ++which) {
-    const std::string name = std::string("nurbs_distance/") + makePair(which).name;
+    const std::string name = std::string("nurbs_distance/") + makeSurfacePair(which).name;
     for (const auto& [bound, bound_name] : {std::pair{nurbs::PatchBound::kConvexHull, "hull"},
                                             std::pair{nurbs::PatchBound::kBox, "box"}}) {
       for (const bool refine : {true, false}) {

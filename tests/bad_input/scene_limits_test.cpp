@@ -18,7 +18,7 @@ namespace {
 using Json = nlohmann::json;
 using test::rejected;
 
-constexpr const char* kLabel = "limits.json";
+constexpr const char* kLimitsLabel = "limits.json";
 
 /// Object "a" with `shape`, object "b" a 64-triangle torus at x = 3, one boolean query.
 Json sceneWith(const Json& shape) {
@@ -36,8 +36,8 @@ Json sceneWith(const Json& shape) {
 }
 constexpr std::size_t kTorusB = 64;
 
-Result<Scene> parse(const Json& scene, const SceneLoadOptions& options = {}) {
-  return parseScene(scene.dump(), kLabel, test::sourcePath("scenes"), options);
+Result<Scene> parseWithLimits(const Json& scene, const SceneLoadOptions& options = {}) {
+  return parseScene(scene.dump(), kLimitsLabel, test::sourcePath("scenes"), options);
 }
 
 SceneLoadOptions maxTriangles(std::size_t limit) {
@@ -65,12 +65,12 @@ TEST(SceneLimits, EachGeneratorIsChargedItsTriangleCount) {
       {{"generator", "flange"}, {"bolt_holes", 5}}};
   for (const Json& shape : shapes) {
     SCOPED_TRACE(shape.dump());
-    const Result<Scene> unlimited = parse(sceneWith(shape));
+    const Result<Scene> unlimited = parseWithLimits(sceneWith(shape));
     ASSERT_TRUE(unlimited.ok()) << unlimited.status().toString();
     const std::size_t total = unlimited.value().objects[0].mesh->triangleCount() + kTorusB;
-    EXPECT_TRUE(parse(sceneWith(shape), maxTriangles(total)).ok());
-    EXPECT_TRUE(rejected(parse(sceneWith(shape), maxTriangles(total - 1)),
-                         {kLabel, "/objects/1/shape:", "max_triangles"}));
+    EXPECT_TRUE(parseWithLimits(sceneWith(shape), maxTriangles(total)).ok());
+    EXPECT_TRUE(rejected(parseWithLimits(sceneWith(shape), maxTriangles(total - 1)),
+                         {kLimitsLabel, "/objects/1/shape:", "max_triangles"}));
   }
 }
 
@@ -82,8 +82,8 @@ TEST(SceneLimits, AHugeGeneratorIsRefusedBeforeItIsGenerated) {
   const Json torus = {
       {"generator", "torus"}, {"major_segments", 1 << 20}, {"minor_segments", 1 << 20}};
   EXPECT_TRUE(rejected(
-      parse(sceneWith(torus), maxTriangles(1000000)),
-      {kLabel, "/objects/0/shape:", "2199023255552 triangles", "1000000", "max_triangles"}));
+      parseWithLimits(sceneWith(torus), maxTriangles(1000000)),
+      {kLimitsLabel, "/objects/0/shape:", "2199023255552 triangles", "1000000", "max_triangles"}));
 }
 
 // Mesh files count too (rob.obj has 216 triangles):
@@ -91,9 +91,9 @@ TEST(SceneLimits, AHugeGeneratorIsRefusedBeforeItIsGenerated) {
 //  scene to 216, more than this load allows (100, SceneLoadOptions::max_triangles)"
 TEST(SceneLimits, MeshFilesCountTowardsTheLimit) {
   const Json rob = {{"mesh", "meshes/rob.obj"}};
-  EXPECT_TRUE(rejected(parse(sceneWith(rob), maxTriangles(100)),
+  EXPECT_TRUE(rejected(parseWithLimits(sceneWith(rob), maxTriangles(100)),
                        {"/objects/0/shape:", "rob.obj needs 216 triangles", "max_triangles"}));
-  EXPECT_TRUE(parse(sceneWith(rob), maxTriangles(216 + kTorusB)).ok());
+  EXPECT_TRUE(parseWithLimits(sceneWith(rob), maxTriangles(216 + kTorusB)).ok());
 }
 
 // Without a limit (the default) only each generator's own 50 million applies; a huge resolution
@@ -101,7 +101,7 @@ TEST(SceneLimits, MeshFilesCountTowardsTheLimit) {
 TEST(SceneLimits, AHugeResolutionMeetsTheGeneratorsOwnLimit) {
   SceneLoadOptions options;
   options.resolution = 1e12;
-  EXPECT_TRUE(rejected(parse(sceneWith({{"generator", "sphere"}}), options),
+  EXPECT_TRUE(rejected(parseWithLimits(sceneWith({{"generator", "sphere"}}), options),
                        {"/objects/0/shape:", "50000000"}));
 }
 
@@ -113,9 +113,9 @@ TEST(SceneLimits, MoreFramesThanTheLoadAllows) {
   scene["frames"] = 11;
   SceneLoadOptions options;
   options.max_frames = 10;
-  EXPECT_TRUE(rejected(parse(scene, options), {"/frames:", "[1, 10]", "got 11"}));
+  EXPECT_TRUE(rejected(parseWithLimits(scene, options), {"/frames:", "[1, 10]", "got 11"}));
   scene["frames"] = 10;
-  EXPECT_TRUE(parse(scene, options).ok());
+  EXPECT_TRUE(parseWithLimits(scene, options).ok());
 }
 
 // Without "frames", the longest pose list sets the count, and is held to the same limit:
@@ -128,8 +128,8 @@ TEST(SceneLimits, APoseListLongerThanTheLoadAllows) {
       {"poses", Json::array({Json::object(), Json::object(), Json::object()})}};
   SceneLoadOptions options;
   options.max_frames = 2;
-  EXPECT_TRUE(
-      rejected(parse(scene, options), {"/objects/1/motion/poses:", "3 poses", "max_frames"}));
+  EXPECT_TRUE(rejected(parseWithLimits(scene, options),
+                       {"/objects/1/motion/poses:", "3 poses", "max_frames"}));
 }
 
 // ---- numbers past the double range ---------------------------------------------------------
@@ -138,15 +138,15 @@ TEST(SceneLimits, APoseListLongerThanTheLoadAllows) {
 // "limits.json: not valid JSON: [json.exception.out_of_range.406] number overflow parsing
 //  '1e400'"
 TEST(SceneLimits, ANumberBeyondTheDoubleRange) {
-  EXPECT_TRUE(rejected(parseScene(R"({"frames": 1e400})", kLabel, "."),
-                       {kLabel, "not valid JSON", "1e400"}));
+  EXPECT_TRUE(rejected(parseScene(R"({"frames": 1e400})", kLimitsLabel, "."),
+                       {kLimitsLabel, "not valid JSON", "1e400"}));
 }
 
 // "limits.json: /objects/0/shape/scale: scaled by 1e+308: <scenes>/meshes/rob.obj: vertex 0
 //  has a non-finite x coordinate (inf)"
 TEST(SceneLimits, AMeshScaledPastTheDoubleRange) {
   const Json rob = {{"mesh", "meshes/rob.obj"}, {"scale", 1e308}};
-  EXPECT_TRUE(rejected(parse(sceneWith(rob)), {"/objects/0/shape/scale:", "non-finite"}));
+  EXPECT_TRUE(rejected(parseWithLimits(sceneWith(rob)), {"/objects/0/shape/scale:", "non-finite"}));
 }
 
 // "limits.json: /objects/0/shape: torus R=1.5e+308 r=1e+308 3x3: vertex 0 has a non-finite x
@@ -157,7 +157,7 @@ TEST(SceneLimits, AGeneratorWhoseShapeOverflows) {
                       {"minor_radius", 1e308},
                       {"major_segments", 3},
                       {"minor_segments", 3}};
-  EXPECT_TRUE(rejected(parse(sceneWith(torus)), {"/objects/0/shape:", "non-finite"}));
+  EXPECT_TRUE(rejected(parseWithLimits(sceneWith(torus)), {"/objects/0/shape:", "non-finite"}));
 }
 
 // Both ends are finite, their difference is not; but ends this far out are refused first, by
@@ -171,8 +171,8 @@ TEST(SceneLimits, AMotionThatOverflows) {
   scene["objects"][1]["motion"] = {{"linear",
                                     {{"from", {{"translation", {-1.7e308, 0, 0}}}},
                                      {"to", {{"translation", {1.7e308, 0, 0}}}}}}};
-  EXPECT_TRUE(rejected(parse(scene), {"/objects/1/motion/linear/from/translation/0:",
-                                      "beyond the coordinate limit"}));
+  EXPECT_TRUE(rejected(parseWithLimits(scene), {"/objects/1/motion/linear/from/translation/0:",
+                                                "beyond the coordinate limit"}));
 }
 
 }  // namespace

@@ -31,7 +31,7 @@
 namespace collido::study {
 namespace {
 
-using Json = nlohmann::ordered_json;
+using OrderedJson = nlohmann::ordered_json;
 
 std::string benchmarkName(const Combination& c, const QueryMeasurement& m) {
   const std::string setting = c.settingText();
@@ -64,9 +64,9 @@ std::string recordsJsonLines(const std::vector<CombinationResult>& results) {
     const Combination& c = r.combination;
     for (const QueryMeasurement& m : r.measurements) {
       for (const FrameRecord& f : m.frames) {
-        Json line = {{"combination", c.id}};
-        line.update(measurementIdentity<Json>(c, m));
-        line.update(frameRecordJson<Json>(f, m));
+        OrderedJson line = {{"combination", c.id}};
+        line.update(measurementIdentity<OrderedJson>(c, m));
+        line.update(frameRecordJson<OrderedJson>(f, m));
         out << line.dump() << "\n";
       }
     }
@@ -79,23 +79,23 @@ namespace {
 // summary.json's text with the picks computed once for every output.
 std::string benchmarkJsonWith(const std::vector<CombinationResult>& results,
                               const std::vector<SceneQueryPicks>& picks) {
-  Json benchmarks = Json::array();
+  OrderedJson benchmarks = OrderedJson::array();
   for (const CombinationResult& r : results) {
     for (const QueryMeasurement& m : tableMeasurements(r)) {
       if (!m.ok()) continue;
       const std::string name = benchmarkName(r.combination, m);
-      Json entry = {{"name", name},
-                    {"family_index", benchmarks.size()},
-                    {"per_family_instance_index", 0},
-                    {"run_name", name},
-                    {"run_type", "iteration"},
-                    {"repetitions", 1},
-                    {"repetition_index", 0},
-                    {"threads", 1},
-                    {"iterations", m.times_us.size()},
-                    {"real_time", meanFrameTimeUs(m)},
-                    {"cpu_time", meanFrameTimeUs(m)},
-                    {"time_unit", "us"}};
+      OrderedJson entry = {{"name", name},
+                           {"family_index", benchmarks.size()},
+                           {"per_family_instance_index", 0},
+                           {"run_name", name},
+                           {"run_type", "iteration"},
+                           {"repetitions", 1},
+                           {"repetition_index", 0},
+                           {"threads", 1},
+                           {"iterations", m.times_us.size()},
+                           {"real_time", meanFrameTimeUs(m)},
+                           {"cpu_time", meanFrameTimeUs(m)},
+                           {"time_unit", "us"}};
       // Every summary figure the measurement has, as a counter.
       for (const Figure& figure : measurementFigures()) {
         if ((figure.uses & kInSummary) == 0u) continue;
@@ -106,23 +106,23 @@ std::string benchmarkJsonWith(const std::vector<CombinationResult>& results,
     }
   }
   const unsigned cpus = std::thread::hardware_concurrency();
-  const Json context = {{"date", localTime()},
-                        {"host_name", hostName()},
-                        {"executable", "collido study"},
-                        {"num_cpus", cpus},
-                        {"mhz_per_cpu", 0},
-                        {"cpu_scaling_enabled", false},
-                        {"caches", Json::array()},
-                        {"load_avg", Json::array()},
-                        // What real_time is (Google Benchmark's readers ignore other keys).
-                        {"time_statistic", kTimeStatisticText},
+  const OrderedJson context = {{"date", localTime()},
+                               {"host_name", hostName()},
+                               {"executable", "collido study"},
+                               {"num_cpus", cpus},
+                               {"mhz_per_cpu", 0},
+                               {"cpu_scaling_enabled", false},
+                               {"caches", OrderedJson::array()},
+                               {"load_avg", OrderedJson::array()},
+                               // What real_time is (Google Benchmark's readers ignore other keys).
+                               {"time_statistic", kTimeStatisticText},
 #ifdef NDEBUG
-                        {"library_build_type", "release"}
+                               {"library_build_type", "release"}
 #else
-                        {"library_build_type", "debug"}
+                               {"library_build_type", "debug"}
 #endif
   };
-  Json document = {{"context", context}, {"benchmarks", benchmarks}};
+  OrderedJson document = {{"context", context}, {"benchmarks", benchmarks}};
   // Beside Google Benchmark's keys (its readers ignore others): the robustness matrix of the
   // stress scenes, when the study ran any.
   const std::vector<RobustnessCell> robustness = robustnessMatrix(results);

@@ -19,7 +19,7 @@
 namespace collido::study {
 namespace {
 
-using Json = nlohmann::ordered_json;
+using OrderedJson = nlohmann::ordered_json;
 
 std::string settingLabel(const Combination& c) {
   const std::string setting = c.settingText();
@@ -75,8 +75,8 @@ std::optional<double> share(std::size_t part, std::size_t whole) {
   return static_cast<double>(part) / static_cast<double>(whole);
 }
 
-Json nullable(const std::optional<double>& value) {
-  return value ? Json(*value) : Json();
+OrderedJson nullable(const std::optional<double>& value) {
+  return value ? OrderedJson(*value) : OrderedJson();
 }
 
 // "7.1% (3/42)", or the status where nothing was answered; a trailing "+n failed" when some
@@ -95,16 +95,16 @@ std::string shareText(const std::optional<double>& value) {
   return value ? formatNumber("%.4f", *value) : "-";
 }
 
-Json answersJson(const RobustnessAnswers& a, bool pairs) {
-  Json json = {{"status", answersStatusName(a.status())},
-               {"answered", a.answered},
-               {"wrong", a.wrong},
-               {"wrong_rate", nullable(a.wrongRate())},
-               {"false_negatives", a.false_negatives},
-               {"false_positives", a.false_positives},
-               {"unsupported", a.unsupported},
-               {"failed", a.failed},
-               {"invalid_pairs", a.invalid_pairs}};
+OrderedJson answersJson(const RobustnessAnswers& a, bool pairs) {
+  OrderedJson json = {{"status", answersStatusName(a.status())},
+                      {"answered", a.answered},
+                      {"wrong", a.wrong},
+                      {"wrong_rate", nullable(a.wrongRate())},
+                      {"false_negatives", a.false_negatives},
+                      {"false_positives", a.false_positives},
+                      {"unsupported", a.unsupported},
+                      {"failed", a.failed},
+                      {"invalid_pairs", a.invalid_pairs}};
   if (pairs) {
     json["true_pairs"] = a.true_pairs;
     json["reported_pairs"] = a.reported_pairs;
@@ -391,7 +391,7 @@ std::string robustnessText(const std::vector<RobustnessCell>& cells) {
 }
 
 nlohmann::ordered_json robustnessJson(const std::vector<RobustnessCell>& cells) {
-  Json list = Json::array();
+  OrderedJson list = OrderedJson::array();
   for (const RobustnessCell& cell : cells) {
     list.push_back({{"backend", cell.setting},
                     {"category", cell.category},

@@ -15,7 +15,7 @@ namespace collido::study {
 namespace {
 
 // Ordered: options keep the order the file gives them (SweepBackend::settings() follows it).
-using Json = nlohmann::ordered_json;
+using OrderedJson = nlohmann::ordered_json;
 
 struct SweepError {
   std::string message;
@@ -29,7 +29,7 @@ class Checker {
     throw SweepError{label_ + ": " + (where.empty() ? "/" : where) + ": " + problem};
   }
 
-  void allowKeys(const Json& node, const std::string& where,
+  void allowKeys(const OrderedJson& node, const std::string& where,
                  const std::set<std::string>& allowed) const {
     if (!node.is_object()) fail(where, std::string("expected an object, got ") + node.type_name());
     for (const auto& item : node.items()) {
@@ -41,7 +41,7 @@ class Checker {
     }
   }
 
-  const Json& nonEmptyArray(const Json& node, const std::string& where) const {
+  const OrderedJson& nonEmptyArray(const OrderedJson& node, const std::string& where) const {
     if (!node.is_array()) fail(where, std::string("expected an array, got ") + node.type_name());
     if (node.empty()) fail(where, "expected at least one entry");
     return node;
@@ -59,7 +59,7 @@ std::string at(const std::string& where, std::size_t index) {
 }
 
 // Option values are passed to plugins as text; numbers keep the shortest form people wrote.
-std::string optionText(const Checker& c, const Json& value, const std::string& where) {
+std::string optionText(const Checker& c, const OrderedJson& value, const std::string& where) {
   if (value.is_string()) return value.get<std::string>();
   if (value.is_boolean()) return value.get<bool>() ? "true" : "false";
   // nlohmann writes the shortest text that reads back as the same number: 0.1, not
@@ -68,7 +68,7 @@ std::string optionText(const Checker& c, const Json& value, const std::string& w
   c.fail(where, std::string("expected a number, string or boolean, got ") + value.type_name());
 }
 
-SweepBackend readBackend(const Checker& c, const Json& node, const std::string& where) {
+SweepBackend readBackend(const Checker& c, const OrderedJson& node, const std::string& where) {
   if (node.is_string()) return SweepBackend{node.get<std::string>(), {}, {}};
   c.allowKeys(node, where, {"variant", "options", "scenes", "optional"});
   if (!node.contains("variant") || !node.at("variant").is_string()) {
@@ -78,7 +78,7 @@ SweepBackend readBackend(const Checker& c, const Json& node, const std::string& 
   if (backend.variant.empty()) c.fail(at(where, "variant"), "must not be empty");
   if (node.contains("options")) {
     const std::string options_at = at(where, "options");
-    const Json& options = node.at("options");
+    const OrderedJson& options = node.at("options");
     if (!options.is_object()) c.fail(options_at, "expected an object of option: [values]");
     for (const auto& item : options.items()) {
       const std::string option_at = at(options_at, item.key());
@@ -99,7 +99,7 @@ SweepBackend readBackend(const Checker& c, const Json& node, const std::string& 
   }
   if (node.contains("scenes")) {
     const std::string scenes_at = at(where, "scenes");
-    const Json& scenes = c.nonEmptyArray(node.at("scenes"), scenes_at);
+    const OrderedJson& scenes = c.nonEmptyArray(node.at("scenes"), scenes_at);
     for (std::size_t i = 0; i < scenes.size(); ++i) {
       if (!scenes[i].is_string() || scenes[i].get<std::string>().empty())
         c.fail(at(scenes_at, i), "expected a scene name");
@@ -109,8 +109,9 @@ SweepBackend readBackend(const Checker& c, const Json& node, const std::string& 
   return backend;
 }
 
-std::vector<double> readResolutions(const Checker& c, const Json& node, const std::string& where) {
-  const Json& list = c.nonEmptyArray(node, where);
+std::vector<double> readResolutions(const Checker& c, const OrderedJson& node,
+                                    const std::string& where) {
+  const OrderedJson& list = c.nonEmptyArray(node, where);
   std::vector<double> resolutions;
   for (std::size_t i = 0; i < list.size(); ++i) {
     if (!list[i].is_number() || !(list[i].get<double>() > 0.0) ||
@@ -122,9 +123,9 @@ std::vector<double> readResolutions(const Checker& c, const Json& node, const st
   return resolutions;
 }
 
-std::vector<NeedsMode> readNeedsModes(const Checker& c, const Json& node,
+std::vector<NeedsMode> readNeedsModes(const Checker& c, const OrderedJson& node,
                                       const std::string& where) {
-  const Json& list = c.nonEmptyArray(node, where);
+  const OrderedJson& list = c.nonEmptyArray(node, where);
   std::vector<NeedsMode> modes;
   for (std::size_t i = 0; i < list.size(); ++i) {
     const std::optional<NeedsMode> mode =
@@ -137,12 +138,12 @@ std::vector<NeedsMode> readNeedsModes(const Checker& c, const Json& node,
 
 // {"backends": ["obbtree", ...], "<grid_key>": [8, 32]}: a SweepComparison; `grid_key` names the
 // grid sizes ("tessellations", "resolutions"), each a whole number from `low` to 1024.
-void readComparison(const Checker& c, const Json& node, const std::string& where,
+void readComparison(const Checker& c, const OrderedJson& node, const std::string& where,
                     const char* grid_key, int low, SweepComparison& comparison) {
   c.allowKeys(node, where, {"backends", grid_key});
   if (node.contains("backends")) {
     const std::string backends_at = at(where, "backends");
-    const Json& list = c.nonEmptyArray(node.at("backends"), backends_at);
+    const OrderedJson& list = c.nonEmptyArray(node.at("backends"), backends_at);
     for (std::size_t i = 0; i < list.size(); ++i) {
       if (!list[i].is_string() || list[i].get<std::string>().empty())
         c.fail(at(backends_at, i), "expected a backend setting such as \"obbtree\"");
@@ -151,7 +152,7 @@ void readComparison(const Checker& c, const Json& node, const std::string& where
   }
   if (node.contains(grid_key)) {
     const std::string grid_at = at(where, grid_key);
-    const Json& list = c.nonEmptyArray(node.at(grid_key), grid_at);
+    const OrderedJson& list = c.nonEmptyArray(node.at(grid_key), grid_at);
     comparison.grid.clear();
     for (std::size_t i = 0; i < list.size(); ++i) {
       if (!list[i].is_number_integer() || list[i].get<long long>() < low ||
@@ -165,7 +166,7 @@ void readComparison(const Checker& c, const Json& node, const std::string& where
 
 // A list for every scene, or {"scene name": [..], "*": [..]}: per scene, "*" for the others.
 template <typename T, typename Read>
-void readPerScene(const Json& node, const std::string& where, Read read, const Checker& c,
+void readPerScene(const OrderedJson& node, const std::string& where, Read read, const Checker& c,
                   std::vector<T>& every_scene, std::map<std::string, std::vector<T>>& per_scene) {
   if (!node.is_object()) {
     every_scene = read(c, node, where);
@@ -181,7 +182,7 @@ void readPerScene(const Json& node, const std::string& where, Read read, const C
   }
 }
 
-Sweep readSweep(const Checker& c, const Json& root) {
+Sweep readSweep(const Checker& c, const OrderedJson& root) {
   c.allowKeys(root, "",
               {"backends", "resolutions", "needs", "limits", "repetitions", "rounds", "adaptive_s",
                "timeout_s", "protocol", "surfaces", "frep", "field"});
@@ -191,7 +192,7 @@ Sweep readSweep(const Checker& c, const Json& root) {
   if (root.contains("frep"))
     readComparison(c, root.at("frep"), "/frep", "resolutions", 2, sweep.frep);
   if (root.contains("backends")) {
-    const Json& list = c.nonEmptyArray(root.at("backends"), "/backends");
+    const OrderedJson& list = c.nonEmptyArray(root.at("backends"), "/backends");
     for (std::size_t i = 0; i < list.size(); ++i)
       sweep.backends.push_back(readBackend(c, list[i], at("/backends", i)));
   }
@@ -203,7 +204,7 @@ Sweep readSweep(const Checker& c, const Json& root) {
     readPerScene(root.at("needs"), "/needs", readNeedsModes, c, sweep.needs, sweep.scene_needs);
   if (root.contains("limits")) {
     sweep.limits.clear();
-    const Json& list = c.nonEmptyArray(root.at("limits"), "/limits");
+    const OrderedJson& list = c.nonEmptyArray(root.at("limits"), "/limits");
     for (std::size_t i = 0; i < list.size(); ++i) {
       if (!list[i].is_number_unsigned() && !(list[i].is_number_integer() && list[i] >= 0)) {
         c.fail(at("/limits", i), "expected a whole number >= 0 (0 = the scene's own limit)");
@@ -212,7 +213,7 @@ Sweep readSweep(const Checker& c, const Json& root) {
     }
   }
   if (root.contains("repetitions")) {
-    const Json& value = root.at("repetitions");
+    const OrderedJson& value = root.at("repetitions");
     if (!value.is_number_integer() || value.get<long long>() < 1 ||
         value.get<long long>() > 1000000) {
       c.fail("/repetitions", "expected a whole number from 1 to 1000000");
@@ -220,38 +221,38 @@ Sweep readSweep(const Checker& c, const Json& root) {
     sweep.repetitions = value.get<int>();
   }
   if (root.contains("rounds")) {
-    const Json& value = root.at("rounds");
+    const OrderedJson& value = root.at("rounds");
     if (!value.is_number_integer() || value.get<long long>() < 1 || value.get<long long>() > 100)
       c.fail("/rounds", "expected a whole number from 1 to 100");
     sweep.rounds = value.get<int>();
   }
   if (root.contains("adaptive_s")) {
-    const Json& value = root.at("adaptive_s");
+    const OrderedJson& value = root.at("adaptive_s");
     if (!value.is_number() || !(value.get<double>() >= 0.0))
       c.fail("/adaptive_s", "expected a number of seconds >= 0");
     sweep.adaptive_s = value.get<double>();
   }
   if (root.contains("protocol")) {
-    const Json& value = root.at("protocol");
+    const OrderedJson& value = root.at("protocol");
     if (!value.is_string() || !parseTimingProtocol(value.get<std::string>())) {
       c.fail("/protocol", R"(expected "repeated" or "cycled")");
     }
     sweep.protocol = value.get<std::string>();
   }
   if (root.contains("field")) {
-    const Json& field = root.at("field");
+    const OrderedJson& field = root.at("field");
     c.allowKeys(field, "/field", {"ours", "peer"});
     for (auto [key, side] :
          {std::make_pair("ours", &sweep.field.ours), std::make_pair("peer", &sweep.field.peer)}) {
       if (!field.contains(key)) continue;
-      const Json& value = field.at(key);
+      const OrderedJson& value = field.at(key);
       if (!value.is_string() || value.get<std::string>().empty())
         c.fail(std::string("/field/") + key, "expected a backend name");
       *side = value.get<std::string>();
     }
   }
   if (root.contains("timeout_s")) {
-    const Json& value = root.at("timeout_s");
+    const OrderedJson& value = root.at("timeout_s");
     if (!value.is_number() || !(value.get<double>() > 0.0)) {
       c.fail("/timeout_s", "expected a positive number of seconds");
     }
@@ -319,9 +320,9 @@ Result<Sweep> parseSweep(const std::string& text, const std::string& label) {
   if (Result<nlohmann::json> strict = parseJsonDocument(text, label); !strict.ok())
     return strict.status();
   try {
-    const Json root = Json::parse(text);
+    const OrderedJson root = OrderedJson::parse(text);
     return readSweep(Checker(label), root);
-  } catch (const Json::parse_error& e) {
+  } catch (const OrderedJson::parse_error& e) {
     return Status(StatusCode::kInvalidArgument,
                   label + ": not valid JSON (byte " + std::to_string(e.byte) + "): " + e.what());
   } catch (const SweepError& e) {

@@ -8,6 +8,7 @@
 
 #include <collido/constraints/solve.h>
 
+#include "support/numbers.h"
 #include "unit/constraints/constraint_test_support.h"
 
 namespace collido::constraints {
@@ -15,7 +16,7 @@ namespace {
 
 using testing::kOrigin;
 
-constexpr double kPi = 3.14159265358979323846;
+using test::kPi;
 
 Pose at(double x, double y, double z) {
   Pose pose = Pose::Identity();

@@ -11,11 +11,12 @@
 #include <gtest/gtest.h>
 
 #include "support/mesh_checks.h"
+#include "support/numbers.h"
 
 namespace collido {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using test::kPi;
 
 using test::build;
 using test::enclosedVolume;

@@ -13,11 +13,12 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+#include "support/numbers.h"
 
 namespace collido {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using test::kPi;
 
 using test::boundingBox;
 using test::build;

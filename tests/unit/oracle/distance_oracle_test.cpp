@@ -24,9 +24,7 @@ namespace {
 using Json = nlohmann::json;
 using Triangle = std::array<Eigen::Vector3d, 3>;
 
-Eigen::Vector3d vec(const Json& j) {
-  return {j[0].get<double>(), j[1].get<double>(), j[2].get<double>()};
-}
+using test::jsonVector;
 
 Triangle randomTriangle(std::mt19937_64& rng, double spread) {
   std::uniform_real_distribution<double> u(-spread, spread);
@@ -219,8 +217,8 @@ TEST(MeshDistance, MatchesTheExactDistancesOfTheFortyEnvRobPoses) {
     EXPECT_EQ(exactPairSquaredDistance(env.value(), pose, rob.value(), Pose::Identity(), pair),
               exactPairSquaredDistance(env.value(), pose, rob.value(), Pose::Identity(), d.pair))
         << c["id"];
-    EXPECT_NEAR((d.point_a - vec(c["closest_points_world"][0])).norm() +
-                    (d.point_b - vec(c["closest_points_world"][1])).norm(),
+    EXPECT_NEAR((d.point_a - jsonVector(c["closest_points_world"][0])).norm() +
+                    (d.point_b - jsonVector(c["closest_points_world"][1])).norm(),
                 0.0, d.pair == pair ? 1e-9 : 1e300)
         << c["id"];
   }
@@ -237,8 +235,8 @@ TEST(MeshDistance, MatchesFclsKissingCubesAtOneEMinus15) {
   for (const Json& c : cases) {
     if (c["shapes"][0]["type"] != "box") continue;
     SCOPED_TRACE(c["id"].get<std::string>());
-    Result<TriangleMesh> a = makeBox(BoxParams{vec(c["shapes"][0]["size"])});
-    Result<TriangleMesh> b = makeBox(BoxParams{vec(c["shapes"][1]["size"])});
+    Result<TriangleMesh> a = makeBox(BoxParams{jsonVector(c["shapes"][0]["size"])});
+    Result<TriangleMesh> b = makeBox(BoxParams{jsonVector(c["shapes"][1]["size"])});
     ASSERT_TRUE(a.ok() && b.ok());
     const Pose pose_a = test::peerCasePose(c["shapes"][0]);
     const Pose pose_b = test::peerCasePose(c["shapes"][1]);

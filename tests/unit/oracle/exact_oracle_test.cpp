@@ -25,12 +25,10 @@ Json readJson(const std::string& relative) {
   return Json::parse(in);
 }
 
-Eigen::Vector3d vec(const Json& j) {
-  return {j[0].get<double>(), j[1].get<double>(), j[2].get<double>()};
-}
+using test::jsonVector;
 
 Triangle triangle(const Json& j) {
-  return {vec(j[0]), vec(j[1]), vec(j[2])};
+  return {jsonVector(j[0]), jsonVector(j[1]), jsonVector(j[2])};
 }
 
 TriangleMesh meshOf(const std::vector<Triangle>& triangles) {

@@ -1,5 +1,5 @@
-// The poses of the env/rob peer case (tests/data/peer_cases/fcl_env_rob_poses.json), shared by
-// the oracle's tests.
+// The poses of the env/rob peer case (tests/data/peer_cases/fcl_env_rob_poses.json) and the
+// points of the peer cases' JSON, shared by the oracle's tests.
 #pragma once
 
 #include <nlohmann/json.hpp>
@@ -7,6 +7,11 @@
 #include <collido/geometry.h>
 
 namespace collido::test {
+
+/// A point written as [x, y, z].
+inline Eigen::Vector3d jsonVector(const nlohmann::json& j) {
+  return {j[0].get<double>(), j[1].get<double>(), j[2].get<double>()};
+}
 
 /// The pose of one case: "R" (row-major rotation) and "t".
 inline Pose peerCasePose(const nlohmann::json& c) {

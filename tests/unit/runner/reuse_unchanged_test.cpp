@@ -14,7 +14,7 @@ namespace {
 
 // A ring held still in frames 2 to 4 (3 and 4 are as the frame before), through a fixed one;
 // a third ring pulsates, so it is never as it was.
-constexpr const char* kScene = R"({"name": "held", "frames": 6, "objects": [
+constexpr const char* kHeldScene = R"({"name": "held", "frames": 6, "objects": [
   {"name": "a", "shape": {"generator": "torus", "minor_radius": 0.3, "major_segments": 16,
                           "minor_segments": 8}},
   {"name": "b", "shape": {"generator": "torus", "minor_radius": 0.3, "major_segments": 16,
@@ -40,7 +40,7 @@ RunReport run(const Scene& scene, TimingProtocol protocol, bool reuse, bool skip
 }
 
 TEST(ReuseUnchanged, HeldFramesTakeTheAnswerBeforeAndAgreeWithTheOracle) {
-  const Result<Scene> scene = parseScene(kScene, "held.json", ".");
+  const Result<Scene> scene = parseScene(kHeldScene, "held.json", ".");
   ASSERT_TRUE(scene.ok()) << scene.status().toString();
   for (const TimingProtocol protocol : {TimingProtocol::kRepeated, TimingProtocol::kCycled}) {
     SCOPED_TRACE(timingProtocolName(protocol));
@@ -98,7 +98,7 @@ TEST(ReuseUnchanged, HeldFramesTakeTheAnswerBeforeAndAgreeWithTheOracle) {
 // A query asked in frames 1 and 3 only compares frame 3 with frame 1, not with frame 2: ring b
 // moves from frame 1 to 2 and holds from 2 to 3, so frame 3 is asked again, not reused.
 TEST(ReuseUnchanged, AQueryAskedInSomeFramesComparesWithTheLastItAsked) {
-  nlohmann::json json = nlohmann::json::parse(kScene);
+  nlohmann::json json = nlohmann::json::parse(kHeldScene);
   json["queries"] = nlohmann::json::parse(
       R"([{"name": "gaps", "a": "a", "b": "b", "kind": "all_pairs", "frames": [[1, 1], [3, 3]]}])");
   const Result<Scene> scene = parseScene(json.dump(), "gaps.json", ".");

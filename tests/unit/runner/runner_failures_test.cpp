@@ -13,17 +13,17 @@ namespace collido {
 namespace {
 
 // Two spheres far apart, the second pulsating, 3 frames: every answer is "apart".
-constexpr const char* kScene = R"({"name": "apart", "frames": 3, "objects": [
+constexpr const char* kPulsatingScene = R"({"name": "apart", "frames": 3, "objects": [
   {"name": "a", "shape": {"generator": "sphere", "slices": 6, "stacks": 3}},
   {"name": "b", "shape": {"generator": "sphere", "slices": 6, "stacks": 3},
    "pose": {"translation": [5, 0, 0]},
    "deform": {"rules": [{"pulsate": {"amplitude": 0.05, "period": 3}}]}}],
   "queries": [{"name": "pairs", "a": "a", "b": "b", "kind": "all_pairs"}]})";
 
-// The one measurement of kScene on the scripted backend with `script` under `protocol`.
+// The one measurement of kPulsatingScene on the scripted backend with `script` under `protocol`.
 QueryMeasurement measure(const std::map<std::string, std::string>& script,
                          TimingProtocol protocol) {
-  const Result<Scene> scene = parseScene(kScene, "apart.json", ".");
+  const Result<Scene> scene = parseScene(kPulsatingScene, "apart.json", ".");
   EXPECT_TRUE(scene.ok()) << scene.status().toString();
   RunOptions options = test::repeated(2);
   options.protocol = protocol;

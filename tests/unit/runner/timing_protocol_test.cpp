@@ -13,7 +13,7 @@ namespace collido {
 namespace {
 
 // A rigid ring through a pulsating one, 4 frames.
-constexpr const char* kScene = R"({"name": "rings", "frames": 4, "objects": [
+constexpr const char* kRingsScene = R"({"name": "rings", "frames": 4, "objects": [
   {"name": "a", "shape": {"generator": "torus", "minor_radius": 0.3, "major_segments": 16,
                           "minor_segments": 8}},
   {"name": "b", "shape": {"generator": "torus", "minor_radius": 0.3, "major_segments": 16,
@@ -31,7 +31,7 @@ RunReport run(const Scene& scene, TimingProtocol protocol) {
 }
 
 TEST(TimingProtocol, CycledTimesEveryFrameAndAnswersAlike) {
-  const Result<Scene> scene = parseScene(kScene, "rings.json", ".");
+  const Result<Scene> scene = parseScene(kRingsScene, "rings.json", ".");
   ASSERT_TRUE(scene.ok()) << scene.status().toString();
   const RunReport repeated = run(scene.value(), TimingProtocol::kRepeated);
   const RunReport cycled = run(scene.value(), TimingProtocol::kCycled);

@@ -15,7 +15,7 @@
 namespace collido {
 namespace {
 
-constexpr const char* kScene = R"({"name": "apart", "frames": 2, "objects": [
+constexpr const char* kTwoFrameScene = R"({"name": "apart", "frames": 2, "objects": [
   {"name": "a", "shape": {"generator": "sphere", "slices": 6, "stacks": 3}},
   {"name": "b", "shape": {"generator": "sphere", "slices": 6, "stacks": 3},
    "pose": {"translation": [5, 0, 0]}}],
@@ -31,7 +31,7 @@ std::optional<double> figure(const QueryMeasurement& m, const std::string& name)
 }
 
 TEST(WitnessGapCheck, IsTheLargestMissOfTheReportedPointsOnDistanceQueriesOnly) {
-  const Result<Scene> scene = parseScene(kScene, "apart.json", ".");
+  const Result<Scene> scene = parseScene(kTwoFrameScene, "apart.json", ".");
   ASSERT_TRUE(scene.ok()) << scene.status().toString();
   const RunReport report = runScene(
       scene.value(), BackendSpec{test::scriptedBackend(), "scripted", {{"distance", "0.25"}}},

@@ -10,11 +10,12 @@
 #include <Eigen/Geometry>
 
 #include <collido/mesh/procedural.h>
+#include "support/numbers.h"
 
 namespace collido {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using test::kPi;
 
 TriangleMesh points(const Eigen::Matrix3Xd& vertices) {
   TriangleMesh mesh;

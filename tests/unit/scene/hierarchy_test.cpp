@@ -41,7 +41,7 @@ void expectNear(const Pose& actual, const Pose& expected, const std::string& wha
       << expected.matrix();
 }
 
-Result<Scene> parse(const std::string& text) {
+Result<Scene> parseHierarchyText(const std::string& text) {
   return parseScene(text, "hierarchy.json", ".");
 }
 
@@ -63,7 +63,7 @@ const char* const kChain = R"({"name": "chain", "frames": 5, "objects": [
   "queries": [{"a": "link", "b": "other", "kind": "boolean"}]})";
 
 TEST(SceneHierarchy, ComposedPosesEqualTheHandComputedOnes) {
-  const Result<Scene> loaded = parse(kChain);
+  const Result<Scene> loaded = parseHierarchyText(kChain);
   ASSERT_TRUE(loaded.ok()) << loaded.status().toString();
   const Scene& scene = loaded.value();
   ASSERT_EQ(scene.objects.size(), 4u);
@@ -102,7 +102,7 @@ TEST(SceneHierarchy, ComposedPosesEqualTheHandComputedOnes) {
 }
 
 TEST(SceneHierarchy, SubtreesHoldTheRootAndEverythingMountedOnIt) {
-  const Result<Scene> loaded = parse(kChain);
+  const Result<Scene> loaded = parseHierarchyText(kChain);
   ASSERT_TRUE(loaded.ok()) << loaded.status().toString();
   const Scene& scene = loaded.value();
   EXPECT_EQ(scene.subtree(2), (std::vector<std::size_t>{0, 1, 2}));
@@ -112,7 +112,7 @@ TEST(SceneHierarchy, SubtreesHoldTheRootAndEverythingMountedOnIt) {
 }
 
 TEST(SceneHierarchy, StaticChildOfAStaticParentKeepsOnePose) {
-  const Result<Scene> loaded = parse(R"({"objects": [
+  const Result<Scene> loaded = parseHierarchyText(R"({"objects": [
     {"name": "p", "shape": {"generator": "box"}, "pose": {"translation": [1, 0, 0]}},
     {"name": "c", "parent": "p", "shape": {"generator": "box"}, "pose": {"translation": [0, 2, 0]}}],
     "frames": 3, "queries": [{"a": "p", "b": "c", "kind": "boolean"}]})");
@@ -124,7 +124,7 @@ TEST(SceneHierarchy, StaticChildOfAStaticParentKeepsOnePose) {
 // A child of a tracked object follows the recovered poses in every query and keeps the true
 // ones beside them: the truth scene puts it where the true motion does.
 TEST(SceneHierarchy, AChildOfATrackedObjectFollowsItsRecoveredAndTruePoses) {
-  const Result<Scene> loaded = parse(R"({"frames": 4, "objects": [
+  const Result<Scene> loaded = parseHierarchyText(R"({"frames": 4, "objects": [
     {"name": "carrier", "shape": {"generator": "sphere", "radius": 0.3, "slices": 8, "stacks": 4},
      "motion": {"linear": {"from": {"translation": [-1, 0, 0]},
                            "to": {"translation": [1, 0, 0], "rotation": {"axis": [0, 1, 0], "degrees": 40}}}},
@@ -170,7 +170,7 @@ TEST(SceneHierarchy, ARandomMotionOnAMountedObjectPlacesItInTheWorld) {
   const auto with = [&](const std::string& parent) {
     std::string text = R"({"frames": 6, "objects": [)" + objects;
     text.replace(text.find("PARENT"), 6, parent);
-    return parse(text);
+    return parseHierarchyText(text);
   };
   const Result<Scene> mounted = with(R"("parent": "hub",)");
   const Result<Scene> free = with("");
@@ -196,7 +196,7 @@ TEST(SceneHierarchy, ARandomMotionOnAMountedObjectPlacesItInTheWorld) {
 // object's frame), larger than the carrier's own since it lies further from the markers; a
 // grandchild inherits it too, and at the true poses no tracking moves anything.
 TEST(SceneHierarchy, ObjectsOnATrackedObjectSpreadWithItsFit) {
-  const Result<Scene> loaded = parse(R"({"frames": 3, "objects": [
+  const Result<Scene> loaded = parseHierarchyText(R"({"frames": 3, "objects": [
     {"name": "carrier", "shape": {"generator": "sphere", "radius": 0.3, "slices": 8, "stacks": 4},
      "motion": {"linear": {"from": {"translation": [-1, 0, 0]}, "to": {"translation": [1, 0, 0]}}},
      "markers": {"layout": {"1": [0.2, 0.2, 0.2], "2": [-0.2, 0.2, -0.2], "3": [0.2, -0.2, -0.2],
@@ -268,7 +268,7 @@ const char* const kModules = R"({"frames": 9, "objects": [
     {"a": "panel_a", "b": "arm", "kind": "all_pairs"}]})";
 
 TEST(SceneHierarchy, ASubtreeQueryAnswersTheUnionOfItsPairs) {
-  const Result<Scene> loaded = parse(kModules);
+  const Result<Scene> loaded = parseHierarchyText(kModules);
   ASSERT_TRUE(loaded.ok()) << loaded.status().toString();
   const Scene& scene = loaded.value();
   const SceneQuery& subtrees = scene.queries[0];
@@ -315,7 +315,7 @@ TEST(SceneHierarchy, AmongTakesSubtrees) {
   text.insert(
       at,
       R"({"name": "pile", "among": [{"subtree": "module_b"}, "panel_a"], "kind": "all_pairs"},)");
-  const Result<Scene> loaded = parse(text);
+  const Result<Scene> loaded = parseHierarchyText(text);
   ASSERT_TRUE(loaded.ok()) << loaded.status().toString();
   const SceneQuery& pile = loaded.value().queries[0];
   EXPECT_EQ(pile.among, (std::vector<std::size_t>{1, 2, 3}));

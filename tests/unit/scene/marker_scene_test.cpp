@@ -40,7 +40,7 @@ std::string trackedScene(const std::string& markers) {
 const std::string kLayout =
     R"("layout": {"1": [0.2, 0.2, 0.2], "2": [-0.2, 0.2, -0.2], "3": [0.2, -0.2, -0.2], "4": [-0.2, -0.2, 0.2]})";
 
-Result<Scene> parse(const std::string& markers, const std::string& directory = ".") {
+Result<Scene> parseWithMarkers(const std::string& markers, const std::string& directory = ".") {
   return parseScene(trackedScene(markers), "tracked.json", directory);
 }
 
@@ -56,8 +56,8 @@ void writeText(const std::string& path, const std::string& text) {
 TEST(MarkerScene, WithoutNoiseTheRecoveredPosesAreTheTrueOnes) {
   for (const char* solver : {"rigid", "affine"}) {
     SCOPED_TRACE(solver);
-    const Result<Scene> scene =
-        parse("{" + kLayout + R"(, "generate": {"noise": 0}, "solver": ")" + solver + R"("})");
+    const Result<Scene> scene = parseWithMarkers(
+        "{" + kLayout + R"(, "generate": {"noise": 0}, "solver": ")" + solver + R"("})");
     ASSERT_TRUE(scene.ok()) << scene.status().message();
     const SceneObject& box = scene.value().objects[1];
     ASSERT_TRUE(box.tracking);
@@ -151,7 +151,7 @@ TEST(MarkerScene, TracksFileErrorsNameTheFileAndLine) {
 
 TEST(MarkerScene, SceneErrorsNameTheJsonPath) {
   const auto expect = [](const std::string& markers, const std::string& words) {
-    const Result<Scene> scene = parse(markers);
+    const Result<Scene> scene = parseWithMarkers(markers);
     ASSERT_FALSE(scene.ok()) << "expected: " << words;
     EXPECT_NE(scene.status().message().find(words), std::string::npos) << scene.status().message();
   };
@@ -178,7 +178,7 @@ TEST(MarkerScene, SceneErrorsNameTheJsonPath) {
 TEST(MarkerScene, ALostFrameHoldsThePreviousPose) {
   const std::string directory = std::filesystem::temp_directory_path().string();
   // Frame 2 sees two markers only: lost; the others see all four, exactly.
-  const Result<Scene> truth = parse("{" + kLayout + R"(, "generate": {}})");
+  const Result<Scene> truth = parseWithMarkers("{" + kLayout + R"(, "generate": {}})");
   ASSERT_TRUE(truth.ok());
   const SceneObject& box = truth.value().objects[1];
   MarkerTracks tracks(6);
@@ -190,7 +190,7 @@ TEST(MarkerScene, ALostFrameHoldsThePreviousPose) {
   }
   ASSERT_TRUE(writeMarkerTracks(directory + "/collido_lost.csv", {{"box", tracks}}).ok());
   const Result<Scene> scene =
-      parse("{" + kLayout + R"(, "tracks": "collido_lost.csv"})", directory);
+      parseWithMarkers("{" + kLayout + R"(, "tracks": "collido_lost.csv"})", directory);
   ASSERT_TRUE(scene.ok()) << scene.status().message();
   const SceneObject& tracked = scene.value().objects[1];
   EXPECT_TRUE(tracked.tracking->frames[2].lost);
@@ -208,9 +208,9 @@ TEST(MarkerScene, OutlierRejectionKeepsThePoseClose) {
                     "4": [-0.2, -0.2, 0.2], "5": [0.2, 0.2, -0.2], "6": [-0.2, -0.2, -0.2]})";
   const std::string generate =
       R"("generate": {"noise": 0.0005, "outliers": 0.15, "outlier_offset": 0.1, "seed": 4})";
-  const Result<Scene> naive = parse("{" + layout + ", " + generate + "}");
+  const Result<Scene> naive = parseWithMarkers("{" + layout + ", " + generate + "}");
   const Result<Scene> robust =
-      parse("{" + layout + ", " + generate + R"(, "reject_outliers": 0.01})");
+      parseWithMarkers("{" + layout + ", " + generate + R"(, "reject_outliers": 0.01})");
   ASSERT_TRUE(naive.ok() && robust.ok());
   const TrackingSummary with = summarizeTracking(robust.value().objects[1]);
   const TrackingSummary without = summarizeTracking(naive.value().objects[1]);

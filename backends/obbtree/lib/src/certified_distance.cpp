@@ -23,7 +23,7 @@ namespace {
 using Vec = Eigen::Vector3d;
 using Triangle = std::array<Vec, 3>;
 
-constexpr double kU = 0x1p-53;
+constexpr double kUnitRoundoff = 0x1p-53;
 // Relative bounds fail where products and sums underflow; this covers what they can lose.
 constexpr double kTiny = 1e-290;
 
@@ -31,7 +31,7 @@ double pointRounding(const Triangle& t) {
   double largest = 0.0;
   for (const Vec& p : t)
     largest = std::max(largest, p.lpNorm<1>());
-  return 40.0 * kU * largest + kTiny;
+  return 40.0 * kUnitRoundoff * largest + kTiny;
 }
 
 // The point of t's face nearest to p, when p's projection falls inside t (barycentric
@@ -110,8 +110,9 @@ CertifiedDistance certifiedTriangleDistance(const Triangle& a, const Triangle& b
   answer.point_a = best.on_a;
   answer.point_b = best.on_b;
   const double computed = std::sqrt(best.squared);
-  answer.upper = (computed * (1.0 + 4.0 * kU) + pointRounding(a) + pointRounding(b) + b_error) *
-                 (1.0 + 4.0 * kU);
+  answer.upper =
+      (computed * (1.0 + 4.0 * kUnitRoundoff) + pointRounding(a) + pointRounding(b) + b_error) *
+      (1.0 + 4.0 * kUnitRoundoff);
   if (!std::isfinite(answer.upper)) {
     answer.upper = std::numeric_limits<double>::infinity();
     return answer;  // lower 0: the caller decides exactly
@@ -126,10 +127,12 @@ CertifiedDistance certifiedTriangleDistance(const Triangle& a, const Triangle& b
     double rounding = 0.0;
     const double max_a = extremeProjection(n, a, best.on_a, /*largest=*/true, rounding);
     const double min_b = extremeProjection(n, b, best.on_a, /*largest=*/false, rounding);
-    const double gap = (min_b - max_a) * (1.0 - kU) - 2.0 * 6.0 * kU * rounding * (1.0 + kU);
+    const double gap = (min_b - max_a) * (1.0 - kUnitRoundoff) -
+                       2.0 * 6.0 * kUnitRoundoff * rounding * (1.0 + kUnitRoundoff);
     if (gap > 0.0) {
       const double lower =
-          (gap / (length * (1.0 + 3.0 * kU))) * (1.0 - 2.0 * kU) - b_error * (1.0 + kU) - kTiny;
+          (gap / (length * (1.0 + 3.0 * kUnitRoundoff))) * (1.0 - 2.0 * kUnitRoundoff) -
+          b_error * (1.0 + kUnitRoundoff) - kTiny;
       answer.lower = std::max(0.0, lower);
     }
   }
