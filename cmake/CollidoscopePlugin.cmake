@@ -27,5 +27,10 @@ function(collido_plugin_module_settings target)
     PREFIX "lib"
     CXX_VISIBILITY_PRESET hidden
     VISIBILITY_INLINES_HIDDEN ON)
-  target_link_options(${target} PRIVATE -Wl,--exclude-libs,ALL -Wl,--no-undefined)
+  target_link_options(${target} PRIVATE -Wl,--exclude-libs,ALL)
+  # Clang links its sanitizer runtimes into executables only, so an instrumented plugin's calls into
+  # them resolve when it is loaded: the sanitizer build leaves this check to the ordinary one.
+  if(NOT COLLIDO_SANITIZE)
+    target_link_options(${target} PRIVATE -Wl,--no-undefined)
+  endif()
 endfunction()

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Bounded fuzzing: builds the libFuzzer targets of tests/fuzz/ (the 'fuzz' preset: clang, ASan +
-# UBSan) and runs each for SECONDS over a scratch copy of its seed corpus, so tests/fuzz/corpus/
+# Bounded fuzzing: builds the libFuzzer targets of tests/fuzz/ in the sanitizer build (the 'asan'
+# preset: clang, ASan + UBSan, coverage instrumentation; the test suite's build too, so nothing is
+# compiled twice) and runs each for SECONDS over a scratch copy of its seed corpus, so tests/fuzz/corpus/
 # is never written. Fails when any target crashes, leaks, hits undefined behaviour, breaks its
 # own check, takes more than 30 s on one input or more than 2 GB of memory.
 # Usage: tools/fuzz.sh [SECONDS per target, default 60] [TARGET...]  (default: every target)
@@ -11,9 +12,9 @@
 # depends on the code alone, and a longer run with the same seed here covers what CI will try.
 # Exploring with new seeds (the default) is how new findings are made; each becomes a
 # regression seed in tests/fuzz/corpus/.
-# Each run leaves build/fuzz/runs/<target>/: log.txt, corpus/ (seeds plus what the run added)
-# and artifacts/ (crash-*, leak-*, timeout-*, oom-*: reproducers; replay one with
-# build/fuzz/fuzzers/<target> FILE). docs/FUZZING.md says what each target checks.
+# Each run leaves build/asan/fuzz_runs/<target>/: log.txt, corpus/ (seeds plus what the run
+# added) and artifacts/ (crash-*, leak-*, timeout-*, oom-*: reproducers; replay one with
+# build/asan/fuzzers/<target> FILE). docs/FUZZING.md says what each target checks.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds="${1:-60}"
@@ -27,11 +28,11 @@ if ! [[ "$seconds" =~ ^[0-9]+$ ]] || [[ "$seconds" -eq 0 ]]; then
   exit 2
 fi
 
-tools/configure.sh fuzz -j "${COLLIDO_FUZZ_JOBS:-$(nproc)}"
+tools/configure.sh asan --target collido_fuzzers -j "${COLLIDO_FUZZ_JOBS:-$(nproc)}"
 
 export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1}"
 for target in "${targets[@]}"; do
-  if [[ ! -x "build/fuzz/fuzzers/$target" || ! -d "tests/fuzz/corpus/$target" ]]; then
+  if [[ ! -x "build/asan/fuzzers/$target" || ! -d "tests/fuzz/corpus/$target" ]]; then
     echo "error: no fuzz target '$target' (or no tests/fuzz/corpus/$target)" >&2
     exit 2
   fi
@@ -39,8 +40,8 @@ done
 
 # One target's run; its exit status is left in $run/status, read when every run has ended.
 fuzz_target() {
-  local target="$1" fuzzer="build/fuzz/fuzzers/$1" seeds="tests/fuzz/corpus/$1"
-  local run="build/fuzz/runs/$1" status=0 seed=()
+  local target="$1" fuzzer="build/asan/fuzzers/$1" seeds="tests/fuzz/corpus/$1"
+  local run="build/asan/fuzz_runs/$1" status=0 seed=()
   [[ -n "${COLLIDO_FUZZ_SEED:-}" ]] && seed=(-seed="$COLLIDO_FUZZ_SEED")
   "$fuzzer" "$run/corpus" -max_total_time="$seconds" -timeout=30 -rss_limit_mb=2048 \
     "${seed[@]}" -print_final_stats=1 -artifact_prefix="$run/artifacts/" \
@@ -54,7 +55,7 @@ parallel="${COLLIDO_FUZZ_PARALLEL:-$(nproc)}"
 running=0
 for target in "${targets[@]}"; do
   seeds="tests/fuzz/corpus/$target"
-  run="build/fuzz/runs/$target"
+  run="build/asan/fuzz_runs/$target"
   rm -rf "$run"
   mkdir -p "$run/corpus" "$run/artifacts"
   cp -R "$seeds/." "$run/corpus/"
@@ -73,7 +74,7 @@ summary=()
 failed=0
 for target in "${targets[@]}"; do
   seeds="tests/fuzz/corpus/$target"
-  run="build/fuzz/runs/$target"
+  run="build/asan/fuzz_runs/$target"
   status=$(cat "$run/status" 2>/dev/null || echo "?")
   runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$run/log.txt" | tail -n 1)
   coverage=$(grep -oE 'cov: [0-9]+' "$run/log.txt" | tail -n 1 | cut -d' ' -f2)

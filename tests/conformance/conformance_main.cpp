@@ -1,7 +1,7 @@
 // collido_conformance: the plugin conformance kit.
 //   collido_conformance --plugin=PATH.so [--plugin=...] [--variant='NAME[key=value;...]']
 //                       [--expectations-dir=DIR] [--write-expectations-dir=DIR] [--scenes-dir=DIR]
-//                       [--oracle-cache=DIR | --fill-oracle-cache=DIR]
+//                       [--oracle-cache=DIR] [--fill-oracle-cache=DIR]
 //                       [--skip-scenes=STEM,STEM...] [--progress] [GoogleTest flags]
 // --progress replaces GoogleTest's output with one line per check as it ends ("[3/40] check:
 // pass"), which collido conformance shows while the kit runs.
@@ -9,8 +9,10 @@
 // --skip-scenes leaves bundled scenes out (the sanitizer build leaves the heaviest ones to the
 // Release run: tests/conformance/CMakeLists.txt).
 // The exact oracle's answers are most of a run's time; CTest runs one plugin first with
-// --fill-oracle-cache (computed afresh, written at the end) and the others with --oracle-cache
-// (read for the identical scenes, the rest computed), so each scene's are computed once.
+// --fill-oracle-cache (written at the end) and the others with --oracle-cache (read for the
+// identical scenes, the rest computed), so each scene's are computed once. Both together: the
+// filling run starts from another store (the sanitizer build's, from the Release build's).
+// Scenes load when a test first needs them, so a listing or the interface tests alone load none.
 #include <cstring>
 #include <filesystem>
 #include <iostream>
@@ -164,12 +166,11 @@ int main(int argc, char** argv) {
   // them, the other plugins' runs read them.
   const std::string store = !fill_oracle_cache.empty() ? fill_oracle_cache : oracle_cache;
   if (collido::Status s = loadSceneCases(settings().scenes_dir, skipped_scenes,
-                                         store.empty() ? "" : store + "/placements");
+                                         store.empty() ? "" : store + "/placements", oracle_cache);
       !s.ok()) {
     std::cerr << "collido_conformance: " << s.message() << "\n";
     return 2;
   }
-  if (!oracle_cache.empty()) readStoredOracleAnswers(oracle_cache);
   int rest_count = static_cast<int>(rest.size());
   rest.push_back(nullptr);  // argv[argc] is null, and GoogleTest moves it along with the flags
   ::testing::InitGoogleTest(&rest_count, rest.data());

@@ -478,6 +478,8 @@ TEST_P(SceneAnswers, MatchTheOracleOrTheRecordedExpectations) {
   Result<Expectations> expectations =
       loadExpectations(settings().expectations_dir, target().variant);
   ASSERT_TRUE(expectations.ok()) << expectations.status().message();
+  const Status loaded = loadSceneCase(sceneCases()[std::get<1>(GetParam())]);
+  ASSERT_TRUE(loaded.ok()) << loaded.message();
   const BackendSpec spec{target().library, target().variant, target().options};
   RunOptions options;
   options.repetitions = 0;  // answers only; timing belongs to the study

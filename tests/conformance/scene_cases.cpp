@@ -7,6 +7,9 @@
 #include <filesystem>
 #include <iostream>
 
+#include <nlohmann/json.hpp>
+
+#include <collido/io/files.h>
 #include <collido/study/oracle_store.h>
 
 namespace collido::conformance {
@@ -54,6 +57,30 @@ constexpr const char* kKitScenes[] = {
                     {"name": "boolean", "a": "gear", "b": "ball", "kind": "boolean"}]})",
 };
 
+/// Where loadSceneCase finds placements and stored answers (loadSceneCases sets them).
+struct Sources {
+  std::string directory;
+  std::string placement_store;
+  std::string oracle_answers;
+};
+
+Sources& sources() {
+  static Sources s;
+  return s;
+}
+
+/// The scene's name as the loader gives it (its "name", else the stem of `label`, the file), or an
+/// error naming `label`.
+Result<std::string> sceneName(const nlohmann::json& json, const std::string& label) {
+  if (!json.is_object()) {
+    return Status(StatusCode::kInvalidArgument, label + ": not a scene (a JSON object)");
+  }
+  const auto name = json.find("name");
+  if (name != json.end() && name->is_string() && !name->get<std::string>().empty())
+    return name->get<std::string>();
+  return std::filesystem::path(label).stem().string();
+}
+
 }  // namespace
 
 std::vector<SceneCase>& sceneCases() {
@@ -61,12 +88,34 @@ std::vector<SceneCase>& sceneCases() {
   return cases;
 }
 
-void readStoredOracleAnswers(const std::string& directory) {
-  for (SceneCase& c : sceneCases()) {
-    const std::string path = study::oracleStorePath(directory, *c.oracle);
+Status loadSceneCase(SceneCase& c) {
+  if (c.loaded) return *c.loaded;
+  SceneLoadOptions load;
+  load.placement_store = sources().placement_store;
+  Result<Scene> scene = c.path.empty()
+                            ? parseScene(c.text, "conformance kit scene", sources().directory)
+                            : loadScene(c.path, load);
+  if (!scene.ok()) {
+    c.loaded = scene.status();
+    return *c.loaded;
+  }
+  if (scene.value().name != c.name) {  // the listing read the name another way than the loader
+    c.loaded = Status(StatusCode::kInvalidArgument, c.path + ": the loader names the scene '" +
+                                                        scene.value().name + "', the listing '" +
+                                                        c.name + "'");
+    return *c.loaded;
+  }
+  c.scene = std::make_shared<const Scene>(std::move(scene).value());
+  c.oracle = std::make_shared<OracleCache>(*c.scene);
+  std::error_code ec;
+  if (!sources().oracle_answers.empty() &&
+      std::filesystem::is_directory(sources().oracle_answers, ec)) {
+    const std::string path = study::oracleStorePath(sources().oracle_answers, *c.oracle);
     if (Status s = study::loadOracleAnswers(path, *c.oracle); !s.ok())
       std::cerr << "collido_conformance: " << s.message() << "; computing the answers afresh\n";
   }
+  c.loaded = Status();
+  return *c.loaded;
 }
 
 Status storeOracleAnswers(const std::string& directory) {
@@ -74,6 +123,7 @@ Status storeOracleAnswers(const std::string& directory) {
   std::filesystem::create_directories(directory, ec);
   if (ec) return {StatusCode::kInvalidArgument, directory + ": " + ec.message()};
   for (const SceneCase& c : sceneCases()) {
+    if (!c.oracle) continue;
     const std::string path = study::oracleStorePath(directory, *c.oracle);
     if (Status s = study::saveOracleAnswers(path, *c.oracle); !s.ok()) return s;
   }
@@ -81,7 +131,8 @@ Status storeOracleAnswers(const std::string& directory) {
 }
 
 Status loadSceneCases(const std::string& directory, const std::set<std::string>& skipped,
-                      const std::string& placement_store) {
+                      const std::string& placement_store, const std::string& oracle_answers) {
+  sources() = {directory, placement_store, oracle_answers};
   std::vector<std::string> files;
   std::set<std::string> not_found = skipped;
   std::error_code ec;
@@ -97,24 +148,27 @@ Status loadSceneCases(const std::string& directory, const std::set<std::string>&
             directory + ": --skip-scenes names no scene file '" + *not_found.begin() + ".json'"};
   }
   std::sort(files.begin(), files.end());
-  const auto add = [](Result<Scene> scene, const std::string& path) -> Status {
-    if (!scene.ok()) return scene.status();
+  const auto add = [](const nlohmann::json& json, const std::string& label, const std::string& path,
+                      const std::string& kit_text) -> Status {
+    Result<std::string> name = sceneName(json, label);
+    if (!name.ok()) return name.status();
     SceneCase c;
-    c.name = scene.value().name;
-    c.path = path;
+    c.name = name.value();
     c.test_name = gtestName(c.name);
-    c.scene = std::make_shared<const Scene>(std::move(scene).value());
-    c.oracle = std::make_shared<OracleCache>(*c.scene);
+    c.path = path;
+    c.text = kit_text;
     sceneCases().push_back(std::move(c));
     return {};
   };
-  SceneLoadOptions load;
-  load.placement_store = placement_store;
   for (const std::string& file : files) {
-    if (Status s = add(loadScene(file, load), file); !s.ok()) return s;
+    Result<nlohmann::json> json = io::readJsonFile(file);
+    if (!json.ok()) return json.status();
+    if (Status s = add(json.value(), file, file, ""); !s.ok()) return s;
   }
   for (const char* text : kKitScenes) {
-    if (Status s = add(parseScene(text, "conformance kit scene", directory), ""); !s.ok()) return s;
+    const std::string label = "conformance kit scene";
+    if (Status s = add(nlohmann::json::parse(text, nullptr, false), label, "", text); !s.ok())
+      return s;
   }
   return {};
 }
