@@ -8,7 +8,16 @@ checkout's own path is left out of that key, so another clone of the same commit
 this one's results. Only clean results are remembered: a file with a finding is analysed, and
 reported, every time.
 
-Usage: tools/clang_tidy.py -p BUILD_DIR [-j N] [--extra-arg ARG ...] [--cache-dir DIR] FILE...
+With --since COMMIT, only the files a change since COMMIT can have affected are analysed: those
+whose own text or any header they include (as the dependency log of the Ninja build --deps names
+lists them) differs from COMMIT's. Every file is, when COMMIT is not in this clone's history, when the configuration
+changed since (CONFIGURATION below) or when a file has no dependency record. CI passes the last
+commit a full run found clean (.ci/clang_tidy_clean, written by --record-clean).
+
+Usage: tools/clang_tidy.py -p BUILD_DIR [-j N] [--extra-arg ARG ...] [--cache-dir DIR]
+                           [--since COMMIT [--deps BUILD_DIR]] [--record-clean FILE] FILE...
+--record-clean FILE: after a clean run over every given file (no --since), write HEAD's commit
+to FILE, for later runs' --since.
 Exit status: 0 when every file is clean, 1 when any has a warning or an error, 2 on bad use.
 """
 
@@ -23,6 +32,10 @@ import subprocess
 import sys
 
 FINDING = re.compile(r"(warning|error):")
+
+# A change to any of these since --since's commit can change any file's findings: all are analysed.
+CONFIGURATION = (".clang-tidy", "tools/clang_tidy.py", "CMakePresets.json",
+                 "cmake/CollidoWarnings.cmake")
 
 
 def default_cache_dir():
@@ -108,6 +121,54 @@ class Tidy:
         return found, False, output if found else ""
 
 
+def git(root, *arguments):
+    """git's output in `root`, or None when it fails."""
+    run = subprocess.run(["git", "-C", root, *arguments], capture_output=True, text=True,
+                         check=False)
+    return run.stdout if run.returncode == 0 else None
+
+
+def dependency_groups(build, root):
+    """What each object of `build` was compiled from (its sources and every header they include),
+    as sets of paths relative to `root`, from the Ninja dependency log. A batch of the unity build
+    (cmake/CollidoUnity.cmake) is one object whose set holds all of its sources."""
+    run = subprocess.run(["ninja", "-C", build, "-t", "deps"], capture_output=True, text=True,
+                         check=False)
+    if run.returncode != 0:
+        return []
+    groups = []
+    for line in run.stdout.splitlines():
+        if line and not line[0].isspace():
+            groups.append(set())
+        elif groups and line.strip():
+            path = os.path.realpath(os.path.join(build, line.strip()))
+            groups[-1].add(os.path.relpath(path, root))
+    return groups
+
+
+def affected(paths, options, root):
+    """The subset of `paths` a change since options.since can have affected, with the reason."""
+    if git(root, "cat-file", "-e", f"{options.since}^{{commit}}") is None:
+        return paths, f"{options.since} is not in this clone's history: every file"
+    changed = git(root, "diff", "--name-only", options.since)
+    if changed is None:
+        return paths, f"git diff against {options.since} failed: every file"
+    changed = set(changed.split())
+    configuration = sorted(changed.intersection(CONFIGURATION))
+    if configuration:
+        return paths, f"{', '.join(configuration)} changed since {options.since}: every file"
+    groups = dependency_groups(os.path.realpath(options.deps or options.p), root)
+    chosen = []
+    for path in paths:
+        relative = os.path.relpath(path, root)
+        mine = [g for g in groups if relative in g]
+        # A file the build has no record of is analysed: nothing says it is unaffected.
+        if not mine or any(g & changed for g in mine):
+            chosen.append(path)
+    return chosen, (f"{len(chosen)} of {len(paths)} files include what changed since "
+                    f"{options.since[:12]}")
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("-p", required=True, help="build folder with compile_commands.json")
@@ -117,8 +178,15 @@ def main():
     parser.add_argument("--cache-dir", default=default_cache_dir())
     parser.add_argument("--clang-tidy", default="clang-tidy")
     parser.add_argument("--clang", default="clang++", help="the preprocessor for the cache key")
+    parser.add_argument("--since", help="analyse only what changed since this commit")
+    parser.add_argument("--deps", metavar="BUILD_DIR",
+                        help="the Ninja build whose dependency log --since reads (default: -p)")
+    parser.add_argument("--record-clean", metavar="FILE",
+                        help="after a clean full run, write HEAD's commit to FILE")
     parser.add_argument("files", nargs="+")
     options = parser.parse_args()
+    if options.since and options.record_clean:
+        parser.error("--record-clean needs a full run, not --since")
 
     root = os.path.realpath(os.path.join(os.path.dirname(__file__), ".."))
     try:
@@ -129,6 +197,9 @@ def main():
               file=sys.stderr)
         return 2
     paths = [os.path.realpath(f) for f in options.files]
+    if options.since:
+        paths, reason = affected(paths, options, root)
+        print(f"clang-tidy: {reason}")
     problems = cached = 0
     with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, options.j)) as pool:
         for found, remembered, output in pool.map(tidy.check, paths):
@@ -138,6 +209,14 @@ def main():
             cached += remembered
     print(f"clang-tidy: {len(paths)} files, {problems} with findings, {cached} known clean "
           f"from an earlier run of the same text ({options.cache_dir})")
+    if options.record_clean and not problems:
+        head = git(root, "rev-parse", "HEAD")
+        if head is None:
+            print("clang_tidy.py: error: no commit to record", file=sys.stderr)
+            return 2
+        with open(options.record_clean, "w", encoding="utf-8") as f:
+            f.write(head)
+        print(f"clang-tidy: recorded {head.strip()} in {options.record_clean} as clean")
     return 1 if problems else 0
 
 
