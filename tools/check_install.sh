@@ -18,6 +18,14 @@ mkdir -p "$work"
 work=$(realpath "$work")
 prefix=$work/prefix
 
+# The examples compile through ccache where it is installed, with paths taken relative to the work
+# folder, so that a later run, in this clone or another, finds their objects again.
+launcher=()
+if command -v ccache >/dev/null 2>&1; then
+  launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+  export CCACHE_BASEDIR="$work" CCACHE_NOHASHDIR=1
+fi
+
 echo "== install into $prefix"
 cmake --install "$build" --prefix "$prefix" > "$work/install.log"
 
@@ -29,7 +37,7 @@ for example in brute_force_plugin obbtree_query; do
   no_assimp=()
   [[ $example == obbtree_query ]] && no_assimp=(--no-warn-unused-cli -DCMAKE_DISABLE_FIND_PACKAGE_assimp=TRUE)
   cmake -S "$work/$example" -B "$work/$example/build" "${no_assimp[@]}" \
-        -DCMAKE_PREFIX_PATH="$prefix" > "$work/$example.configure.log"
+        -DCMAKE_PREFIX_PATH="$prefix" "${launcher[@]}" > "$work/$example.configure.log"
   cmake --build "$work/$example/build" > "$work/$example.build.log"
 done
 
@@ -69,7 +77,7 @@ int main(int argc, char** argv) {
 }
 CPP
 cmake -S "$work/core_consumer" -B "$work/core_consumer/build" \
-      -DCMAKE_PREFIX_PATH="$prefix" > "$work/core_consumer.configure.log"
+      -DCMAKE_PREFIX_PATH="$prefix" "${launcher[@]}" > "$work/core_consumer.configure.log"
 cmake --build "$work/core_consumer/build" > "$work/core_consumer.build.log"
 "$work/core_consumer/build/core_consumer" "$prefix/share/collido/scenes/interlocked_tori.json"
 
@@ -94,7 +102,7 @@ if [[ -x "$build/examples/record_fcl_app/record_fcl_app" ]]; then
   echo "== build examples/record_fcl_app against the install, record its run, study the recording"
   cp -r "$source_dir/examples/record_fcl_app" "$work/record_fcl_app"
   cmake -S "$work/record_fcl_app" -B "$work/record_fcl_app/build" \
-        -DCMAKE_PREFIX_PATH="$prefix" > "$work/record_fcl_app.configure.log"
+        -DCMAKE_PREFIX_PATH="$prefix" "${launcher[@]}" > "$work/record_fcl_app.configure.log"
   cmake --build "$work/record_fcl_app/build" > "$work/record_fcl_app.build.log"
   if grep -E "^(CGAL|TBB|assimp|PNG|Imath|nlohmann_json)_DIR:" \
        "$work/record_fcl_app/build/CMakeCache.txt"; then
