@@ -6,13 +6,16 @@
 #include <collido/oracle/distance_oracle.h>
 #include <collido/oracle/triangle_distance.h>
 
+#include "box_pair_bound.h"
 #include "certified_distance.h"
+#include "frame_products.h"
 #include "query_bounds.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <queue>
+#include <functional>
+#include <optional>
 #include <vector>
 
 namespace collido::obbtree {
@@ -32,46 +35,33 @@ struct Map {
   Eigen::Vector3d operator()(const Eigen::Vector3d& v) const { return rotation * v + translation; }
 };
 
-// A lower bound on the distance between box A and box B given in A's box frame (`r`: B's axes
-// as columns, `t`: B's centre): the largest separation over the 15 candidate axes, each gap
-// divided by the axis length, less `slack` (the computation's and the mapping's error).
-double boxPairLowerBound(const Eigen::Matrix3d& r, const Eigen::Vector3d& t,
-                         const Eigen::Vector3d& a, const Eigen::Vector3d& b, double slack) {
-  const Eigen::Matrix3d abs_r = r.cwiseAbs();
-  const auto apart = [slack](const AxisProjection& axis) {
-    return axis.distance - axis.radius_sum - slack;
-  };
-  double gap = 0.0;
-  for (int i = 0; i < 3; ++i)
-    gap = std::max(gap, apart(faceAxisOfA(abs_r, t, a, b, i)));
-  for (int j = 0; j < 3; ++j)
-    gap = std::max(gap, apart(faceAxisOfB(r, abs_r, t, a, b, j)));
-  for (int i = 0; i < 3; ++i) {
-    const int i1 = (i + 1) % 3;
-    const int i2 = (i + 2) % 3;
-    for (int j = 0; j < 3; ++j) {
-      const double separation = apart(edgeAxis(r, abs_r, t, a, b, i, j));
-      if (!(separation > 0.0)) continue;
-      // Axis e_i x B_j has length sqrt(r(i1,j)^2 + r(i2,j)^2) (entries of a rotation: no over-
-      // or underflow that matters, and the final widening covers the roundings); nearly
-      // parallel edges give a degenerate axis whose bound the face axes already cover. The
-      // square root is taken only for an axis that raises the gap (skipping one only loosens
-      // the bound).
-      const double length_squared = r(i1, j) * r(i1, j) + r(i2, j) * r(i2, j);
-      if (length_squared < 1e-12) continue;
-      if (separation * separation <= gap * gap * length_squared) continue;
-      gap = std::max(gap, separation / std::sqrt(length_squared));
-    }
-  }
-  return gap * (1.0 - 8.0 * kEps);
-}
-
+// A node pair waiting, or (a < 0) a triangle pair waiting for its exact closest points: A's
+// triangle at leaf position -1 - a, B's at b.
 struct Pending {
   double bound;
   std::int32_t a;
   std::int32_t b;
   bool operator>(const Pending& o) const { return bound > o.bound; }
 };
+
+// One of A's triangles in a leaf pair, with its axis-aligned bounds in A's frame.
+struct LeafTriangle {
+  std::array<Eigen::Vector3d, 3> corners;
+  Eigen::Vector3d lo;
+  Eigen::Vector3d hi;
+  std::int32_t id = 0;        // input index
+  std::int32_t position = 0;  // in the leaf order
+};
+
+struct SearchScratch {
+  std::vector<Pending> heap;
+  std::vector<LeafTriangle> leaf_a;
+};
+
+SearchScratch& scratch() {
+  thread_local SearchScratch kept;
+  return kept;
+}
 
 template <typename NodeA, typename NodeB>
 class Search {
@@ -109,15 +99,31 @@ class Search {
     best_value_ = std::numeric_limits<double>::infinity();
     best_upper_ = std::numeric_limits<double>::infinity();
     floor_ = std::numeric_limits<double>::infinity();
-    push(0, 0);
-    while (!queue_.empty()) {
-      const Pending next = queue_.top();
+    heap_.clear();
+    const auto& root_a = boxOf(nodes_a_.front());
+    const auto& root_b = boxOf(nodes_b_.front());
+    if (const std::optional<Pending> root = consider(
+            0, 0, root_a, root_a.axes.transpose() * (map_.rotation * root_b.axes), mappedB(root_b)))
+      enqueue(*root);
+    while (!heap_.empty()) {
+      const Pending next = heap_.front();
       if (worldLower(next.bound) >= best_value_ - tolerance()) {
         floor_ = std::min(floor_, worldLower(next.bound));
         break;
       }
-      queue_.pop();
-      expand(next);
+      std::pop_heap(heap_.begin(), heap_.end(), std::greater<>());
+      heap_.pop_back();
+      // The nearer child goes on while it is still the least pair: no round trip through the
+      // heap for the usual descent.
+      std::optional<Pending> carried = expand(next);
+      while (carried) {
+        const bool least = heap_.empty() || carried->bound <= heap_.front().bound;
+        if (!least || worldLower(carried->bound) >= best_value_ - tolerance()) {
+          enqueue(*carried);
+          break;
+        }
+        carried = expand(*carried);
+      }
     }
     answer_.upper_bound = best_upper_;
     answer_.lower_bound = std::min(floor_, answer_.distance);
@@ -144,74 +150,114 @@ class Search {
   // A lower bound in A's frame as a lower bound on the world distance.
   double worldLower(double a_frame) const { return std::max(0.0, a_frame * shrink_); }
 
+  // B's box with its centre mapped into A's model frame (its axes: see expand()).
   struct MappedBox {
-    Eigen::Matrix3d axes;
-    Eigen::Vector3d center;
-    Eigen::Vector3d half_extents;
-    double error = 0.0;  // of the mapped centre and axes, as a distance
+    const OrientedBox& box;
+    Eigen::Vector3d center;  // mapped into A's model frame
+    double error = 0.0;      // of the mapped centre and axes, as a distance
   };
 
-  // B's box in A's frame, mapped per bound: a search visits few of B's nodes, and a cache the
-  // size of the tree would cost more to set up per query than the mapping (1M-triangle meshes).
-  MappedBox mappedB(std::int32_t node) const {
-    const OrientedBox box = boxOf(nodes_b_[static_cast<std::size_t>(node)]);
-    MappedBox m;
-    m.axes = map_.rotation * box.axes;
-    m.center = map_(box.center);
-    m.half_extents = box.half_extents;
-    m.error = map_.bounds.pointError(box.center) * std::sqrt(3.0) +
-              map_.bounds.axis_error * box.half_extents.sum();
-    return m;
+  MappedBox mappedB(const OrientedBox& box) const {
+    return {box, detail::timesVector(map_.rotation, box.center) + map_.translation,
+            map_.bounds.pointError(box.center) * std::sqrt(3.0) +
+                map_.bounds.axis_error * box.half_extents.sum()};
   }
 
-  double bound(std::int32_t ia, std::int32_t ib) {
+  // A lower bound (in A's frame) on the distance between A's box and B's mapped box, given
+  // `r`, B's axes in A's box frame; it may stop short of the best bound once it rules the pair
+  // out (boxPairLowerBound).
+  double bound(const OrientedBox& box_a, const Eigen::Matrix3d& r, const MappedBox& box_b) {
     ++answer_.box_tests;
-    const OrientedBox box_a = boxOf(nodes_a_[static_cast<std::size_t>(ia)]);
-    const MappedBox box_b = mappedB(ib);
-    const Eigen::Matrix3d r = box_a.axes.transpose() * box_b.axes;
-    const Eigen::Vector3d t = box_a.axes.transpose() * (box_b.center - box_a.center);
+    const Eigen::Vector3d t =
+        detail::transposedTimesVector(box_a.axes, box_b.center - box_a.center);
     const double slack =
         5.0 * map_.bounds.axis_error *
-            (t.cwiseAbs().sum() + box_a.half_extents.sum() + box_b.half_extents.sum()) +
+            (t.cwiseAbs().sum() + box_a.half_extents.sum() + box_b.box.half_extents.sum()) +
         box_b.error + detail::kUnderflowGuard;
-    double separating = boxPairLowerBound(r, t, box_a.half_extents, box_b.half_extents, slack);
-    // A 16th axis, the line of the centres: boxes apart sideways (facing patches of curved
-    // surfaces) are separated along it by nearly their distance, more than along any box axis.
-    const double centres = t.norm();
-    if (centres > 0.0) {
-      const Eigen::Vector3d u = t / centres;
-      const double reach_a = box_a.half_extents.dot(u.cwiseAbs());
-      const double reach_b = box_b.half_extents.dot((r.transpose() * u).cwiseAbs());
-      separating = std::max(separating, (centres - reach_a - reach_b - slack) * (1.0 - 8.0 * kEps));
-    }
-    return separating;
+    const double enough = shrink_ > 0.0 ? (best_value_ - tolerance()) / shrink_
+                                        : std::numeric_limits<double>::infinity();
+    return detail::boxPairLowerBound({r, t, box_a.half_extents, box_b.box.half_extents}, slack,
+                                     enough);
   }
 
-  void push(std::int32_t ia, std::int32_t ib) {
-    const double lower = bound(ia, ib);
+  // The node pair to search, or nothing when its bound sets it aside.
+  std::optional<Pending> consider(std::int32_t ia, std::int32_t ib, const OrientedBox& box_a,
+                                  const Eigen::Matrix3d& r, const MappedBox& box_b) {
+    const double lower = bound(box_a, r, box_b);
     if (worldLower(lower) >= best_value_ - tolerance()) {
       floor_ = std::min(floor_, worldLower(lower));
-      return;
+      return std::nullopt;
     }
-    queue_.push(Pending{lower, ia, ib});
+    return Pending{lower, ia, ib};
   }
 
-  void expand(const Pending& pair) {
+  void enqueue(const Pending& pair) {
+    heap_.push_back(pair);
+    std::push_heap(heap_.begin(), heap_.end(), std::greater<>());
+  }
+
+  // Of two children pairs, queues the farther and returns the nearer.
+  std::optional<Pending> nearer(const std::optional<Pending>& first,
+                                const std::optional<Pending>& second) {
+    if (!first || !second) return first ? first : second;
+    if (second->bound < first->bound) {
+      enqueue(*first);
+      return second;
+    }
+    enqueue(*second);
+    return first;
+  }
+
+  // Splits a pair's larger box (B's mapped box computed once for both of A's children, A's box
+  // decoded once for both of B's), or measures two leaves; returns the nearer child pair.
+  std::optional<Pending> expand(const Pending& pair) {
+    if (pair.a < 0) {
+      settle(-1 - pair.a, pair.b);
+      return std::nullopt;
+    }
     const auto& na = nodes_a_[static_cast<std::size_t>(pair.a)];
     const auto& nb = nodes_b_[static_cast<std::size_t>(pair.b)];
     if (na.isLeaf() && nb.isLeaf()) {
       leaves(na, nb);
-      return;
+      return std::nullopt;
     }
     const bool split_a = !na.isLeaf() && (nb.isLeaf() || boxSize(na) >= boxSize(nb));
+    // B's axes reach A's box frame through one product a bound: B's axes mapped once for both
+    // of A's children, or A's box frame composed with the map once for both of B's.
     if (split_a) {
-      push(pair.a + 1, pair.b);
-      push(na.secondChild(), pair.b);
-    } else {
-      push(pair.a, pair.b + 1);
-      push(pair.a, nb.secondChild());
+      const auto& box = boxOf(nb);
+      const MappedBox box_b = mappedB(box);
+      const Eigen::Matrix3d axes_b = detail::times(map_.rotation, box.axes);
+      const std::int32_t first = pair.a + 1;
+      const std::int32_t second = na.secondChild();
+      const auto& box_first = boxOf(nodes_a_[static_cast<std::size_t>(first)]);
+      const std::optional<Pending> near_first = consider(
+          first, pair.b, box_first, detail::transposedTimes(box_first.axes, axes_b), box_b);
+      const auto& box_second = boxOf(nodes_a_[static_cast<std::size_t>(second)]);
+      return nearer(near_first, consider(second, pair.b, box_second,
+                                         detail::transposedTimes(box_second.axes, axes_b), box_b));
     }
+    const auto& box_a = boxOf(na);
+    const Eigen::Matrix3d to_box_a = detail::transposedTimes(box_a.axes, map_.rotation);
+    const std::int32_t first = pair.b + 1;
+    const std::int32_t second = nb.secondChild();
+    const auto& box_first = boxOf(nodes_b_[static_cast<std::size_t>(first)]);
+    const std::optional<Pending> near_first =
+        consider(pair.a, first, box_a, detail::times(to_box_a, box_first.axes), mappedB(box_first));
+    const auto& box_second = boxOf(nodes_b_[static_cast<std::size_t>(second)]);
+    return nearer(near_first,
+                  consider(pair.a, second, box_a, detail::times(to_box_a, box_second.axes),
+                           mappedB(box_second)));
   }
+
+  // One triangle pair's world distance, interval and closest points.
+  struct PairDistance {
+    double lower = 0.0;
+    double upper = 0.0;
+    double value = 0.0;
+    Eigen::Vector3d point_a = Eigen::Vector3d::Zero();  // world
+    Eigen::Vector3d point_b = Eigen::Vector3d::Zero();
+  };
 
   template <typename LeafA, typename LeafB>
   void leaves(const LeafA& na, const LeafB& nb) {
@@ -228,6 +274,7 @@ class Search {
       t.lo = t.corners[0].cwiseMin(t.corners[1]).cwiseMin(t.corners[2]);
       t.hi = t.corners[0].cwiseMax(t.corners[1]).cwiseMax(t.corners[2]);
       t.id = a_.triangleId(i);
+      t.position = i;
       leaf_a_.push_back(t);
     }
     for (std::int32_t j = nb.leafFirst(); j < nb.leafFirst() + nb.leafCount(); ++j) {
@@ -252,33 +299,58 @@ class Search {
           continue;
         }
         ++answer_.triangle_tests;
-        const PairDistance pair = measure(ta_leaf.corners, corners_b, local_b, mapping_error);
-        floor_ = std::min(floor_, pair.lower);
-        best_upper_ = std::min(best_upper_, pair.upper);
-        if (!(pair.value < best_value_)) continue;
-        best_value_ = pair.value;
-        answer_.distance = pair.value;
-        answer_.point_a = pair.point_a;
-        answer_.point_b = pair.value == 0.0 ? pair.point_a : pair.point_b;
-        answer_.triangle_a = ta_leaf.id;
-        answer_.triangle_b = b_.triangleId(j);
-        if (best_value_ == 0.0) {
-          // Nothing can be closer: end the search.
-          queue_ = {};
-          return;
+        const Measured measured = measure(ta_leaf.corners, corners_b, local_b, mapping_error);
+        if (measured.settled) {
+          record(measured.pair, ta_leaf.id, b_.triangleId(j));
+          if (best_value_ == 0.0) return;
+          continue;
         }
+        // Exact closest points cost a thousand times the double ones: the pair waits in the
+        // heap at its certified lower end (above 0: it does not touch), and is settled only if
+        // it is still a candidate when its turn comes. A touching pair elsewhere (bound 0),
+        // or a closer one, makes that unnecessary.
+        best_upper_ = std::min(best_upper_, measured.pair.upper);
+        const double key = std::max(measured.pair.lower, std::numeric_limits<double>::denorm_min());
+        if (worldLower(key) >= best_value_ - tolerance()) {
+          floor_ = std::min(floor_, worldLower(key));
+          continue;
+        }
+        enqueue(Pending{key, -1 - ta_leaf.position, j});
       }
     }
   }
 
-  // One triangle pair's world distance, interval and closest points.
-  struct PairDistance {
-    double lower = 0.0;
-    double upper = 0.0;
-    double value = 0.0;
-    Eigen::Vector3d point_a = Eigen::Vector3d::Zero();  // world
-    Eigen::Vector3d point_b = Eigen::Vector3d::Zero();
-  };
+  // Takes a measured pair as the best when it is closer; ends the search at contact.
+  void record(const PairDistance& pair, std::int32_t id_a, std::int32_t id_b) {
+    floor_ = std::min(floor_, pair.lower);
+    best_upper_ = std::min(best_upper_, pair.upper);
+    if (!(pair.value < best_value_)) return;
+    best_value_ = pair.value;
+    answer_.distance = pair.value;
+    answer_.point_a = pair.point_a;
+    answer_.point_b = pair.value == 0.0 ? pair.point_a : pair.point_b;
+    answer_.triangle_a = id_a;
+    answer_.triangle_b = id_b;
+    // Nothing can be closer: end the search.
+    if (best_value_ == 0.0) heap_.clear();
+  }
+
+  // A waiting pair (positions in the leaf orders), settled in exact arithmetic.
+  void settle(std::int32_t i, std::int32_t j) {
+    const Eigen::Matrix3Xd& va = a_.vertices();
+    const Eigen::Matrix3Xd& vb = b_.vertices();
+    const TriangleList& ta = a_.orderedTriangles();
+    const TriangleList& tb = b_.orderedTriangles();
+    std::array<Eigen::Vector3d, 3> corners_a;
+    std::array<Eigen::Vector3d, 3> local_b;
+    std::array<Eigen::Vector3d, 3> corners_b;
+    for (std::size_t k = 0; k < 3; ++k) {
+      corners_a[k] = va.col(ta(static_cast<int>(k), i));
+      local_b[k] = vb.col(tb(static_cast<int>(k), j));
+      corners_b[k] = map_(local_b[k]);
+    }
+    record(exactClosest(corners_a, corners_b, local_b), a_.triangleId(i), b_.triangleId(j));
+  }
 
   // A pair found touching: distance 0, at a shared point as computed (the crossing point of an
   // edge through the other's face, which the certified candidates do not include).
@@ -290,28 +362,44 @@ class Search {
     return pair;
   }
 
+  // A pair measured: settled, or waiting for its exact closest points (it does not touch).
+  struct Measured {
+    PairDistance pair;
+    bool settled = true;
+  };
+
   // In double precision with a certified interval (certified_distance.h); where that interval
-  // cannot rule out contact, or is wider than kRelativeWidth of its lower end, the pair is
-  // decided in exact arithmetic on the world corners: contact by the exact triangle test, else
-  // the exact closest points (their squared distance as an interval, the points rounded once;
-  // the double ones can be far off along a sliver or near-parallel edges).
-  PairDistance measure(const std::array<Eigen::Vector3d, 3>& corners_a,
-                       const std::array<Eigen::Vector3d, 3>& corners_b,
-                       const std::array<Eigen::Vector3d, 3>& local_b, double mapping_error) {
+  // cannot rule out contact, contact is decided by the exact triangle test on the world
+  // corners. A pair apart whose interval is wider than kRelativeWidth of its lower end (or
+  // whose lower end is 0) needs its exact closest points (exactClosest), which the caller
+  // computes only if the pair is still a candidate when its turn comes.
+  Measured measure(const std::array<Eigen::Vector3d, 3>& corners_a,
+                   const std::array<Eigen::Vector3d, 3>& corners_b,
+                   const std::array<Eigen::Vector3d, 3>& local_b, double mapping_error) {
     const detail::CertifiedDistance computed =
         detail::certifiedTriangleDistance(corners_a, corners_b, mapping_error);
     PairDistance pair{worldLower(computed.lower), computed.upper * grow_, 0.0,
                       pose_a_ * computed.point_a, pose_a_ * computed.point_b};
     pair.value = std::clamp(computed.value, pair.lower, pair.upper);
-    if (pair.lower > 0.0 && pair.upper - pair.lower <= kRelativeWidth * pair.lower) return pair;
-    ++answer_.exact_tests;
-    if (pair.lower == 0.0 &&
-        posedTrianglesIntersect(corners_a.data(), pose_a_, local_b.data(), pose_b_)) {
-      return touching(corners_a, corners_b);
+    if (pair.lower > 0.0 && pair.upper - pair.lower <= kRelativeWidth * pair.lower) return {pair};
+    if (pair.lower == 0.0) {
+      ++answer_.exact_tests;
+      if (posedTrianglesIntersect(corners_a.data(), pose_a_, local_b.data(), pose_b_))
+        return {touching(corners_a, corners_b)};
     }
+    return {pair, false};
+  }
+
+  // The exact closest points of a pair apart (their squared distance as an interval, the
+  // points rounded once; the double ones can be far off along a sliver or near-parallel edges).
+  PairDistance exactClosest(const std::array<Eigen::Vector3d, 3>& corners_a,
+                            const std::array<Eigen::Vector3d, 3>& corners_b,
+                            const std::array<Eigen::Vector3d, 3>& local_b) {
+    ++answer_.exact_tests;
     const ExactClosestPoints exact = exactPosedClosestPoints(corners_a, pose_a_, local_b, pose_b_);
     const ExactInterval& squared = exact.squared_distance;
     if (squared.upper == 0.0) return touching(corners_a, corners_b);
+    PairDistance pair;
     // sqrt rounds to nearest: one step outwards keeps each end on its side of the exact root.
     pair.lower = std::max(0.0, std::nextafter(std::sqrt(squared.lower), 0.0));
     pair.upper = std::nextafter(std::sqrt(squared.upper), std::numeric_limits<double>::infinity());
@@ -331,7 +419,9 @@ class Search {
   const DistanceRequest& request_;
   DistanceAnswer& answer_;
   Map map_;
-  std::priority_queue<Pending, std::vector<Pending>, std::greater<>> queue_;
+  // The pairs waiting, a min-heap on their bounds (thread-local scratch: its capacity outlives
+  // the query, so a search allocates only when it needs more than any before it on the thread).
+  std::vector<Pending>& heap_ = scratch().heap;
   // The least value and the least upper end of the pairs measured: the answer lies between the
   // least lower bound of everything measured or set aside and best_upper_.
   double best_value_ = std::numeric_limits<double>::infinity();
@@ -340,13 +430,7 @@ class Search {
   double floor_ = std::numeric_limits<double>::infinity();  // least lower bound set aside
   double shrink_ = 1.0;
   double grow_ = 1.0;
-  struct LeafTriangle {
-    std::array<Eigen::Vector3d, 3> corners;
-    Eigen::Vector3d lo;
-    Eigen::Vector3d hi;
-    std::int32_t id = 0;
-  };
-  std::vector<LeafTriangle> leaf_a_;  // scratch of leaves(), kept for its capacity
+  std::vector<LeafTriangle>& leaf_a_ = scratch().leaf_a;  // A's triangles in leaves()
 };
 
 template <typename NodeA, typename NodeB>

@@ -13,16 +13,12 @@
 #include <collido/obbtree/separating_axis.h>
 
 #include "../src/box_batch.h"
+#include "collide_check.h"
 
 namespace collido::obbtree {
 namespace {
 
 using detail::BoxBatch;
-
-Eigen::Matrix3d randomRotation(std::mt19937_64& rng) {
-  std::normal_distribution<double> n(0.0, 1.0);
-  return Eigen::Quaterniond(n(rng), n(rng), n(rng), n(rng)).normalized().toRotationMatrix();
-}
 
 // Boxes near the origin, sized so that about half of the pairs overlap; some axis-aligned (the
 // aligned pairs put the face tests on their boundaries).
