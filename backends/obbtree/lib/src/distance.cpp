@@ -164,9 +164,10 @@ class Search {
   }
 
   // A lower bound (in A's frame) on the distance between A's box and B's mapped box, given
-  // `r`, B's axes in A's box frame; it may stop short of the best bound once it rules the pair
-  // out (boxPairLowerBound).
-  double bound(const OrientedBox& box_a, const Eigen::Matrix3d& r, const MappedBox& box_b) {
+  // `r`, B's axes in A's box frame; it may stop short of the best bound once it reaches `cut`
+  // in the world (boxPairLowerBound).
+  double bound(const OrientedBox& box_a, const Eigen::Matrix3d& r, const MappedBox& box_b,
+               double cut) {
     ++answer_.box_tests;
     const Eigen::Vector3d t =
         detail::transposedTimesVector(box_a.axes, box_b.center - box_a.center);
@@ -174,8 +175,7 @@ class Search {
         5.0 * map_.bounds.axis_error *
             (t.cwiseAbs().sum() + box_a.half_extents.sum() + box_b.box.half_extents.sum()) +
         box_b.error + detail::kUnderflowGuard;
-    const double enough = shrink_ > 0.0 ? (best_value_ - tolerance()) / shrink_
-                                        : std::numeric_limits<double>::infinity();
+    const double enough = shrink_ > 0.0 ? cut / shrink_ : std::numeric_limits<double>::infinity();
     return detail::boxPairLowerBound({r, t, box_a.half_extents, box_b.box.half_extents}, slack,
                                      enough);
   }
@@ -183,8 +183,10 @@ class Search {
   // The node pair to search, or nothing when its bound sets it aside.
   std::optional<Pending> consider(std::int32_t ia, std::int32_t ib, const OrientedBox& box_a,
                                   const Eigen::Matrix3d& r, const MappedBox& box_b) {
-    const double lower = bound(box_a, r, box_b);
-    if (worldLower(lower) >= best_value_ - tolerance()) {
+    // The distance a pair must beat, computed once for the bound's early stop and the test.
+    const double cut = best_value_ - tolerance();
+    const double lower = bound(box_a, r, box_b, cut);
+    if (worldLower(lower) >= cut) {
       floor_ = std::min(floor_, worldLower(lower));
       return std::nullopt;
     }
