@@ -107,6 +107,18 @@ SurfaceBackendRow backendRow(BackendInstance& backend, const std::string& label,
   row.distance = result.distance.distance;
   row.error = row.distance - truth;
   row.median_us = quantile(timed.value(), 0.5);
+  if (result.counters.counts_bv_tests) row.bv_tests = result.counters.bv_tests;
+  if (result.counters.counts_primitive_tests) row.primitive_tests = result.counters.primitive_tests;
+  return row;
+}
+
+// A row for a backend that measured nothing, and why.
+SurfaceBackendRow unmeasuredRow(const std::string& backend, SurfaceRowEnd end,
+                                const std::string& why) {
+  SurfaceBackendRow row;
+  row.backend = backend;
+  row.end = end;
+  row.failure = why;
   return row;
 }
 
@@ -118,14 +130,15 @@ std::vector<SurfaceBackendRow> backendRows(const SurfaceRunRequest& request, con
     Result<std::unique_ptr<BackendInstance>> created =
         BackendInstance::create(spec.library, spec.variant, spec.options);
     if (!created.ok()) {
-      rows.push_back({spec.label(), 0, SurfaceRowEnd::kNotCreated, created.status().message()});
+      rows.push_back(
+          unmeasuredRow(spec.label(), SurfaceRowEnd::kNotCreated, created.status().message()));
       continue;
     }
     BackendInstance& backend = *created.value();
     const Capabilities& caps = backend.capabilities();
     if (!caps.queries.contains(QueryKind::kDistance)) {
-      rows.push_back(
-          {spec.label(), 0, SurfaceRowEnd::kNoDistance, "does not answer distance queries"});
+      rows.push_back(unmeasuredRow(spec.label(), SurfaceRowEnd::kNoDistance,
+                                   "does not answer distance queries"));
       continue;
     }
     const bool on_surfaces = caps.buildsShape(ShapeKind::kNurbsSurface);
@@ -140,6 +153,10 @@ std::vector<SurfaceBackendRow> backendRows(const SurfaceRunRequest& request, con
 std::string shapeText(const SurfaceBackendRow& row) {
   if (row.end == SurfaceRowEnd::kNotCreated) return "-";
   return row.segments == 0 ? "surfaces" : std::to_string(row.segments);
+}
+
+std::string countText(const std::optional<std::uint64_t>& count) {
+  return count ? std::to_string(*count) : "-";
 }
 
 }  // namespace
@@ -235,7 +252,7 @@ std::string surfaceRunText(const SurfaceRun& run, bool levels) {
   std::string failures;
   for (const SurfaceBackendRow& row : run.backends) {
     if (row.end != SurfaceRowEnd::kOk) {
-      backend_rows.push_back({row.backend, shapeText(row), "-", "-", "-", "-", "-", "-",
+      backend_rows.push_back({row.backend, shapeText(row), "-", "-", "-", "-", "-", "-", "-", "-",
                               row.end == SurfaceRowEnd::kNoDistance ? "skipped" : "failed"});
       failures += "  " + row.backend;
       if (row.end == SurfaceRowEnd::kFailed) failures += " (" + shapeText(row) + ")";
@@ -246,7 +263,8 @@ std::string surfaceRunText(const SurfaceRun& run, bool levels) {
         {row.backend, shapeText(row), row.segments == 0 ? "-" : std::to_string(row.triangles),
          formatNumber("%.12g", row.distance), formatNumber("%.3g", row.error),
          formatNumber("%.3g", std::abs(row.error) / run.model_size),
-         formatNumber("%.1f", row.median_us), formatNumber("%.2f", row.build_ms), "ok"});
+         formatNumber("%.1f", row.median_us), countText(row.bv_tests),
+         countText(row.primitive_tests), formatNumber("%.2f", row.build_ms), "ok"});
   }
   const nurbs::SurfaceDistance& reference = *run.reference;
   text +=
@@ -255,7 +273,7 @@ std::string surfaceRunText(const SurfaceRun& run, bool levels) {
       formatNumber("%.15g", 0.5 * (reference.lower + reference.upper)) + " (+- " +
       formatNumber("%.2g", 0.5 * (reference.upper - reference.lower)) + "):\n" +
       formatTextTable({"backend", "shape", "triangles", "distance", "error", "error / size",
-                       "median us", "build ms", "status"},
+                       "median us", "bv tests", "prim tests", "build ms", "status"},
                       backend_rows, 2) +
       failures;
   return text;

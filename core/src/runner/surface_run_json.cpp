@@ -41,6 +41,10 @@ SurfaceBackendRow backendRowFromJson(const Json& json) {
   row.error = detail::numberAt(json, "error");
   row.median_us = detail::numberAt(json, "median_us");
   row.build_ms = detail::numberAt(json, "build_ms");
+  // Absent where the backend does not count (and in runs written before the counts were).
+  if (json.contains("bv_tests")) row.bv_tests = json.at("bv_tests").get<std::uint64_t>();
+  if (json.contains("primitive_tests"))
+    row.primitive_tests = json.at("primitive_tests").get<std::uint64_t>();
   return row;
 }
 
@@ -83,14 +87,17 @@ Json surfaceRunJson(const SurfaceRun& run) {
            {"status", row.failure}});
       continue;
     }
-    json["backends"].push_back({{"backend", row.backend},
-                                {"segments", row.segments},
-                                {"triangles", row.triangles},
-                                {"distance", row.distance},
-                                {"error", row.error},
-                                {"median_us", row.median_us},
-                                {"build_ms", row.build_ms},
-                                {"status", detail::rowStatus({})}});
+    Json backend = {{"backend", row.backend},
+                    {"segments", row.segments},
+                    {"triangles", row.triangles},
+                    {"distance", row.distance},
+                    {"error", row.error},
+                    {"median_us", row.median_us},
+                    {"build_ms", row.build_ms},
+                    {"status", detail::rowStatus({})}};
+    if (row.bv_tests) backend["bv_tests"] = *row.bv_tests;
+    if (row.primitive_tests) backend["primitive_tests"] = *row.primitive_tests;
+    json["backends"].push_back(std::move(backend));
   }
   return json;
 }

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -63,6 +64,9 @@ struct SurfaceBackendRow {
   double error = 0.0;  ///< distance - the certified midpoint
   double median_us = 0.0;
   double build_ms = 0.0;  ///< both models, tessellation included
+  /// Bounding-volume and primitive tests of one query, where the backend counts them.
+  std::optional<std::uint64_t> bv_tests;
+  std::optional<std::uint64_t> primitive_tests;
 };
 
 /// A surface run: the seed method's rows, the certified reference and the backends' rows.
