@@ -31,6 +31,7 @@ struct Map {
   Eigen::Matrix3d rotation;
   Eigen::Vector3d translation;
   QueryBounds bounds;
+  bool exact = false;  // the identity, exactly: mapped corners carry no error
 
   Eigen::Vector3d operator()(const Eigen::Vector3d& v) const { return rotation * v + translation; }
 };
@@ -77,9 +78,18 @@ class Search {
         pose_b_(pose_b),
         request_(request),
         answer_(answer) {
-    map_.rotation = pose_a.linear().transpose() * pose_b.linear();
-    map_.translation = pose_a.linear().transpose() * (pose_b.translation() - pose_a.translation());
-    map_.bounds = detail::queryBounds(a, pose_a, b, pose_b);
+    if (pose_a.matrix() == pose_b.matrix()) {
+      // One pose for both (shapes given in one frame): the relative map is exactly the identity.
+      map_.rotation.setIdentity();
+      map_.translation.setZero();
+      map_.bounds.axis_error = a.axisDefect() + b.axisDefect() + 32.0 * kEps;
+      map_.exact = true;
+    } else {
+      map_.rotation = pose_a.linear().transpose() * pose_b.linear();
+      map_.translation =
+          pose_a.linear().transpose() * (pose_b.translation() - pose_a.translation());
+      map_.bounds = detail::queryBounds(a, pose_a, b, pose_b);
+    }
     const OrientedBox root_a = boxOf(nodes_a.front());
     const OrientedBox root_b = boxOf(nodes_b.front());
     const double magnitude =
@@ -164,10 +174,8 @@ class Search {
   }
 
   // A lower bound (in A's frame) on the distance between A's box and B's mapped box, given
-  // `r`, B's axes in A's box frame; it may stop short of the best bound once it reaches `cut`
-  // in the world (boxPairLowerBound).
-  double bound(const OrientedBox& box_a, const Eigen::Matrix3d& r, const MappedBox& box_b,
-               double cut) {
+  // `r`, B's axes in A's box frame (boxPairLowerBound).
+  double bound(const OrientedBox& box_a, const Eigen::Matrix3d& r, const MappedBox& box_b) {
     ++answer_.box_tests;
     const Eigen::Vector3d t =
         detail::transposedTimesVector(box_a.axes, box_b.center - box_a.center);
@@ -175,18 +183,14 @@ class Search {
         5.0 * map_.bounds.axis_error *
             (t.cwiseAbs().sum() + box_a.half_extents.sum() + box_b.box.half_extents.sum()) +
         box_b.error + detail::kUnderflowGuard;
-    const double enough = shrink_ > 0.0 ? cut / shrink_ : std::numeric_limits<double>::infinity();
-    return detail::boxPairLowerBound({r, t, box_a.half_extents, box_b.box.half_extents}, slack,
-                                     enough);
+    return detail::boxPairLowerBound({r, t, box_a.half_extents, box_b.box.half_extents}, slack);
   }
 
   // The node pair to search, or nothing when its bound sets it aside.
   std::optional<Pending> consider(std::int32_t ia, std::int32_t ib, const OrientedBox& box_a,
                                   const Eigen::Matrix3d& r, const MappedBox& box_b) {
-    // The distance a pair must beat, computed once for the bound's early stop and the test.
-    const double cut = best_value_ - tolerance();
-    const double lower = bound(box_a, r, box_b, cut);
-    if (worldLower(lower) >= cut) {
+    const double lower = bound(box_a, r, box_b);
+    if (worldLower(lower) >= best_value_ - tolerance()) {
       floor_ = std::min(floor_, worldLower(lower));
       return std::nullopt;
     }
@@ -210,8 +214,9 @@ class Search {
     return first;
   }
 
-  // Splits a pair's larger box (B's mapped box computed once for both of A's children, A's box
-  // decoded once for both of B's), or measures two leaves; returns the nearer child pair.
+  // Splits both boxes of a pair when they are apart and of a size (splitBoth), else the larger (B's
+  // mapped box computed once for both of A's children, A's box decoded once for both of B's), or
+  // measures two leaves; returns the nearest child pair.
   std::optional<Pending> expand(const Pending& pair) {
     if (pair.a < 0) {
       settle(-1 - pair.a, pair.b);
@@ -222,6 +227,12 @@ class Search {
     if (na.isLeaf() && nb.isLeaf()) {
       leaves(na, nb);
       return std::nullopt;
+    }
+    if (pair.bound > 0.0 && !na.isLeaf() && !nb.isLeaf()) {
+      const double size_a = boxSize(na);
+      const double size_b = boxSize(nb);
+      if (size_a <= kSplitBothRatio * size_b && size_b <= kSplitBothRatio * size_a)
+        return splitBoth(pair, na, nb);
     }
     const bool split_a = !na.isLeaf() && (nb.isLeaf() || boxSize(na) >= boxSize(nb));
     // B's axes reach A's box frame through one product a bound: B's axes mapped once for both
@@ -250,6 +261,33 @@ class Search {
     return nearer(near_first,
                   consider(pair.a, second, box_a, detail::times(to_box_a, box_second.axes),
                            mappedB(box_second)));
+  }
+
+  // Boxes apart and of a size (within this factor) are split together. Facing surfaces bound
+  // below their best pair all the way down (each box's bound is short by its sag), so nearly
+  // every pair is opened; splitting one box at a time pops the pairs in between too, each a heap
+  // round trip and a mapping, for about as many bounds in the end. Boxes that meet (bound 0) are
+  // split one at a time: there the search dives for any touching pair, and two children a level
+  // cost half of four.
+  static constexpr double kSplitBothRatio = 2.0;
+
+  // Both boxes split: the four children pairs (each of B's children mapped once for both of A's),
+  // the nearest returned.
+  std::optional<Pending> splitBoth(const Pending& pair, const NodeA& na, const NodeB& nb) {
+    const std::int32_t children_a[2] = {pair.a + 1, na.secondChild()};
+    const std::int32_t children_b[2] = {pair.b + 1, nb.secondChild()};
+    std::optional<Pending> best;
+    for (const std::int32_t jb : children_b) {
+      const auto& box = boxOf(nodes_b_[static_cast<std::size_t>(jb)]);
+      const MappedBox box_b = mappedB(box);
+      const Eigen::Matrix3d axes_b = detail::times(map_.rotation, box.axes);
+      for (const std::int32_t ia : children_a) {
+        const auto& box_a = boxOf(nodes_a_[static_cast<std::size_t>(ia)]);
+        best = nearer(best,
+                      consider(ia, jb, box_a, detail::transposedTimes(box_a.axes, axes_b), box_b));
+      }
+    }
+    return best;
   }
 
   // One triangle pair's world distance, interval and closest points.
@@ -364,6 +402,25 @@ class Search {
     return pair;
   }
 
+  // Whether a pair touches, decided in double precision with certified error bounds (A's
+  // corners exact in its frame, B's mapped with their error), or nothing where only the exact
+  // test can tell: a transversal crossing costs no exact arithmetic, nor, where the map is
+  // exactly the identity, a degenerate contact (the filter decides exact inputs exactly).
+  // Intersection is kept by any affine map, and the mapping error covers the difference from the
+  // exact pose_a^-1 pose_b.
+  std::optional<bool> touchesCertified(const std::array<Eigen::Vector3d, 3>& corners_a,
+                                       const std::array<Eigen::Vector3d, 3>& corners_b,
+                                       const std::array<Eigen::Vector3d, 3>& local_b) const {
+    std::array<UncertainPoint, 6> points;
+    for (std::size_t k = 0; k < 3; ++k) {
+      points[k].p = corners_a[k];
+      points[3 + k].p = corners_b[k];
+      if (!map_.exact) points[3 + k].error.setConstant(map_.bounds.pointError(local_b[k]));
+    }
+    return trianglesIntersectCertified(points[0], points[1], points[2], points[3], points[4],
+                                       points[5]);
+  }
+
   // A pair measured: settled, or waiting for its exact closest points (it does not touch).
   struct Measured {
     PairDistance pair;
@@ -385,9 +442,13 @@ class Search {
     pair.value = std::clamp(computed.value, pair.lower, pair.upper);
     if (pair.lower > 0.0 && pair.upper - pair.lower <= kRelativeWidth * pair.lower) return {pair};
     if (pair.lower == 0.0) {
-      ++answer_.exact_tests;
-      if (posedTrianglesIntersect(corners_a.data(), pose_a_, local_b.data(), pose_b_))
-        return {touching(corners_a, corners_b)};
+      if (std::optional<bool> touches = touchesCertified(corners_a, corners_b, local_b)) {
+        if (*touches) return {touching(corners_a, corners_b)};
+      } else {
+        ++answer_.exact_tests;
+        if (posedTrianglesIntersect(corners_a.data(), pose_a_, local_b.data(), pose_b_))
+          return {touching(corners_a, corners_b)};
+      }
     }
     return {pair, false};
   }

@@ -153,8 +153,27 @@ TEST(Distance, TouchingAndNearlyTouchingLinks) {
                  "clearance " + std::to_string(clearance));
     if (clearance == 0.0) {
       EXPECT_EQ(answer.distance, 0.0);
+      // One pose for both: the map into A's frame is exactly the identity, and the certified
+      // double-precision test decides the coincident vertex with exact predicates.
+      EXPECT_EQ(answer.exact_tests, 0u);
     }
   }
+}
+
+// Shapes that cross through each other at a tilted pose: contact is certified in double
+// precision by the filtered triangle test, without exact arithmetic.
+TEST(Distance, CrossingShapesNeedNoExactArithmetic) {
+  const TriangleMesh torus = torusMesh();
+  const ObbTree tree = ObbTree::build(torus.vertices, torus.triangles);
+  const Pose pose_a = makePose(Eigen::Matrix3d::Identity(), Eigen::Vector3d(3.0, -2.0, 1.0));
+  const Pose pose_b = makePose(
+      Eigen::AngleAxisd(1.1, Eigen::Vector3d(0.3, 1.0, 0.2).normalized()).toRotationMatrix(),
+      Eigen::Vector3d(3.4, -1.7, 1.2));
+  DistanceAnswer answer;
+  distance(tree, pose_a, tree, pose_b, DistanceRequest{}, answer);
+  expectAnswer(torus, pose_a, torus, pose_b, DistanceRequest{}, answer, "crossing tori");
+  EXPECT_EQ(answer.distance, 0.0);
+  EXPECT_EQ(answer.exact_tests, 0u);
 }
 
 }  // namespace

@@ -38,18 +38,18 @@ struct DistanceAnswer {
 
 /// The distance between two OBB trees by best-first simultaneous descent, in A's model frame:
 /// node pairs wait in a heap ordered by a lower bound on the distance between their boxes (the
-/// largest gap between the boxes' projections on the direction of their closest points, found
-/// by alternating projections, and on the 15 separating-axis candidates, each divided by its
-/// axis length, less the bound on the rounding of the relative map); the pair with the
-/// smallest bound is taken next, its larger box split (or, at two leaves, every triangle pair's
-/// distance computed). A triangle pair is measured unless the gap between its bounds in A's
-/// frame already rules it out.
+/// gap between the boxes' projections on the direction of their closest points, found by one
+/// step of alternating projections, less the bound on the rounding of the relative map); the
+/// pair with the smallest bound is taken next, both boxes split when they are of a size, else
+/// the larger (or, at two leaves, every triangle pair's distance computed). A triangle pair is
+/// measured unless the gap between its bounds in A's frame already rules it out.
 /// Each triangle pair's distance is computed on the mapped corners in double precision with a
 /// certified interval (the gap between the triangles' projections on the closest points'
 /// direction from below, the closest points' length plus their rounding from above, both
 /// widened by the map's error). A pair whose interval cannot rule out contact, or is wider than
 /// 2^-20 of its lower end (nearly touching, slivers, near-parallel edges), is decided exactly:
-/// the exact triangle test for contact, else the exact squared distance of the world corners
+/// contact by the certified double-precision triangle test and, where that cannot tell, the
+/// exact one, else the exact squared distance of the world corners
 /// (that one only when the pair, waiting at its certified lower end, is still a candidate).
 /// The search stops when no pair left can be closer than the best pair's upper end by more than
 /// the tolerance (at least rounding: the smaller of 1e-13 of the coordinates' magnitude and 2^-20
