@@ -69,22 +69,46 @@ struct Candidate {
   }
 };
 
-// max over corners c of n . (c - o) (`largest`) or min (otherwise), and the rounding bound of
-// the projections.
-double extremeProjection(const Vec& n, const Triangle& t, const Vec& o, bool largest,
-                         double& rounding) {
-  double extreme =
-      largest ? -std::numeric_limits<double>::infinity() : std::numeric_limits<double>::infinity();
+// The least and largest of n . (c - o) over t's corners, and the rounding bound of the
+// projections (the largest sum_k |n_k| |c_k - o_k|) raised to cover them.
+struct Projections {
+  double least = std::numeric_limits<double>::infinity();
+  double largest = -std::numeric_limits<double>::infinity();
+};
+
+Projections project(const Vec& n, const Triangle& t, const Vec& o, double& rounding) {
+  Projections out;
   for (const Vec& c : t) {
     const Vec w = c - o;
     const double projection = n.dot(w);
-    extreme = largest ? std::max(extreme, projection) : std::min(extreme, projection);
+    out.least = std::min(out.least, projection);
+    out.largest = std::max(out.largest, projection);
     rounding = std::max(rounding, n.cwiseAbs().dot(w.cwiseAbs()));
   }
-  return extreme;
+  return out;
 }
 
 }  // namespace
+
+// Every point of a projects on n within [a.least, a.largest] and every point of b within
+// [b.least, b.largest] (exact corners), so the triangles are at least the gap between those
+// ranges over |n| apart; b's exact corners are within b_error of the given ones.
+double separationAlong(const Vec& n, const Triangle& a, const Triangle& b, double b_error,
+                       const Vec& origin) {
+  const double length = n.norm();
+  if (!(length > 0.0) || !std::isfinite(length)) return 0.0;
+  double rounding = 0.0;
+  const Projections of_a = project(n, a, origin, rounding);
+  const Projections of_b = project(n, b, origin, rounding);
+  const double apart = std::max(of_b.least - of_a.largest, of_a.least - of_b.largest);
+  const double gap =
+      apart * (1.0 - kUnitRoundoff) - 2.0 * 6.0 * kUnitRoundoff * rounding * (1.0 + kUnitRoundoff);
+  if (!(gap > 0.0)) return 0.0;
+  const double lower =
+      (gap / (length * (1.0 + 3.0 * kUnitRoundoff))) * (1.0 - 2.0 * kUnitRoundoff) -
+      b_error * (1.0 + kUnitRoundoff) - kTiny;
+  return std::max(0.0, lower);
+}
 
 CertifiedDistance certifiedTriangleDistance(const Triangle& a, const Triangle& b, double b_error) {
   Candidate best;
@@ -118,24 +142,7 @@ CertifiedDistance certifiedTriangleDistance(const Triangle& a, const Triangle& b
     return answer;  // lower 0: the caller decides exactly
   }
 
-  // Every point of a projects on n below max_a and every point of b above min_b, so the
-  // triangles are at least (min_b - max_a) / |n| apart (exact corners); b's exact corners are
-  // within b_error of the given ones.
-  const Vec n = best.on_b - best.on_a;
-  const double length = n.norm();
-  if (length > 0.0) {
-    double rounding = 0.0;
-    const double max_a = extremeProjection(n, a, best.on_a, /*largest=*/true, rounding);
-    const double min_b = extremeProjection(n, b, best.on_a, /*largest=*/false, rounding);
-    const double gap = (min_b - max_a) * (1.0 - kUnitRoundoff) -
-                       2.0 * 6.0 * kUnitRoundoff * rounding * (1.0 + kUnitRoundoff);
-    if (gap > 0.0) {
-      const double lower =
-          (gap / (length * (1.0 + 3.0 * kUnitRoundoff))) * (1.0 - 2.0 * kUnitRoundoff) -
-          b_error * (1.0 + kUnitRoundoff) - kTiny;
-      answer.lower = std::max(0.0, lower);
-    }
-  }
+  answer.lower = separationAlong(best.on_b - best.on_a, a, b, b_error, best.on_a);
   answer.value = std::clamp(computed, answer.lower, answer.upper);
   return answer;
 }

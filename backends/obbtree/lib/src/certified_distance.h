@@ -34,4 +34,14 @@ CertifiedDistance certifiedTriangleDistance(const std::array<Eigen::Vector3d, 3>
                                             const std::array<Eigen::Vector3d, 3>& b,
                                             double b_error);
 
+/// A certified lower bound on the distance between triangle `a` (exact corners) and the triangle
+/// whose exact corners lie within `b_error` of `b`'s: the gap between their projections on the
+/// direction `n` (either way round, any length; n as given, not an exact one), with each
+/// projection's rounding bounded term by term, less b_error; 0 when the projections overlap.
+/// Projections are taken relative to `origin`, which should lie near both triangles (it keeps
+/// the rounding small); any point gives a valid bound.
+double separationAlong(const Eigen::Vector3d& n, const std::array<Eigen::Vector3d, 3>& a,
+                       const std::array<Eigen::Vector3d, 3>& b, double b_error,
+                       const Eigen::Vector3d& origin);
+
 }  // namespace collido::obbtree::detail

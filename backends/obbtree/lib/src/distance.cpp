@@ -186,14 +186,19 @@ class Search {
     return detail::boxPairLowerBound({r, t, box_a.half_extents, box_b.box.half_extents}, slack);
   }
 
+  // Whether a pair with this lower bound on its world distance cannot beat the best (less the
+  // tolerance); the least such bound is kept for the answer's lower end.
+  bool setsAside(double world_lower) {
+    if (world_lower < best_value_ - tolerance()) return false;
+    floor_ = std::min(floor_, world_lower);
+    return true;
+  }
+
   // The node pair to search, or nothing when its bound sets it aside.
   std::optional<Pending> consider(std::int32_t ia, std::int32_t ib, const OrientedBox& box_a,
                                   const Eigen::Matrix3d& r, const MappedBox& box_b) {
     const double lower = bound(box_a, r, box_b);
-    if (worldLower(lower) >= best_value_ - tolerance()) {
-      floor_ = std::min(floor_, worldLower(lower));
-      return std::nullopt;
-    }
+    if (setsAside(worldLower(lower))) return std::nullopt;
     return Pending{lower, ia, ib};
   }
 
@@ -333,11 +338,7 @@ class Search {
         // The gap between the triangles' axis-aligned bounds (in A's frame) is a lower bound on
         // their distance: a pair that cannot beat the best is not measured.
         const double gap = (ta_leaf.lo - hi_b).cwiseMax(lo_b - ta_leaf.hi).cwiseMax(0.0).norm();
-        const double gap_bound = worldLower(gap * (1.0 - 8.0 * kEps) - mapping_error);
-        if (gap_bound >= best_value_ - tolerance()) {
-          floor_ = std::min(floor_, gap_bound);
-          continue;
-        }
+        if (setsAside(worldLower(gap * (1.0 - 8.0 * kEps) - mapping_error))) continue;
         ++answer_.triangle_tests;
         const Measured measured = measure(ta_leaf.corners, corners_b, local_b, mapping_error);
         if (measured.settled) {
@@ -351,10 +352,7 @@ class Search {
         // or a closer one, makes that unnecessary.
         best_upper_ = std::min(best_upper_, measured.pair.upper);
         const double key = std::max(measured.pair.lower, std::numeric_limits<double>::denorm_min());
-        if (worldLower(key) >= best_value_ - tolerance()) {
-          floor_ = std::min(floor_, worldLower(key));
-          continue;
-        }
+        if (setsAside(worldLower(key))) continue;
         enqueue(Pending{key, -1 - ta_leaf.position, j});
       }
     }
