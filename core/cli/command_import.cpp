@@ -15,7 +15,8 @@ void addImportCommand(CLI::App& app, int& exit_code) {
       "A robot in URDF as a scene: its links' collision geometry as objects mounted on their "
       "parents, its joints driving the frames; self-collision of every link pair but adjacent "
       "ones and those in contact at the reference configuration, robot against environment, and "
-      "the clearance of its last link (scenes/README.md, \"Robots from URDF\")");
+      "the clearance of its last link or the --clearance links (scenes/README.md, \"Robots from "
+      "URDF\")");
   auto request = std::make_shared<UrdfImportRequest>();
   urdf->add_option("robot", request->urdf, "the URDF file")->required();
   urdf->add_option("--trajectory", request->trajectory,
@@ -30,6 +31,9 @@ void addImportCommand(CLI::App& app, int& exit_code) {
                    "LINK LINK: a pair never asked for self-collision (repeatable)");
   urdf->add_option("--enable-pair", request->enable_pairs,
                    "LINK LINK: a pair asked whatever the rules say (repeatable)");
+  urdf->add_option("--clearance", request->clearance_links,
+                   "LINK: ask its distance to each environment object (repeatable; default: the "
+                   "link with the most joints above it)");
   urdf->callback([request, &exit_code] {
     const Result<UrdfImport> imported = importUrdf(*request);
     if (!imported.ok()) {

@@ -1,11 +1,14 @@
-// Writes the bundled robot cell's sources into a folder: a 6-axis arm with a parallel gripper in
-// URDF (arm6.urdf), its links' collision meshes and the cell's (shelves, two bins, a fixture),
-// each made by our generators (boxes and cylinders, solid or bored, overlapping in one mesh as
-// station_module's parts do), and a pick-and-place trajectory as a joints CSV. The scene is then
-// `collido import urdf` of these files (tools/make_robot_cell.sh); ctest robot_cell.regenerates
-// checks that the committed files are what this program and the import write.
+// Writes a bundled robot cell's sources into a folder: a 6-axis arm with a parallel gripper in
+// URDF, its links' collision meshes and the cell's, and a pick-and-place trajectory as a joints
+// CSV. The box arm (arm6.urdf, scenes/robot_cell) has links of boxes and cylinders from our
+// generators, overlapping in one mesh as station_module's parts do; the cast arm (--cast,
+// arm6_cast.urdf, scenes/robot_cell_cast) has the same joints with free-form links polygonized
+// from FRep solids (cast_links.h), and its cell adds a bench and thin sheet-metal guards. The
+// scene is then `collido import urdf` of these files (tools/make_robot_cell.sh); ctest
+// robot_cell.regenerates checks that the committed files are what this program and the import
+// write.
 //
-// Usage: collido_make_robot_cell FOLDER
+// Usage: collido_make_robot_cell [--cast] FOLDER
 #include <array>
 #include <charconv>
 #include <cmath>
@@ -20,9 +23,12 @@
 
 #include <collido/mesh/procedural.h>
 
+#include "cast_links.h"
+
 namespace {
 
 using collido::TriangleMesh;
+namespace robot_cell = collido::robot_cell;
 
 [[noreturn]] void fail(const std::string& problem) {
   std::cerr << "collido_make_robot_cell: " << problem << "\n";
@@ -35,6 +41,18 @@ std::string number(double value) {
   std::array<char, 32> text{};
   const auto written = std::to_chars(text.data(), text.data() + text.size(), value);
   return std::string(text.data(), written.ptr);
+}
+
+void writeObj(const TriangleMesh& mesh, const std::filesystem::path& path) {
+  std::ofstream out(path, std::ios::binary);
+  out << "# " << path.filename().string() << ", written by collido_make_robot_cell\n";
+  for (Eigen::Index v = 0; v < mesh.vertices.cols(); ++v)
+    out << "v " << number(mesh.vertices(0, v)) << " " << number(mesh.vertices(1, v)) << " "
+        << number(mesh.vertices(2, v)) << "\n";
+  for (Eigen::Index t = 0; t < mesh.triangles.cols(); ++t)
+    out << "f " << mesh.triangles(0, t) + 1 << " " << mesh.triangles(1, t) + 1 << " "
+        << mesh.triangles(2, t) + 1 << "\n";
+  if (!out) fail("cannot write " + path.string());
 }
 
 // Generated parts in one mesh: their vertices and triangles appended, each part placed by a pose.
@@ -52,17 +70,7 @@ class MeshAssembly {
         mesh.triangles.array() + static_cast<int>(first);
   }
 
-  void write(const std::filesystem::path& path) const {
-    std::ofstream out(path, std::ios::binary);
-    out << "# " << path.filename().string() << ", written by collido_make_robot_cell\n";
-    for (Eigen::Index v = 0; v < mesh_.vertices.cols(); ++v)
-      out << "v " << number(mesh_.vertices(0, v)) << " " << number(mesh_.vertices(1, v)) << " "
-          << number(mesh_.vertices(2, v)) << "\n";
-    for (Eigen::Index t = 0; t < mesh_.triangles.cols(); ++t)
-      out << "f " << mesh_.triangles(0, t) + 1 << " " << mesh_.triangles(1, t) + 1 << " "
-          << mesh_.triangles(2, t) + 1 << "\n";
-    if (!out) fail("cannot write " + path.string());
-  }
+  void write(const std::filesystem::path& path) const { writeObj(mesh_, path); }
 
  private:
   TriangleMesh mesh_;
@@ -181,6 +189,29 @@ void writeCell(const std::filesystem::path& folder) {
 }
 
 // The links with geometry, each with its mesh of the same name (writeLinks), in the URDF's order.
+// The cast arm's cell adds what real cells have around an arm: a work bench behind it and
+// sheet-metal guards (1.5 mm panels with a folded edge) fencing the back and the fixture's side.
+void writeCastCellExtras(const std::filesystem::path& folder) {
+  MeshAssembly bench;  // a top at 0.72 on four legs, behind the arm (-x)
+  box(bench, {0.40, 0.70, 0.03}, {-0.58, 0.05, 0.705});
+  for (const double x : {-0.76, -0.40}) {
+    for (const double y : {-0.27, 0.37})
+      box(bench, {0.04, 0.04, 0.69}, {x, y, 0.345});
+  }
+  bench.write(folder / "bench.obj");
+
+  constexpr double kSheet = 0.0015;
+  MeshAssembly guard_back;  // across the back at x = -0.9, its top edge folded towards the arm
+  box(guard_back, {kSheet, 1.6, 1.2}, {-0.9, 0.0, 0.65});
+  box(guard_back, {0.04, 1.6, kSheet}, {-0.9 + 0.02, 0.0, 1.25});
+  guard_back.write(folder / "guard_back.obj");
+
+  MeshAssembly guard_side;  // beside the fixture at y = -0.9, its front edge folded inwards
+  box(guard_side, {1.4, kSheet, 1.2}, {-0.2, -0.9, 0.65});
+  box(guard_side, {kSheet, 0.04, 1.2}, {0.5, -0.9 + 0.02, 0.65});
+  guard_side.write(folder / "guard_side.obj");
+}
+
 constexpr const char* kMeshLinks[] = {"base", "turret",  "upper_arm",   "forearm",     "wrist",
                                       "hand", "gripper", "finger_left", "finger_right"};
 
@@ -216,16 +247,16 @@ constexpr const char* kJointsUrdf = R"(  <link name="tool_centre"/>
 </robot>
 )";
 
-// The arm's URDF: the links, then the joints.
-std::string urdfText() {
+// The arm's URDF: the links (meshes under package://PACKAGE/meshes/), then the joints.
+std::string urdfText(const std::string& package, const std::string& what) {
   std::string text = R"(<?xml version="1.0"?>
-<!-- The bundled robot cell's arm (scenes/robot_cell.json): six revolute joints and a parallel
+<!-- )" + what + R"(: six revolute joints and a parallel
      gripper whose right finger mimics the left. Written by collido_make_robot_cell. -->
 <robot name="arm6">
 )";
   for (const char* link : kMeshLinks) {
     text.append("  <link name=\"").append(link).append("\"><collision><geometry>\n");
-    text.append("    <mesh filename=\"package://robot_cell/meshes/")
+    text.append("    <mesh filename=\"package://" + package + "/meshes/")
         .append(link)
         .append(".obj\"/></geometry></collision></link>\n");
   }
@@ -298,20 +329,34 @@ void writeTrajectory(const std::filesystem::path& path) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc != 2) {
-    std::cerr << "usage: collido_make_robot_cell FOLDER\n";
+  const bool cast = argc == 3 && std::string(argv[1]) == "--cast";
+  if (argc != 2 && !cast) {
+    std::cerr << "usage: collido_make_robot_cell [--cast] FOLDER\n";
     return 2;
   }
-  const std::filesystem::path folder = argv[1];
+  const std::filesystem::path folder = argv[argc - 1];
   std::error_code error;
   for (const char* sub : {"meshes", "cell"}) {
     if (std::filesystem::create_directories(folder / sub, error); error)
       fail((folder / sub).string() + ": " + error.message());
   }
-  writeLinks(folder / "meshes");
+  std::string urdf_name = "arm6.urdf";
+  std::string urdf_text =
+      urdfText("robot_cell", "The bundled robot cell's arm (scenes/robot_cell.json)");
+  if (cast) {
+    // About 4,000 triangles a link: the 2k-10k of arm CAD exports' collision meshes.
+    for (const robot_cell::CastLink& link : robot_cell::castLinks(4000))
+      writeObj(link.mesh, folder / "meshes" / (link.name + ".obj"));
+    writeCastCellExtras(folder / "cell");
+    urdf_name = "arm6_cast.urdf";
+    urdf_text = urdfText("robot_cell_cast",
+                         "The bundled cast robot cell's arm (scenes/robot_cell_cast.json)");
+  } else {
+    writeLinks(folder / "meshes");
+  }
   writeCell(folder / "cell");
-  std::ofstream urdf(folder / "arm6.urdf", std::ios::binary);
-  if (!(urdf << urdfText())) fail("cannot write " + (folder / "arm6.urdf").string());
+  std::ofstream urdf(folder / urdf_name, std::ios::binary);
+  if (!(urdf << urdf_text)) fail("cannot write " + (folder / urdf_name).string());
   writeTrajectory(folder / "pick_and_place.csv");
   return 0;
 }

@@ -275,15 +275,43 @@ class SceneBuilder {
     return {};
   }
 
-  // The robot against its environment (one group query of all pairs), and the clearance of the
-  // last link of the longest chain to each environment object.
-  void addEnvironmentQueries() {
-    if (objects_.size() == robot_objects_) return;
+  // The robot against its environment (one group query of all pairs), and the clearance of each
+  // link --clearance names (by default the last link of the longest chain) to each environment
+  // object. Errors name a link that is unknown or has no collision geometry.
+  Status addEnvironmentQueries() {
+    if (objects_.size() == robot_objects_) return {};
     queries_.push_back({{"name", "robot vs environment"},
                         {"a", {{"subtree", objects_[0].name}}},
                         {"b", {{"subtree", objects_[robot_objects_].name}}},
                         {"kind", "all_pairs"}});
-    // The tool: the first element of the link with the most joints above it.
+    std::vector<std::size_t> measured;  // first objects of the links whose clearance is asked
+    for (const std::string& name : request_.clearance_links) {
+      const std::optional<std::size_t> link = robot_.linkNamed(name);
+      if (!link) {
+        return Status(StatusCode::kInvalidArgument,
+                      "--clearance " + name + ": no link of robot '" + robot_.name + "'");
+      }
+      const auto first = first_of_link_.find(*link);
+      if (first == first_of_link_.end()) {
+        return Status(StatusCode::kInvalidArgument,
+                      "--clearance " + name + ": link has no collision geometry");
+      }
+      measured.push_back(first->second);
+    }
+    if (measured.empty()) measured.push_back(deepestLinkObject());
+    for (const std::size_t tool : measured) {
+      for (std::size_t e = robot_objects_; e < objects_.size(); ++e) {
+        queries_.push_back({{"name", "clearance: " + objects_[tool].name + "-" + objects_[e].name},
+                            {"a", objects_[tool].name},
+                            {"b", objects_[e].name},
+                            {"kind", "distance"}});
+      }
+    }
+    return {};
+  }
+
+  // The first object of the link with the most joints above it (the tool, on an arm).
+  std::size_t deepestLinkObject() const {
     std::size_t tool = 0;
     std::size_t deepest = 0;
     for (const auto& [link, first] : first_of_link_) {
@@ -296,12 +324,7 @@ class SceneBuilder {
         tool = first;
       }
     }
-    for (std::size_t e = robot_objects_; e < objects_.size(); ++e) {
-      queries_.push_back({{"name", "clearance: " + objects_[tool].name + "-" + objects_[e].name},
-                          {"a", objects_[tool].name},
-                          {"b", objects_[e].name},
-                          {"kind", "distance"}});
-    }
+    return tool;
   }
 
   Json scene(std::size_t frames, const std::string& description) const {
@@ -403,7 +426,7 @@ Result<UrdfImport> importUrdf(const UrdfImportRequest& request) {
   if (Status s = builder.addRobot(frames.value()); !s.ok()) return s;
   if (Status s = builder.addEnvironment(summary.frames); !s.ok()) return s;
   if (Status s = builder.addSelfCollision(summary); !s.ok()) return s;
-  builder.addEnvironmentQueries();
+  if (Status s = builder.addEnvironmentQueries(); !s.ok()) return s;
   if (!builder.hasQueries()) {
     return Status(StatusCode::kInvalidArgument,
                   request.urdf +

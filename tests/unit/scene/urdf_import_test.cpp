@@ -206,6 +206,37 @@ TEST(UrdfImport, LinksFollowForwardKinematicsAndSelfCollisionFollowsTheRules) {
   EXPECT_EQ(scene.queries.back().name, "clearance: finger-env_far_box");
 }
 
+TEST(UrdfImport, ClearanceIsAskedForTheNamedLinks) {
+  const Files f = writeRobot(kRobot, "yaw\n0\n0.5\n");
+  UrdfImportRequest request;
+  request.urdf = f.urdf;
+  request.trajectory = f.csv;
+  request.environment = {f.dir + "/far_box.obj"};
+  request.output = f.dir + "/scene/robot.json";
+  request.clearance_links = {"tool", "slider"};
+  ASSERT_TRUE(importUrdf(request).ok());
+  const Result<Scene> loaded = loadScene(request.output);
+  ASSERT_TRUE(loaded.ok()) << loaded.status().toString();
+  std::vector<std::string> clearances;
+  for (const SceneQuery& query : loaded.value().queries) {
+    if (query.name.rfind("clearance: ", 0) == 0) clearances.push_back(query.name);
+  }
+  EXPECT_EQ(clearances, (std::vector<std::string>{"clearance: tool-env_far_box",
+                                                  "clearance: slider-env_far_box"}));
+
+  // A link that is not there, or has no geometry, is refused by name.
+  for (const auto& [link, problem] :
+       {std::pair<std::string, std::string>{"elbow", "no link of robot"},
+        std::pair<std::string, std::string>{"flange", "link has no collision geometry"}}) {
+    request.clearance_links = {link};
+    const Result<UrdfImport> refused = importUrdf(request);
+    ASSERT_FALSE(refused.ok()) << link;
+    EXPECT_NE(refused.status().message().find("--clearance " + link + ": " + problem),
+              std::string::npos)
+        << refused.status().message();
+  }
+}
+
 TEST(UrdfImport, BadRobotsAreRefusedNamingTheLinkJointOrColumn) {
   const auto refused = [](const std::string& robot, const std::string& csv,
                           const std::vector<std::string>& words) {

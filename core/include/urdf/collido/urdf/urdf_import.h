@@ -24,6 +24,9 @@ struct UrdfImportRequest {
   /// Link pairs never asked, and link pairs asked whatever the rules say (names as in the URDF).
   std::vector<std::pair<std::string, std::string>> disable_pairs;
   std::vector<std::pair<std::string, std::string>> enable_pairs;
+  /// Links whose clearance to each environment object is asked; empty: the link with the most
+  /// joints above it.
+  std::vector<std::string> clearance_links;
 };
 
 /// What an import wrote.
@@ -42,9 +45,9 @@ struct UrdfImport {
 /// is one group query (all pairs) over every pair of links but adjacent ones and those in
 /// contact at the reference configuration (MoveIt's default state), as MoveIt's setup assistant
 /// applies those two rules, the pairs left out being its `except` list;
-/// robot against environment is one group query of all pairs, and the link with the most joints
-/// above it gets a distance query to each environment object. Errors name the file and the
-/// link, joint or column.
+/// robot against environment is one group query of all pairs, and each clearance link (by default
+/// the link with the most joints above it) gets a distance query to each environment object. Errors
+/// name the file and the link, joint or column.
 Result<UrdfImport> importUrdf(const UrdfImportRequest& request);
 
 }  // namespace collido
