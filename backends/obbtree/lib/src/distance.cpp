@@ -187,9 +187,10 @@ class Search {
   }
 
   // Whether a pair with this lower bound on its world distance cannot beat the best (less the
-  // tolerance); the least such bound is kept for the answer's lower end.
+  // tolerance); the least such bound is kept for the answer's lower end. Before any pair is
+  // measured a relative tolerance makes the cut inf - inf, NaN: nothing is set aside then.
   bool setsAside(double world_lower) {
-    if (world_lower < best_value_ - tolerance()) return false;
+    if (!(world_lower >= best_value_ - tolerance())) return false;
     floor_ = std::min(floor_, world_lower);
     return true;
   }
