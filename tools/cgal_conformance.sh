@@ -13,5 +13,7 @@ oracle=()
 if [[ -d build/release/tests/conformance/oracle_answers ]]; then
   oracle=(--oracle-cache=build/release/tests/conformance/oracle_answers)
 fi
+# The cast robot cell is left out as in the Release kit (tests/conformance/CMakeLists.txt): its
+# exact answers are not in the store, and computing them here takes a minute.
 build/cgal/collido_conformance --plugin=build/cgal/plugins/libcollido_plugin_cgal.so \
-  "${oracle[@]}" "$@"
+  "${oracle[@]}" --skip-scenes=robot_cell_cast "$@"
