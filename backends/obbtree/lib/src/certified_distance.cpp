@@ -152,7 +152,7 @@ CertifiedDistance certifiedTriangleDistance(const Triangle& a, const Triangle& b
     if (projectOntoFace(p, a, on_face)) best.consider(on_face, p);
   }
   if (best.squared < std::numeric_limits<double>::infinity()) {
-    const CertifiedDistance proven = answerFor(best, a, b, b_error);
+    CertifiedDistance proven = answerFor(best, a, b, b_error);
     if (proven.lower > 0.0 && proven.upper - proven.lower <= kProvenWidth * proven.lower)
       return proven;
   }
