@@ -87,14 +87,10 @@ Json surfaceRunJson(const SurfaceRun& run) {
            {"status", row.failure}});
       continue;
     }
-    Json backend = {{"backend", row.backend},
-                    {"segments", row.segments},
-                    {"triangles", row.triangles},
-                    {"distance", row.distance},
-                    {"error", row.error},
-                    {"median_us", row.median_us},
-                    {"build_ms", row.build_ms},
-                    {"status", detail::rowStatus({})}};
+    Json backend = {{"backend", row.backend},     {"segments", row.segments},
+                    {"triangles", row.triangles}, {"distance", row.distance},
+                    {"error", row.error},         {"median_us", row.median_us},
+                    {"build_ms", row.build_ms},   {"status", detail::rowStatus({})}};
     if (row.bv_tests) backend["bv_tests"] = *row.bv_tests;
     if (row.primitive_tests) backend["primitive_tests"] = *row.primitive_tests;
     json["backends"].push_back(std::move(backend));
