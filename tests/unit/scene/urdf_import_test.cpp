@@ -106,15 +106,21 @@ Files writeRobot(const std::string& robot, const std::string& csv) {
   return f;
 }
 
-TEST(UrdfImport, LinksFollowForwardKinematicsAndSelfCollisionFollowsTheRules) {
-  // Frame 0 is the reference configuration (every joint at 0), where the post on the base
-  // (base_2) touches the arm.
-  const Files f = writeRobot(kRobot, "yaw, shoulder,extend\n0,0,0\n0.5,-0.4,0.1\n3.0,0.9,0.3\n");
+// The written robot and trajectory with the far box as environment, into scene/robot.json.
+UrdfImportRequest requestWithEnvironment(const Files& f) {
   UrdfImportRequest request;
   request.urdf = f.urdf;
   request.trajectory = f.csv;
   request.environment = {f.dir + "/far_box.obj"};
   request.output = f.dir + "/scene/robot.json";
+  return request;
+}
+
+TEST(UrdfImport, LinksFollowForwardKinematicsAndSelfCollisionFollowsTheRules) {
+  // Frame 0 is the reference configuration (every joint at 0), where the post on the base
+  // (base_2) touches the arm.
+  const Files f = writeRobot(kRobot, "yaw, shoulder,extend\n0,0,0\n0.5,-0.4,0.1\n3.0,0.9,0.3\n");
+  UrdfImportRequest request = requestWithEnvironment(f);
   request.disable_pairs = {{"tool", "base"}};
   request.enable_pairs = {{"base", "column"}};
   const Result<UrdfImport> imported = importUrdf(request);
@@ -208,11 +214,7 @@ TEST(UrdfImport, LinksFollowForwardKinematicsAndSelfCollisionFollowsTheRules) {
 
 TEST(UrdfImport, ClearanceIsAskedForTheNamedLinks) {
   const Files f = writeRobot(kRobot, "yaw\n0\n0.5\n");
-  UrdfImportRequest request;
-  request.urdf = f.urdf;
-  request.trajectory = f.csv;
-  request.environment = {f.dir + "/far_box.obj"};
-  request.output = f.dir + "/scene/robot.json";
+  UrdfImportRequest request = requestWithEnvironment(f);
   request.clearance_links = {"tool", "slider"};
   ASSERT_TRUE(importUrdf(request).ok());
   const Result<Scene> loaded = loadScene(request.output);

@@ -47,9 +47,9 @@ namespace {
 
 using detail::boxOf;
 using detail::boxSize;
-using detail::kEps;
 using detail::QueryBounds;
-using detail::queryBounds;
+using detail::RelativeMap;
+using detail::relativeMap;
 
 struct PairTask {
   std::int32_t a;
@@ -122,19 +122,15 @@ Placement placementOf(const ObbTree& a, const Eigen::Isometry3d& pose_a, const O
                       QueryBounds{}, {}};
   // Computed in double with an error far below 0.5 for any matrix near a rotation.
   placement.rotation_a_positive = pose_a.linear().determinant() > 0.5;
-  if (pose_a.matrix() == pose_b.matrix()) {
-    // One pose for both: the relative map is exactly the identity.
-    placement.bounds.axis_error = a.axisDefect() + b.axisDefect() + 32.0 * kEps;
+  const RelativeMap map = relativeMap(a, pose_a, b, pose_b);
+  placement.rotation = map.rotation;
+  placement.translation = map.translation;
+  placement.bounds = map.bounds;
+  if (map.identity) {
     for (int k = 0; k < 3; ++k)
       placement.exact_rows[k] = ExactRow{k, 1.0};
     return placement;
   }
-  // The transpose stands for the inverse; the bounds account for the rotations not being
-  // exactly orthonormal.
-  const Eigen::Vector3d shift = pose_b.translation() - pose_a.translation();
-  placement.rotation = pose_a.linear().transpose() * pose_b.linear();
-  placement.translation = pose_a.linear().transpose() * shift;
-  placement.bounds = queryBounds(a, pose_a, b, pose_b);
   // Where row k of R_a^-1 is exactly +-e_i (so R_a^T's is the same), the computed rotation's row
   // k is exactly +-(row i of R_b) and the translation's is +-(t_b - t_a)[i], exact unless that
   // difference rounded; if that row of the rotation is a signed unit vector too, coordinate k

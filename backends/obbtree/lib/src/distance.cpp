@@ -24,17 +24,6 @@ namespace {
 using detail::boxOf;
 using detail::boxSize;
 using detail::kEps;
-using detail::QueryBounds;
-
-// The relative map of B's model frame into A's, with its error bounds.
-struct Map {
-  Eigen::Matrix3d rotation;
-  Eigen::Vector3d translation;
-  QueryBounds bounds;
-  bool exact = false;  // the identity, exactly: mapped corners carry no error
-
-  Eigen::Vector3d operator()(const Eigen::Vector3d& v) const { return rotation * v + translation; }
-};
 
 // A node pair waiting, or (a < 0) a triangle pair waiting for its exact closest points: A's
 // triangle at leaf position -1 - a, B's at b.
@@ -77,19 +66,8 @@ class Search {
         nodes_b_(nodes_b),
         pose_b_(pose_b),
         request_(request),
-        answer_(answer) {
-    if (pose_a.matrix() == pose_b.matrix()) {
-      // One pose for both (shapes given in one frame): the relative map is exactly the identity.
-      map_.rotation.setIdentity();
-      map_.translation.setZero();
-      map_.bounds.axis_error = a.axisDefect() + b.axisDefect() + 32.0 * kEps;
-      map_.exact = true;
-    } else {
-      map_.rotation = pose_a.linear().transpose() * pose_b.linear();
-      map_.translation =
-          pose_a.linear().transpose() * (pose_b.translation() - pose_a.translation());
-      map_.bounds = detail::queryBounds(a, pose_a, b, pose_b);
-    }
+        answer_(answer),
+        map_(detail::relativeMap(a, pose_a, b, pose_b)) {
     const OrientedBox root_a = boxOf(nodes_a.front());
     const OrientedBox root_b = boxOf(nodes_b.front());
     const double magnitude =
@@ -220,8 +198,8 @@ class Search {
     return first;
   }
 
-  // Splits both boxes of a pair when they are apart and of a size (splitBoth), else the larger (B's
-  // mapped box computed once for both of A's children, A's box decoded once for both of B's), or
+  // Splits both boxes of a pair when they are apart and of a size, else the larger (B's mapped
+  // box computed once for both of A's children, A's box decoded once for both of B's), or
   // measures two leaves; returns the nearest child pair.
   std::optional<Pending> expand(const Pending& pair) {
     if (pair.a < 0) {
@@ -234,28 +212,20 @@ class Search {
       leaves(na, nb);
       return std::nullopt;
     }
-    if (pair.bound > 0.0 && !na.isLeaf() && !nb.isLeaf()) {
-      const double size_a = boxSize(na);
-      const double size_b = boxSize(nb);
-      if (size_a <= kSplitBothRatio * size_b && size_b <= kSplitBothRatio * size_a)
-        return splitBoth(pair, na, nb);
+    const bool inner_a = !na.isLeaf();
+    const bool inner_b = !nb.isLeaf();
+    const double size_a = inner_a ? boxSize(na) : 0.0;
+    const double size_b = inner_b ? boxSize(nb) : 0.0;
+    if (pair.bound > 0.0 && inner_a && inner_b && size_a <= kSplitBothRatio * size_b &&
+        size_b <= kSplitBothRatio * size_a) {
+      return childPairs(std::array<std::int32_t, 2>{pair.a + 1, na.secondChild()},
+                        std::array<std::int32_t, 2>{pair.b + 1, nb.secondChild()});
     }
-    const bool split_a = !na.isLeaf() && (nb.isLeaf() || boxSize(na) >= boxSize(nb));
-    // B's axes reach A's box frame through one product a bound: B's axes mapped once for both
-    // of A's children, or A's box frame composed with the map once for both of B's.
-    if (split_a) {
-      const auto& box = boxOf(nb);
-      const MappedBox box_b = mappedB(box);
-      const Eigen::Matrix3d axes_b = detail::times(map_.rotation, box.axes);
-      const std::int32_t first = pair.a + 1;
-      const std::int32_t second = na.secondChild();
-      const auto& box_first = boxOf(nodes_a_[static_cast<std::size_t>(first)]);
-      const std::optional<Pending> near_first = consider(
-          first, pair.b, box_first, detail::transposedTimes(box_first.axes, axes_b), box_b);
-      const auto& box_second = boxOf(nodes_a_[static_cast<std::size_t>(second)]);
-      return nearer(near_first, consider(second, pair.b, box_second,
-                                         detail::transposedTimes(box_second.axes, axes_b), box_b));
+    if (inner_a && (!inner_b || size_a >= size_b)) {
+      return childPairs(std::array<std::int32_t, 2>{pair.a + 1, na.secondChild()},
+                        std::array<std::int32_t, 1>{pair.b});
     }
+    // B's box split: A's box frame composed with the map once for both of B's children.
     const auto& box_a = boxOf(na);
     const Eigen::Matrix3d to_box_a = detail::transposedTimes(box_a.axes, map_.rotation);
     const std::int32_t first = pair.b + 1;
@@ -277,17 +247,17 @@ class Search {
   // cost half of four.
   static constexpr double kSplitBothRatio = 2.0;
 
-  // Both boxes split: the four children pairs (each of B's children mapped once for both of A's),
-  // the nearest returned.
-  std::optional<Pending> splitBoth(const Pending& pair, const NodeA& na, const NodeB& nb) {
-    const std::int32_t children_a[2] = {pair.a + 1, na.secondChild()};
-    const std::int32_t children_b[2] = {pair.b + 1, nb.secondChild()};
+  // The pairs of A's nodes `as` with B's nodes `bs` (each of B's boxes mapped once for all of
+  // A's); the nearest is returned, the others queued.
+  template <std::size_t CountA, std::size_t CountB>
+  std::optional<Pending> childPairs(const std::array<std::int32_t, CountA>& as,
+                                    const std::array<std::int32_t, CountB>& bs) {
     std::optional<Pending> best;
-    for (const std::int32_t jb : children_b) {
+    for (const std::int32_t jb : bs) {
       const auto& box = boxOf(nodes_b_[static_cast<std::size_t>(jb)]);
       const MappedBox box_b = mappedB(box);
       const Eigen::Matrix3d axes_b = detail::times(map_.rotation, box.axes);
-      for (const std::int32_t ia : children_a) {
+      for (const std::int32_t ia : as) {
         const auto& box_a = boxOf(nodes_a_[static_cast<std::size_t>(ia)]);
         best = nearer(best,
                       consider(ia, jb, box_a, detail::transposedTimes(box_a.axes, axes_b), box_b));
@@ -414,7 +384,7 @@ class Search {
     for (std::size_t k = 0; k < 3; ++k) {
       points[k].p = corners_a[k];
       points[3 + k].p = corners_b[k];
-      if (!map_.exact) points[3 + k].error.setConstant(map_.bounds.pointError(local_b[k]));
+      if (!map_.identity) points[3 + k].error.setConstant(map_.bounds.pointError(local_b[k]));
     }
     return trianglesIntersectCertified(points[0], points[1], points[2], points[3], points[4],
                                        points[5]);
@@ -480,7 +450,7 @@ class Search {
   const Eigen::Isometry3d& pose_b_;
   const DistanceRequest& request_;
   DistanceAnswer& answer_;
-  Map map_;
+  const detail::RelativeMap map_;
   // The pairs waiting, a min-heap on their bounds (thread-local scratch: its capacity outlives
   // the query, so a search allocates only when it needs more than any before it on the thread).
   std::vector<Pending>& heap_ = scratch().heap;

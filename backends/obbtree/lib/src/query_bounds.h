@@ -52,6 +52,34 @@ inline QueryBounds queryBounds(const ObbTree& a, const Eigen::Isometry3d& pose_a
   return bounds;
 }
 
+// The relative map of B's model frame into A's as a query computes it (R_a^T R_b, R_a^T (t_b -
+// t_a)), with its error bounds; `identity` when both have one pose: the map is then exactly the
+// identity and mapped points carry no error.
+struct RelativeMap {
+  Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();
+  Eigen::Vector3d translation = Eigen::Vector3d::Zero();
+  QueryBounds bounds;
+  bool identity = false;
+
+  Eigen::Vector3d operator()(const Eigen::Vector3d& v) const { return rotation * v + translation; }
+};
+
+inline RelativeMap relativeMap(const ObbTree& a, const Eigen::Isometry3d& pose_a, const ObbTree& b,
+                               const Eigen::Isometry3d& pose_b) {
+  RelativeMap map;
+  if (pose_a.matrix() == pose_b.matrix()) {
+    map.bounds.axis_error = a.axisDefect() + b.axisDefect() + 32.0 * kEps;
+    map.identity = true;
+    return map;
+  }
+  // The transpose stands for the inverse; the bounds account for the rotations not being
+  // exactly orthonormal.
+  map.rotation = pose_a.linear().transpose() * pose_b.linear();
+  map.translation = pose_a.linear().transpose() * (pose_b.translation() - pose_a.translation());
+  map.bounds = queryBounds(a, pose_a, b, pose_b);
+  return map;
+}
+
 // The box a query uses: a double box as stored, a float box decoded (expandBox).
 inline const OrientedBox& boxOf(const Node& node) {
   return node.box;
