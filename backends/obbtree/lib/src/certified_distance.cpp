@@ -59,13 +59,14 @@ struct Candidate {
   Vec on_a = Vec::Zero();
   Vec on_b = Vec::Zero();
 
-  void consider(const Vec& x, const Vec& y) {
+  // Takes x, y when they are nearer than the best; says whether they were.
+  bool consider(const Vec& x, const Vec& y) {
     const double d2 = (x - y).squaredNorm();
-    if (d2 < squared) {
-      squared = d2;
-      on_a = x;
-      on_b = y;
-    }
+    if (!(d2 < squared)) return false;
+    squared = d2;
+    on_a = x;
+    on_b = y;
+    return true;
   }
 };
 
@@ -132,41 +133,104 @@ CertifiedDistance answerFor(const Candidate& best, const Triangle& a, const Tria
   return answer;
 }
 
-// An interval this narrow (relative to its lower end) around a corner-face candidate proves it
-// the closest pair to far below any tolerance the search allows: no other candidate can be
-// shorter than the lower end, so the value differs from the least candidate's by at most this.
+// An interval this narrow (relative to its lower end) around a candidate proves it the closest
+// pair to far below any tolerance the search allows: no other candidate can be shorter than the
+// lower end, so the value differs from the least candidate's by at most this.
 constexpr double kProvenWidth = 0x1p-40;
+
+// How far past the candidate's ends, relative to the products' sizes, a corner may project and
+// still let the candidate be tried: a test in doubles that only picks which candidate is worth
+// certifying (answerFor proves it or not), so rounding must not make it miss the closest pair.
+constexpr double kLenient = 0x1p-30;
+
+// Whether, as computed, no corner `others` of one triangle projects on v = y - x beyond `from`
+// towards the other triangle (sign +1: the corners of the triangle holding x, which must not
+// reach past it towards y; -1: those of the triangle holding y, which must not reach back).
+bool noCornerBeyond(const Vec& v, const Vec& from, const Vec& corner, double sign) {
+  const Vec w = corner - from;
+  return sign * v.dot(w) <= kLenient * v.lpNorm<1>() * w.lpNorm<1>();
+}
+
+// The search for the closest pair with an early end: the first candidate whose direction
+// separates the triangles (the closest pair of two convex sets is the one whose direction
+// separates them, as in PQP's triangle distance) is certified, and returned when its interval
+// is narrow; otherwise every candidate is tried and the least certified.
+class ClosestPairSearch {
+ public:
+  ClosestPairSearch(const Triangle& a, const Triangle& b, double b_error)
+      : a_(a), b_(b), b_error_(b_error) {}
+
+  // Corner k of a against b's face, where its projection falls inside: the other corners of a
+  // must lie no nearer b's plane (b's corners are in it).
+  bool cornerOfAOnFaceOfB(std::size_t k) {
+    Vec on_face;
+    if (!projectOntoFace(a_[k], b_, on_face) || !best_.consider(a_[k], on_face)) return false;
+    const Vec v = on_face - a_[k];
+    return noCornerBeyond(v, a_[k], a_[(k + 1) % 3], 1.0) &&
+           noCornerBeyond(v, a_[k], a_[(k + 2) % 3], 1.0) && proven();
+  }
+
+  bool cornerOfBOnFaceOfA(std::size_t k) {
+    Vec on_face;
+    if (!projectOntoFace(b_[k], a_, on_face) || !best_.consider(on_face, b_[k])) return false;
+    const Vec v = b_[k] - on_face;
+    return noCornerBeyond(v, b_[k], b_[(k + 1) % 3], -1.0) &&
+           noCornerBeyond(v, b_[k], b_[(k + 2) % 3], -1.0) && proven();
+  }
+
+  // Edge i of a (corners i, i+1) against edge j of b: the closest points of two segments already
+  // separate the segments' own ends, so only each triangle's third corner is checked.
+  bool edges(std::size_t i, std::size_t j) {
+    Vec on_a;
+    Vec on_b;
+    closestPointsOfSegments(a_[i], a_[(i + 1) % 3], b_[j], b_[(j + 1) % 3], on_a, on_b);
+    if (!best_.consider(on_a, on_b)) return false;
+    const Vec v = on_b - on_a;
+    return noCornerBeyond(v, on_a, a_[(i + 2) % 3], 1.0) &&
+           noCornerBeyond(v, on_b, b_[(j + 2) % 3], -1.0) && proven();
+  }
+
+  const CertifiedDistance& answer() const { return answer_; }
+
+  // The least candidate certified (after every candidate was tried).
+  CertifiedDistance least() const { return answerFor(best_, a_, b_, b_error_); }
+
+ private:
+  // Certifies the best candidate; true when its interval is narrow enough to end the search.
+  // One failed proof (nearly touching, or an ill-conditioned direction) ends the trying: the
+  // rest of the candidates are then all computed, and certified once at the end.
+  bool proven() {
+    if (given_up_) return false;
+    answer_ = answerFor(best_, a_, b_, b_error_);
+    given_up_ =
+        !(answer_.lower > 0.0 && answer_.upper - answer_.lower <= kProvenWidth * answer_.lower);
+    return !given_up_;
+  }
+
+  const Triangle& a_;
+  const Triangle& b_;
+  double b_error_;
+  Candidate best_;
+  CertifiedDistance answer_;
+  bool given_up_ = false;
+};
 
 }  // namespace
 
 CertifiedDistance certifiedTriangleDistance(const Triangle& a, const Triangle& b, double b_error) {
   // Corners against faces first: where a corner faces the other's face (a small triangle over a
-  // large one, faces nearly parallel) that pair is the closest, and the gap along its direction
-  // proves it, so the nine edge pairs are not needed.
-  Candidate best;
-  Vec on_face;
-  for (const Vec& p : a) {
-    if (projectOntoFace(p, b, on_face)) best.consider(p, on_face);
+  // large one, faces nearly parallel) that pair is the closest, and the nine edge pairs are not
+  // needed.
+  ClosestPairSearch search(a, b, b_error);
+  for (std::size_t k = 0; k < 3; ++k) {
+    if (search.cornerOfAOnFaceOfB(k) || search.cornerOfBOnFaceOfA(k)) return search.answer();
   }
-  for (const Vec& p : b) {
-    if (projectOntoFace(p, a, on_face)) best.consider(on_face, p);
-  }
-  if (best.squared < std::numeric_limits<double>::infinity()) {
-    CertifiedDistance proven = answerFor(best, a, b, b_error);
-    if (proven.lower > 0.0 && proven.upper - proven.lower <= kProvenWidth * proven.lower)
-      return proven;
-  }
-  for (int i = 0; i < 3; ++i) {
-    for (int j = 0; j < 3; ++j) {
-      Vec on_a;
-      Vec on_b;
-      closestPointsOfSegments(
-          a[static_cast<std::size_t>(i)], a[static_cast<std::size_t>((i + 1) % 3)],
-          b[static_cast<std::size_t>(j)], b[static_cast<std::size_t>((j + 1) % 3)], on_a, on_b);
-      best.consider(on_a, on_b);
+  for (std::size_t i = 0; i < 3; ++i) {
+    for (std::size_t j = 0; j < 3; ++j) {
+      if (search.edges(i, j)) return search.answer();
     }
   }
-  return answerFor(best, a, b, b_error);
+  return search.least();
 }
 
 }  // namespace collido::obbtree::detail
