@@ -36,21 +36,15 @@ double pointRounding(const Triangle& t) {
 
 // The point of t's face nearest to p, when p's projection falls inside t (barycentric
 // coordinates checked on the computed doubles); false otherwise, or for a degenerate face.
-bool projectOntoFace(const Vec& p, const Triangle& t, Vec& on_face) {
-  const Vec v0 = t[1] - t[0];
-  const Vec v1 = t[2] - t[0];
+bool projectOntoFace(const Vec& p, const Triangle& t, const FaceFrame& face, Vec& on_face) {
+  if (!(face.inverse > 0.0)) return false;
   const Vec v2 = p - t[0];
-  const double d00 = v0.dot(v0);
-  const double d01 = v0.dot(v1);
-  const double d11 = v1.dot(v1);
-  const double d20 = v2.dot(v0);
-  const double d21 = v2.dot(v1);
-  const double denominator = d00 * d11 - d01 * d01;
-  if (!(denominator > 0.0) || !std::isfinite(denominator)) return false;
-  const double s = (d11 * d20 - d01 * d21) / denominator;
-  const double t_coordinate = (d00 * d21 - d01 * d20) / denominator;
+  const double d20 = v2.dot(face.edge1);
+  const double d21 = v2.dot(face.edge2);
+  const double s = (face.d11 * d20 - face.d01 * d21) * face.inverse;
+  const double t_coordinate = (face.d00 * d21 - face.d01 * d20) * face.inverse;
   if (!(s >= 0.0 && t_coordinate >= 0.0 && s + t_coordinate <= 1.0)) return false;
-  on_face = t[0] + s * v0 + t_coordinate * v1;
+  on_face = t[0] + s * face.edge1 + t_coordinate * face.edge2;
   return true;
 }
 
@@ -70,26 +64,40 @@ struct Candidate {
   }
 };
 
-// The least and largest of n . (c - o) over t's corners, and the rounding bound of the
-// projections (the largest sum_k |n_k| |c_k - o_k|) raised to cover them.
+// The least and largest of n . (c - o) over t's corners, and the largest |c_k - o_k| of each
+// coordinate k over them raised to cover them (n . |that| bounds every sum_k |n_k| |c_k - o_k|,
+// the projections' rounding bound, at one product for all six corners instead of one each).
 struct Projections {
   double least = std::numeric_limits<double>::infinity();
   double largest = -std::numeric_limits<double>::infinity();
 };
 
-Projections project(const Vec& n, const Triangle& t, const Vec& o, double& rounding) {
+Projections project(const Vec& n, const Triangle& t, const Vec& o, Vec& reach) {
   Projections out;
   for (const Vec& c : t) {
     const Vec w = c - o;
     const double projection = n.dot(w);
     out.least = std::min(out.least, projection);
     out.largest = std::max(out.largest, projection);
-    rounding = std::max(rounding, n.cwiseAbs().dot(w.cwiseAbs()));
+    reach = reach.cwiseMax(w.cwiseAbs());
   }
   return out;
 }
 
 }  // namespace
+
+FaceFrame faceFrameOf(const std::array<Eigen::Vector3d, 3>& t) {
+  FaceFrame face;
+  face.edge1 = t[1] - t[0];
+  face.edge2 = t[2] - t[0];
+  face.d00 = face.edge1.dot(face.edge1);
+  face.d01 = face.edge1.dot(face.edge2);
+  face.d11 = face.edge2.dot(face.edge2);
+  const double denominator = face.d00 * face.d11 - face.d01 * face.d01;
+  if (denominator > 0.0 && std::isfinite(denominator)) face.inverse = 1.0 / denominator;
+  if (!std::isfinite(face.inverse)) face.inverse = 0.0;
+  return face;
+}
 
 // Every point of a projects on n within [a.least, a.largest] and every point of b within
 // [b.least, b.largest] (exact corners), so the triangles are at least the gap between those
@@ -98,9 +106,10 @@ double separationAlong(const Vec& n, const Triangle& a, const Triangle& b, doubl
                        const Vec& origin) {
   const double length = n.norm();
   if (!(length > 0.0) || !std::isfinite(length)) return 0.0;
-  double rounding = 0.0;
-  const Projections of_a = project(n, a, origin, rounding);
-  const Projections of_b = project(n, b, origin, rounding);
+  Vec reach = Vec::Zero();
+  const Projections of_a = project(n, a, origin, reach);
+  const Projections of_b = project(n, b, origin, reach);
+  const double rounding = n.cwiseAbs().dot(reach);
   const double apart = std::max(of_b.least - of_a.largest, of_a.least - of_b.largest);
   const double gap =
       apart * (1.0 - kUnitRoundoff) - 2.0 * 6.0 * kUnitRoundoff * rounding * (1.0 + kUnitRoundoff);
@@ -157,14 +166,16 @@ bool noCornerBeyond(const Vec& v, const Vec& from, const Vec& corner, double sig
 // is narrow; otherwise every candidate is tried and the least certified.
 class ClosestPairSearch {
  public:
-  ClosestPairSearch(const Triangle& a, const Triangle& b, double b_error)
-      : a_(a), b_(b), b_error_(b_error) {}
+  ClosestPairSearch(const Triangle& a, const FaceFrame& face_a, const Triangle& b,
+                    const FaceFrame& face_b, double b_error)
+      : a_(a), face_a_(face_a), b_(b), face_b_(face_b), b_error_(b_error) {}
 
   // Corner k of a against b's face, where its projection falls inside: the other corners of a
   // must lie no nearer b's plane (b's corners are in it).
   bool cornerOfAOnFaceOfB(std::size_t k) {
     Vec on_face;
-    if (!projectOntoFace(a_[k], b_, on_face) || !best_.consider(a_[k], on_face)) return false;
+    if (!projectOntoFace(a_[k], b_, face_b_, on_face) || !best_.consider(a_[k], on_face))
+      return false;
     const Vec v = on_face - a_[k];
     return noCornerBeyond(v, a_[k], a_[(k + 1) % 3], 1.0) &&
            noCornerBeyond(v, a_[k], a_[(k + 2) % 3], 1.0) && proven();
@@ -172,7 +183,8 @@ class ClosestPairSearch {
 
   bool cornerOfBOnFaceOfA(std::size_t k) {
     Vec on_face;
-    if (!projectOntoFace(b_[k], a_, on_face) || !best_.consider(on_face, b_[k])) return false;
+    if (!projectOntoFace(b_[k], a_, face_a_, on_face) || !best_.consider(on_face, b_[k]))
+      return false;
     const Vec v = b_[k] - on_face;
     return noCornerBeyond(v, b_[k], b_[(k + 1) % 3], -1.0) &&
            noCornerBeyond(v, b_[k], b_[(k + 2) % 3], -1.0) && proven();
@@ -208,7 +220,9 @@ class ClosestPairSearch {
   }
 
   const Triangle& a_;
+  const FaceFrame& face_a_;
   const Triangle& b_;
+  const FaceFrame& face_b_;
   double b_error_;
   Candidate best_;
   CertifiedDistance answer_;
@@ -218,10 +232,16 @@ class ClosestPairSearch {
 }  // namespace
 
 CertifiedDistance certifiedTriangleDistance(const Triangle& a, const Triangle& b, double b_error) {
+  return certifiedTriangleDistance(a, faceFrameOf(a), b, faceFrameOf(b), b_error);
+}
+
+CertifiedDistance certifiedTriangleDistance(const Triangle& a, const FaceFrame& face_a,
+                                            const Triangle& b, const FaceFrame& face_b,
+                                            double b_error) {
   // Corners against faces first: where a corner faces the other's face (a small triangle over a
   // large one, faces nearly parallel) that pair is the closest, and the nine edge pairs are not
   // needed.
-  ClosestPairSearch search(a, b, b_error);
+  ClosestPairSearch search(a, face_a, b, face_b, b_error);
   for (std::size_t k = 0; k < 3; ++k) {
     if (search.cornerOfAOnFaceOfB(k) || search.cornerOfBOnFaceOfA(k)) return search.answer();
   }
