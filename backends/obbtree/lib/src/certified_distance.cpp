@@ -238,17 +238,17 @@ CertifiedDistance certifiedTriangleDistance(const Triangle& a, const Triangle& b
 CertifiedDistance certifiedTriangleDistance(const Triangle& a, const FaceFrame& face_a,
                                             const Triangle& b, const FaceFrame& face_b,
                                             double b_error) {
-  // Corners against faces first: where a corner faces the other's face (a small triangle over a
-  // large one, faces nearly parallel) that pair is the closest, and the nine edge pairs are not
-  // needed.
+  // Edge pairs first, as PQP: counted on the cast robot cell's wrist to bin_a, an edge pair
+  // ended all but 2 of 106,000 pairs (the corner-face candidates, tried first, cost six
+  // projections each time for nothing), and on the bundled surfaces the order is a tie.
   ClosestPairSearch search(a, face_a, b, face_b, b_error);
-  for (std::size_t k = 0; k < 3; ++k) {
-    if (search.cornerOfAOnFaceOfB(k) || search.cornerOfBOnFaceOfA(k)) return search.answer();
-  }
   for (std::size_t i = 0; i < 3; ++i) {
     for (std::size_t j = 0; j < 3; ++j) {
       if (search.edges(i, j)) return search.answer();
     }
+  }
+  for (std::size_t k = 0; k < 3; ++k) {
+    if (search.cornerOfAOnFaceOfB(k) || search.cornerOfBOnFaceOfA(k)) return search.answer();
   }
   return search.least();
 }
