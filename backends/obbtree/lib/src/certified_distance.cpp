@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include <collido/oracle/triangle_distance.h>
 
@@ -32,6 +33,30 @@ double pointRounding(const Triangle& t) {
   for (const Vec& p : t)
     largest = std::max(largest, p.lpNorm<1>());
   return 40.0 * kUnitRoundoff * largest + kTiny;
+}
+
+// What projecting points onto a triangle's face needs: its edges from corner 0 and the inverse
+// of their Gram determinant (0 for a degenerate face).
+struct FaceFrame {
+  Vec edge1 = Vec::Zero();  // corner 1 less corner 0
+  Vec edge2 = Vec::Zero();  // corner 2 less corner 0
+  double d00 = 0.0;
+  double d01 = 0.0;
+  double d11 = 0.0;
+  double inverse = 0.0;  // 1 / (d00 d11 - d01^2)
+};
+
+FaceFrame faceFrameOf(const Triangle& t) {
+  FaceFrame face;
+  face.edge1 = t[1] - t[0];
+  face.edge2 = t[2] - t[0];
+  face.d00 = face.edge1.dot(face.edge1);
+  face.d01 = face.edge1.dot(face.edge2);
+  face.d11 = face.edge2.dot(face.edge2);
+  const double denominator = face.d00 * face.d11 - face.d01 * face.d01;
+  if (denominator > 0.0 && std::isfinite(denominator)) face.inverse = 1.0 / denominator;
+  if (!std::isfinite(face.inverse)) face.inverse = 0.0;
+  return face;
 }
 
 // The point of t's face nearest to p, when p's projection falls inside t (barycentric
@@ -85,19 +110,6 @@ Projections project(const Vec& n, const Triangle& t, const Vec& o, Vec& reach) {
 }
 
 }  // namespace
-
-FaceFrame faceFrameOf(const std::array<Eigen::Vector3d, 3>& t) {
-  FaceFrame face;
-  face.edge1 = t[1] - t[0];
-  face.edge2 = t[2] - t[0];
-  face.d00 = face.edge1.dot(face.edge1);
-  face.d01 = face.edge1.dot(face.edge2);
-  face.d11 = face.edge2.dot(face.edge2);
-  const double denominator = face.d00 * face.d11 - face.d01 * face.d01;
-  if (denominator > 0.0 && std::isfinite(denominator)) face.inverse = 1.0 / denominator;
-  if (!std::isfinite(face.inverse)) face.inverse = 0.0;
-  return face;
-}
 
 // Every point of a projects on n within [a.least, a.largest] and every point of b within
 // [b.least, b.largest] (exact corners), so the triangles are at least the gap between those
@@ -166,15 +178,14 @@ bool noCornerBeyond(const Vec& v, const Vec& from, const Vec& corner, double sig
 // is narrow; otherwise every candidate is tried and the least certified.
 class ClosestPairSearch {
  public:
-  ClosestPairSearch(const Triangle& a, const FaceFrame& face_a, const Triangle& b,
-                    const FaceFrame& face_b, double b_error)
-      : a_(a), face_a_(face_a), b_(b), face_b_(face_b), b_error_(b_error) {}
+  ClosestPairSearch(const Triangle& a, const Triangle& b, double b_error)
+      : a_(a), b_(b), b_error_(b_error) {}
 
   // Corner k of a against b's face, where its projection falls inside: the other corners of a
   // must lie no nearer b's plane (b's corners are in it).
   bool cornerOfAOnFaceOfB(std::size_t k) {
     Vec on_face;
-    if (!projectOntoFace(a_[k], b_, face_b_, on_face) || !best_.consider(a_[k], on_face))
+    if (!projectOntoFace(a_[k], b_, faceOfB(), on_face) || !best_.consider(a_[k], on_face))
       return false;
     const Vec v = on_face - a_[k];
     return noCornerBeyond(v, a_[k], a_[(k + 1) % 3], 1.0) &&
@@ -183,7 +194,7 @@ class ClosestPairSearch {
 
   bool cornerOfBOnFaceOfA(std::size_t k) {
     Vec on_face;
-    if (!projectOntoFace(b_[k], a_, face_a_, on_face) || !best_.consider(on_face, b_[k]))
+    if (!projectOntoFace(b_[k], a_, faceOfA(), on_face) || !best_.consider(on_face, b_[k]))
       return false;
     const Vec v = b_[k] - on_face;
     return noCornerBeyond(v, b_[k], b_[(k + 1) % 3], -1.0) &&
@@ -219,11 +230,22 @@ class ClosestPairSearch {
     return !given_up_;
   }
 
+  // The faces' frames, computed on first use: an edge pair ends most pairs before any corner is
+  // projected.
+  const FaceFrame& faceOfA() {
+    if (!face_a_) face_a_ = faceFrameOf(a_);
+    return *face_a_;
+  }
+  const FaceFrame& faceOfB() {
+    if (!face_b_) face_b_ = faceFrameOf(b_);
+    return *face_b_;
+  }
+
   const Triangle& a_;
-  const FaceFrame& face_a_;
   const Triangle& b_;
-  const FaceFrame& face_b_;
   double b_error_;
+  std::optional<FaceFrame> face_a_;
+  std::optional<FaceFrame> face_b_;
   Candidate best_;
   CertifiedDistance answer_;
   bool given_up_ = false;
@@ -232,16 +254,10 @@ class ClosestPairSearch {
 }  // namespace
 
 CertifiedDistance certifiedTriangleDistance(const Triangle& a, const Triangle& b, double b_error) {
-  return certifiedTriangleDistance(a, faceFrameOf(a), b, faceFrameOf(b), b_error);
-}
-
-CertifiedDistance certifiedTriangleDistance(const Triangle& a, const FaceFrame& face_a,
-                                            const Triangle& b, const FaceFrame& face_b,
-                                            double b_error) {
   // Edge pairs first, as PQP: counted on the cast robot cell's wrist to bin_a, an edge pair
   // ended all but 2 of 106,000 pairs (the corner-face candidates, tried first, cost six
   // projections each time for nothing), and on the bundled surfaces the order is a tie.
-  ClosestPairSearch search(a, face_a, b, face_b, b_error);
+  ClosestPairSearch search(a, b, b_error);
   for (std::size_t i = 0; i < 3; ++i) {
     for (std::size_t j = 0; j < 3; ++j) {
       if (search.edges(i, j)) return search.answer();

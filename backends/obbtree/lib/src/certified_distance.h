@@ -34,26 +34,6 @@ CertifiedDistance certifiedTriangleDistance(const std::array<Eigen::Vector3d, 3>
                                             const std::array<Eigen::Vector3d, 3>& b,
                                             double b_error);
 
-/// What projecting points onto a triangle's face needs (its edges from corner 0 and their Gram
-/// matrix's inverse determinant, 0 for a degenerate face): computed once for a triangle that
-/// meets several others.
-struct FaceFrame {
-  Eigen::Vector3d edge1 = Eigen::Vector3d::Zero();  // corner 1 less corner 0
-  Eigen::Vector3d edge2 = Eigen::Vector3d::Zero();  // corner 2 less corner 0
-  double d00 = 0.0;
-  double d01 = 0.0;
-  double d11 = 0.0;
-  double inverse = 0.0;  // 1 / (d00 d11 - d01^2)
-};
-
-FaceFrame faceFrameOf(const std::array<Eigen::Vector3d, 3>& t);
-
-/// certifiedTriangleDistance with both faces' frames given (faceFrameOf of a and b).
-CertifiedDistance certifiedTriangleDistance(const std::array<Eigen::Vector3d, 3>& a,
-                                            const FaceFrame& face_a,
-                                            const std::array<Eigen::Vector3d, 3>& b,
-                                            const FaceFrame& face_b, double b_error);
-
 /// A certified lower bound on the distance between triangle `a` (exact corners) and the triangle
 /// whose exact corners lie within `b_error` of `b`'s: the gap between their projections on the
 /// direction `n` (either way round, any length; n as given, not an exact one), with each

@@ -37,7 +37,6 @@ struct Pending {
 // One of A's triangles in a leaf pair, with its axis-aligned bounds in A's frame.
 struct LeafTriangle {
   std::array<Eigen::Vector3d, 3> corners;
-  detail::FaceFrame face;
   Eigen::Vector3d lo;
   Eigen::Vector3d hi;
   std::int32_t id = 0;        // input index
@@ -290,7 +289,6 @@ class Search {
         t.corners[static_cast<std::size_t>(k)] = va.col(ta(k, i));
       t.lo = t.corners[0].cwiseMin(t.corners[1]).cwiseMin(t.corners[2]);
       t.hi = t.corners[0].cwiseMax(t.corners[1]).cwiseMax(t.corners[2]);
-      t.face = detail::faceFrameOf(t.corners);
       t.id = a_.triangleId(i);
       t.position = i;
       leaf_a_.push_back(t);
@@ -307,15 +305,13 @@ class Search {
       const double mapping_error =
           std::sqrt(3.0) * map_.bounds.pointError(local_b[0].cwiseAbs().cwiseMax(
                                local_b[1].cwiseAbs().cwiseMax(local_b[2].cwiseAbs())));
-      const detail::FaceFrame face_b = detail::faceFrameOf(corners_b);
       for (const LeafTriangle& ta_leaf : leaf_a_) {
         // The gap between the triangles' axis-aligned bounds (in A's frame) is a lower bound on
         // their distance: a pair that cannot beat the best is not measured.
         const double gap = (ta_leaf.lo - hi_b).cwiseMax(lo_b - ta_leaf.hi).cwiseMax(0.0).norm();
         if (setsAside(worldLower(gap * (1.0 - 8.0 * kEps) - mapping_error))) continue;
         ++answer_.triangle_tests;
-        const Measured measured =
-            measure(ta_leaf.corners, ta_leaf.face, corners_b, face_b, local_b, mapping_error);
+        const Measured measured = measure(ta_leaf.corners, corners_b, local_b, mapping_error);
         if (measured.settled) {
           record(measured.pair, ta_leaf.id, b_.triangleId(j));
           if (best_value_ == 0.0) return;
@@ -405,11 +401,11 @@ class Search {
   // corners. A pair apart whose interval is wider than kRelativeWidth of its lower end (or
   // whose lower end is 0) needs its exact closest points (exactClosest), which the caller
   // computes only if the pair is still a candidate when its turn comes.
-  Measured measure(const std::array<Eigen::Vector3d, 3>& corners_a, const detail::FaceFrame& face_a,
-                   const std::array<Eigen::Vector3d, 3>& corners_b, const detail::FaceFrame& face_b,
+  Measured measure(const std::array<Eigen::Vector3d, 3>& corners_a,
+                   const std::array<Eigen::Vector3d, 3>& corners_b,
                    const std::array<Eigen::Vector3d, 3>& local_b, double mapping_error) {
     const detail::CertifiedDistance computed =
-        detail::certifiedTriangleDistance(corners_a, face_a, corners_b, face_b, mapping_error);
+        detail::certifiedTriangleDistance(corners_a, corners_b, mapping_error);
     PairDistance pair{worldLower(computed.lower), computed.upper * grow_, 0.0,
                       pose_a_ * computed.point_a, pose_a_ * computed.point_b};
     pair.value = std::clamp(computed.value, pair.lower, pair.upper);
