@@ -14,7 +14,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <optional>
 
 #include <collido/oracle/triangle_distance.h>
 
@@ -164,9 +163,9 @@ constexpr double kProvenWidth = 0x1p-40;
 // certifying (answerFor proves it or not), so rounding must not make it miss the closest pair.
 constexpr double kLenient = 0x1p-30;
 
-// Whether, as computed, no corner `others` of one triangle projects on v = y - x beyond `from`
-// towards the other triangle (sign +1: the corners of the triangle holding x, which must not
-// reach past it towards y; -1: those of the triangle holding y, which must not reach back).
+// Whether, as computed, `corner` projects on v = y - x no further than `from` towards the other
+// triangle (sign +1: a corner of the triangle holding x = from, which must not reach past it
+// towards y; -1: a corner of the triangle holding y = from, which must not reach back).
 bool noCornerBeyond(const Vec& v, const Vec& from, const Vec& corner, double sign) {
   const Vec w = corner - from;
   return sign * v.dot(w) <= kLenient * v.lpNorm<1>() * w.lpNorm<1>();
@@ -181,20 +180,20 @@ class ClosestPairSearch {
   ClosestPairSearch(const Triangle& a, const Triangle& b, double b_error)
       : a_(a), b_(b), b_error_(b_error) {}
 
-  // Corner k of a against b's face, where its projection falls inside: the other corners of a
-  // must lie no nearer b's plane (b's corners are in it).
-  bool cornerOfAOnFaceOfB(std::size_t k) {
+  // Corner k of a against b's face (`face_b`: faceFrameOf(b)), where its projection falls
+  // inside: the other corners of a must lie no nearer b's plane (b's corners are in it).
+  bool cornerOfAOnFaceOfB(std::size_t k, const FaceFrame& face_b) {
     Vec on_face;
-    if (!projectOntoFace(a_[k], b_, faceOfB(), on_face) || !best_.consider(a_[k], on_face))
+    if (!projectOntoFace(a_[k], b_, face_b, on_face) || !best_.consider(a_[k], on_face))
       return false;
     const Vec v = on_face - a_[k];
     return noCornerBeyond(v, a_[k], a_[(k + 1) % 3], 1.0) &&
            noCornerBeyond(v, a_[k], a_[(k + 2) % 3], 1.0) && proven();
   }
 
-  bool cornerOfBOnFaceOfA(std::size_t k) {
+  bool cornerOfBOnFaceOfA(std::size_t k, const FaceFrame& face_a) {
     Vec on_face;
-    if (!projectOntoFace(b_[k], a_, faceOfA(), on_face) || !best_.consider(on_face, b_[k]))
+    if (!projectOntoFace(b_[k], a_, face_a, on_face) || !best_.consider(on_face, b_[k]))
       return false;
     const Vec v = b_[k] - on_face;
     return noCornerBeyond(v, b_[k], b_[(k + 1) % 3], -1.0) &&
@@ -230,22 +229,9 @@ class ClosestPairSearch {
     return !given_up_;
   }
 
-  // The faces' frames, computed on first use: an edge pair ends most pairs before any corner is
-  // projected.
-  const FaceFrame& faceOfA() {
-    if (!face_a_) face_a_ = faceFrameOf(a_);
-    return *face_a_;
-  }
-  const FaceFrame& faceOfB() {
-    if (!face_b_) face_b_ = faceFrameOf(b_);
-    return *face_b_;
-  }
-
   const Triangle& a_;
   const Triangle& b_;
   double b_error_;
-  std::optional<FaceFrame> face_a_;
-  std::optional<FaceFrame> face_b_;
   Candidate best_;
   CertifiedDistance answer_;
   bool given_up_ = false;
@@ -263,8 +249,12 @@ CertifiedDistance certifiedTriangleDistance(const Triangle& a, const Triangle& b
       if (search.edges(i, j)) return search.answer();
     }
   }
+  // The faces' frames only now: an edge pair ends most pairs before any corner is projected.
+  const FaceFrame face_a = faceFrameOf(a);
+  const FaceFrame face_b = faceFrameOf(b);
   for (std::size_t k = 0; k < 3; ++k) {
-    if (search.cornerOfAOnFaceOfB(k) || search.cornerOfBOnFaceOfA(k)) return search.answer();
+    if (search.cornerOfAOnFaceOfB(k, face_b) || search.cornerOfBOnFaceOfA(k, face_a))
+      return search.answer();
   }
   return search.least();
 }
