@@ -5,11 +5,10 @@
 //    the triangle: each difference, product and sum rounds once, and s + t <= 1 holds to within
 //    one rounding. pointRounding() bounds this by 40 u max_k |p_k|_1.
 //  - |x - y| is computed as sqrt of a sum of three squares: relative error below 4 u.
-//  - The projection of a corner c on n, relative to a point o, n . (c - o), rounds each of the
-//    three differences and the dot product: error below 6 u sum_k |n_k| |c_k - o_k|.
-//  - Dividing by |n| (relative error below 3 u) and the final subtractions add relative errors
-//    of a few u, all covered by the factors below.
+//  - The lower end, the gap between the triangles' projections on a direction: triangle_extent.h.
 #include "certified_distance.h"
+
+#include "triangle_extent.h"
 
 #include <algorithm>
 #include <cmath>
@@ -88,26 +87,6 @@ struct Candidate {
   }
 };
 
-// The least and largest of n . (c - o) over t's corners, and the largest |c_k - o_k| of each
-// coordinate k over them raised to cover them (n . |that| bounds every sum_k |n_k| |c_k - o_k|,
-// the projections' rounding bound, at one product for all six corners instead of one each).
-struct Projections {
-  double least = std::numeric_limits<double>::infinity();
-  double largest = -std::numeric_limits<double>::infinity();
-};
-
-Projections project(const Vec& n, const Triangle& t, const Vec& o, Vec& reach) {
-  Projections out;
-  for (const Vec& c : t) {
-    const Vec w = c - o;
-    const double projection = n.dot(w);
-    out.least = std::min(out.least, projection);
-    out.largest = std::max(out.largest, projection);
-    reach = reach.cwiseMax(w.cwiseAbs());
-  }
-  return out;
-}
-
 }  // namespace
 
 // Every point of a projects on n within [a.least, a.largest] and every point of b within
@@ -115,20 +94,8 @@ Projections project(const Vec& n, const Triangle& t, const Vec& o, Vec& reach) {
 // ranges over |n| apart; b's exact corners are within b_error of the given ones.
 double separationAlong(const Vec& n, const Triangle& a, const Triangle& b, double b_error,
                        const Vec& origin) {
-  const double length = n.norm();
-  if (!(length > 0.0) || !std::isfinite(length)) return 0.0;
-  Vec reach = Vec::Zero();
-  const Projections of_a = project(n, a, origin, reach);
-  const Projections of_b = project(n, b, origin, reach);
-  const double rounding = n.cwiseAbs().dot(reach);
-  const double apart = std::max(of_b.least - of_a.largest, of_a.least - of_b.largest);
-  const double gap =
-      apart * (1.0 - kUnitRoundoff) - 2.0 * 6.0 * kUnitRoundoff * rounding * (1.0 + kUnitRoundoff);
-  if (!(gap > 0.0)) return 0.0;
-  const double lower =
-      (gap / (length * (1.0 + 3.0 * kUnitRoundoff))) * (1.0 - 2.0 * kUnitRoundoff) -
-      b_error * (1.0 + kUnitRoundoff) - kTiny;
-  return std::max(0.0, lower);
+  return separationOfExtents(extentAlong(n, a, origin), extentAlong(n, b, origin),
+                             inverseLengthBelow(n), b_error);
 }
 
 namespace {

@@ -10,6 +10,7 @@
 #include "certified_distance.h"
 #include "frame_products.h"
 #include "query_bounds.h"
+#include "triangle_extent.h"
 
 #include <algorithm>
 #include <array>
@@ -34,11 +35,13 @@ struct Pending {
   bool operator>(const Pending& o) const { return bound > o.bound; }
 };
 
-// One of A's triangles in a leaf pair, with its axis-aligned bounds in A's frame.
+// One of A's triangles in a leaf pair, with its axis-aligned bounds in A's frame and its extent
+// along the best pair's direction.
 struct LeafTriangle {
   std::array<Eigen::Vector3d, 3> corners;
   Eigen::Vector3d lo;
   Eigen::Vector3d hi;
+  detail::TriangleExtent along_best;
   std::int32_t id = 0;        // input index
   std::int32_t position = 0;  // in the leaf order
 };
@@ -281,14 +284,30 @@ class Search {
     const Eigen::Matrix3Xd& vb = b_.vertices();
     const TriangleList& ta = a_.orderedTriangles();
     const TriangleList& tb = b_.orderedTriangles();
+    // The best pair's direction in A's frame, when there is one: the extents of both triangles
+    // along it bound a pair from below. Counted on the cast robot cell's wrist to bin_a, 99.5%
+    // of the pairs measured could not beat the best, and this bound set aside 90% (leaves of
+    // one triangle) to 94% (of eight) of them; the boxes' bounds cannot (the closest points'
+    // direction already bounds a box pair well, but not the triangles inside).
+    const Eigen::Vector3d towards_best =
+        detail::transposedTimesVector(pose_a_.linear(), answer_.point_b - answer_.point_a);
+    const Eigen::Vector3d origin = a_.vertices().col(a_.orderedTriangles()(0, na.leafFirst()));
+    const double inverse_length = best_value_ > 0.0 && std::isfinite(best_value_)
+                                      ? detail::inverseLengthBelow(towards_best)
+                                      : 0.0;
     // A's triangles with their bounds, once per leaf pair (each meets every triangle of B's leaf).
     leaf_a_.clear();
+    detail::TriangleExtent leaf_a_along_best;  // of all A's triangles in the leaf
     for (std::int32_t i = na.leafFirst(); i < na.leafFirst() + na.leafCount(); ++i) {
       LeafTriangle t;
       for (int k = 0; k < 3; ++k)
         t.corners[static_cast<std::size_t>(k)] = va.col(ta(k, i));
       t.lo = t.corners[0].cwiseMin(t.corners[1]).cwiseMin(t.corners[2]);
       t.hi = t.corners[0].cwiseMax(t.corners[1]).cwiseMax(t.corners[2]);
+      if (inverse_length > 0.0) {
+        t.along_best = detail::extentAlong(towards_best, t.corners, origin);
+        leaf_a_along_best = detail::unionOf(leaf_a_along_best, t.along_best);
+      }
       t.id = a_.triangleId(i);
       t.position = i;
       leaf_a_.push_back(t);
@@ -305,9 +324,22 @@ class Search {
       const double mapping_error =
           std::sqrt(3.0) * map_.bounds.pointError(local_b[0].cwiseAbs().cwiseMax(
                                local_b[1].cwiseAbs().cwiseMax(local_b[2].cwiseAbs())));
+      const detail::TriangleExtent b_along_best =
+          inverse_length > 0.0 ? detail::extentAlong(towards_best, corners_b, origin)
+                               : detail::TriangleExtent{};
+      // B's triangle against all of A's at once, before one by one.
+      if (inverse_length > 0.0 &&
+          setsAside(worldLower(detail::separationOfExtents(leaf_a_along_best, b_along_best,
+                                                           inverse_length, mapping_error))))
+        continue;
       for (const LeafTriangle& ta_leaf : leaf_a_) {
-        // The gap between the triangles' axis-aligned bounds (in A's frame) is a lower bound on
-        // their distance: a pair that cannot beat the best is not measured.
+        // A pair that cannot beat the best is not measured: their separation along the best
+        // pair's direction and the gap between their axis-aligned bounds (in A's frame) are
+        // lower bounds on their distance.
+        if (inverse_length > 0.0 &&
+            setsAside(worldLower(detail::separationOfExtents(ta_leaf.along_best, b_along_best,
+                                                             inverse_length, mapping_error))))
+          continue;
         const double gap = (ta_leaf.lo - hi_b).cwiseMax(lo_b - ta_leaf.hi).cwiseMax(0.0).norm();
         if (setsAside(worldLower(gap * (1.0 - 8.0 * kEps) - mapping_error))) continue;
         ++answer_.triangle_tests;
