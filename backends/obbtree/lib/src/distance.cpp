@@ -35,20 +35,30 @@ struct Pending {
   bool operator>(const Pending& o) const { return bound > o.bound; }
 };
 
-// One of A's triangles in a leaf pair, with its axis-aligned bounds in A's frame and its extent
-// along the best pair's direction.
+// A triangle in A's frame (B's mapped) with its axis-aligned bounds and its extent along the
+// best pair's direction, kept for the rest of the query: a leaf of a large flat part near a
+// detailed one meets many of the other's leaves (counted on the cast robot cell's wrist to the
+// fixture: about 4 of the fixture's leaves and 320 of the wrist's in 700 leaf pairs a query).
 struct LeafTriangle {
-  std::array<Eigen::Vector3d, 3> corners;
+  std::array<Eigen::Vector3d, 3> corners;  // in A's frame
   Eigen::Vector3d lo;
   Eigen::Vector3d hi;
+  double mapping_error = 0.0;  // of each corner, Euclidean (B's; 0 for A's)
   detail::TriangleExtent along_best;
-  std::int32_t id = 0;        // input index
-  std::int32_t position = 0;  // in the leaf order
+  std::uint64_t query = 0;         // the query that took it; 0: never
+  std::uint64_t best_version = 0;  // the best pair along_best was taken for
+  std::int32_t position = -1;      // in its tree's leaf order
 };
+
+// Slots for each tree's triangles, by position modulo their number (a power of two).
+constexpr std::size_t kTriangleSlots = 1024;
 
 struct SearchScratch {
   std::vector<Pending> heap;
   std::vector<LeafTriangle> leaf_a;
+  std::vector<LeafTriangle> slots_a = std::vector<LeafTriangle>(kTriangleSlots);
+  std::vector<LeafTriangle> slots_b = std::vector<LeafTriangle>(kTriangleSlots);
+  std::uint64_t queries = 0;  // searches run on this thread, naming each one's slots
 };
 
 SearchScratch& scratch() {
@@ -278,74 +288,103 @@ class Search {
     Eigen::Vector3d point_b = Eigen::Vector3d::Zero();
   };
 
+  // The best pair's direction and a point near it in A's frame, taken again when the best has
+  // changed since: the extents of both triangles along it bound a pair from below (an origin
+  // near the pair keeps their rounding small). Counted on the cast robot cell's wrist to bin_a,
+  // 99.5% of the pairs measured could not beat the best, and this bound set aside 90% (leaves
+  // of one triangle) to 94% (of eight) of them; the boxes' bounds cannot (the closest points'
+  // direction already bounds a box pair well, but not the triangles inside).
+  void takeBestDirection() {
+    if (along_version_ == best_version_) return;
+    along_version_ = best_version_;
+    towards_best_ =
+        detail::transposedTimesVector(pose_a_.linear(), answer_.point_b - answer_.point_a);
+    along_origin_ =
+        detail::transposedTimesVector(pose_a_.linear(), answer_.point_a - pose_a_.translation());
+    inverse_length_ = best_value_ > 0.0 && std::isfinite(best_value_)
+                          ? detail::inverseLengthBelow(towards_best_)
+                          : 0.0;
+  }
+
+  // A's triangle at leaf position i, taken once a query, with its extent along the best pair's
+  // direction as takeBestDirection() last took it.
+  const LeafTriangle& triangleA(std::int32_t i) {
+    LeafTriangle& t = slots_a_[static_cast<std::size_t>(i) & (kTriangleSlots - 1)];
+    if (t.query != query_ || t.position != i) {
+      for (int k = 0; k < 3; ++k)
+        t.corners[static_cast<std::size_t>(k)] = a_.vertices().col(a_.orderedTriangles()(k, i));
+      taken(t, i, 0.0);
+    }
+    return withExtent(t);
+  }
+
+  // B's triangle at leaf position j, mapped into A's frame once a query, likewise.
+  const LeafTriangle& triangleB(std::int32_t j) {
+    LeafTriangle& t = slots_b_[static_cast<std::size_t>(j) & (kTriangleSlots - 1)];
+    if (t.query != query_ || t.position != j) {
+      Eigen::Vector3d largest = Eigen::Vector3d::Zero();
+      for (int k = 0; k < 3; ++k) {
+        const Eigen::Vector3d local = b_.vertices().col(b_.orderedTriangles()(k, j));
+        t.corners[static_cast<std::size_t>(k)] = map_(local);
+        largest = largest.cwiseMax(local.cwiseAbs());
+      }
+      taken(t, j, std::sqrt(3.0) * map_.bounds.pointError(largest));
+    }
+    return withExtent(t);
+  }
+
+  void taken(LeafTriangle& t, std::int32_t position, double mapping_error) const {
+    t.lo = t.corners[0].cwiseMin(t.corners[1]).cwiseMin(t.corners[2]);
+    t.hi = t.corners[0].cwiseMax(t.corners[1]).cwiseMax(t.corners[2]);
+    t.mapping_error = mapping_error;
+    t.query = query_;
+    t.position = position;
+    t.best_version = kNoVersion;
+  }
+
+  const LeafTriangle& withExtent(LeafTriangle& t) const {
+    if (inverse_length_ > 0.0 && t.best_version != along_version_) {
+      t.along_best = detail::extentAlong(towards_best_, t.corners, along_origin_);
+      t.best_version = along_version_;
+    }
+    return t;
+  }
+
   template <typename LeafA, typename LeafB>
   void leaves(const LeafA& na, const LeafB& nb) {
-    const Eigen::Matrix3Xd& va = a_.vertices();
-    const Eigen::Matrix3Xd& vb = b_.vertices();
-    const TriangleList& ta = a_.orderedTriangles();
-    const TriangleList& tb = b_.orderedTriangles();
-    // The best pair's direction in A's frame, when there is one: the extents of both triangles
-    // along it bound a pair from below. Counted on the cast robot cell's wrist to bin_a, 99.5%
-    // of the pairs measured could not beat the best, and this bound set aside 90% (leaves of
-    // one triangle) to 94% (of eight) of them; the boxes' bounds cannot (the closest points'
-    // direction already bounds a box pair well, but not the triangles inside).
-    const Eigen::Vector3d towards_best =
-        detail::transposedTimesVector(pose_a_.linear(), answer_.point_b - answer_.point_a);
-    const Eigen::Vector3d origin = a_.vertices().col(a_.orderedTriangles()(0, na.leafFirst()));
-    const double inverse_length = best_value_ > 0.0 && std::isfinite(best_value_)
-                                      ? detail::inverseLengthBelow(towards_best)
-                                      : 0.0;
+    takeBestDirection();
+    const bool along_best = inverse_length_ > 0.0;
     // A's triangles with their bounds, once per leaf pair (each meets every triangle of B's leaf).
     leaf_a_.clear();
     detail::TriangleExtent leaf_a_along_best;  // of all A's triangles in the leaf
     for (std::int32_t i = na.leafFirst(); i < na.leafFirst() + na.leafCount(); ++i) {
-      LeafTriangle t;
-      for (int k = 0; k < 3; ++k)
-        t.corners[static_cast<std::size_t>(k)] = va.col(ta(k, i));
-      t.lo = t.corners[0].cwiseMin(t.corners[1]).cwiseMin(t.corners[2]);
-      t.hi = t.corners[0].cwiseMax(t.corners[1]).cwiseMax(t.corners[2]);
-      if (inverse_length > 0.0) {
-        t.along_best = detail::extentAlong(towards_best, t.corners, origin);
-        leaf_a_along_best = detail::unionOf(leaf_a_along_best, t.along_best);
-      }
-      t.id = a_.triangleId(i);
-      t.position = i;
-      leaf_a_.push_back(t);
+      leaf_a_.push_back(triangleA(i));
+      if (along_best)
+        leaf_a_along_best = detail::unionOf(leaf_a_along_best, leaf_a_.back().along_best);
     }
     for (std::int32_t j = nb.leafFirst(); j < nb.leafFirst() + nb.leafCount(); ++j) {
-      std::array<Eigen::Vector3d, 3> corners_b;
-      std::array<Eigen::Vector3d, 3> local_b;
-      for (int k = 0; k < 3; ++k) {
-        local_b[static_cast<std::size_t>(k)] = vb.col(tb(k, j));
-        corners_b[static_cast<std::size_t>(k)] = map_(local_b[static_cast<std::size_t>(k)]);
-      }
-      const Eigen::Vector3d lo_b = corners_b[0].cwiseMin(corners_b[1]).cwiseMin(corners_b[2]);
-      const Eigen::Vector3d hi_b = corners_b[0].cwiseMax(corners_b[1]).cwiseMax(corners_b[2]);
-      const double mapping_error =
-          std::sqrt(3.0) * map_.bounds.pointError(local_b[0].cwiseAbs().cwiseMax(
-                               local_b[1].cwiseAbs().cwiseMax(local_b[2].cwiseAbs())));
-      const detail::TriangleExtent b_along_best =
-          inverse_length > 0.0 ? detail::extentAlong(towards_best, corners_b, origin)
-                               : detail::TriangleExtent{};
+      const LeafTriangle& tb_mapped = triangleB(j);
+      const double mapping_error = tb_mapped.mapping_error;
       // B's triangle against all of A's at once, before one by one.
-      if (inverse_length > 0.0 &&
-          setsAside(worldLower(detail::separationOfExtents(leaf_a_along_best, b_along_best,
-                                                           inverse_length, mapping_error))))
+      if (along_best &&
+          setsAside(worldLower(detail::separationOfExtents(leaf_a_along_best, tb_mapped.along_best,
+                                                           inverse_length_, mapping_error))))
         continue;
       for (const LeafTriangle& ta_leaf : leaf_a_) {
         // A pair that cannot beat the best is not measured: their separation along the best
         // pair's direction and the gap between their axis-aligned bounds (in A's frame) are
         // lower bounds on their distance.
-        if (inverse_length > 0.0 &&
-            setsAside(worldLower(detail::separationOfExtents(ta_leaf.along_best, b_along_best,
-                                                             inverse_length, mapping_error))))
+        if (along_best &&
+            setsAside(worldLower(detail::separationOfExtents(
+                ta_leaf.along_best, tb_mapped.along_best, inverse_length_, mapping_error))))
           continue;
-        const double gap = (ta_leaf.lo - hi_b).cwiseMax(lo_b - ta_leaf.hi).cwiseMax(0.0).norm();
+        const double gap =
+            (ta_leaf.lo - tb_mapped.hi).cwiseMax(tb_mapped.lo - ta_leaf.hi).cwiseMax(0.0).norm();
         if (setsAside(worldLower(gap * (1.0 - 8.0 * kEps) - mapping_error))) continue;
         ++answer_.triangle_tests;
-        const Measured measured = measure(ta_leaf.corners, corners_b, local_b, mapping_error);
+        const Measured measured = measure(ta_leaf.corners, tb_mapped.corners, j, mapping_error);
         if (measured.settled) {
-          record(measured.pair, ta_leaf.id, b_.triangleId(j));
+          record(measured.pair, a_.triangleId(ta_leaf.position), b_.triangleId(j));
           if (best_value_ == 0.0) return;
           continue;
         }
@@ -366,6 +405,7 @@ class Search {
     floor_ = std::min(floor_, pair.lower);
     best_upper_ = std::min(best_upper_, pair.upper);
     if (!(pair.value < best_value_)) return;
+    ++best_version_;
     best_value_ = pair.value;
     answer_.distance = pair.value;
     answer_.point_a = pair.point_a;
@@ -379,18 +419,23 @@ class Search {
   // A waiting pair (positions in the leaf orders), settled in exact arithmetic.
   void settle(std::int32_t i, std::int32_t j) {
     const Eigen::Matrix3Xd& va = a_.vertices();
-    const Eigen::Matrix3Xd& vb = b_.vertices();
     const TriangleList& ta = a_.orderedTriangles();
-    const TriangleList& tb = b_.orderedTriangles();
     std::array<Eigen::Vector3d, 3> corners_a;
-    std::array<Eigen::Vector3d, 3> local_b;
-    std::array<Eigen::Vector3d, 3> corners_b;
-    for (std::size_t k = 0; k < 3; ++k) {
+    for (std::size_t k = 0; k < 3; ++k)
       corners_a[k] = va.col(ta(static_cast<int>(k), i));
-      local_b[k] = vb.col(tb(static_cast<int>(k), j));
+    const std::array<Eigen::Vector3d, 3> local_b = localCornersB(j);
+    std::array<Eigen::Vector3d, 3> corners_b;
+    for (std::size_t k = 0; k < 3; ++k)
       corners_b[k] = map_(local_b[k]);
-    }
     record(exactClosest(corners_a, corners_b, local_b), a_.triangleId(i), b_.triangleId(j));
+  }
+
+  // B's triangle at leaf position j in its own frame.
+  std::array<Eigen::Vector3d, 3> localCornersB(std::int32_t j) const {
+    std::array<Eigen::Vector3d, 3> local;
+    for (std::size_t k = 0; k < 3; ++k)
+      local[k] = b_.vertices().col(b_.orderedTriangles()(static_cast<int>(k), j));
+    return local;
   }
 
   // A pair found touching: distance 0, at a shared point as computed (the crossing point of an
@@ -434,8 +479,8 @@ class Search {
   // whose lower end is 0) needs its exact closest points (exactClosest), which the caller
   // computes only if the pair is still a candidate when its turn comes.
   Measured measure(const std::array<Eigen::Vector3d, 3>& corners_a,
-                   const std::array<Eigen::Vector3d, 3>& corners_b,
-                   const std::array<Eigen::Vector3d, 3>& local_b, double mapping_error) {
+                   const std::array<Eigen::Vector3d, 3>& corners_b, std::int32_t position_b,
+                   double mapping_error) {
     const detail::CertifiedDistance computed =
         detail::certifiedTriangleDistance(corners_a, corners_b, mapping_error);
     PairDistance pair{worldLower(computed.lower), computed.upper * grow_, 0.0,
@@ -443,6 +488,7 @@ class Search {
     pair.value = std::clamp(computed.value, pair.lower, pair.upper);
     if (pair.lower > 0.0 && pair.upper - pair.lower <= kRelativeWidth * pair.lower) return {pair};
     if (pair.lower == 0.0) {
+      const std::array<Eigen::Vector3d, 3> local_b = localCornersB(position_b);
       if (std::optional<bool> touches = touchesCertified(corners_a, corners_b, local_b)) {
         if (*touches) return {touching(corners_a, corners_b)};
       } else {
@@ -495,6 +541,17 @@ class Search {
   double shrink_ = 1.0;
   double grow_ = 1.0;
   std::vector<LeafTriangle>& leaf_a_ = scratch().leaf_a;  // A's triangles in leaves()
+  std::vector<LeafTriangle>& slots_a_ = scratch().slots_a;
+  std::vector<LeafTriangle>& slots_b_ = scratch().slots_b;
+  const std::uint64_t query_ = ++scratch().queries;
+  // Counts the best pairs taken; the extents along the best pair's direction are of the one
+  // numbered along_version_ (none yet: kNoVersion, which best_version_ never reaches).
+  static constexpr std::uint64_t kNoVersion = ~std::uint64_t{0};
+  std::uint64_t best_version_ = 0;
+  std::uint64_t along_version_ = kNoVersion;
+  Eigen::Vector3d towards_best_ = Eigen::Vector3d::Zero();
+  Eigen::Vector3d along_origin_ = Eigen::Vector3d::Zero();
+  double inverse_length_ = 0.0;  // inverseLengthBelow(towards_best_); 0: no best to go by
 };
 
 template <typename NodeA, typename NodeB>
