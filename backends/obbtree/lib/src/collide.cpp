@@ -12,7 +12,10 @@
 //   1. both leaves -> for every triangle pair whose axis-aligned bounds in A's frame overlap
 //      (B's widened by its corners' error radii), run the certified filter on the mapped
 //      corners (each with its error radius); when the filter cannot be sure, try a separating
-//      edge in projection, then decide exactly on the world coordinates; record hits;
+//      edge in projection, then decide exactly on the world coordinates; record hits. A sign
+//      of a corner against the other triangle's plane that the filter cannot settle is taken
+//      as its planar face's (ObbTree::faceOf), kept for the query (face_signs.h): flush faces
+//      decide each vertex once, not once per triangle pair;
 //   2. otherwise split the node that is not a leaf, or of two inner nodes the larger one (by the
 //      sum of its half extents). With vector box tests (AVX2 and FMA on the CPU), two levels at
 //      once: its grandchildren (a child that is a leaf stands for itself), up to four, are
@@ -29,6 +32,7 @@
 
 #include "box_batch.h"
 #include "exact_world.h"
+#include "face_signs.h"
 #include "parallel_for.h"
 #include "prepared_triangle.h"
 #include "query_bounds.h"
@@ -181,6 +185,7 @@ struct QueryScratch {
   std::vector<std::uint64_t> world_slots_a;
   std::vector<std::uint64_t> world_slots_b;
   std::vector<detail::LazyWorldPoint> world_points;
+  detail::FaceSignCache face_signs;
   std::vector<PairTask> stack;
 
   void begin(std::size_t nodes_a, std::size_t nodes_b, std::size_t triangle_count_a,
@@ -195,6 +200,7 @@ struct QueryScratch {
       epoch = 1;
     }
     world_points.clear();
+    face_signs.begin();
     if (boxes_b.size() < nodes_b) boxes_b.resize(nodes_b);
     if (decode_a && boxes_a.size() < nodes_a) boxes_a.resize(nodes_a);
     if (triangles_a.size() < triangle_count_a) triangles_a.resize(triangle_count_a);
@@ -208,7 +214,7 @@ struct QueryScratch {
            (triangles_a.capacity() + triangles_b.capacity()) *
                sizeof(Stamped<detail::PreparedTriangle>) +
            (world_slots_a.capacity() + world_slots_b.capacity()) * sizeof(std::uint64_t) +
-           world_points.capacity() * sizeof(detail::LazyWorldPoint) +
+           world_points.capacity() * sizeof(detail::LazyWorldPoint) + face_signs.bytes() +
            stack.capacity() * sizeof(PairTask);
   }
 
@@ -521,6 +527,21 @@ class Descent {
     }
     const UncertainPoint* p = ta.corners;
     const UncertainPoint* q = tb.corners;
+    detail::FaceSignPair pair;
+    pair.tree[0] = &a_;
+    pair.tree[1] = &b_;
+    pair.triangle[0] = i;
+    pair.triangle[1] = j;
+    for (int c = 0; c < 3; ++c) {
+      pair.mapped[c] = &p[c];
+      pair.mapped[3 + c] = &q[c];
+    }
+    // Every corner exact in A's frame (A's are; B's where the map is exact): decided there, the
+    // faces' sides kept for the query.
+    if (exactInFrameOfA(q)) {
+      return *detail::trianglesIntersectWithFaceSigns(pair, detail::ExactFrame::kModelOfA,
+                                                      scratch_.face_signs);
+    }
     if (std::optional<bool> hit = trianglesIntersectCertified(p[0], p[1], p[2], q[0], q[1], q[2]))
       return *hit;
     // Coplanar or parallel to within the mapping error, but side by side: no exact test needed.
@@ -543,15 +564,24 @@ class Descent {
             scratch_, scratch_.world_slots_b, static_cast<std::size_t>(b_.vertices().cols()),
             b_.orderedTriangles()(c, j), corners_b[c], placement_.pose_b, pose_in_range_ == 1);
       }
-      detail::LazyWorldPoint* world[6];
-      for (int k = 0; k < 6; ++k)
-        world[k] = &scratch_.world_points[index[k]];
-      if (std::optional<bool> hit =
-              detail::trianglesIntersectByFilterAndTrackedDoubles(p, world, q, world + 3))
-        return *hit;
+      bool in_range = true;
+      for (int k = 0; k < 6; ++k) {
+        pair.world[k] = &scratch_.world_points[index[k]];
+        in_range = in_range && pair.world[k]->inRange();
+      }
+      if (in_range) {
+        if (std::optional<bool> hit = detail::trianglesIntersectWithFaceSigns(
+                pair, detail::ExactFrame::kWorld, scratch_.face_signs))
+          return *hit;
+      }
     }
     return detail::posedTrianglesIntersectByExpansionsOrRationals(corners_a, placement_.pose_a,
                                                                   corners_b, placement_.pose_b);
+  }
+
+  static bool exactInFrameOfA(const UncertainPoint* q) {
+    return (q[0].error.array() == 0.0).all() && (q[1].error.array() == 0.0).all() &&
+           (q[2].error.array() == 0.0).all();
   }
 
   // Corner c of B's triangle at position j of its leaf order, in B's model frame.

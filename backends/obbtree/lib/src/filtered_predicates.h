@@ -34,9 +34,26 @@ inline Eigen::Vector3d permanentWeights(const Eigen::Vector3d& u, const Eigen::V
                          u.x() * v.y() + u.y() * v.x());
 }
 
+/// Decides, in place of the exact predicate, the orientations of four exact points that the
+/// filter's bound cannot settle (a caller that keeps such signs, face_signs.h).
+class ExactOrientation {
+ public:
+  virtual int orient3d(const UncertainPoint& a, const UncertainPoint& b, const UncertainPoint& c,
+                       const UncertainPoint& d) = 0;
+
+ protected:
+  ~ExactOrientation() = default;
+};
+
 class FilteredKernel {
  public:
   using Point = UncertainPoint;
+
+  /// `decide_exact_inputs`: where the bound cannot settle the orientation of four exact points,
+  /// take `exact_orientation` (the exact predicate when null, the default) or be unsure.
+  explicit FilteredKernel(bool decide_exact_inputs = true,
+                          ExactOrientation* exact_orientation = nullptr)
+      : decide_exact_inputs_(decide_exact_inputs), exact_orientation_(exact_orientation) {}
 
   bool unsure() const { return unsure_; }
 
@@ -59,7 +76,10 @@ class FilteredKernel {
         inflated == 0.0 && !underflows(bu) && !underflows(bv) && !underflows(bw);
     const int sign = certain(det, bound, zero_is_exact);
     if (sign != kUnsure) return sign;
-    if (exact(a) && exact(b) && exact(c) && exact(d)) return exact::orient3d(a.p, b.p, c.p, d.p);
+    if (decide_exact_inputs_ && exact(a) && exact(b) && exact(c) && exact(d)) {
+      return exact_orientation_ ? exact_orientation_->orient3d(a, b, c, d)
+                                : exact::orient3d(a.p, b.p, c.p, d.p);
+    }
     return unsureSign();
   }
 
@@ -139,6 +159,8 @@ class FilteredKernel {
     return 0;
   }
 
+  bool decide_exact_inputs_ = true;
+  ExactOrientation* exact_orientation_ = nullptr;
   bool unsure_ = false;
 };
 

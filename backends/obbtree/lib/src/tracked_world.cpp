@@ -9,7 +9,6 @@
 
 #include "exact_world.h"
 #include "expansion.h"
-#include "filtered_predicates.h"
 
 namespace collido::obbtree::detail {
 namespace {
@@ -75,48 +74,6 @@ class TrackedWorldKernel {
   TrackedPlane plane_;
 };
 
-// The double-double stage with the certified filter in front of it: a 3D orientation or a
-// collinearity is first tried on the corners mapped into A's frame (the exact mapped points are
-// R_a^-1 (W - t_a), an affine image of the world points W with det R_a^-1 > 0, so both signs are
-// the world's), and computed on the world double-doubles only when the filter is unsure. 2D
-// orientations and coordinate comparisons depend on the frame and are always the world's.
-struct HybridPoint {
-  const UncertainPoint* mapped = nullptr;
-  LazyWorldPoint* world = nullptr;
-};
-
-class HybridKernel {
- public:
-  using Point = HybridPoint;
-
-  bool unsure() const { return world_.unsure(); }
-
-  int orient3d(const Point& a, const Point& b, const Point& c, const Point& d) {
-    FilteredKernel filter;
-    const int sign = filter.orient3d(*a.mapped, *b.mapped, *c.mapped, *d.mapped);
-    if (!filter.unsure()) return sign;
-    return world_.orient3d(a.world->world(), b.world->world(), c.world->world(), d.world->world());
-  }
-
-  int orient2d(const Point& a, const Point& b, const Point& c, int drop) {
-    return world_.orient2d(a.world->world(), b.world->world(), c.world->world(), drop);
-  }
-
-  bool collinear(const Point& a, const Point& b, const Point& c) {
-    FilteredKernel filter;
-    const bool answer = filter.collinear(*a.mapped, *b.mapped, *c.mapped);
-    if (!filter.unsure()) return answer;
-    return world_.collinear(a.world->world(), b.world->world(), c.world->world());
-  }
-
-  int compare(const Point& a, const Point& b, int k) {
-    return world_.compare(a.world->world(), b.world->world(), k);
-  }
-
- private:
-  TrackedWorldKernel world_;
-};
-
 TrackedPoint placeTracked(const Eigen::Vector3d& v, const Eigen::Isometry3d& pose) {
   const Eigen::Matrix3d& r = pose.linear();
   const Eigen::Vector3d& t = pose.translation();
@@ -170,23 +127,6 @@ const TrackedPoint& LazyWorldPoint::world() {
     placed_ = true;
   }
   return world_;
-}
-
-std::optional<bool> trianglesIntersectByFilterAndTrackedDoubles(const UncertainPoint* mapped_a,
-                                                                LazyWorldPoint* const* world_a,
-                                                                const UncertainPoint* mapped_b,
-                                                                LazyWorldPoint* const* world_b) {
-  HybridPoint p[6];
-  for (int c = 0; c < 3; ++c) {
-    if (!world_a[c]->inRange() || !world_b[c]->inRange()) return std::nullopt;
-    p[c] = HybridPoint{&mapped_a[c], world_a[c]};
-    p[3 + c] = HybridPoint{&mapped_b[c], world_b[c]};
-  }
-  HybridKernel kernel;
-  const bool answer =
-      exact::TriangleTest<HybridKernel>(kernel).intersect(p[0], p[1], p[2], p[3], p[4], p[5]);
-  if (kernel.unsure()) return std::nullopt;
-  return answer;
 }
 
 std::optional<bool> posedTrianglesIntersectByTrackedDoubles(const Eigen::Vector3d* a,

@@ -1,6 +1,7 @@
 // The double-double stage of the exact fallback, on triangles placed in world coordinates: alone
 // on a posed pair (posedTrianglesIntersectByTrackedDoubles, as posedTrianglesIntersect runs it)
-// or behind the certified filter on vertices placed on first use (the descent's path).
+// or, through its planes and points, behind the certified filter on vertices placed on first use
+// (the descent's path, face_signs.h).
 #pragma once
 
 #include <optional>
@@ -52,17 +53,6 @@ class LazyWorldPoint {
   bool placed_ = false;
   TrackedPoint world_;
 };
-
-/// The double-double stage with the certified filter in front of each 3D orientation and
-/// collinearity: `mapped_a`, `mapped_b` are the corners in A's model frame (A's exact, B's mapped
-/// with their error radii), `world_a`, `world_b` the same corners' world positions. Only for a
-/// pose of A whose rotation has a positive determinant (a rotation), so that orientations in A's
-/// frame and in the world agree. std::nullopt when a corner is out of range or a sign was
-/// uncertain.
-std::optional<bool> trianglesIntersectByFilterAndTrackedDoubles(const UncertainPoint* mapped_a,
-                                                                LazyWorldPoint* const* world_a,
-                                                                const UncertainPoint* mapped_b,
-                                                                LazyWorldPoint* const* world_b);
 
 /// posedTrianglesIntersect on double-doubles with certified radii (tracked_double_double.h);
 /// std::nullopt when an input is outside the expansions' safe range or a sign was uncertain

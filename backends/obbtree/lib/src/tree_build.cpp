@@ -103,6 +103,7 @@ ObbTree ObbTree::build(const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
     tree.recordFreshVolumes();
   }
   tree.measureAxisDefect();
+  tree.findPlanarFaces();
   return tree;
 }
 
@@ -222,7 +223,7 @@ std::size_t ObbTree::memoryBytes() const {
   return nodes_.capacity() * sizeof(Node) + compact_nodes_.capacity() * sizeof(CompactNode) +
          static_cast<std::size_t>(vertices_.size()) * sizeof(double) +
          (topology_borrowed_ && topology_.use_count() > 1 ? 0 : topology_->memoryBytes()) +
-         fresh_volume_.capacity() * sizeof(float);
+         fresh_volume_.capacity() * sizeof(float) + faces_.capacity() * sizeof(std::int32_t);
 }
 
 }  // namespace collido::obbtree

@@ -40,6 +40,9 @@ RefitReport ObbTree::refit(const Eigen::Ref<const Eigen::Matrix3Xd>& vertices) {
   }
   if (report.moved_vertices == 0) return report;
   vertices_ = vertices;
+  // A moved vertex may take its triangles out of their plane.
+  faces_.clear();
+  faces_.shrink_to_fit();
   // Bottom-up over the nodes holding a moved vertex only. Each box keeps its axes and is
   // measured over its own triangles: exact extents, not a union of the children's boxes, which
   // would grow with every level.

@@ -47,6 +47,7 @@ ObbTree ObbTree::buildLike(const ObbTree& sibling,
     tree.recordFreshVolumes();
   }
   tree.measureAxisDefect();
+  tree.findPlanarFaces();
   return tree;
 }
 

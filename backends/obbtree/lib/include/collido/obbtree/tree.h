@@ -131,6 +131,18 @@ class ObbTree {
     return topology_->ids[static_cast<std::size_t>(k)];
   }
   std::size_t triangleCount() const { return topology_->ids.size(); }
+  /// The planar face of the triangle at position k of the leaf order: triangles that share an
+  /// edge (by vertex position) and lie exactly in one plane of the model share a face, named by
+  /// its first triangle's position; a triangle alone in its plane, or degenerate, is face k.
+  /// Found at build and for buildLike's positions; a refit that moves a vertex forgets them.
+  std::int32_t faceOf(std::int32_t k) const {
+    return faces_.empty() ? k : faces_[static_cast<std::size_t>(k)] >> 1;
+  }
+  /// +1 when the triangle at position k turns (its corners' order about the face's normal) as
+  /// its face's first triangle does, -1 when the other way.
+  int faceTurn(std::int32_t k) const {
+    return faces_.empty() || (faces_[static_cast<std::size_t>(k)] & 1) == 0 ? 1 : -1;
+  }
   /// The triangles under node i (inner nodes of a compact tree: found through its last leaf).
   TriangleRange triangleRange(std::size_t node) const;
   /// Every node's triangles, in one sweep (for passes over all nodes; triangleRange walks).
@@ -165,6 +177,8 @@ class ObbTree {
   /// Sets axis_defect_ from every box (after a build; a refit keeps the axes).
   void measureAxisDefect();
   void buildVertexSpans();
+  /// Sets faces_ from the current vertices (tree_faces.cpp).
+  void findPlanarFaces();
   void recordFreshVolumes();
   double boxVolume(std::size_t node) const;
   std::size_t subtreeEnd(std::size_t node) const;
@@ -186,6 +200,10 @@ class ObbTree {
   // With BuildOptions::deformable: each box's volume when it was last fitted fresh (at build or
   // rebuild), the reference of rebuild_ratio.
   std::vector<float> fresh_volume_;
+  // Per leaf position: face << 1 | (1 when the triangle turns against its face). Kept only
+  // where faces save work (at least a quarter of the triangles share one); empty otherwise, each
+  // triangle then its own face.
+  std::vector<std::int32_t> faces_;
   BuildOptions options_;
   int depth_ = 0;
   double axis_defect_ = 0.0;

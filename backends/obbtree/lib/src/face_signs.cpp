@@ -1,0 +1,214 @@
+// The exact triangle test of the collision query's last stages, with the sides of corners
+// against planar faces kept for the query (face_signs.h).
+#include "face_signs.h"
+
+#include <collido/oracle/triangle_test.h>
+
+#include "filtered_predicates.h"
+
+namespace collido::obbtree::detail {
+
+void FaceSignCache::begin() {
+  if (++stamp_ == 0) {  // wrapped: old stamps could collide with new ones
+    for (Slot& slot : slots_)
+      slot.stamp = 0;
+    stamp_ = 1;
+  }
+  used_ = 0;
+}
+
+int FaceSignCache::find(int object, std::int32_t face, std::int32_t vertex) const {
+  if (slots_.empty()) return kNone;
+  const std::uint64_t key = keyOf(object, face, vertex);
+  const std::size_t mask = slots_.size() - 1;
+  for (std::size_t i = slotOf(key);; i = (i + 1) & mask) {
+    const Slot& slot = slots_[i];
+    if (slot.stamp != stamp_) return kNone;  // the table is never full: an empty slot ends it
+    if (slot.key == key) return slot.sign;
+  }
+}
+
+void FaceSignCache::store(int object, std::int32_t face, std::int32_t vertex, int sign) {
+  if (2 * (used_ + 1) > slots_.size()) grow();
+  const std::uint64_t key = keyOf(object, face, vertex);
+  const std::size_t mask = slots_.size() - 1;
+  for (std::size_t i = slotOf(key);; i = (i + 1) & mask) {
+    Slot& slot = slots_[i];
+    if (slot.stamp != stamp_) {
+      slot = Slot{key, stamp_, sign};
+      ++used_;
+      return;
+    }
+    if (slot.key == key) return;
+  }
+}
+
+void FaceSignCache::grow() {
+  std::vector<Slot> old;
+  old.swap(slots_);
+  const std::size_t size = old.empty() ? 256 : 2 * old.size();
+  slots_.assign(size, Slot{});
+  shift_ = 64 - __builtin_ctzll(size);
+  const std::uint32_t stamp = stamp_;
+  stamp_ = 1;  // the new table holds no stamp yet
+  used_ = 0;
+  for (const Slot& slot : old) {
+    if (slot.stamp != stamp) continue;
+    const std::size_t mask = slots_.size() - 1;
+    std::size_t i = slotOf(slot.key);
+    while (slots_[i].stamp == stamp_)
+      i = (i + 1) & mask;
+    slots_[i] = Slot{slot.key, stamp_, slot.sign};
+    ++used_;
+  }
+}
+
+namespace {
+
+// The orientation of corners sa, sb, sc, sd of the pair (0 to 2 A's, 3 to 5 B's): where the
+// first three are one triangle's corners and the fourth is the other's, its face's sign, kept
+// for the query, else `decide()`. `decide` returns kUnsure when it cannot; nothing is kept then.
+template <typename Decide>
+int keptOrDecided(const FaceSignPair& pair, FaceSignCache& cache, int sa, int sb, int sc, int sd,
+                  Decide&& decide) {
+  const int object = sa / 3;
+  const bool keyed =
+      sb / 3 == object && sc / 3 == object && sa != sb && sa != sc && sb != sc && sd / 3 != object;
+  if (!keyed) return decide();
+  const ObbTree& tree = *pair.tree[object];
+  const std::int32_t triangle = pair.triangle[object];
+  const std::int32_t face = tree.faceOf(triangle);
+  // +1 when a, b, c follow the triangle's own turn, -1 the other way; and the triangle's turn
+  // against its face's.
+  const int factor = ((sb - sa + 3) % 3 == 1 ? 1 : -1) * tree.faceTurn(triangle);
+  const std::int32_t vertex =
+      pair.tree[1 - object]->orderedTriangles()(sd % 3, pair.triangle[1 - object]);
+  const int kept = cache.find(object, face, vertex);
+  if (kept != FaceSignCache::kNone) return kept * factor;
+  const int sign = decide();
+  if (sign != TrackedDoubleDouble::kUnsure) cache.store(object, face, vertex, sign * factor);
+  return sign;
+}
+
+// Every corner exact in A's frame: the certified filter's test, with the orientations of exact
+// points it cannot settle kept per face. The filter's test copies its points, so a corner is
+// named by its value, which here is its exact position: a point equal to several corners takes
+// the first, A's before B's, and any corner at that position has the same sign against a face.
+class ModelFrameSigns final : public ExactOrientation {
+ public:
+  ModelFrameSigns(const FaceSignPair& pair, FaceSignCache& cache) : pair_(pair), cache_(cache) {}
+
+  int orient3d(const UncertainPoint& a, const UncertainPoint& b, const UncertainPoint& c,
+               const UncertainPoint& d) override {
+    return keptOrDecided(pair_, cache_, slotOf(a), slotOf(b), slotOf(c), slotOf(d),
+                         [&] { return exact::orient3d(a.p, b.p, c.p, d.p); });
+  }
+
+ private:
+  int slotOf(const UncertainPoint& point) const {
+    int slot = 0;
+    while (slot < 5 && pair_.mapped[slot]->p != point.p)
+      ++slot;
+    return slot;
+  }
+
+  const FaceSignPair& pair_;
+  FaceSignCache& cache_;
+};
+
+// The world positions as tracked double-doubles, behind the certified filter on the corners in
+// A's frame (orientations agree there). Points are the pair's own corners, named by address.
+class WorldSignKernel {
+ public:
+  using Point = const UncertainPoint*;
+
+  WorldSignKernel(const FaceSignPair& pair, FaceSignCache& cache) : pair_(pair), cache_(cache) {}
+
+  bool unsure() const { return unsure_; }
+
+  int orient3d(const Point& a, const Point& b, const Point& c, const Point& d) {
+    FilteredKernel filter(/*decide_exact_inputs=*/false);
+    const int sign = filter.orient3d(*a, *b, *c, *d);
+    if (!filter.unsure()) return sign;
+    const int decided = keptOrDecided(pair_, cache_, slotOf(a), slotOf(b), slotOf(c), slotOf(d),
+                                      [&] { return trackedOrient3d(a, b, c, d); });
+    return decided != TrackedDoubleDouble::kUnsure ? decided : unsureSign();
+  }
+
+  // 2D orientations and coordinate comparisons depend on the frame: the world's.
+  int orient2d(const Point& a, const Point& b, const Point& c, int drop) {
+    return signOf(trackedOrient2d(world(a), world(b), world(c), drop));
+  }
+
+  bool collinear(const Point& a, const Point& b, const Point& c) {
+    FilteredKernel filter;  // collinearity is the same in every frame
+    const bool answer = filter.collinear(*a, *b, *c);
+    if (!filter.unsure()) return answer;
+    for (int drop = 0; drop < 3; ++drop) {
+      if (orient2d(a, b, c, drop) != 0) return false;
+    }
+    return true;
+  }
+
+  int compare(const Point& a, const Point& b, int k) {
+    return signOf(world(a).x[k] - world(b).x[k]);
+  }
+
+ private:
+  int slotOf(const Point& p) const {
+    int slot = 0;
+    while (slot < 5 && pair_.mapped[slot] != p)
+      ++slot;
+    return slot;
+  }
+
+  const TrackedPoint& world(const Point& p) const { return pair_.world[slotOf(p)]->world(); }
+
+  // kUnsure when the double-doubles cannot settle it.
+  int trackedOrient3d(const Point& a, const Point& b, const Point& c, const Point& d) {
+    // The triangle test asks one plane about three corners in a row: the last plane is kept.
+    if (a != plane_corners_[0] || b != plane_corners_[1] || c != plane_corners_[2]) {
+      plane_ = TrackedPlane(world(a), world(b), world(c));
+      plane_corners_[0] = a;
+      plane_corners_[1] = b;
+      plane_corners_[2] = c;
+    }
+    return plane_.orient3d(world(d)).certainSign();
+  }
+
+  int signOf(const TrackedDoubleDouble& value) {
+    const int sign = value.certainSign();
+    return sign != TrackedDoubleDouble::kUnsure ? sign : unsureSign();
+  }
+
+  int unsureSign() {
+    unsure_ = true;
+    return 0;
+  }
+
+  const FaceSignPair& pair_;
+  FaceSignCache& cache_;
+  bool unsure_ = false;
+  Point plane_corners_[3] = {nullptr, nullptr, nullptr};
+  TrackedPlane plane_;
+};
+
+}  // namespace
+
+std::optional<bool> trianglesIntersectWithFaceSigns(const FaceSignPair& pair, ExactFrame frame,
+                                                    FaceSignCache& cache) {
+  const UncertainPoint* const* p = pair.mapped;
+  if (frame == ExactFrame::kModelOfA) {
+    ModelFrameSigns signs(pair, cache);
+    FilteredKernel kernel(/*decide_exact_inputs=*/true, &signs);
+    return exact::TriangleTest<FilteredKernel>(kernel).intersect(*p[0], *p[1], *p[2], *p[3], *p[4],
+                                                                 *p[5]);
+  }
+  WorldSignKernel kernel(pair, cache);
+  const bool answer =
+      exact::TriangleTest<WorldSignKernel>(kernel).intersect(p[0], p[1], p[2], p[3], p[4], p[5]);
+  if (kernel.unsure()) return std::nullopt;
+  return answer;
+}
+
+}  // namespace collido::obbtree::detail

@@ -1,0 +1,82 @@
+// Exact signs of a vertex against a planar face of the other object, kept for one query. Where
+// two flat parts touch flush, every triangle pair of the two touching faces asks the exact side
+// of the same vertices against the same plane, and an exact zero is the costliest sign there is
+// (the filter cannot settle it). A triangle's side of a vertex is its face's, times the
+// triangle's turn against the face's (ObbTree::faceOf), so each (face, vertex) is decided once a
+// query and every later triangle pair of those faces reads it.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include <collido/obbtree/tree.h>
+#include <collido/obbtree/triangle_intersection.h>
+
+#include "tracked_world.h"
+
+namespace collido::obbtree::detail {
+
+/// A triangle pair as the exact stages of the collision query see it: the corners in A's model
+/// frame with their error radii (A's triangle first), their world positions (placed on first
+/// use; null where the world is not used), and what names them: each triangle's tree and
+/// position in its leaf order. Vertices and faces are looked up only by a sign the filter
+/// cannot settle.
+struct FaceSignPair {
+  const UncertainPoint* mapped[6] = {};
+  LazyWorldPoint* world[6] = {};
+  const ObbTree* tree[2] = {};
+  std::int32_t triangle[2] = {};
+};
+
+/// The signs decided in one query, by (object of the face, face, vertex of the other object):
+/// an open-addressing table whose slots carry the query's stamp, so a new query clears nothing.
+class FaceSignCache {
+ public:
+  static constexpr int kNone = 2;
+
+  /// Forgets the last query's signs.
+  void begin();
+  /// The sign kept for the key, or kNone.
+  int find(int object, std::int32_t face, std::int32_t vertex) const;
+  void store(int object, std::int32_t face, std::int32_t vertex, int sign);
+  std::size_t bytes() const { return slots_.capacity() * sizeof(Slot); }
+
+ private:
+  struct Slot {
+    std::uint64_t key = 0;
+    std::uint32_t stamp = 0;
+    std::int32_t sign = 0;
+  };
+  static std::uint64_t keyOf(int object, std::int32_t face, std::int32_t vertex) {
+    return (static_cast<std::uint64_t>(object) << 63) |
+           (static_cast<std::uint64_t>(static_cast<std::uint32_t>(face)) << 32) |
+           static_cast<std::uint32_t>(vertex);
+  }
+  std::size_t slotOf(std::uint64_t key) const {
+    return static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ULL) >> shift_);
+  }
+  void grow();
+
+  std::vector<Slot> slots_;
+  std::uint32_t stamp_ = 0;
+  std::size_t used_ = 0;
+  int shift_ = 64;
+};
+
+/// Where the exact signs are taken: on A's model coordinates, every corner exact there (A's as
+/// stored, B's where the map is exact: identity, quarter turns, slides along an axis), or on
+/// the world positions as tracked double-doubles (only for a pose of A with a positive
+/// determinant, where orientations in A's frame and the world's agree). Within one query the
+/// cache holds either kind of sign: they are the same whenever the world is used.
+enum class ExactFrame { kModelOfA, kWorld };
+
+/// The exact triangle test on the pair: every orientation of one triangle's plane against a
+/// corner of the other first through the certified filter, then through `cache`, then decided
+/// and kept. std::nullopt when a world sign was uncertain (the caller goes on to the
+/// expansions); in kModelOfA every sign is decided.
+std::optional<bool> trianglesIntersectWithFaceSigns(const FaceSignPair& pair, ExactFrame frame,
+                                                    FaceSignCache& cache);
+
+}  // namespace collido::obbtree::detail
