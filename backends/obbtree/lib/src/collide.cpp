@@ -528,21 +528,19 @@ class Descent {
     const UncertainPoint* p = ta.corners;
     const UncertainPoint* q = tb.corners;
     detail::FaceSignPair pair;
+    pair.corners[0] = p;
+    pair.corners[1] = q;
     pair.tree[0] = &a_;
     pair.tree[1] = &b_;
     pair.triangle[0] = i;
     pair.triangle[1] = j;
-    for (int c = 0; c < 3; ++c) {
-      pair.mapped[c] = &p[c];
-      pair.mapped[3 + c] = &q[c];
-    }
     // Every corner exact in A's frame (A's are; B's where the map is exact): decided there, the
     // faces' sides kept for the query.
     if (exactInFrameOfA(q)) {
       return *detail::trianglesIntersectWithFaceSigns(pair, detail::ExactFrame::kModelOfA,
                                                       scratch_.face_signs);
     }
-    if (std::optional<bool> hit = trianglesIntersectCertified(p[0], p[1], p[2], q[0], q[1], q[2]))
+    if (std::optional<bool> hit = detail::trianglesIntersectCertifiedWith(p, q, nullptr))
       return *hit;
     // Coplanar or parallel to within the mapping error, but side by side: no exact test needed.
     if (detail::projectionsSeparate(ta, tb)) return false;
@@ -564,11 +562,13 @@ class Descent {
             scratch_, scratch_.world_slots_b, static_cast<std::size_t>(b_.vertices().cols()),
             b_.orderedTriangles()(c, j), corners_b[c], placement_.pose_b, pose_in_range_ == 1);
       }
+      detail::LazyWorldPoint* world[6];
       bool in_range = true;
       for (int k = 0; k < 6; ++k) {
-        pair.world[k] = &scratch_.world_points[index[k]];
-        in_range = in_range && pair.world[k]->inRange();
+        world[k] = &scratch_.world_points[index[k]];
+        in_range = in_range && world[k]->inRange();
       }
+      pair.world = world;
       if (in_range) {
         if (std::optional<bool> hit = detail::trianglesIntersectWithFaceSigns(
                 pair, detail::ExactFrame::kWorld, scratch_.face_signs))

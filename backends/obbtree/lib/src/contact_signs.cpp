@@ -124,17 +124,30 @@ std::optional<PlaneSigns> PlaneSides::signs() {
       signs[side][k] =
           filter.orient3d(plane[0]->world, plane[1]->world, plane[2]->world, other[k]->world);
       if (!filter.unsure()) continue;
+      // A sign the filter cannot settle: the corner's vertex against the plane's face, if kept.
+      const int object = static_cast<int>(side);
+      const std::int32_t face = names_ ? names_->face[side] : 0;
+      const std::int32_t vertex = names_ ? names_->vertices[1 - side][k] : 0;
+      const int turn = names_ ? names_->turn[side] : 1;
+      if (cache_) {
+        const int kept = cache_->find(object, face, vertex);
+        if (kept != FaceSignCache::kNone) {
+          signs[side][k] = kept * turn;
+          continue;
+        }
+      }
       const std::optional<TrackedDoubleDouble> close = tracked(side, k);
       const std::optional<int> tracked_sign = close ? certainSignOf(*close) : std::nullopt;
       if (tracked_sign) {
         signs[side][k] = *tracked_sign;
-        continue;
+      } else {
+        // An expansion's rounded value keeps its exact sign: its largest component outweighs
+        // the others together, and the inputs' range keeps it from underflowing to zero.
+        const std::optional<double> exact = value(side, k);
+        if (!exact) return std::nullopt;
+        signs[side][k] = (*exact > 0.0) - (*exact < 0.0);
       }
-      // An expansion's rounded value keeps its exact sign: its largest component outweighs the
-      // others together, and the inputs' range keeps it from underflowing to zero.
-      const std::optional<double> exact = value(side, k);
-      if (!exact) return std::nullopt;
-      signs[side][k] = (*exact > 0.0) - (*exact < 0.0);
+      if (cache_) cache_->store(object, face, vertex, signs[side][k] * turn);
     }
   }
   return signs;

@@ -15,6 +15,7 @@
 #include <collido/obbtree/triangle_intersection.h>
 
 #include "exact_world.h"
+#include "face_signs.h"
 #include "plane_relations.h"
 #include "tracked_world.h"
 
@@ -63,6 +64,20 @@ class PlaneSides {
   /// The corners must outlive this.
   PlaneSides(const PosedTriangle& a, const PosedTriangle& b) : a_(a), b_(b) {}
 
+  /// What names the pair's corners and planes for a table of face signs: each triangle's face
+  /// and turn against it (ObbTree::faceOf, faceTurn), and its corners' vertices; [0] A's.
+  struct FaceNames {
+    std::int32_t face[2] = {};
+    int turn[2] = {1, 1};
+    std::int32_t vertices[2][3] = {};
+  };
+  /// Reads the signs the filter cannot settle from `cache`, and keeps them there, by face and
+  /// vertex (face_signs.h); `cache` and `names` must outlive this.
+  void keepSignsIn(FaceSignCache& cache, const FaceNames& names) {
+    cache_ = &cache;
+    names_ = &names;
+  }
+
   /// [0]: B's corners against A's plane, [1]: A's against B's (as PlaneSigns); nullopt
   /// when a sign was out of the expansions' reach (the caller then decides on rationals).
   std::optional<PlaneSigns> signs();
@@ -80,6 +95,8 @@ class PlaneSides {
 
   PosedTriangle a_;
   PosedTriangle b_;
+  FaceSignCache* cache_ = nullptr;
+  const FaceNames* names_ = nullptr;
   std::array<std::array<Memo, 3>, 2> values_{};
   std::array<std::optional<TrackedPlane>, 2> planes_{};
   std::array<std::array<std::optional<TrackedDoubleDouble>, 3>, 2> determinants_{};

@@ -277,6 +277,10 @@ void contactsOfPairs(const ObbTree& a, const std::vector<std::int32_t>& position
   answer.contacts.reserve(pairs.size());
   PosedCornerCache cache_a(a, pose_a);
   PosedCornerCache cache_b(b, pose_b);
+  // Flush faces meet in many pairs, each asking the same vertices' sides of the same planes
+  // (face_signs.h). The table's signs are the world's; one a thread, cleared by a stamp.
+  thread_local detail::FaceSignCache face_signs;
+  face_signs.begin();
   for (const TrianglePair& pair : pairs) {
     const VertexIndices vertices_a = vertexIndices(a, positions_a, pair.a);
     const VertexIndices vertices_b = vertexIndices(b, positions_b, pair.b);
@@ -291,6 +295,18 @@ void contactsOfPairs(const ObbTree& a, const std::vector<std::int32_t>& position
       detail::ContactSignKernel kernel;
       const ExactCorners exact{cache_a.corners(vertices_a), cache_b.corners(vertices_b)};
       detail::PlaneSides sides(exact.a, exact.b);
+      const std::int32_t position_a = positions_a[static_cast<std::size_t>(pair.a)];
+      const std::int32_t position_b = positions_b[static_cast<std::size_t>(pair.b)];
+      detail::PlaneSides::FaceNames names;
+      names.face[0] = a.faceOf(position_a);
+      names.face[1] = b.faceOf(position_b);
+      names.turn[0] = a.faceTurn(position_a);
+      names.turn[1] = b.faceTurn(position_b);
+      for (std::size_t c = 0; c < 3; ++c) {
+        names.vertices[0][c] = vertices_a[c];
+        names.vertices[1][c] = vertices_b[c];
+      }
+      sides.keepSignsIn(face_signs, names);
       const std::optional<detail::PlaneSigns> signs = sides.signs();
       if (signs && (*signs)[0] != Signs{0, 0, 0}) {
         set = doubleIntersection(world_a, world_b, signs, &sides);

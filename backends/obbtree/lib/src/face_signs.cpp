@@ -5,6 +5,7 @@
 #include <collido/oracle/triangle_test.h>
 
 #include "filtered_predicates.h"
+#include "prepared_triangle.h"
 
 namespace collido::obbtree::detail {
 
@@ -107,7 +108,7 @@ class ModelFrameSigns final : public ExactOrientation {
  private:
   int slotOf(const UncertainPoint& point) const {
     int slot = 0;
-    while (slot < 5 && pair_.mapped[slot]->p != point.p)
+    while (slot < 5 && pair_.mapped(slot).p != point.p)
       ++slot;
     return slot;
   }
@@ -157,7 +158,7 @@ class WorldSignKernel {
  private:
   int slotOf(const Point& p) const {
     int slot = 0;
-    while (slot < 5 && pair_.mapped[slot] != p)
+    while (slot < 5 && &pair_.mapped(slot) != p)
       ++slot;
     return slot;
   }
@@ -197,16 +198,15 @@ class WorldSignKernel {
 
 std::optional<bool> trianglesIntersectWithFaceSigns(const FaceSignPair& pair, ExactFrame frame,
                                                     FaceSignCache& cache) {
-  const UncertainPoint* const* p = pair.mapped;
   if (frame == ExactFrame::kModelOfA) {
     ModelFrameSigns signs(pair, cache);
-    FilteredKernel kernel(/*decide_exact_inputs=*/true, &signs);
-    return exact::TriangleTest<FilteredKernel>(kernel).intersect(*p[0], *p[1], *p[2], *p[3], *p[4],
-                                                                 *p[5]);
+    return trianglesIntersectCertifiedWith(pair.corners[0], pair.corners[1], &signs);
   }
+  const UncertainPoint* const a = pair.corners[0];
+  const UncertainPoint* const b = pair.corners[1];
   WorldSignKernel kernel(pair, cache);
-  const bool answer =
-      exact::TriangleTest<WorldSignKernel>(kernel).intersect(p[0], p[1], p[2], p[3], p[4], p[5]);
+  const bool answer = exact::TriangleTest<WorldSignKernel>(kernel).intersect(&a[0], &a[1], &a[2],
+                                                                             &b[0], &b[1], &b[2]);
   if (kernel.unsure()) return std::nullopt;
   return answer;
 }

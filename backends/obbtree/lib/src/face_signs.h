@@ -24,10 +24,13 @@ namespace collido::obbtree::detail {
 /// position in its leaf order. Vertices and faces are looked up only by a sign the filter
 /// cannot settle.
 struct FaceSignPair {
-  const UncertainPoint* mapped[6] = {};
-  LazyWorldPoint* world[6] = {};
+  const UncertainPoint* corners[2] = {};   ///< A's triangle's three corners, then B's
+  LazyWorldPoint* const* world = nullptr;  ///< six, A's first; null unless in the world
   const ObbTree* tree[2] = {};
   std::int32_t triangle[2] = {};
+
+  /// Corner `slot` of the pair: 0 to 2 A's, 3 to 5 B's.
+  const UncertainPoint& mapped(int slot) const { return corners[slot / 3][slot % 3]; }
 };
 
 /// The signs decided in one query, by (object of the face, face, vertex of the other object):

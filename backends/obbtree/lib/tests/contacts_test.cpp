@@ -5,6 +5,7 @@
 #include <random>
 #include <set>
 #include <string>
+#include <utility>
 
 #include <gtest/gtest.h>
 
@@ -120,6 +121,34 @@ TEST(ObbTreeContacts, NearlyUprightBoxesMatchTheReference) {
   const ContactAnswer answer = contactsOf(box, Pose::Identity(), box, on_top, {});
   EXPECT_EQ(answer.exact_sets, 0u) << "no pair should need rationals";
   expectReference(box, Pose::Identity(), box, on_top, answer, "nearly upright");
+}
+
+// A box standing on a tessellated sheet turned about its normal (the plane exact, the rest
+// rounded), some sheet triangles wound the other way: the sides of the box's bottom corners
+// against the sheet's one face are decided once and read by every sheet triangle, each turned by
+// its own winding (face_signs.h).
+TEST(ObbTreeContacts, ABoxOnASheetWoundBothWaysMatchesTheReference) {
+  GridSheetParams params;
+  params.width = 2.0;
+  params.depth = 1.5;
+  params.cells_x = 8;
+  params.cells_y = 6;
+  TriangleMesh sheet = unwrap(makeGridSheet(params), "sheet");
+  for (Eigen::Index t = 0; t < sheet.triangles.cols(); t += 3)
+    std::swap(sheet.triangles(1, t), sheet.triangles(2, t));
+  const Posed plane = prepare(std::move(sheet));
+  const Posed box = prepare(unwrap(makeBox(BoxParams{Eigen::Vector3d(0.7, 0.5, 0.6)}), "box"));
+  // Turned about the normal, and about a nearly upright axis (the box's corners about 1e-18
+  // off the sheet, on both sides: signs beyond the doubles, kept per face too).
+  const Eigen::Vector3d axes[] = {Eigen::Vector3d::UnitZ(),
+                                  Eigen::Vector3d(1e-18, -2e-18, 1.0).normalized()};
+  for (const Eigen::Vector3d& axis : axes) {
+    Pose standing = Pose::Identity();
+    standing.linear() = Eigen::AngleAxisd(0.3, axis).toRotationMatrix();
+    standing.translation() = Eigen::Vector3d(0.125, -0.25, 0.3);
+    const ContactAnswer answer = contactsOf(plane, Pose::Identity(), box, standing, {});
+    expectReference(plane, Pose::Identity(), box, standing, answer, "box on a sheet");
+  }
 }
 
 TEST(ObbTreeContacts, MergeRadiusAndCapShapeTheManifold) {
