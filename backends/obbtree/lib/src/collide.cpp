@@ -527,13 +527,7 @@ class Descent {
     }
     const UncertainPoint* p = ta.corners;
     const UncertainPoint* q = tb.corners;
-    detail::FaceSignPair pair;
-    pair.corners[0] = p;
-    pair.corners[1] = q;
-    pair.tree[0] = &a_;
-    pair.tree[1] = &b_;
-    pair.triangle[0] = i;
-    pair.triangle[1] = j;
+    detail::FaceSignPair pair{{p, q}, nullptr, {&a_, &b_}, {i, j}};
     // Every corner exact in A's frame (A's are; B's where the map is exact): decided there, the
     // faces' sides kept for the query.
     if (exactInFrameOfA(q)) {

@@ -117,42 +117,44 @@ class ModelFrameSigns final : public ExactOrientation {
   FaceSignCache& cache_;
 };
 
-// The world positions as tracked double-doubles, behind the certified filter on the corners in
-// A's frame (orientations agree there). Points are the pair's own corners, named by address.
+// The world positions as tracked double-doubles (TrackedWorldKernel), behind the certified
+// filter on the corners in A's frame (orientations agree there). Points are the pair's own
+// corners, named by address.
 class WorldSignKernel {
  public:
   using Point = const UncertainPoint*;
 
   WorldSignKernel(const FaceSignPair& pair, FaceSignCache& cache) : pair_(pair), cache_(cache) {}
 
-  bool unsure() const { return unsure_; }
+  bool unsure() const { return world_.unsure(); }
 
   int orient3d(const Point& a, const Point& b, const Point& c, const Point& d) {
-    FilteredKernel filter(/*decide_exact_inputs=*/false);
+    FilteredKernel filter;
     const int sign = filter.orient3d(*a, *b, *c, *d);
     if (!filter.unsure()) return sign;
-    const int decided = keptOrDecided(pair_, cache_, slotOf(a), slotOf(b), slotOf(c), slotOf(d),
-                                      [&] { return trackedOrient3d(a, b, c, d); });
-    return decided != TrackedDoubleDouble::kUnsure ? decided : unsureSign();
+    // Once the world kernel is unsure the answer is dropped, and nothing more is kept.
+    const int decided =
+        keptOrDecided(pair_, cache_, slotOf(a), slotOf(b), slotOf(c), slotOf(d), [&] {
+          const int world_sign = world_.orient3d(world(a), world(b), world(c), world(d));
+          return world_.unsure() ? TrackedDoubleDouble::kUnsure : world_sign;
+        });
+    return decided != TrackedDoubleDouble::kUnsure ? decided : 0;
   }
 
   // 2D orientations and coordinate comparisons depend on the frame: the world's.
   int orient2d(const Point& a, const Point& b, const Point& c, int drop) {
-    return signOf(trackedOrient2d(world(a), world(b), world(c), drop));
+    return world_.orient2d(world(a), world(b), world(c), drop);
   }
 
   bool collinear(const Point& a, const Point& b, const Point& c) {
     FilteredKernel filter;  // collinearity is the same in every frame
     const bool answer = filter.collinear(*a, *b, *c);
     if (!filter.unsure()) return answer;
-    for (int drop = 0; drop < 3; ++drop) {
-      if (orient2d(a, b, c, drop) != 0) return false;
-    }
-    return true;
+    return world_.collinear(world(a), world(b), world(c));
   }
 
   int compare(const Point& a, const Point& b, int k) {
-    return signOf(world(a).x[k] - world(b).x[k]);
+    return world_.compare(world(a), world(b), k);
   }
 
  private:
@@ -165,33 +167,9 @@ class WorldSignKernel {
 
   const TrackedPoint& world(const Point& p) const { return pair_.world[slotOf(p)]->world(); }
 
-  // kUnsure when the double-doubles cannot settle it.
-  int trackedOrient3d(const Point& a, const Point& b, const Point& c, const Point& d) {
-    // The triangle test asks one plane about three corners in a row: the last plane is kept.
-    if (a != plane_corners_[0] || b != plane_corners_[1] || c != plane_corners_[2]) {
-      plane_ = TrackedPlane(world(a), world(b), world(c));
-      plane_corners_[0] = a;
-      plane_corners_[1] = b;
-      plane_corners_[2] = c;
-    }
-    return plane_.orient3d(world(d)).certainSign();
-  }
-
-  int signOf(const TrackedDoubleDouble& value) {
-    const int sign = value.certainSign();
-    return sign != TrackedDoubleDouble::kUnsure ? sign : unsureSign();
-  }
-
-  int unsureSign() {
-    unsure_ = true;
-    return 0;
-  }
-
   const FaceSignPair& pair_;
   FaceSignCache& cache_;
-  bool unsure_ = false;
-  Point plane_corners_[3] = {nullptr, nullptr, nullptr};
-  TrackedPlane plane_;
+  TrackedWorldKernel world_;
 };
 
 }  // namespace

@@ -49,11 +49,10 @@ class FilteredKernel {
  public:
   using Point = UncertainPoint;
 
-  /// `decide_exact_inputs`: where the bound cannot settle the orientation of four exact points,
-  /// take `exact_orientation` (the exact predicate when null, the default) or be unsure.
-  explicit FilteredKernel(bool decide_exact_inputs = true,
-                          ExactOrientation* exact_orientation = nullptr)
-      : decide_exact_inputs_(decide_exact_inputs), exact_orientation_(exact_orientation) {}
+  /// `exact_orientation`: decides where the bound cannot settle the orientation of four exact
+  /// points (the exact predicate when null, the default).
+  explicit FilteredKernel(ExactOrientation* exact_orientation = nullptr)
+      : exact_orientation_(exact_orientation) {}
 
   bool unsure() const { return unsure_; }
 
@@ -76,7 +75,7 @@ class FilteredKernel {
         inflated == 0.0 && !underflows(bu) && !underflows(bv) && !underflows(bw);
     const int sign = certain(det, bound, zero_is_exact);
     if (sign != kUnsure) return sign;
-    if (decide_exact_inputs_ && exact(a) && exact(b) && exact(c) && exact(d)) {
+    if (exact(a) && exact(b) && exact(c) && exact(d)) {
       return exact_orientation_ ? exact_orientation_->orient3d(a, b, c, d)
                                 : exact::orient3d(a.p, b.p, c.p, d.p);
     }
@@ -159,7 +158,6 @@ class FilteredKernel {
     return 0;
   }
 
-  bool decide_exact_inputs_ = true;
   ExactOrientation* exact_orientation_ = nullptr;
   bool unsure_ = false;
 };

@@ -13,66 +13,7 @@
 namespace collido::obbtree::detail {
 namespace {
 
-// World coordinates to about 106 bits, each sign certified or left undecided (then the kernel
-// is unsure and the pair goes on to the expansions): the cheap stage that settles poses whose
-// faces are parallel or coplanar only to within rounding (a solver's "upright" rotation with
-// 1e-18 off the diagonal, gears whose axes are parallel to 1e-19).
 using Tracked = TrackedDoubleDouble;
-
-class TrackedWorldKernel {
- public:
-  using Point = TrackedPoint;
-
-  bool unsure() const { return unsure_; }
-
-  // The triangle test asks for the corners of one triangle against the other's plane (a, b, c)
-  // in a row: the last plane is kept, keyed by the corners' values.
-  int orient3d(const Point& a, const Point& b, const Point& c, const Point& d) {
-    if (!same(a, corners_[0]) || !same(b, corners_[1]) || !same(c, corners_[2]) || !has_plane_) {
-      corners_[0] = a;
-      corners_[1] = b;
-      corners_[2] = c;
-      plane_ = TrackedPlane(a, b, c);
-      has_plane_ = true;
-    }
-    return signOf(plane_.orient3d(d));
-  }
-
-  int orient2d(const Point& a, const Point& b, const Point& c, int drop) {
-    return signOf(trackedOrient2d(a, b, c, drop));
-  }
-
-  bool collinear(const Point& a, const Point& b, const Point& c) {
-    for (int drop = 0; drop < 3; ++drop) {
-      if (orient2d(a, b, c, drop) != 0) return false;
-    }
-    return true;
-  }
-
-  int compare(const Point& a, const Point& b, int k) { return signOf(a.x[k] - b.x[k]); }
-
- private:
-  int signOf(const Tracked& value) {
-    const int sign = value.certainSign();
-    if (sign != Tracked::kUnsure) return sign;
-    unsure_ = true;
-    return 0;
-  }
-
-  static bool same(const Point& p, const Point& q) {
-    for (int k = 0; k < 3; ++k) {
-      const Tracked& x = p.x[k];
-      const Tracked& y = q.x[k];
-      if (x.hi != y.hi || x.lo != y.lo || x.radius != y.radius) return false;
-    }
-    return true;
-  }
-
-  bool unsure_ = false;
-  bool has_plane_ = false;
-  Point corners_[3];
-  TrackedPlane plane_;
-};
 
 TrackedPoint placeTracked(const Eigen::Vector3d& v, const Eigen::Isometry3d& pose) {
   const Eigen::Matrix3d& r = pose.linear();

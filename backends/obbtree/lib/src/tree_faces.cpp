@@ -51,32 +51,23 @@ void ObbTree::findPlanarFaces() {
   const auto idOf = [&](std::int32_t k, int corner) {
     return ids[static_cast<std::size_t>(triangles(corner, k))];
   };
-  std::vector<EdgeUse> uses;
+  // Edge e of triangle k by its ends' position ids, the smaller first; 0 for a collapsed edge
+  // (ids are distinct, so no real edge has the key 0).
+  const auto edgeKey = [&](std::int32_t k, int e) -> std::uint64_t {
+    const auto u = static_cast<std::uint32_t>(idOf(k, e));
+    const auto v = static_cast<std::uint32_t>(idOf(k, (e + 1) % 3));
+    return u == v ? 0 : (std::uint64_t{std::min(u, v)} << 32) | std::max(u, v);
+  };
+  std::vector<EdgeUse> uses;  // every edge of every triangle, sorted by key
   uses.reserve(3 * static_cast<std::size_t>(count));
   for (std::int32_t k = 0; k < count; ++k) {
     for (int e = 0; e < 3; ++e) {
-      const auto u = static_cast<std::uint32_t>(idOf(k, e));
-      const auto v = static_cast<std::uint32_t>(idOf(k, (e + 1) % 3));
-      if (u == v) continue;
-      uses.push_back(EdgeUse{(std::uint64_t{std::min(u, v)} << 32) | std::max(u, v), k});
+      if (const std::uint64_t key = edgeKey(k, e)) uses.push_back(EdgeUse{key, k});
     }
   }
   std::sort(uses.begin(), uses.end(), [](const EdgeUse& x, const EdgeUse& y) {
     return x.key < y.key || (x.key == y.key && x.triangle < y.triangle);
   });
-  // Group starts, found once: group_start[i] is the first index of uses[i]'s group.
-  std::vector<std::int32_t> group_start(uses.size());
-  for (std::size_t i = 0; i < uses.size(); ++i) {
-    group_start[i] = (i > 0 && uses[i - 1].key == uses[i].key) ? group_start[i - 1]
-                                                               : static_cast<std::int32_t>(i);
-  }
-  std::vector<std::int32_t> edges_of(3 * static_cast<std::size_t>(count), -1);
-  std::vector<int> edges_seen(static_cast<std::size_t>(count), 0);
-  for (std::size_t i = 0; i < uses.size(); ++i) {
-    const auto t = static_cast<std::size_t>(uses[i].triangle);
-    edges_of[3 * t + static_cast<std::size_t>(edges_seen[t]++)] = group_start[i];
-  }
-
   const auto corner = [&](std::int32_t k, int c) -> Eigen::Vector3d {
     return vertices_.col(triangles(c, k));
   };
@@ -98,20 +89,19 @@ void ObbTree::findPlanarFaces() {
       const std::int32_t t = queue.back();
       queue.pop_back();
       for (int e = 0; e < 3; ++e) {
-        const std::int32_t start =
-            edges_of[3 * static_cast<std::size_t>(t) + static_cast<std::size_t>(e)];
-        if (start < 0) continue;
-        for (auto i = static_cast<std::size_t>(start);
-             i < uses.size() && uses[i].key == uses[static_cast<std::size_t>(start)].key; ++i) {
-          const std::int32_t r = uses[i].triangle;
+        const std::uint64_t key = edgeKey(t, e);
+        const auto first =
+            std::lower_bound(uses.begin(), uses.end(), key,
+                             [](const EdgeUse& use, std::uint64_t k) { return use.key < k; });
+        for (auto i = first; i != uses.end() && i->key == key; ++i) {
+          const std::int32_t r = i->triangle;
           if (faces[static_cast<std::size_t>(r)] >= 0) continue;
           const Eigen::Vector3d p[3] = {corner(r, 0), corner(r, 1), corner(r, 2)};
           // r shares an edge with a triangle of the plane: the corners off that edge decide.
-          const std::uint64_t edge = uses[i].key;
           bool in_plane = true;
           for (int c = 0; c < 3 && in_plane; ++c) {
             const auto id = static_cast<std::uint64_t>(idOf(r, c));
-            if (id == (edge >> 32) || id == (edge & 0xffffffffu)) continue;
+            if (id == (key >> 32) || id == (key & 0xffffffffu)) continue;
             in_plane = exact::orient3d(s[0], s[1], s[2], p[c]) == 0;
           }
           if (!in_plane) continue;

@@ -23,7 +23,7 @@ namespace detail {
 std::optional<bool> trianglesIntersectCertifiedWith(const UncertainPoint* a,
                                                     const UncertainPoint* b,
                                                     ExactOrientation* exact_orientation) {
-  FilteredKernel kernel(/*decide_exact_inputs=*/true, exact_orientation);
+  FilteredKernel kernel(exact_orientation);
   const bool answer =
       exact::TriangleTest<FilteredKernel>(kernel).intersect(a[0], a[1], a[2], b[0], b[1], b[2]);
   if (kernel.unsure()) return std::nullopt;
