@@ -165,6 +165,8 @@ Result<std::unique_ptr<Backend>> create(const std::string& /*variant*/, BackendO
   if (!leaf.ok()) return leaf.status();
   Result<bool> float_boxes = options.getBool("float_boxes", false);
   if (!float_boxes.ok()) return float_boxes.status();
+  Result<bool> split_by_cost = options.getBool("split_by_cost", true);
+  if (!split_by_cost.ok()) return split_by_cost.status();
   Result<std::int64_t> threads = options.getInt("threads", 1, 1, 256);
   if (!threads.ok()) return threads.status();
   Result<double> rebuild_ratio = options.getDouble("rebuild_ratio", 0.0, 0.0, 1e6);
@@ -182,6 +184,7 @@ Result<std::unique_ptr<Backend>> create(const std::string& /*variant*/, BackendO
   BuildOptions build_options;
   build_options.max_leaf_triangles = static_cast<std::int32_t>(leaf.value());
   build_options.float_boxes = float_boxes.value();
+  build_options.split_by_cost = split_by_cost.value();
   build_options.rebuild_ratio = rebuild_ratio.value();
   return std::unique_ptr<Backend>(std::make_unique<ObbTreeBackend>(
       build_options, static_cast<int>(threads.value()), share_states.value(),
@@ -195,8 +198,11 @@ const PluginInfo& describe() {
       "Collidoscope OBB tree",
       kVersion,
       {{"obbtree",
-        "OBB tree (covariance-fitted boxes, mean split, 15-axis SAT, exact triangle tests); "
+        "OBB tree (covariance-fitted boxes, cost-driven splits, 15-axis SAT, exact triangle "
+        "tests); "
         "options max_leaf_triangles (default 1), float_boxes (default false: boxes in double), "
+        "split_by_cost (default true: each node split where a cost model of the tests below it "
+        "prefers; false: at the mean of the triangle centres, the dissertation's rule), "
         "threads (default 1: all-pairs queries on this many threads), rebuild_ratio (default "
         "0: a deforming model's subtree is rebuilt when its box grew past this many times its "
         "fresh volume; 0 never), share_states (default true: the trees of an object's active "

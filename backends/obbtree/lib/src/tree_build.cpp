@@ -1,17 +1,21 @@
 // Top-down construction of the OBB tree (the dissertation's method; Gottschalk et al. 1996).
 //
-// Per node: fit the box; if the node holds more than max_leaf_triangles, split. The split plane
-// is orthogonal to the longest box axis and passes through the mean of the triangle centres; a
-// triangle goes to the side its centre lies on. If one side is empty, the next longest axis is
-// tried; if all three fail (e.g. all centres coincide), the node becomes a leaf that keeps all
-// its triangles. Nodes are emitted in depth-first order, so the first child is always the next
-// node and only the second child's index is stored. An explicit stack keeps adversarial inputs
-// (very unbalanced splits) from exhausting the call stack.
+// Per node: fit the box; if the node holds more than max_leaf_triangles, split: by default where
+// a cost model prefers (tree_split.cpp); with split_by_cost off, or where no candidate of the
+// cost model separates the triangles, by the dissertation's rule: the split plane is orthogonal
+// to the longest box axis and passes through the mean of the triangle centres; a triangle goes to
+// the side its centre lies on. If one side is empty, the next longest axis is tried; if all three
+// fail (e.g. all centres coincide), the node becomes a leaf that keeps all its triangles. Nodes are
+// emitted in depth-first order, so the first child is always the next node and only the second
+// child's index is stored. An explicit stack keeps adversarial inputs (very unbalanced splits) from
+// exhausting the call stack.
 #include <algorithm>
 #include <numeric>
 
 #include <collido/assert.h>
 #include <collido/obbtree/tree.h>
+
+#include "tree_split.h"
 
 namespace collido::obbtree {
 namespace {
@@ -64,6 +68,7 @@ ObbTree ObbTree::build(const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
   tree.nodes_.reserve(n > 0 ? static_cast<std::size_t>(2 * (n / max_leaf + 1)) : 0);
   BoxFitter fitter(static_cast<std::size_t>(vertices.cols()));
   std::vector<Task> stack;
+  detail::SplitScratch split_scratch;
   if (n > 0) stack.push_back(Task{0, n, -1, 0});
   while (!stack.empty()) {
     const Task task = stack.back();
@@ -79,8 +84,13 @@ ObbTree ObbTree::build(const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
     tree.nodes_.push_back(node);
     if (task.count <= max_leaf) continue;
 
-    std::int32_t lower = 0;
-    for (int axis = 0; axis < 3; ++axis) {  // axes are sorted longest first
+    std::int32_t lower = options.split_by_cost
+                             ? detail::splitByCost(range, task.count, node.box, vertices, triangles,
+                                                   centroids, split_scratch)
+                             : 0;
+    // The mean split: the rule itself, or where no cost candidate separates the centres (then
+    // no plane does). The axes are sorted longest first.
+    for (int axis = 0; axis < 3 && (lower == 0 || lower == task.count); ++axis) {
       lower = partition(range, task.count, node.box.axes.col(axis), centroids);
       if (lower > 0 && lower < task.count) break;
     }

@@ -174,8 +174,12 @@ void checkStructure(const ObbTree& tree, const TriangleMesh& mesh, int max_leaf,
 }
 
 // Builds and checks one tree; the depth bound holds for these well-spread meshes.
-void checkBuild(const TriangleMesh& mesh, int max_leaf, const std::string& label) {
-  const ObbTree tree = ObbTree::build(mesh.vertices, mesh.triangles, {max_leaf});
+void checkBuild(const TriangleMesh& mesh, int max_leaf, const std::string& label,
+                bool split_by_cost = true) {
+  BuildOptions options;
+  options.max_leaf_triangles = max_leaf;
+  options.split_by_cost = split_by_cost;
+  const ObbTree tree = ObbTree::build(mesh.vertices, mesh.triangles, options);
   EXPECT_EQ(tree.validate(), "") << label;
   checkStructure(tree, mesh, max_leaf, label);
   const double n = static_cast<double>(mesh.triangleCount());
@@ -192,8 +196,13 @@ TEST(ObbTreeBuild, ProceduralMeshesAtSeveralLeafSizes) {
   for (const NamedMesh& m : testMeshes()) {
     ASSERT_GE(m.mesh.triangleCount(), 100u) << m.name;
     for (int max_leaf : {1, 2, 4, 16}) {
-      checkBuild(m.mesh, max_leaf, m.name + ", max_leaf " + std::to_string(max_leaf));
-      if (HasFatalFailure()) return;
+      for (const bool by_cost : {true, false}) {
+        checkBuild(m.mesh, max_leaf,
+                   m.name + ", max_leaf " + std::to_string(max_leaf) +
+                       (by_cost ? ", split by cost" : ", mean split"),
+                   by_cost);
+        if (HasFatalFailure()) return;
+      }
     }
   }
 }
@@ -202,6 +211,52 @@ TEST(ObbTreeBuild, BunnyAtTheExtremeLeafSizes) {
   ASSERT_EQ(bunny().triangleCount(), 3674u);
   for (int max_leaf : {1, 16})
     checkBuild(bunny(), max_leaf, "bunny, max_leaf " + std::to_string(max_leaf));
+}
+
+// A shaft standing clear above a wide plate (a flange and its shaft, a robot link's two ends):
+// the cost model gives each part a child of its own, where the mean split cuts the plate in two
+// and leaves one half with the shaft, a child whose box spans the empty space between them.
+TEST(ObbTreeBuild, CostSplitGivesAShaftAndItsPlateAChildEach) {
+  GridSheetParams sheet;
+  sheet.width = 10.0;
+  sheet.depth = 10.0;
+  sheet.cells_x = 8;
+  sheet.cells_y = 8;
+  const TriangleMesh plate = unwrap(makeGridSheet(sheet), "plate");
+  CylinderParams rod;
+  rod.radius = 0.1;
+  rod.height = 10.0;
+  rod.segments = 16;
+  TriangleMesh shaft = unwrap(makeCylinder(rod), "shaft");
+  shaft.vertices.row(2).array() += 6.5;  // z from 1.5 to 11.5, above the plate at z = 0
+  TriangleMesh mesh;
+  mesh.vertices.resize(3, plate.vertices.cols() + shaft.vertices.cols());
+  mesh.vertices << plate.vertices, shaft.vertices;
+  mesh.triangles.resize(3, plate.triangles.cols() + shaft.triangles.cols());
+  mesh.triangles << plate.triangles,
+      (shaft.triangles.array() + static_cast<int>(plate.vertices.cols()));
+  const auto plate_triangles = static_cast<std::int32_t>(plate.triangles.cols());
+
+  // How many of the root's children hold triangles of one part only.
+  const auto pure_children = [&](bool split_by_cost) {
+    BuildOptions options;
+    options.split_by_cost = split_by_cost;
+    const ObbTree tree = ObbTree::build(mesh.vertices, mesh.triangles, options);
+    EXPECT_EQ(tree.validate(), "");
+    checkStructure(tree, mesh, 1, split_by_cost ? "split by cost" : "mean split");
+    int pure = 0;
+    for (const std::size_t child :
+         {std::size_t{1}, static_cast<std::size_t>(tree.nodes()[0].second_child)}) {
+      const Node& node = tree.nodes()[child];
+      int from_plate = 0;
+      for (std::int32_t k = node.first; k < node.first + node.count; ++k)
+        from_plate += tree.triangleId(k) < plate_triangles ? 1 : 0;
+      pure += from_plate == 0 || from_plate == node.count ? 1 : 0;
+    }
+    return pure;
+  };
+  EXPECT_EQ(pure_children(true), 2);
+  EXPECT_LT(pure_children(false), 2);
 }
 
 // Triangles (c + u, c + v, c - u - v) with small integer u, v: every centre is exactly c, so no

@@ -30,6 +30,11 @@ struct BuildOptions {
   /// by area); 0 never rebuilds. Keeps boxes tight when a deformation turns the geometry
   /// away from the axes the boxes were fitted to.
   double rebuild_ratio = 0.0;
+  /// Where to split a node (last, so that brace-initialised options keep their meaning): true, at
+  /// the plane (of 16 per box axis) that a cost model of the tests below it prefers
+  /// (tree_split.cpp); false, at the mean of the triangle centres along the longest box axis that
+  /// separates them (the dissertation's rule).
+  bool split_by_cost = true;
 };
 
 /// What a refit did.

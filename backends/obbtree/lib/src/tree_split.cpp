@@ -1,0 +1,125 @@
+// The cost-driven split. A descent visits a child when its box overlaps the other tree's node,
+// and then pays for the tests below it, about in proportion to the triangles it holds. The chance
+// of the overlap grows with the volume of the two boxes' Minkowski sum, prod_k (e_k + s_k) for
+// extents e and s; the descent splits the larger box first, so the other node is about as large
+// as the child or larger, and the term linear in the child's extents, s^2 * sum_k e_k, leads. So
+// a split is scored, as in the surface-area heuristic of ray tracing but with that measure, by
+// sum over its two sides of (triangles) x (sum of the side's extents), the extents taken on the
+// side's bounds along the node box's axes: the child's own box, fitted after the split, is at
+// least as tight, and fitting it for every candidate would cost a covariance and a hull each.
+// (On the bundled dense and CAD scenes, area or a full Minkowski volume in place of the sum of
+// extents gave box-test counts within 8% of it, none better on every scene.)
+//
+// Candidates: along each of the node box's three axes, the 15 planes between 16 equal bins of the
+// triangle centres (the mean of the corners, as the mean split's); a triangle goes to the side its
+// centre lies on; the triangles' bounds are binned too, so a node costs one pass over its
+// triangles and a sweep over the bins per axis.
+#include "tree_split.h"
+
+#include <algorithm>
+#include <limits>
+
+namespace collido::obbtree::detail {
+namespace {
+
+constexpr int kBins = 16;
+
+struct Bounds {
+  Eigen::Vector3d low = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
+  Eigen::Vector3d high = Eigen::Vector3d::Constant(-std::numeric_limits<double>::infinity());
+  void add(const Bounds& other) {
+    low = low.cwiseMin(other.low);
+    high = high.cwiseMax(other.high);
+  }
+  void add(const Eigen::Vector3d& l, const Eigen::Vector3d& h) {
+    low = low.cwiseMin(l);
+    high = high.cwiseMax(h);
+  }
+  double size() const { return (high - low).cwiseMax(0.0).sum(); }
+};
+
+int binOf(double centre, double first, double scale) {
+  return std::clamp(static_cast<int>((centre - first) * scale), 0, kBins - 1);
+}
+
+}  // namespace
+
+std::int32_t splitByCost(std::int32_t* order, std::int32_t count, const OrientedBox& box,
+                         const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
+                         const Eigen::Ref<const Eigen::Matrix3Xi>& triangles,
+                         const Eigen::Matrix3Xd& centres, SplitScratch& scratch) {
+  const auto n = static_cast<std::size_t>(count);
+  scratch.low.resize(n);
+  scratch.high.resize(n);
+  scratch.centre.resize(n);
+  Eigen::Vector3d centre_low = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
+  Eigen::Vector3d centre_high = -centre_low;
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto t = static_cast<Eigen::Index>(order[i]);
+    Eigen::Vector3d low = box.axes.transpose() * vertices.col(triangles(0, t));
+    Eigen::Vector3d high = low;
+    for (int c = 1; c < 3; ++c) {
+      const Eigen::Vector3d p = box.axes.transpose() * vertices.col(triangles(c, t));
+      low = low.cwiseMin(p);
+      high = high.cwiseMax(p);
+    }
+    scratch.low[i] = low;
+    scratch.high[i] = high;
+    // Projected from the model frame's centre, so triangles with one centre share one bin.
+    scratch.centre[i] = box.axes.transpose() * centres.col(t);
+    centre_low = centre_low.cwiseMin(scratch.centre[i]);
+    centre_high = centre_high.cwiseMax(scratch.centre[i]);
+  }
+
+  double best_cost = std::numeric_limits<double>::infinity();
+  int best_axis = -1;
+  int best_bin = -1;  // the lower part: bins 0 .. best_bin
+  for (int axis = 0; axis < 3; ++axis) {
+    const double extent = centre_high[axis] - centre_low[axis];
+    if (!(extent > 0.0)) continue;
+    const double scale = kBins / extent;
+    Bounds bins[kBins];
+    std::int32_t counts[kBins] = {};
+    for (std::size_t i = 0; i < n; ++i) {
+      const int bin = binOf(scratch.centre[i][axis], centre_low[axis], scale);
+      bins[bin].add(scratch.low[i], scratch.high[i]);
+      ++counts[bin];
+    }
+    // Sizes of the upper parts, bins b+1 .. kBins-1, swept from the top.
+    double upper_cost[kBins] = {};
+    Bounds upper;
+    std::int32_t upper_count = 0;
+    for (int b = kBins - 1; b > 0; --b) {
+      upper.add(bins[b]);
+      upper_count += counts[b];
+      upper_cost[b - 1] = upper_count * upper.size();
+    }
+    Bounds lower;
+    std::int32_t lower_count = 0;
+    for (int b = 0; b < kBins - 1; ++b) {
+      lower.add(bins[b]);
+      lower_count += counts[b];
+      if (lower_count == 0 || lower_count == count) continue;
+      const double cost = lower_count * lower.size() + upper_cost[b];
+      if (cost < best_cost) {
+        best_cost = cost;
+        best_axis = axis;
+        best_bin = b;
+      }
+    }
+  }
+  if (best_axis < 0) return 0;
+
+  const double scale = kBins / (centre_high[best_axis] - centre_low[best_axis]);
+  // The order only: the bounds and centres are measured anew for each node.
+  std::int32_t lower = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (binOf(scratch.centre[i][best_axis], centre_low[best_axis], scale) > best_bin) continue;
+    std::swap(order[i], order[static_cast<std::size_t>(lower)]);
+    std::swap(scratch.centre[i], scratch.centre[static_cast<std::size_t>(lower)]);
+    ++lower;
+  }
+  return lower;
+}
+
+}  // namespace collido::obbtree::detail
