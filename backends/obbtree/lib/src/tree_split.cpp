@@ -38,8 +38,14 @@ struct Bounds {
   double size() const { return (high - low).cwiseMax(0.0).sum(); }
 };
 
-int binOf(double centre, double first, double scale) {
-  return std::clamp(static_cast<int>((centre - first) * scale), 0, kBins - 1);
+// The bin of a centre at `offset` from the least centre, in a spread of `extent` (> 0). Decided
+// in double before the conversion: a spread of a few subnormals would make kBins / extent
+// infinite, and an offset over it NaN; both land in a bin here.
+int binOf(double offset, double extent) {
+  const double position = offset / extent * kBins;
+  if (!(position > 0.0)) return 0;
+  if (position >= kBins - 1) return kBins - 1;
+  return static_cast<int>(position);
 }
 
 }  // namespace
@@ -77,11 +83,10 @@ std::int32_t splitByCost(std::int32_t* order, std::int32_t count, const Oriented
   for (int axis = 0; axis < 3; ++axis) {
     const double extent = centre_high[axis] - centre_low[axis];
     if (!(extent > 0.0)) continue;
-    const double scale = kBins / extent;
     Bounds bins[kBins];
     std::int32_t counts[kBins] = {};
     for (std::size_t i = 0; i < n; ++i) {
-      const int bin = binOf(scratch.centre[i][axis], centre_low[axis], scale);
+      const int bin = binOf(scratch.centre[i][axis] - centre_low[axis], extent);
       bins[bin].add(scratch.low[i], scratch.high[i]);
       ++counts[bin];
     }
@@ -110,11 +115,11 @@ std::int32_t splitByCost(std::int32_t* order, std::int32_t count, const Oriented
   }
   if (best_axis < 0) return 0;
 
-  const double scale = kBins / (centre_high[best_axis] - centre_low[best_axis]);
+  const double extent = centre_high[best_axis] - centre_low[best_axis];
   // The order only: the bounds and centres are measured anew for each node.
   std::int32_t lower = 0;
   for (std::size_t i = 0; i < n; ++i) {
-    if (binOf(scratch.centre[i][best_axis], centre_low[best_axis], scale) > best_bin) continue;
+    if (binOf(scratch.centre[i][best_axis] - centre_low[best_axis], extent) > best_bin) continue;
     std::swap(order[i], order[static_cast<std::size_t>(lower)]);
     std::swap(scratch.centre[i], scratch.centre[static_cast<std::size_t>(lower)]);
     ++lower;

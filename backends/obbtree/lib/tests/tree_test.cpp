@@ -429,6 +429,34 @@ TEST(ObbTreeBuild, FarFromTheOriginAndTiny) {
 
 // Refit keeps the shape and axes, measures every box anew (so a moved mesh moves its boxes) and
 // keeps validate() clean under a smooth deformation and under random vertex noise.
+// Centres a few subnormals apart: the cost split's bins span less than 16 / DBL_MAX, where a
+// bin computed as (centre - least) * (16 / spread) multiplies by infinity (found by
+// tree_query_fuzz under UBSan).
+TEST(ObbTreeBuild, CentresASubnormalApartBuild) {
+  constexpr double step = 1e-310;
+  constexpr double size = 1e-309;
+  TriangleMesh mesh;
+  mesh.vertices.resize(3, 12);
+  mesh.triangles.resize(3, 4);
+  for (int t = 0; t < 4; ++t) {
+    const double x = t * step;
+    mesh.vertices.col(3 * t) << x, 0.0, 0.0;
+    mesh.vertices.col(3 * t + 1) << x + size, 0.0, 0.0;
+    mesh.vertices.col(3 * t + 2) << x, size, 0.0;
+    mesh.triangles.col(t) << 3 * t, 3 * t + 1, 3 * t + 2;
+  }
+  for (const bool split_by_cost : {true, false}) {
+    BuildOptions options;
+    options.split_by_cost = split_by_cost;
+    const ObbTree tree = ObbTree::build(mesh.vertices, mesh.triangles, options);
+    EXPECT_EQ(tree.validate(), "") << split_by_cost;
+    std::int32_t triangles = 0;
+    for (const Node& node : tree.nodes())
+      triangles += node.isLeaf() ? node.count : 0;
+    EXPECT_EQ(triangles, 4) << split_by_cost;
+  }
+}
+
 TEST(ObbTreeRefit, KeepsShapeAndAxesAndContainsMovedTriangles) {
   std::mt19937_64 rng(21);
   std::normal_distribution<double> noise(0.0, 0.02);
