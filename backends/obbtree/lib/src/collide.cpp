@@ -534,7 +534,7 @@ class Descent {
       return *detail::trianglesIntersectWithFaceSigns(pair, detail::ExactFrame::kModelOfA,
                                                       scratch_.face_signs);
     }
-    if (std::optional<bool> hit = detail::trianglesIntersectCertifiedWith(p, q, nullptr))
+    if (std::optional<bool> hit = trianglesIntersectCertified(p[0], p[1], p[2], q[0], q[1], q[2]))
       return *hit;
     // Coplanar or parallel to within the mapping error, but side by side: no exact test needed.
     if (detail::projectionsSeparate(ta, tb)) return false;

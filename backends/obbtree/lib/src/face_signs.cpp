@@ -176,12 +176,12 @@ class WorldSignKernel {
 
 std::optional<bool> trianglesIntersectWithFaceSigns(const FaceSignPair& pair, ExactFrame frame,
                                                     FaceSignCache& cache) {
-  if (frame == ExactFrame::kModelOfA) {
-    ModelFrameSigns signs(pair, cache);
-    return trianglesIntersectCertifiedWith(pair.corners[0], pair.corners[1], &signs);
-  }
   const UncertainPoint* const a = pair.corners[0];
   const UncertainPoint* const b = pair.corners[1];
+  if (frame == ExactFrame::kModelOfA) {
+    ModelFrameSigns signs(pair, cache);
+    return trianglesIntersectCertifiedWith(a[0], a[1], a[2], b[0], b[1], b[2], &signs);
+  }
   WorldSignKernel kernel(pair, cache);
   const bool answer = exact::TriangleTest<WorldSignKernel>(kernel).intersect(&a[0], &a[1], &a[2],
                                                                              &b[0], &b[1], &b[2]);

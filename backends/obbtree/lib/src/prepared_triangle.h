@@ -89,12 +89,12 @@ inline bool planeSeparates(const PreparedTriangle& t, const PreparedTriangle& ot
   return side[0] == side[1] && side[1] == side[2];
 }
 
-// trianglesIntersectCertified on a's and b's three corners, the orientations of four exact
-// points that the bound cannot settle decided by `exact_orientation` (the exact predicate when
-// null).
-std::optional<bool> trianglesIntersectCertifiedWith(const UncertainPoint* a,
-                                                    const UncertainPoint* b,
-                                                    ExactOrientation* exact_orientation);
+// trianglesIntersectCertified, the orientations of four exact points that the bound cannot
+// settle decided by `exact_orientation` (the exact predicate when null).
+std::optional<bool> trianglesIntersectCertifiedWith(
+    const UncertainPoint& p1, const UncertainPoint& q1, const UncertainPoint& r1,
+    const UncertainPoint& p2, const UncertainPoint& q2, const UncertainPoint& r2,
+    ExactOrientation* exact_orientation);
 
 // The certified filter's triangle test for two triangles whose corners' sides of the other's
 // plane are certain and non-zero (planeSeparates; side_a: a's corners against b's plane):

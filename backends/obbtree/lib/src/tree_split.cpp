@@ -16,27 +16,20 @@
 // triangles and a sweep over the bins per axis.
 #include "tree_split.h"
 
-#include <algorithm>
 #include <limits>
+#include <utility>
+
+#include <Eigen/Geometry>
 
 namespace collido::obbtree::detail {
 namespace {
 
 constexpr int kBins = 16;
 
-struct Bounds {
-  Eigen::Vector3d low = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
-  Eigen::Vector3d high = Eigen::Vector3d::Constant(-std::numeric_limits<double>::infinity());
-  void add(const Bounds& other) {
-    low = low.cwiseMin(other.low);
-    high = high.cwiseMax(other.high);
-  }
-  void add(const Eigen::Vector3d& l, const Eigen::Vector3d& h) {
-    low = low.cwiseMin(l);
-    high = high.cwiseMax(h);
-  }
-  double size() const { return (high - low).cwiseMax(0.0).sum(); }
-};
+// The cost model's size of a part: the sum of its bounds' extents (0 when it holds nothing).
+double extentSum(const Eigen::AlignedBox3d& bounds) {
+  return bounds.isEmpty() ? 0.0 : bounds.sizes().sum();
+}
 
 // The bin of a centre at `offset` from the least centre, in a spread of `extent` (> 0). Decided
 // in double before the conversion: a spread of a few subnormals would make kBins / extent
@@ -55,57 +48,51 @@ std::int32_t splitByCost(std::int32_t* order, std::int32_t count, const Oriented
                          const Eigen::Ref<const Eigen::Matrix3Xi>& triangles,
                          const Eigen::Matrix3Xd& centres, SplitScratch& scratch) {
   const auto n = static_cast<std::size_t>(count);
-  scratch.low.resize(n);
-  scratch.high.resize(n);
+  scratch.bounds.resize(n);
   scratch.centre.resize(n);
-  Eigen::Vector3d centre_low = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
-  Eigen::Vector3d centre_high = -centre_low;
+  Eigen::AlignedBox3d centres_bounds;
   for (std::size_t i = 0; i < n; ++i) {
     const auto t = static_cast<Eigen::Index>(order[i]);
-    Eigen::Vector3d low = box.axes.transpose() * vertices.col(triangles(0, t));
-    Eigen::Vector3d high = low;
-    for (int c = 1; c < 3; ++c) {
-      const Eigen::Vector3d p = box.axes.transpose() * vertices.col(triangles(c, t));
-      low = low.cwiseMin(p);
-      high = high.cwiseMax(p);
-    }
-    scratch.low[i] = low;
-    scratch.high[i] = high;
+    Eigen::AlignedBox3d& bounds = scratch.bounds[i];
+    bounds.setEmpty();
+    for (int c = 0; c < 3; ++c)
+      bounds.extend(box.axes.transpose() * vertices.col(triangles(c, t)));
     // Projected from the model frame's centre, so triangles with one centre share one bin.
     scratch.centre[i] = box.axes.transpose() * centres.col(t);
-    centre_low = centre_low.cwiseMin(scratch.centre[i]);
-    centre_high = centre_high.cwiseMax(scratch.centre[i]);
+    centres_bounds.extend(scratch.centre[i]);
   }
+  const Eigen::Vector3d& centre_low = centres_bounds.min();
+  const Eigen::Vector3d spread = centres_bounds.sizes();
 
   double best_cost = std::numeric_limits<double>::infinity();
   int best_axis = -1;
   int best_bin = -1;  // the lower part: bins 0 .. best_bin
   for (int axis = 0; axis < 3; ++axis) {
-    const double extent = centre_high[axis] - centre_low[axis];
+    const double extent = spread[axis];
     if (!(extent > 0.0)) continue;
-    Bounds bins[kBins];
+    Eigen::AlignedBox3d bins[kBins];
     std::int32_t counts[kBins] = {};
     for (std::size_t i = 0; i < n; ++i) {
       const int bin = binOf(scratch.centre[i][axis] - centre_low[axis], extent);
-      bins[bin].add(scratch.low[i], scratch.high[i]);
+      bins[bin].extend(scratch.bounds[i]);
       ++counts[bin];
     }
     // Sizes of the upper parts, bins b+1 .. kBins-1, swept from the top.
     double upper_cost[kBins] = {};
-    Bounds upper;
+    Eigen::AlignedBox3d upper;
     std::int32_t upper_count = 0;
     for (int b = kBins - 1; b > 0; --b) {
-      upper.add(bins[b]);
+      upper.extend(bins[b]);
       upper_count += counts[b];
-      upper_cost[b - 1] = upper_count * upper.size();
+      upper_cost[b - 1] = upper_count * extentSum(upper);
     }
-    Bounds lower;
+    Eigen::AlignedBox3d lower;
     std::int32_t lower_count = 0;
     for (int b = 0; b < kBins - 1; ++b) {
-      lower.add(bins[b]);
+      lower.extend(bins[b]);
       lower_count += counts[b];
       if (lower_count == 0 || lower_count == count) continue;
-      const double cost = lower_count * lower.size() + upper_cost[b];
+      const double cost = lower_count * extentSum(lower) + upper_cost[b];
       if (cost < best_cost) {
         best_cost = cost;
         best_axis = axis;
@@ -115,13 +102,13 @@ std::int32_t splitByCost(std::int32_t* order, std::int32_t count, const Oriented
   }
   if (best_axis < 0) return 0;
 
-  const double extent = centre_high[best_axis] - centre_low[best_axis];
-  // The order only: the bounds and centres are measured anew for each node.
+  // The order only: an entry swapped behind i is never read again, and the bounds and centres
+  // are measured anew for each node.
   std::int32_t lower = 0;
   for (std::size_t i = 0; i < n; ++i) {
-    if (binOf(scratch.centre[i][best_axis] - centre_low[best_axis], extent) > best_bin) continue;
+    if (binOf(scratch.centre[i][best_axis] - centre_low[best_axis], spread[best_axis]) > best_bin)
+      continue;
     std::swap(order[i], order[static_cast<std::size_t>(lower)]);
-    std::swap(scratch.centre[i], scratch.centre[static_cast<std::size_t>(lower)]);
     ++lower;
   }
   return lower;

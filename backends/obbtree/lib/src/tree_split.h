@@ -5,6 +5,7 @@
 #include <vector>
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 #include <collido/obbtree/oriented_box.h>
 
@@ -12,9 +13,8 @@ namespace collido::obbtree::detail {
 
 /// Reused buffers of splitByCost, kept for a whole build.
 struct SplitScratch {
-  std::vector<Eigen::Vector3d> low;     // per triangle of the node: its corners' least coordinate
-  std::vector<Eigen::Vector3d> high;    // and greatest, along each of the node box's axes
-  std::vector<Eigen::Vector3d> centre;  // the mean of its corners, along the same axes
+  std::vector<Eigen::AlignedBox3d> bounds;  // per triangle of the node: its corners' bounds
+  std::vector<Eigen::Vector3d> centre;      // and the mean of its corners, along the box's axes
 };
 
 /// Chooses the split of order[0, count), triangles inside `box`, by a cost model and partitions

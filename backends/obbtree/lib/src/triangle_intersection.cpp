@@ -13,19 +13,17 @@ std::optional<bool> trianglesIntersectCertified(const UncertainPoint& p1, const 
                                                 const UncertainPoint& r1, const UncertainPoint& p2,
                                                 const UncertainPoint& q2,
                                                 const UncertainPoint& r2) {
-  const UncertainPoint a[3] = {p1, q1, r1};
-  const UncertainPoint b[3] = {p2, q2, r2};
-  return detail::trianglesIntersectCertifiedWith(a, b, nullptr);
+  return detail::trianglesIntersectCertifiedWith(p1, q1, r1, p2, q2, r2, nullptr);
 }
 
 namespace detail {
 
-std::optional<bool> trianglesIntersectCertifiedWith(const UncertainPoint* a,
-                                                    const UncertainPoint* b,
-                                                    ExactOrientation* exact_orientation) {
+std::optional<bool> trianglesIntersectCertifiedWith(
+    const UncertainPoint& p1, const UncertainPoint& q1, const UncertainPoint& r1,
+    const UncertainPoint& p2, const UncertainPoint& q2, const UncertainPoint& r2,
+    ExactOrientation* exact_orientation) {
   FilteredKernel kernel(exact_orientation);
-  const bool answer =
-      exact::TriangleTest<FilteredKernel>(kernel).intersect(a[0], a[1], a[2], b[0], b[1], b[2]);
+  const bool answer = exact::TriangleTest<FilteredKernel>(kernel).intersect(p1, q1, r1, p2, q2, r2);
   if (kernel.unsure()) return std::nullopt;
   return answer;
 }

@@ -173,6 +173,16 @@ void checkStructure(const ObbTree& tree, const TriangleMesh& mesh, int max_leaf,
   }
 }
 
+// One mesh of a's triangles then b's.
+TriangleMesh joined(const TriangleMesh& a, const TriangleMesh& b) {
+  TriangleMesh mesh;
+  mesh.vertices.resize(3, a.vertices.cols() + b.vertices.cols());
+  mesh.vertices << a.vertices, b.vertices;
+  mesh.triangles.resize(3, a.triangles.cols() + b.triangles.cols());
+  mesh.triangles << a.triangles, (b.triangles.array() + static_cast<int>(a.vertices.cols()));
+  return mesh;
+}
+
 // Builds and checks one tree; the depth bound holds for these well-spread meshes.
 void checkBuild(const TriangleMesh& mesh, int max_leaf, const std::string& label,
                 bool split_by_cost = true) {
@@ -229,12 +239,7 @@ TEST(ObbTreeBuild, CostSplitGivesAShaftAndItsPlateAChildEach) {
   rod.segments = 16;
   TriangleMesh shaft = unwrap(makeCylinder(rod), "shaft");
   shaft.vertices.row(2).array() += 6.5;  // z from 1.5 to 11.5, above the plate at z = 0
-  TriangleMesh mesh;
-  mesh.vertices.resize(3, plate.vertices.cols() + shaft.vertices.cols());
-  mesh.vertices << plate.vertices, shaft.vertices;
-  mesh.triangles.resize(3, plate.triangles.cols() + shaft.triangles.cols());
-  mesh.triangles << plate.triangles,
-      (shaft.triangles.array() + static_cast<int>(plate.vertices.cols()));
+  const TriangleMesh mesh = joined(plate, shaft);
   const auto plate_triangles = static_cast<std::int32_t>(plate.triangles.cols());
 
   // How many of the root's children hold triangles of one part only.
@@ -305,13 +310,8 @@ TEST(ObbTreeBuild, CoincidentCentresBeyondTheLeafLimitAreSplitInHalves) {
 }
 
 TEST(ObbTreeBuild, TwoClustersOfCoincidentCentresMakeTwoLeaves) {
-  TriangleMesh a = coincidentCentres(Eigen::Vector3d(1, 2, 3), 20);
-  const TriangleMesh b = coincidentCentres(Eigen::Vector3d(101, 2, 3), 30);
-  TriangleMesh mesh;
-  mesh.vertices.resize(3, a.vertices.cols() + b.vertices.cols());
-  mesh.vertices << a.vertices, b.vertices;
-  mesh.triangles.resize(3, a.triangles.cols() + b.triangles.cols());
-  mesh.triangles << a.triangles, (b.triangles.array() + static_cast<int>(a.vertices.cols()));
+  const TriangleMesh mesh = joined(coincidentCentres(Eigen::Vector3d(1, 2, 3), 20),
+                                   coincidentCentres(Eigen::Vector3d(101, 2, 3), 30));
   const ObbTree tree = ObbTree::build(mesh.vertices, mesh.triangles, {1});
   ASSERT_EQ(tree.nodes().size(), 3u);
   EXPECT_EQ(tree.depth(), 1);
