@@ -520,7 +520,7 @@ class Descent {
                      const detail::PreparedTriangle& tb, std::int32_t j, const int side_b[3],
                      CollideResult& result) {
     // Every side certain and none zero: the planes cross, and what is left is the crossing test.
-    if (side_a[0] * side_a[1] * side_a[2] != 0 && side_b[0] * side_b[1] * side_b[2] != 0) {
+    if (detail::certainNonZero(side_a) && detail::certainNonZero(side_b)) {
       if (std::optional<bool> hit =
               detail::crossingTrianglesIntersectCertified(ta, side_a, tb, side_b))
         return *hit;
@@ -528,6 +528,10 @@ class Descent {
     const UncertainPoint* p = ta.corners;
     const UncertainPoint* q = tb.corners;
     detail::FaceSignPair pair{{p, q}, nullptr, {&a_, &b_}, {i, j}};
+    std::copy(side_a, side_a + 3, pair.sides_of_a);
+    std::copy(side_b, side_b + 3, pair.sides_of_b);
+    pair.proper[0] = ta.proper;
+    pair.proper[1] = tb.proper;
     // Every corner exact in A's frame (A's are; B's where the map is exact): decided there, the
     // faces' sides kept for the query.
     if (exactInFrameOfA(q)) {

@@ -5,7 +5,7 @@
 #include <collido/oracle/triangle_test.h>
 
 #include "filtered_predicates.h"
-#include "prepared_triangle.h"
+#include "static_orientation.h"
 
 namespace collido::obbtree::detail {
 
@@ -91,26 +91,48 @@ int keptOrDecided(const FaceSignPair& pair, FaceSignCache& cache, int sa, int sb
   return sign;
 }
 
-// Every corner exact in A's frame: the certified filter's test, with the orientations of exact
-// points it cannot settle kept per face. The filter's test copies its points, so a corner is
-// named by its value, which here is its exact position: a point equal to several corners takes
-// the first, A's before B's, and any corner at that position has the same sign against a face.
-class ModelFrameSigns final : public ExactOrientation {
+// Every corner exact in A's frame: the triangle test on the doubles themselves, each sign by
+// the static filter (static_orientation.h), else by the exact predicate, the orientations of
+// one triangle's plane against a corner of the other kept per face. Points are the pair's own
+// corners, named by address.
+class ModelFrameKernel {
  public:
-  ModelFrameSigns(const FaceSignPair& pair, FaceSignCache& cache) : pair_(pair), cache_(cache) {}
+  using Point = const UncertainPoint*;
 
-  int orient3d(const UncertainPoint& a, const UncertainPoint& b, const UncertainPoint& c,
-               const UncertainPoint& d) override {
+  ModelFrameKernel(const FaceSignPair& pair, FaceSignCache& cache) : pair_(pair), cache_(cache) {}
+
+  int orient3d(const Point& a, const Point& b, const Point& c, const Point& d) {
+    const int sign = staticOrient3d(a->p, b->p, c->p, d->p);
+    if (sign != kUndecidedSign) return sign;
     return keptOrDecided(pair_, cache_, slotOf(a), slotOf(b), slotOf(c), slotOf(d),
-                         [&] { return exact::orient3d(a.p, b.p, c.p, d.p); });
+                         [&] { return exact::orient3d(a->p, b->p, c->p, d->p); });
+  }
+
+  int orient2d(const Point& a, const Point& b, const Point& c, int drop) {
+    const int sign = staticOrient2d(a->p, b->p, c->p, drop);
+    return sign != kUndecidedSign ? sign : exact::orient2d(a->p, b->p, c->p, drop);
+  }
+
+  bool collinear(const Point& a, const Point& b, const Point& c) {
+    for (int drop = 0; drop < 3; ++drop) {
+      if (orient2d(a, b, c, drop) != 0) return false;
+    }
+    return true;
+  }
+
+  int compare(const Point& a, const Point& b, int k) {
+    const double x = a->p[k];
+    const double y = b->p[k];
+    return (x > y) - (x < y);
   }
 
  private:
-  int slotOf(const UncertainPoint& point) const {
-    int slot = 0;
-    while (slot < 5 && pair_.mapped(slot).p != point.p)
-      ++slot;
-    return slot;
+  int slotOf(const Point& p) const {
+    const UncertainPoint* a = pair_.corners[0];
+    if (p == a) return 0;
+    if (p == a + 1) return 1;
+    if (p == a + 2) return 2;
+    return 3 + static_cast<int>(p - pair_.corners[1]);
   }
 
   const FaceSignPair& pair_;
@@ -172,19 +194,29 @@ class WorldSignKernel {
   TrackedWorldKernel world_;
 };
 
+// The pair's corners as the kernels name them (by address), and its known sides.
+template <typename Kernel>
+bool intersectOnKernel(const FaceSignPair& pair, Kernel& kernel) {
+  using Test = exact::TriangleTest<Kernel>;
+  const UncertainPoint* const a = pair.corners[0];
+  const UncertainPoint* const b = pair.corners[1];
+  const UncertainPoint* const t1[3] = {&a[0], &a[1], &a[2]};
+  const UncertainPoint* const t2[3] = {&b[0], &b[1], &b[2]};
+  static_assert(Test::kUnknownSide == kUndecidedSign, "one mark for a side not settled");
+  return Test(kernel).intersectKnowingSides(t1, pair.sides_of_a, pair.proper[0], t2,
+                                            pair.sides_of_b, pair.proper[1]);
+}
+
 }  // namespace
 
 std::optional<bool> trianglesIntersectWithFaceSigns(const FaceSignPair& pair, ExactFrame frame,
                                                     FaceSignCache& cache) {
-  const UncertainPoint* const a = pair.corners[0];
-  const UncertainPoint* const b = pair.corners[1];
   if (frame == ExactFrame::kModelOfA) {
-    ModelFrameSigns signs(pair, cache);
-    return trianglesIntersectCertifiedWith(a[0], a[1], a[2], b[0], b[1], b[2], &signs);
+    ModelFrameKernel kernel(pair, cache);
+    return intersectOnKernel(pair, kernel);
   }
   WorldSignKernel kernel(pair, cache);
-  const bool answer = exact::TriangleTest<WorldSignKernel>(kernel).intersect(&a[0], &a[1], &a[2],
-                                                                             &b[0], &b[1], &b[2]);
+  const bool answer = intersectOnKernel(pair, kernel);
   if (kernel.unsure()) return std::nullopt;
   return answer;
 }

@@ -14,20 +14,26 @@
 #include <collido/obbtree/tree.h>
 #include <collido/obbtree/triangle_intersection.h>
 
+#include "static_orientation.h"
 #include "tracked_world.h"
 
 namespace collido::obbtree::detail {
 
 /// A triangle pair as the exact stages of the collision query see it: the corners in A's model
 /// frame with their error radii (A's triangle first), their world positions (placed on first
-/// use; null where the world is not used), and what names them: each triangle's tree and
-/// position in its leaf order. Vertices and faces are looked up only by a sign the filter
+/// use; null where the world is not used), what names them (each triangle's tree and position
+/// in its leaf order), and the sides of its corners against the other's plane that the
+/// certified plane tests settled. Vertices and faces are looked up only by a sign the filter
 /// cannot settle.
 struct FaceSignPair {
   const UncertainPoint* corners[2] = {};   ///< A's triangle's three corners, then B's
   LazyWorldPoint* const* world = nullptr;  ///< six, A's first; null unless in the world
   const ObbTree* tree[2] = {};
   std::int32_t triangle[2] = {};
+  /// A's corners against B's plane, as certainSide (prepared_triangle.h) settled them.
+  int sides_of_a[3] = {kUndecidedSign, kUndecidedSign, kUndecidedSign};
+  int sides_of_b[3] = {kUndecidedSign, kUndecidedSign, kUndecidedSign};  ///< B's against A's
+  bool proper[2] = {};  ///< each triangle's corners certainly not collinear
 
   /// Corner `slot` of the pair: 0 to 2 A's, 3 to 5 B's.
   const UncertainPoint& mapped(int slot) const { return corners[slot / 3][slot % 3]; }

@@ -34,25 +34,9 @@ inline Eigen::Vector3d permanentWeights(const Eigen::Vector3d& u, const Eigen::V
                          u.x() * v.y() + u.y() * v.x());
 }
 
-/// Decides, in place of the exact predicate, the orientations of four exact points that the
-/// filter's bound cannot settle (a caller that keeps such signs, face_signs.h).
-class ExactOrientation {
- public:
-  virtual int orient3d(const UncertainPoint& a, const UncertainPoint& b, const UncertainPoint& c,
-                       const UncertainPoint& d) = 0;
-
- protected:
-  ~ExactOrientation() = default;
-};
-
 class FilteredKernel {
  public:
   using Point = UncertainPoint;
-
-  /// `exact_orientation`: decides where the bound cannot settle the orientation of four exact
-  /// points (the exact predicate when null, the default).
-  explicit FilteredKernel(ExactOrientation* exact_orientation = nullptr)
-      : exact_orientation_(exact_orientation) {}
 
   bool unsure() const { return unsure_; }
 
@@ -75,10 +59,7 @@ class FilteredKernel {
         inflated == 0.0 && !underflows(bu) && !underflows(bv) && !underflows(bw);
     const int sign = certain(det, bound, zero_is_exact);
     if (sign != kUnsure) return sign;
-    if (exact(a) && exact(b) && exact(c) && exact(d)) {
-      return exact_orientation_ ? exact_orientation_->orient3d(a, b, c, d)
-                                : exact::orient3d(a.p, b.p, c.p, d.p);
-    }
+    if (exact(a) && exact(b) && exact(c) && exact(d)) return exact::orient3d(a.p, b.p, c.p, d.p);
     return unsureSign();
   }
 
@@ -158,7 +139,6 @@ class FilteredKernel {
     return 0;
   }
 
-  ExactOrientation* exact_orientation_ = nullptr;
   bool unsure_ = false;
 };
 

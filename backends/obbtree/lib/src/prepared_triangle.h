@@ -20,6 +20,7 @@
 #include <collido/obbtree/triangle_intersection.h>
 
 #include "filtered_predicates.h"
+#include "static_orientation.h"
 
 namespace collido::obbtree::detail {
 
@@ -30,11 +31,25 @@ struct PreparedTriangle {
   Eigen::Vector3d normal;            // fl(u x v)
   Eigen::Vector3d inflated_weights;  // P(bu, bv): u, v widened by their error radii
   Eigen::Vector3d plain_weights;     // P(|u|, |v|)
+  // No non-zero factor of P(bu, bv) is below 1e-100, so no product of three with them
+  // underflows: a zero one has a zero factor.
+  bool weights_in_range = false;
+  bool proper = false;  // the exact corners are certainly not collinear
 };
 
+namespace prepared {
+inline constexpr double kEps = std::numeric_limits<double>::epsilon();
+inline constexpr double kSlack = 32.0 * kEps;  // the filter's, twice: precomputed parts round
+inline constexpr double kTiny = 1e-290;        // products that underflow defeat relative bounds
+
+inline bool inRange(const Eigen::Vector3d& factors) {
+  return !((factors.array() > 0.0) && (factors.array() < 1e-100)).any();
+}
+}  // namespace prepared
+
 inline void prepareTriangle(PreparedTriangle& t) {
-  constexpr double kEps = std::numeric_limits<double>::epsilon();
-  constexpr double kTiny = 1e-290;  // products that underflow defeat relative bounds
+  using prepared::kEps;
+  using prepared::kTiny;
   const UncertainPoint* c = t.corners;
   // c.p -/+ error rounds by at most eps |c.p -/+ error|: 2 eps (|p| + error) more keeps the
   // bounds certain.
@@ -52,49 +67,55 @@ inline void prepareTriangle(PreparedTriangle& t) {
   const Eigen::Vector3d au = u.cwiseAbs();
   const Eigen::Vector3d av = v.cwiseAbs();
   t.plain_weights = permanentWeights(au, av);
-  t.inflated_weights = permanentWeights(au * (1.0 + kEps) + c[0].error + c[1].error,
-                                        av * (1.0 + kEps) + c[0].error + c[2].error);
+  const Eigen::Vector3d bu = au * (1.0 + kEps) + c[0].error + c[1].error;
+  const Eigen::Vector3d bv = av * (1.0 + kEps) + c[0].error + c[2].error;
+  t.inflated_weights = permanentWeights(bu, bv);
+  t.weights_in_range = prepared::inRange(bu) && prepared::inRange(bv);
+  // normal[k] is the 2D orientation of the corners with coordinate k dropped, and the weights'
+  // k-th entries its filter's inflated and plain permanents (FilteredKernel::orient2d): one
+  // projection certainly non-zero proves the corners not collinear.
+  const Eigen::Vector3d bound = (t.inflated_weights - t.plain_weights) +
+                                prepared::kSlack * t.inflated_weights +
+                                Eigen::Vector3d::Constant(kTiny);
+  t.proper = (t.normal.cwiseAbs().array() > bound.array()).any();
 }
 
 inline bool boundsApart(const PreparedTriangle& a, const PreparedTriangle& b) {
   return (a.high.array() < b.low.array()).any() || (b.high.array() < a.low.array()).any();
 }
 
-// +1 / -1 when the exact x is certainly strictly on that side of t's exact plane, 0 when unsure.
+// The side of the exact x against t's exact plane when certain: +1 / -1 strictly on that side,
+// 0 on the plane (every term of the orientation's expansion has a zero factor: e.g. the flush
+// faces of parts along the axes); kUndecidedSign when unsure.
 inline int certainSide(const PreparedTriangle& t, const UncertainPoint& x) {
-  constexpr double kEps = std::numeric_limits<double>::epsilon();
-  constexpr double kSlack = 32.0 * kEps;
-  constexpr double kTiny = 1e-290;
+  using prepared::kEps;
   const UncertainPoint& origin = t.corners[0];
   const Eigen::Vector3d w = x.p - origin.p;
   const Eigen::Vector3d aw = w.cwiseAbs();
   const double det = t.normal.dot(w);
-  const double inflated = t.inflated_weights.dot(aw * (1.0 + kEps) + origin.error + x.error);
-  const double bound = (inflated - t.plain_weights.dot(aw)) + kSlack * inflated + kTiny;
+  const Eigen::Vector3d bw = aw * (1.0 + kEps) + origin.error + x.error;
+  const double inflated = t.inflated_weights.dot(bw);
+  const double bound =
+      (inflated - t.plain_weights.dot(aw)) + prepared::kSlack * inflated + prepared::kTiny;
   if (det > bound) return 1;
   if (det < -bound) return -1;
-  return 0;
+  if (inflated == 0.0 && t.weights_in_range && prepared::inRange(bw)) return 0;
+  return kUndecidedSign;
 }
 
-// The certain side of each corner of `other` against t's plane (0 where unsure). Returns whether
+// Whether every side is certain and not zero.
+inline bool certainNonZero(const int side[3]) {
+  return (side[0] == 1 || side[0] == -1) && (side[1] == 1 || side[1] == -1) &&
+         (side[2] == 1 || side[2] == -1);
+}
+
+// The certain side of each corner of `other` against t's plane (certainSide). Returns whether
 // all three lie certainly strictly on one side, so the two exact triangles share no point.
 inline bool planeSeparates(const PreparedTriangle& t, const PreparedTriangle& other, int side[3]) {
-  side[0] = certainSide(t, other.corners[0]);
-  if (side[0] == 0) {  // neither a separation nor the crossing short cut can follow
-    side[1] = side[2] = 0;
-    return false;
-  }
-  side[1] = certainSide(t, other.corners[1]);
-  side[2] = certainSide(t, other.corners[2]);
-  return side[0] == side[1] && side[1] == side[2];
+  for (int k = 0; k < 3; ++k)
+    side[k] = certainSide(t, other.corners[k]);
+  return side[0] == side[1] && side[1] == side[2] && (side[0] == 1 || side[0] == -1);
 }
-
-// trianglesIntersectCertified, the orientations of four exact points that the bound cannot
-// settle decided by `exact_orientation` (the exact predicate when null).
-std::optional<bool> trianglesIntersectCertifiedWith(
-    const UncertainPoint& p1, const UncertainPoint& q1, const UncertainPoint& r1,
-    const UncertainPoint& p2, const UncertainPoint& q2, const UncertainPoint& r2,
-    ExactOrientation* exact_orientation);
 
 // The certified filter's triangle test for two triangles whose corners' sides of the other's
 // plane are certain and non-zero (planeSeparates; side_a: a's corners against b's plane):

@@ -13,20 +13,14 @@ std::optional<bool> trianglesIntersectCertified(const UncertainPoint& p1, const 
                                                 const UncertainPoint& r1, const UncertainPoint& p2,
                                                 const UncertainPoint& q2,
                                                 const UncertainPoint& r2) {
-  return detail::trianglesIntersectCertifiedWith(p1, q1, r1, p2, q2, r2, nullptr);
-}
-
-namespace detail {
-
-std::optional<bool> trianglesIntersectCertifiedWith(
-    const UncertainPoint& p1, const UncertainPoint& q1, const UncertainPoint& r1,
-    const UncertainPoint& p2, const UncertainPoint& q2, const UncertainPoint& r2,
-    ExactOrientation* exact_orientation) {
-  FilteredKernel kernel(exact_orientation);
-  const bool answer = exact::TriangleTest<FilteredKernel>(kernel).intersect(p1, q1, r1, p2, q2, r2);
+  detail::FilteredKernel kernel;
+  const bool answer =
+      exact::TriangleTest<detail::FilteredKernel>(kernel).intersect(p1, q1, r1, p2, q2, r2);
   if (kernel.unsure()) return std::nullopt;
   return answer;
 }
+
+namespace detail {
 
 std::optional<bool> crossingTrianglesIntersectCertified(const PreparedTriangle& a,
                                                         const int side_a[3],

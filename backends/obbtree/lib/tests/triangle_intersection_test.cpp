@@ -150,7 +150,7 @@ TEST(TriangleIntersection, CrossingTestOnCertainSidesMatchesTheOracle) {
     int side_a[3];
     int side_b[3];
     if (detail::planeSeparates(b, a, side_a) || detail::planeSeparates(a, b, side_b)) continue;
-    if (side_a[0] * side_a[1] * side_a[2] == 0 || side_b[0] * side_b[1] * side_b[2] == 0) continue;
+    if (!detail::certainNonZero(side_a) || !detail::certainNonZero(side_b)) continue;
     const std::optional<bool> answer =
         detail::crossingTrianglesIntersectCertified(a, side_a, b, side_b);
     if (!answer) continue;

@@ -54,6 +54,24 @@ class TriangleTest {
     return crossingSegmentsOverlap(t1, side1, t2, side2);
   }
 
+  /// A side a caller has not decided (intersectKnowingSides).
+  static constexpr int kUnknownSide = 2;
+
+  /// intersect() for triangles t1, t2 some of whose corners' sides of the other's plane the
+  /// caller has decided (side1, side2 as for crossingTrianglesIntersect, zero allowed),
+  /// kUnknownSide where it has not: only those are asked. A triangle the caller knows proper
+  /// (corners not collinear: `t1_proper`, or a side of the other's corner known non-zero) is not
+  /// classified.
+  bool intersectKnowingSides(const Point* t1, const int side1[3], bool t1_proper, const Point* t2,
+                             const int side2[3], bool t2_proper) {
+    const Shape s1 =
+        t1_proper || knownProper(side2) ? triangleShape(t1) : classify(t1[0], t1[1], t1[2]);
+    const Shape s2 =
+        t2_proper || knownProper(side1) ? triangleShape(t2) : classify(t2[0], t2[1], t2[2]);
+    if (s1.kind != Kind::kTriangle || s2.kind != Kind::kTriangle) return shapesIntersect(s1, s2);
+    return triangleTriangle(s1.p, s2.p, side2, side1);
+  }
+
  private:
   enum class Kind { kTriangle, kSegment, kPoint };
 
@@ -72,6 +90,21 @@ class TriangleTest {
 
   bool equal(const Point& a, const Point& b) {
     return k_.compare(a, b, 0) == 0 && k_.compare(a, b, 1) == 0 && k_.compare(a, b, 2) == 0;
+  }
+
+  static bool knownProper(const int side[3]) {
+    for (int i = 0; i < 3; ++i) {
+      if (side[i] == 1 || side[i] == -1) return true;
+    }
+    return false;
+  }
+
+  static Shape triangleShape(const Point* t) {
+    Shape s;
+    s.p[0] = t[0];
+    s.p[1] = t[1];
+    s.p[2] = t[2];
+    return s;
   }
 
   Shape classify(const Point& a, const Point& b, const Point& c) {
@@ -174,18 +207,25 @@ class TriangleTest {
            (side[0] < 0 && side[1] < 0 && side[2] < 0);
   }
 
-  bool triangleTriangle(const Point* t1, const Point* t2) {
+  // known2, known1: sides of t2's corners against t1's plane and of t1's against t2's that
+  // the caller decided (kUnknownSide where not); null: none.
+  bool triangleTriangle(const Point* t1, const Point* t2, const int* known2 = nullptr,
+                        const int* known1 = nullptr) {
     int side2[3];  // corners of t2 relative to t1's plane
-    for (int i = 0; i < 3; ++i)
-      side2[i] = k_.orient3d(t1[0], t1[1], t1[2], t2[i]);
+    for (int i = 0; i < 3; ++i) {
+      side2[i] =
+          known2 && known2[i] != kUnknownSide ? known2[i] : k_.orient3d(t1[0], t1[1], t1[2], t2[i]);
+    }
     if (allStrictlyOneSide(side2)) return false;
     // t2's corners all on t1's plane, t2 a proper triangle: the planes are one, so t1's corners
     // are on t2's plane too and their three signs (each an exact zero, the costliest sign to
     // decide) need not be asked.
     if (side2[0] == 0 && side2[1] == 0 && side2[2] == 0) return coplanarTriangles(t1, t2);
     int side1[3];  // corners of t1 relative to t2's plane
-    for (int i = 0; i < 3; ++i)
-      side1[i] = k_.orient3d(t2[0], t2[1], t2[2], t1[i]);
+    for (int i = 0; i < 3; ++i) {
+      side1[i] =
+          known1 && known1[i] != kUnknownSide ? known1[i] : k_.orient3d(t2[0], t2[1], t2[2], t1[i]);
+    }
     if (allStrictlyOneSide(side1)) return false;
     return crossingSegmentsOverlap(t1, side1, t2, side2);
   }
