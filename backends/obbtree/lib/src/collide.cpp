@@ -491,17 +491,24 @@ class Descent {
     const std::int32_t first_a = node_a.leafFirst();
     for (std::int32_t j = first_b; j < first_b + node_b.leafCount(); ++j) {
       const detail::PreparedTriangle& tb = preparedTriangleOfB(b_, j, placement_, scratch_);
+      // Every corner exact in A's frame (A's are; B's where the map is exact).
+      const bool exact_in_a = exactInFrameOfA(tb.corners);
       for (std::int32_t i = first_a; i < first_a + node_a.leafCount(); ++i) {
         const detail::PreparedTriangle& ta = preparedTriangleOfA(a_, i, scratch_);
         // Certainly apart (bounds, or one triangle strictly on one side of the other's
         // plane): the exact triangles are apart too.
         if (detail::boundsApart(ta, tb)) continue;
         int side_b[3];  // B's corners against A's plane
-        if (detail::planeSeparates(ta, tb, side_b)) continue;
         int side_a[3];
-        if (detail::planeSeparates(tb, ta, side_a)) continue;
+        if (exact_in_a) {
+          if (detail::exactPlaneSeparates(ta, tb, side_b)) continue;
+          if (detail::exactPlaneSeparates(tb, ta, side_a)) continue;
+        } else {
+          if (detail::planeSeparates(ta, tb, side_b)) continue;
+          if (detail::planeSeparates(tb, ta, side_a)) continue;
+        }
         ++result.triangle_tests;
-        if (!trianglesMeet(ta, i, side_a, tb, j, side_b, result)) continue;
+        if (!trianglesMeet(ta, i, side_a, tb, j, side_b, exact_in_a, result)) continue;
         // Truncated means a pair beyond the limit exists, not merely that the limit was met.
         if (request_.max_pairs != 0 && result.pairs.size() >= request_.max_pairs) {
           result.truncated = true;
@@ -515,10 +522,11 @@ class Descent {
   }
 
   // The certified filter, and where it is unsure the exact test on the world coordinates.
-  // side_a, side_b: each triangle's corners against the other's plane, 0 where unsure.
-  bool trianglesMeet(const detail::PreparedTriangle& ta, std::int32_t i, const int side_a[3],
-                     const detail::PreparedTriangle& tb, std::int32_t j, const int side_b[3],
-                     CollideResult& result) {
+  // side_a, side_b: each triangle's corners against the other's plane (exactPlaneSeparates
+  // where `exact_in_a`, planeSeparates otherwise).
+  bool trianglesMeet(const detail::PreparedTriangle& ta, std::int32_t i, int side_a[3],
+                     const detail::PreparedTriangle& tb, std::int32_t j, int side_b[3],
+                     bool exact_in_a, CollideResult& result) {
     // Every side certain and none zero: the planes cross, and what is left is the crossing test.
     if (detail::certainNonZero(side_a) && detail::certainNonZero(side_b)) {
       if (std::optional<bool> hit =
@@ -527,19 +535,26 @@ class Descent {
     }
     const UncertainPoint* p = ta.corners;
     const UncertainPoint* q = tb.corners;
+    // Every corner exact in A's frame, the exact kernel below costs less than the filter's
+    // exact fallback; otherwise the filter first, told the sides settled so far.
+    if (!exact_in_a) {
+      detail::settleSides(tb, ta, side_a);
+      detail::settleSides(ta, tb, side_b);
+      if (std::optional<bool> hit =
+              detail::trianglesIntersectCertifiedKnowingSides(ta, side_a, tb, side_b))
+        return *hit;
+    }
     detail::FaceSignPair pair{{p, q}, nullptr, {&a_, &b_}, {i, j}};
     std::copy(side_a, side_a + 3, pair.sides_of_a);
     std::copy(side_b, side_b + 3, pair.sides_of_b);
-    pair.proper[0] = ta.proper;
-    pair.proper[1] = tb.proper;
+    pair.proper[0] = detail::certainlyProper(ta);
+    pair.proper[1] = detail::certainlyProper(tb);
     // Every corner exact in A's frame (A's are; B's where the map is exact): decided there, the
     // faces' sides kept for the query.
-    if (exactInFrameOfA(q)) {
+    if (exact_in_a) {
       return *detail::trianglesIntersectWithFaceSigns(pair, detail::ExactFrame::kModelOfA,
                                                       scratch_.face_signs);
     }
-    if (std::optional<bool> hit = trianglesIntersectCertified(p[0], p[1], p[2], q[0], q[1], q[2]))
-      return *hit;
     // Coplanar or parallel to within the mapping error, but side by side: no exact test needed.
     if (detail::projectionsSeparate(ta, tb)) return false;
     ++result.exact_fallbacks;

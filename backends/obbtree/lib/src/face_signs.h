@@ -30,7 +30,7 @@ struct FaceSignPair {
   LazyWorldPoint* const* world = nullptr;  ///< six, A's first; null unless in the world
   const ObbTree* tree[2] = {};
   std::int32_t triangle[2] = {};
-  /// A's corners against B's plane, as certainSide (prepared_triangle.h) settled them.
+  /// A's corners against B's plane, as settleSides (prepared_triangle.h) left them.
   int sides_of_a[3] = {kUndecidedSign, kUndecidedSign, kUndecidedSign};
   int sides_of_b[3] = {kUndecidedSign, kUndecidedSign, kUndecidedSign};  ///< B's against A's
   bool proper[2] = {};  ///< each triangle's corners certainly not collinear

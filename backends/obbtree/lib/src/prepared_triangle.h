@@ -31,10 +31,6 @@ struct PreparedTriangle {
   Eigen::Vector3d normal;            // fl(u x v)
   Eigen::Vector3d inflated_weights;  // P(bu, bv): u, v widened by their error radii
   Eigen::Vector3d plain_weights;     // P(|u|, |v|)
-  // No non-zero factor of P(bu, bv) is below 1e-100, so no product of three with them
-  // underflows: a zero one has a zero factor.
-  bool weights_in_range = false;
-  bool proper = false;  // the exact corners are certainly not collinear
 };
 
 namespace prepared {
@@ -67,54 +63,86 @@ inline void prepareTriangle(PreparedTriangle& t) {
   const Eigen::Vector3d au = u.cwiseAbs();
   const Eigen::Vector3d av = v.cwiseAbs();
   t.plain_weights = permanentWeights(au, av);
-  const Eigen::Vector3d bu = au * (1.0 + kEps) + c[0].error + c[1].error;
-  const Eigen::Vector3d bv = av * (1.0 + kEps) + c[0].error + c[2].error;
-  t.inflated_weights = permanentWeights(bu, bv);
-  t.weights_in_range = prepared::inRange(bu) && prepared::inRange(bv);
-  // normal[k] is the 2D orientation of the corners with coordinate k dropped, and the weights'
-  // k-th entries its filter's inflated and plain permanents (FilteredKernel::orient2d): one
-  // projection certainly non-zero proves the corners not collinear.
+  t.inflated_weights = permanentWeights(au * (1.0 + kEps) + c[0].error + c[1].error,
+                                        av * (1.0 + kEps) + c[0].error + c[2].error);
+}
+
+// Whether the exact corners are certainly not collinear. normal[k] is their 2D orientation with
+// coordinate k dropped, and the weights' k-th entries its filter's inflated and plain
+// permanents (FilteredKernel::orient2d): one projection certainly non-zero proves it.
+inline bool certainlyProper(const PreparedTriangle& t) {
   const Eigen::Vector3d bound = (t.inflated_weights - t.plain_weights) +
                                 prepared::kSlack * t.inflated_weights +
-                                Eigen::Vector3d::Constant(kTiny);
-  t.proper = (t.normal.cwiseAbs().array() > bound.array()).any();
+                                Eigen::Vector3d::Constant(prepared::kTiny);
+  return (t.normal.cwiseAbs().array() > bound.array()).any();
 }
 
 inline bool boundsApart(const PreparedTriangle& a, const PreparedTriangle& b) {
   return (a.high.array() < b.low.array()).any() || (b.high.array() < a.low.array()).any();
 }
 
-// The side of the exact x against t's exact plane when certain: +1 / -1 strictly on that side,
-// 0 on the plane (every term of the orientation's expansion has a zero factor: e.g. the flush
-// faces of parts along the axes); kUndecidedSign when unsure.
+// +1 / -1 when the exact x is certainly strictly on that side of t's exact plane, 0 when unsure.
 inline int certainSide(const PreparedTriangle& t, const UncertainPoint& x) {
   using prepared::kEps;
   const UncertainPoint& origin = t.corners[0];
   const Eigen::Vector3d w = x.p - origin.p;
   const Eigen::Vector3d aw = w.cwiseAbs();
   const double det = t.normal.dot(w);
-  const Eigen::Vector3d bw = aw * (1.0 + kEps) + origin.error + x.error;
-  const double inflated = t.inflated_weights.dot(bw);
+  const double inflated = t.inflated_weights.dot(aw * (1.0 + kEps) + origin.error + x.error);
   const double bound =
       (inflated - t.plain_weights.dot(aw)) + prepared::kSlack * inflated + prepared::kTiny;
   if (det > bound) return 1;
   if (det < -bound) return -1;
-  if (inflated == 0.0 && t.weights_in_range && prepared::inRange(bw)) return 0;
-  return kUndecidedSign;
+  return 0;
 }
 
-// Whether every side is certain and not zero.
+// The certain side of each corner of `other` against t's plane (0 where unsure). Returns whether
+// all three lie certainly strictly on one side, so the two exact triangles share no point.
+// Sides it need not ask are left kUndecidedSign.
+inline bool planeSeparates(const PreparedTriangle& t, const PreparedTriangle& other, int side[3]) {
+  side[0] = certainSide(t, other.corners[0]);
+  if (side[0] == 0) {  // neither a separation nor the crossing short cut can follow
+    side[1] = side[2] = kUndecidedSign;
+    return false;
+  }
+  side[1] = certainSide(t, other.corners[1]);
+  side[2] = certainSide(t, other.corners[2]);
+  return side[0] == side[1] && side[1] == side[2];
+}
+
+// planeSeparates for triangles whose corners are all exact (error radii zero): every side is
+// asked, and a side the bound cannot settle is 0 where every term of the orientation's expansion
+// has a zero factor (the flush faces of parts along the axes), else kUndecidedSign.
+inline bool exactPlaneSeparates(const PreparedTriangle& t, const PreparedTriangle& other,
+                                int side[3]) {
+  int weights_in_range = -1;  // asked once, where a side needs it
+  for (int k = 0; k < 3; ++k) {
+    side[k] = certainSide(t, other.corners[k]);
+    if (side[k] != 0) continue;
+    side[k] = kUndecidedSign;
+    // The filter's zero rule (filtered_predicates.h) with no error radii: the inflated
+    // permanent is zero exactly when the plain one is, and no factor may underflow.
+    const Eigen::Vector3d aw = (other.corners[k].p - t.corners[0].p).cwiseAbs();
+    if (t.plain_weights.dot(aw) != 0.0 || !prepared::inRange(aw)) continue;
+    if (weights_in_range < 0) {
+      weights_in_range = prepared::inRange((t.corners[1].p - t.corners[0].p).cwiseAbs()) &&
+                         prepared::inRange((t.corners[2].p - t.corners[0].p).cwiseAbs());
+    }
+    if (weights_in_range == 1) side[k] = 0;
+  }
+  return side[0] == side[1] && side[1] == side[2] && (side[0] == 1 || side[0] == -1);
+}
+
+// The sides planeSeparates left unsure (0) or did not ask, settled for the exact stages: 0 where x
+// is certainly on the plane (every term of the orientation has a zero factor: e.g. the flush faces
+// of parts along the axes), kUndecidedSign where still unsure. Out of line: planeSeparates
+// settles most sides.
+void settleSides(const PreparedTriangle& t, const PreparedTriangle& other, int side[3]);
+
+// Whether every side is certain and not zero (the sides of planeSeparates or settleSides).
 inline bool certainNonZero(const int side[3]) {
   return (side[0] == 1 || side[0] == -1) && (side[1] == 1 || side[1] == -1) &&
          (side[2] == 1 || side[2] == -1);
-}
-
-// The certain side of each corner of `other` against t's plane (certainSide). Returns whether
-// all three lie certainly strictly on one side, so the two exact triangles share no point.
-inline bool planeSeparates(const PreparedTriangle& t, const PreparedTriangle& other, int side[3]) {
-  for (int k = 0; k < 3; ++k)
-    side[k] = certainSide(t, other.corners[k]);
-  return side[0] == side[1] && side[1] == side[2] && (side[0] == 1 || side[0] == -1);
 }
 
 // The certified filter's triangle test for two triangles whose corners' sides of the other's
@@ -125,6 +153,15 @@ std::optional<bool> crossingTrianglesIntersectCertified(const PreparedTriangle& 
                                                         const int side_a[3],
                                                         const PreparedTriangle& b,
                                                         const int side_b[3]);
+
+// The certified filter's triangle test told the sides of each triangle's corners against the
+// other's plane that the plane tests settled (planeSeparates; side_a: a's corners against b's
+// plane) and which triangles are proper: exact::TriangleTest::intersectKnowingSides on the
+// corners, std::nullopt when the filter is unsure of a sign it still needs.
+std::optional<bool> trianglesIntersectCertifiedKnowingSides(const PreparedTriangle& a,
+                                                            const int side_a[3],
+                                                            const PreparedTriangle& b,
+                                                            const int side_b[3]);
 
 // Whether, seen along coordinate axis `drop`, an edge of `t` has t's third corner certainly on
 // one side and every corner of `other` certainly strictly on the other: then the projections

@@ -104,18 +104,21 @@ TEST(PreparedTriangleSides, SettledSidesAndProperCornersAreExact) {
     const Vector3d b = sampler.next();
     const Vector3d c = sampler.next();
     const detail::PreparedTriangle t = preparedExact(a, b, c);
-    if (t.proper) {
+    if (detail::certainlyProper(t)) {
       ASSERT_FALSE(exact::collinear(a, b, c)) << "trial " << trial;
       ++proper;
     }
     collinear += exact::collinear(a, b, c) ? 1 : 0;
-    UncertainPoint x;
-    x.p = sampler.next();
-    x.error.setZero();
-    const int side = detail::certainSide(t, x);
-    if (side != detail::kUndecidedSign) {
-      ASSERT_EQ(side, exact::orient3d(a, b, c, x.p)) << "trial " << trial;
-      zeros += side == 0 ? 1 : 0;
+    const detail::PreparedTriangle other =
+        preparedExact(sampler.next(), sampler.next(), sampler.next());
+    int side[3];
+    detail::planeSeparates(t, other, side);
+    detail::settleSides(t, other, side);
+    for (int k = 0; k < 3; ++k) {
+      if (side[k] == detail::kUndecidedSign) continue;
+      ASSERT_EQ(side[k], exact::orient3d(a, b, c, other.corners[k].p))
+          << "trial " << trial << " corner " << k;
+      zeros += side[k] == 0 ? 1 : 0;
     }
   }
   EXPECT_GT(zeros, 1000);
@@ -128,12 +131,17 @@ TEST(PreparedTriangleSides, SettledSidesAndProperCornersAreExact) {
 TEST(PreparedTriangleSides, AZeroIsClaimedOnlyWhereNoErrorCanMoveThePoint) {
   const detail::PreparedTriangle face =
       preparedExact(Vector3d(0, 0, 1), Vector3d(2, 0, 1), Vector3d(0, 2, 1));
-  UncertainPoint on_face;
-  on_face.p = Vector3d(0.5, 0.5, 1.0);
-  on_face.error = Vector3d(1e-9, 0.0, 0.0);
-  EXPECT_EQ(detail::certainSide(face, on_face), 0);
-  on_face.error = Vector3d(0.0, 0.0, 1e-9);
-  EXPECT_EQ(detail::certainSide(face, on_face), detail::kUndecidedSign);
+  detail::PreparedTriangle on_face =
+      preparedExact(Vector3d(0.5, 0.5, 1.0), Vector3d(0.5, 0.5, 1.0), Vector3d(0.5, 0.5, 1.0));
+  const auto settled = [&face, &on_face]() {
+    int side[3] = {0, 0, 0};
+    detail::settleSides(face, on_face, side);
+    return side[0];
+  };
+  on_face.corners[0].error = Vector3d(1e-9, 0.0, 0.0);
+  EXPECT_EQ(settled(), 0);
+  on_face.corners[0].error = Vector3d(0.0, 0.0, 1e-9);
+  EXPECT_EQ(settled(), detail::kUndecidedSign);
 }
 
 struct ExactTestKernel {

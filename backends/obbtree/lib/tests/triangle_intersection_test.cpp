@@ -124,10 +124,10 @@ TEST(TriangleIntersection, RandomPairsAtVariedScalesMatchTheOracle) {
   EXPECT_GT(misses, 500);
 }
 
-// The descent's short cut: when the prepared triangles' plane sides are all certain and non-zero,
-// the crossing test alone (exact::TriangleTest::crossingTrianglesIntersect) decides the pair.
-// Its answers against the oracle's, on random pairs at varied scales and offsets.
-TEST(TriangleIntersection, CrossingTestOnCertainSidesMatchesTheOracle) {
+// The descent's certified test, told the sides the prepared triangles' plane tests settled (when
+// all six are certain and non-zero, the crossing test alone decides the pair). Its answers
+// against the oracle's, on random pairs at varied scales and offsets.
+TEST(TriangleIntersection, CertifiedTestToldThePlaneSidesMatchesTheOracle) {
   std::mt19937_64 rng(43);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   int decided = 0;
@@ -150,9 +150,10 @@ TEST(TriangleIntersection, CrossingTestOnCertainSidesMatchesTheOracle) {
     int side_a[3];
     int side_b[3];
     if (detail::planeSeparates(b, a, side_a) || detail::planeSeparates(a, b, side_b)) continue;
-    if (!detail::certainNonZero(side_a) || !detail::certainNonZero(side_b)) continue;
+    detail::settleSides(b, a, side_a);
+    detail::settleSides(a, b, side_b);
     const std::optional<bool> answer =
-        detail::crossingTrianglesIntersectCertified(a, side_a, b, side_b);
+        detail::trianglesIntersectCertifiedKnowingSides(a, side_a, b, side_b);
     if (!answer) continue;
     const Tri t1{a.corners[0].p, a.corners[1].p, a.corners[2].p};
     const Tri t2{b.corners[0].p, b.corners[1].p, b.corners[2].p};

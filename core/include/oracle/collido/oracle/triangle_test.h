@@ -58,16 +58,17 @@ class TriangleTest {
   static constexpr int kUnknownSide = 2;
 
   /// intersect() for triangles t1, t2 some of whose corners' sides of the other's plane the
-  /// caller has decided (side1, side2 as for crossingTrianglesIntersect, zero allowed),
-  /// kUnknownSide where it has not: only those are asked. A triangle the caller knows proper
-  /// (corners not collinear: `t1_proper`, or a side of the other's corner known non-zero) is not
-  /// classified.
+  /// caller has decided (side1[i] = orient3d(t2[0], t2[1], t2[2], t1[i]), side2[i] =
+  /// orient3d(t1[0], t1[1], t1[2], t2[i]); zeros allowed), kUnknownSide where it has not: only
+  /// those are asked. A triangle the caller knows proper (corners not collinear: `t1_proper`, or
+  /// a side of the other's corner known non-zero) is not classified.
   bool intersectKnowingSides(const Point* t1, const int side1[3], bool t1_proper, const Point* t2,
                              const int side2[3], bool t2_proper) {
-    const Shape s1 =
-        t1_proper || knownProper(side2) ? triangleShape(t1) : classify(t1[0], t1[1], t1[2]);
-    const Shape s2 =
-        t2_proper || knownProper(side1) ? triangleShape(t2) : classify(t2[0], t2[1], t2[2]);
+    const bool proper1 = t1_proper || knownProper(side2);
+    const bool proper2 = t2_proper || knownProper(side1);
+    if (proper1 && proper2) return triangleTriangle(t1, t2, side2, side1);
+    const Shape s1 = proper1 ? triangleShape(t1) : classify(t1[0], t1[1], t1[2]);
+    const Shape s2 = proper2 ? triangleShape(t2) : classify(t2[0], t2[1], t2[2]);
     if (s1.kind != Kind::kTriangle || s2.kind != Kind::kTriangle) return shapesIntersect(s1, s2);
     return triangleTriangle(s1.p, s2.p, side2, side1);
   }
