@@ -1,9 +1,10 @@
 // The signs the exact stages settle without the exact predicate: the static filter on exact
 // points (static_orientation.h), the prepared triangle's certain sides and zeros and its
-// certainly proper corners (prepared_triangle.h), and the triangle test told some sides in
-// advance (TriangleTest::intersectKnowingSides). Each settled sign must be the exact one, on
-// lattices (exact zeros everywhere), near-degenerate doubles and scales where products
-// underflow or overflow.
+// certainly proper corners (prepared_triangle.h: planeSeparates with settleSides, and
+// exactPlaneSeparates), and the triangle test told some sides in advance
+// (TriangleTest::intersectKnowingSides). Each settled sign must be the exact one, on lattices
+// (exact zeros everywhere), near-degenerate doubles and scales where products underflow or
+// overflow.
 #include <array>
 #include <cmath>
 #include <random>
@@ -114,10 +115,16 @@ TEST(PreparedTriangleSides, SettledSidesAndProperCornersAreExact) {
     int side[3];
     detail::planeSeparates(t, other, side);
     detail::settleSides(t, other, side);
+    int exact_side[3];  // the leaves' variant for exact corners
+    detail::exactPlaneSeparates(t, other, exact_side);
     for (int k = 0; k < 3; ++k) {
+      const int truth = exact::orient3d(a, b, c, other.corners[k].p);
+      if (exact_side[k] != detail::kUndecidedSign) {
+        ASSERT_EQ(exact_side[k], truth) << "trial " << trial << " corner " << k;
+      }
       if (side[k] == detail::kUndecidedSign) continue;
-      ASSERT_EQ(side[k], exact::orient3d(a, b, c, other.corners[k].p))
-          << "trial " << trial << " corner " << k;
+      ASSERT_EQ(side[k], truth) << "trial " << trial << " corner " << k;
+      ASSERT_EQ(exact_side[k], side[k]) << "trial " << trial << " corner " << k;
       zeros += side[k] == 0 ? 1 : 0;
     }
   }
