@@ -112,23 +112,36 @@ inline bool planeSeparates(const PreparedTriangle& t, const PreparedTriangle& ot
 
 // planeSeparates for triangles whose corners are all exact (error radii zero): every side is
 // asked, and a side the bound cannot settle is 0 where every term of the orientation's expansion
-// has a zero factor (the flush faces of parts along the axes), else kUndecidedSign.
+// has a zero factor (the flush faces of parts along the axes), else kUndecidedSign. With no radii
+// the bound needs no inflated parts: the differences' rounding moves the determinant by at most
+// 3.01 eps of the plain permanent P(|u|, |v|) . |w|, the normal's and the dot product's rounding
+// by about 4 eps more, the permanent's own by 2.5 eps; 32 eps of it (the certified slack) leaves
+// a margin of four.
 inline bool exactPlaneSeparates(const PreparedTriangle& t, const PreparedTriangle& other,
                                 int side[3]) {
+  constexpr double kExactSlack = 32.0 * prepared::kEps;
   int weights_in_range = -1;  // asked once, where a side needs it
   for (int k = 0; k < 3; ++k) {
-    side[k] = certainSide(t, other.corners[k]);
-    if (side[k] != 0) continue;
-    side[k] = kUndecidedSign;
-    // The filter's zero rule (filtered_predicates.h) with no error radii: the inflated
-    // permanent is zero exactly when the plain one is, and no factor may underflow.
-    const Eigen::Vector3d aw = (other.corners[k].p - t.corners[0].p).cwiseAbs();
-    if (t.plain_weights.dot(aw) != 0.0 || !prepared::inRange(aw)) continue;
-    if (weights_in_range < 0) {
-      weights_in_range = prepared::inRange((t.corners[1].p - t.corners[0].p).cwiseAbs()) &&
-                         prepared::inRange((t.corners[2].p - t.corners[0].p).cwiseAbs());
+    const Eigen::Vector3d w = other.corners[k].p - t.corners[0].p;
+    const Eigen::Vector3d aw = w.cwiseAbs();
+    const double det = t.normal.dot(w);
+    const double plain = t.plain_weights.dot(aw);
+    const double bound = kExactSlack * plain + prepared::kTiny;
+    if (det > bound) {
+      side[k] = 1;
+    } else if (det < -bound) {
+      side[k] = -1;
+    } else {
+      // The filter's zero rule (filtered_predicates.h): the permanent exactly zero, and no
+      // factor small enough for a product of three to underflow.
+      side[k] = kUndecidedSign;
+      if (plain != 0.0 || !prepared::inRange(aw)) continue;
+      if (weights_in_range < 0) {
+        weights_in_range = prepared::inRange((t.corners[1].p - t.corners[0].p).cwiseAbs()) &&
+                           prepared::inRange((t.corners[2].p - t.corners[0].p).cwiseAbs());
+      }
+      if (weights_in_range == 1) side[k] = 0;
     }
-    if (weights_in_range == 1) side[k] = 0;
   }
   return side[0] == side[1] && side[1] == side[2] && (side[0] == 1 || side[0] == -1);
 }

@@ -101,17 +101,31 @@ TEST(PreparedTriangleSides, SettledSidesAndProperCornersAreExact) {
   int collinear = 0;
   for (int trial = 0; trial < 40000; ++trial) {
     LatticeSampler sampler = samplerForTrial(trial, 202);
-    const Vector3d a = sampler.next();
-    const Vector3d b = sampler.next();
-    const Vector3d c = sampler.next();
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    // Every fourth trial: random doubles, and the other triangle on this one's plane up to
+    // rounding, so that the bounds decide.
+    const bool near_plane = trial % 4 == 3;
+    const double scale = std::ldexp(1.0, 25 * (trial / 4 % 3) - 25);
+    const auto corner = [&]() {
+      return near_plane ? Vector3d(scale * Vector3d(u(sampler.rng), u(sampler.rng), u(sampler.rng)))
+                        : sampler.next();
+    };
+    const Vector3d a = corner();
+    const Vector3d b = corner();
+    const Vector3d c = corner();
     const detail::PreparedTriangle t = preparedExact(a, b, c);
     if (detail::certainlyProper(t)) {
       ASSERT_FALSE(exact::collinear(a, b, c)) << "trial " << trial;
       ++proper;
     }
     collinear += exact::collinear(a, b, c) ? 1 : 0;
+    Vector3d other_corners[3] = {sampler.next(), sampler.next(), sampler.next()};
+    if (near_plane) {
+      for (Vector3d& p : other_corners)
+        p = a + u(sampler.rng) * (b - a) + u(sampler.rng) * (c - a);
+    }
     const detail::PreparedTriangle other =
-        preparedExact(sampler.next(), sampler.next(), sampler.next());
+        preparedExact(other_corners[0], other_corners[1], other_corners[2]);
     int side[3];
     detail::planeSeparates(t, other, side);
     detail::settleSides(t, other, side);
