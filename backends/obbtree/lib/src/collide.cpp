@@ -535,20 +535,22 @@ class Descent {
     }
     const UncertainPoint* p = ta.corners;
     const UncertainPoint* q = tb.corners;
+    const bool proper_a = detail::certainlyProper(ta);
+    const bool proper_b = detail::certainlyProper(tb);
     // Every corner exact in A's frame, the exact kernel below costs less than the filter's
     // exact fallback; otherwise the filter first, told the sides settled so far.
     if (!exact_in_a) {
       detail::settleSides(tb, ta, side_a);
       detail::settleSides(ta, tb, side_b);
-      if (std::optional<bool> hit =
-              detail::trianglesIntersectCertifiedKnowingSides(ta, side_a, tb, side_b))
+      if (std::optional<bool> hit = detail::trianglesIntersectCertifiedKnowingSides(
+              ta, side_a, proper_a, tb, side_b, proper_b))
         return *hit;
     }
     detail::FaceSignPair pair{{p, q}, nullptr, {&a_, &b_}, {i, j}};
     std::copy(side_a, side_a + 3, pair.sides_of_a);
     std::copy(side_b, side_b + 3, pair.sides_of_b);
-    pair.proper[0] = detail::certainlyProper(ta);
-    pair.proper[1] = detail::certainlyProper(tb);
+    pair.proper[0] = proper_a;
+    pair.proper[1] = proper_b;
     // Every corner exact in A's frame (A's are; B's where the map is exact): decided there, the
     // faces' sides kept for the query.
     if (exact_in_a) {

@@ -110,6 +110,10 @@ inline bool planeSeparates(const PreparedTriangle& t, const PreparedTriangle& ot
   return side[0] == side[1] && side[1] == side[2];
 }
 
+// Whether no non-zero factor of t's inflated weights is below 1e-100, so that no product of
+// three with them underflows: a zero product then has a zero factor.
+bool weightsInRange(const PreparedTriangle& t);
+
 // planeSeparates for triangles whose corners are all exact (error radii zero): every side is
 // asked, and a side the bound cannot settle is 0 where every term of the orientation's expansion
 // has a zero factor (the flush faces of parts along the axes), else kUndecidedSign. With no radii
@@ -136,10 +140,7 @@ inline bool exactPlaneSeparates(const PreparedTriangle& t, const PreparedTriangl
       // factor small enough for a product of three to underflow.
       side[k] = kUndecidedSign;
       if (plain != 0.0 || !prepared::inRange(aw)) continue;
-      if (weights_in_range < 0) {
-        weights_in_range = prepared::inRange((t.corners[1].p - t.corners[0].p).cwiseAbs()) &&
-                           prepared::inRange((t.corners[2].p - t.corners[0].p).cwiseAbs());
-      }
+      if (weights_in_range < 0) weights_in_range = weightsInRange(t) ? 1 : 0;
       if (weights_in_range == 1) side[k] = 0;
     }
   }
@@ -169,12 +170,13 @@ std::optional<bool> crossingTrianglesIntersectCertified(const PreparedTriangle& 
 
 // The certified filter's triangle test told the sides of each triangle's corners against the
 // other's plane that the plane tests settled (planeSeparates; side_a: a's corners against b's
-// plane) and which triangles are proper: exact::TriangleTest::intersectKnowingSides on the
-// corners, std::nullopt when the filter is unsure of a sign it still needs.
+// plane) and which triangles are certainly proper (certainlyProper):
+// exact::TriangleTest::intersectKnowingSides on the corners, std::nullopt when the filter is unsure
+// of a sign it still needs.
 std::optional<bool> trianglesIntersectCertifiedKnowingSides(const PreparedTriangle& a,
-                                                            const int side_a[3],
+                                                            const int side_a[3], bool a_proper,
                                                             const PreparedTriangle& b,
-                                                            const int side_b[3]);
+                                                            const int side_b[3], bool b_proper);
 
 // Whether, seen along coordinate axis `drop`, an edge of `t` has t's third corner certainly on
 // one side and every corner of `other` certainly strictly on the other: then the projections

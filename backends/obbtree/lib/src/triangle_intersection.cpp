@@ -21,18 +21,13 @@ std::optional<bool> trianglesIntersectCertified(const UncertainPoint& p1, const 
 }
 
 namespace detail {
-namespace {
 
-// Whether no non-zero factor of t's inflated weights is below 1e-100, so that no product of
-// three with them underflows: a zero product then has a zero factor.
 bool weightsInRange(const PreparedTriangle& t) {
   using prepared::kEps;
   const UncertainPoint* c = t.corners;
   return prepared::inRange((c[1].p - c[0].p).cwiseAbs() * (1.0 + kEps) + c[0].error + c[1].error) &&
          prepared::inRange((c[2].p - c[0].p).cwiseAbs() * (1.0 + kEps) + c[0].error + c[2].error);
 }
-
-}  // namespace
 
 void settleSides(const PreparedTriangle& t, const PreparedTriangle& other, int side[3]) {
   using prepared::kEps;
@@ -53,14 +48,14 @@ void settleSides(const PreparedTriangle& t, const PreparedTriangle& other, int s
 }
 
 std::optional<bool> trianglesIntersectCertifiedKnowingSides(const PreparedTriangle& a,
-                                                            const int side_a[3],
+                                                            const int side_a[3], bool a_proper,
                                                             const PreparedTriangle& b,
-                                                            const int side_b[3]) {
+                                                            const int side_b[3], bool b_proper) {
   using Test = exact::TriangleTest<FilteredKernel>;
   static_assert(Test::kUnknownSide == kUndecidedSign, "one mark for a side not settled");
   FilteredKernel kernel;
-  const bool answer = Test(kernel).intersectKnowingSides(a.corners, side_a, certainlyProper(a),
-                                                         b.corners, side_b, certainlyProper(b));
+  const bool answer =
+      Test(kernel).intersectKnowingSides(a.corners, side_a, a_proper, b.corners, side_b, b_proper);
   if (kernel.unsure()) return std::nullopt;
   return answer;
 }

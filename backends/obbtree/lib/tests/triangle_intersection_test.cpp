@@ -152,8 +152,8 @@ TEST(TriangleIntersection, CertifiedTestToldThePlaneSidesMatchesTheOracle) {
     if (detail::planeSeparates(b, a, side_a) || detail::planeSeparates(a, b, side_b)) continue;
     detail::settleSides(b, a, side_a);
     detail::settleSides(a, b, side_b);
-    const std::optional<bool> answer =
-        detail::trianglesIntersectCertifiedKnowingSides(a, side_a, b, side_b);
+    const std::optional<bool> answer = detail::trianglesIntersectCertifiedKnowingSides(
+        a, side_a, detail::certainlyProper(a), b, side_b, detail::certainlyProper(b));
     if (!answer) continue;
     const Tri t1{a.corners[0].p, a.corners[1].p, a.corners[2].p};
     const Tri t2{b.corners[0].p, b.corners[1].p, b.corners[2].p};
