@@ -29,10 +29,10 @@ TrackedPoint placeTracked(const Eigen::Vector3d& v, const Eigen::Isometry3d& pos
 
 }  // namespace
 
-TrackedPlane::TrackedPlane(const TrackedPoint& a, const TrackedPoint& b, const TrackedPoint& c)
-    : origin_(a) {
-  Tracked u[3];
-  Tracked v[3];
+template <typename Point>
+PlaneThrough<Point>::PlaneThrough(const Point& a, const Point& b, const Point& c) : origin_(a) {
+  Number u[3];
+  Number v[3];
   for (int k = 0; k < 3; ++k) {
     u[k] = b.x[k] - a.x[k];
     v[k] = c.x[k] - a.x[k];
@@ -44,12 +44,16 @@ TrackedPlane::TrackedPlane(const TrackedPoint& a, const TrackedPoint& b, const T
   }
 }
 
-TrackedDoubleDouble TrackedPlane::orient3d(const TrackedPoint& d) const {
-  Tracked det;
-  for (int k = 0; k < 3; ++k)
+template <typename Point>
+typename PlaneThrough<Point>::Number PlaneThrough<Point>::orient3d(const Point& d) const {
+  Number det = normal_[0] * (d.x[0] - origin_.x[0]);
+  for (int k = 1; k < 3; ++k)
     det = det + normal_[k] * (d.x[k] - origin_.x[k]);
   return det;
 }
+
+template class PlaneThrough<TrackedPoint>;
+template class PlaneThrough<BoundedPoint>;
 
 TrackedDoubleDouble trackedOrient2d(const TrackedPoint& a, const TrackedPoint& b,
                                     const TrackedPoint& c, int drop) {

@@ -5,29 +5,55 @@
 #pragma once
 
 #include <optional>
+#include <type_traits>
 
 #include <Eigen/Geometry>
 
 #include <collido/obbtree/triangle_intersection.h>
 
+#include "bounded_double_double.h"
 #include "tracked_double_double.h"
 
 namespace collido::obbtree::detail {
 
-/// The plane through three tracked points, its normal ((b - a) x (c - a)) kept: orientation
-/// determinants of further points against it cost three products each. The triangle test asks a
-/// plane about three corners in a row, and a contact's signs ask each plane about three.
-class TrackedPlane {
+/// A point of world coordinates as bounded double-doubles (bounded_double_double.h).
+struct BoundedPoint {
+  BoundedDoubleDouble x[3];
+};
+
+/// A tracked point's coordinates as bounded double-doubles, their radii the errors.
+inline BoundedPoint boundedOf(const TrackedPoint& p) {
+  return {{boundedOf(p.x[0]), boundedOf(p.x[1]), boundedOf(p.x[2])}};
+}
+
+/// Whether every coordinate of the point is exactly hi + lo (radius 0).
+inline bool exactlyKnown(const TrackedPoint& p) {
+  return p.x[0].radius == 0.0 && p.x[1].radius == 0.0 && p.x[2].radius == 0.0;
+}
+
+/// The plane through three points (TrackedPoint or BoundedPoint), its normal ((b - a) x (c - a))
+/// kept: orientation determinants of further points against it cost three products each. The
+/// triangle test asks a plane about three corners in a row, and a contact's signs ask each plane
+/// about three.
+template <typename Point>
+class PlaneThrough {
  public:
-  TrackedPlane() = default;
-  TrackedPlane(const TrackedPoint& a, const TrackedPoint& b, const TrackedPoint& c);
-  /// det(b - a, c - a, d - a) = ((b - a) x (c - a)) . (d - a), with its certified radius.
-  TrackedDoubleDouble orient3d(const TrackedPoint& d) const;
+  using Number = std::remove_const_t<std::remove_reference_t<decltype(Point{}.x[0])>>;
+
+  PlaneThrough() = default;
+  PlaneThrough(const Point& a, const Point& b, const Point& c);
+  /// det(b - a, c - a, d - a) = ((b - a) x (c - a)) . (d - a), with its radius or error bound.
+  Number orient3d(const Point& d) const;
 
  private:
-  TrackedPoint origin_;
-  TrackedDoubleDouble normal_[3];
+  Point origin_;
+  Number normal_[3];
 };
+
+using TrackedPlane = PlaneThrough<TrackedPoint>;
+using BoundedPlane = PlaneThrough<BoundedPoint>;
+extern template class PlaneThrough<TrackedPoint>;
+extern template class PlaneThrough<BoundedPoint>;
 
 /// The 2D orientation determinant of a, b, c after dropping coordinate `drop` (the exact
 /// kernels' projection order, orientation.h), with its certified radius.
@@ -45,14 +71,32 @@ class TrackedWorldKernel {
   bool unsure() const { return unsure_; }
 
   // The triangle test asks for the corners of one triangle against the other's plane (a, b, c)
-  // in a row: the last plane is kept, keyed by the corners' values.
+  // in a row: the last plane is kept, keyed by the corners' values. Where a corner is already
+  // inexact no zero can be certified, and the bounded double-doubles settle every sign the
+  // tracked ones would, but those within about 2^-100 of the permanent, at a fraction of the
+  // cost; what they leave, and every sign of exact corners (where zeros are), takes the tracked
+  // radii.
   int orient3d(const Point& a, const Point& b, const Point& c, const Point& d) {
     if (!same(a, corners_[0]) || !same(b, corners_[1]) || !same(c, corners_[2]) || !has_plane_) {
       corners_[0] = a;
       corners_[1] = b;
       corners_[2] = c;
-      plane_ = TrackedPlane(a, b, c);
+      plane_inexact_ = !exactlyKnown(a) || !exactlyKnown(b) || !exactlyKnown(c);
       has_plane_ = true;
+      has_bounded_plane_ = false;
+      has_tracked_plane_ = false;
+    }
+    if (plane_inexact_ || !exactlyKnown(d)) {
+      if (!has_bounded_plane_) {
+        bounded_plane_ = BoundedPlane(boundedOf(a), boundedOf(b), boundedOf(c));
+        has_bounded_plane_ = true;
+      }
+      const int sign = bounded_plane_.orient3d(boundedOf(d)).certainSign();
+      if (sign != TrackedDoubleDouble::kUnsure) return sign;
+    }
+    if (!has_tracked_plane_) {
+      plane_ = TrackedPlane(a, b, c);
+      has_tracked_plane_ = true;
     }
     return signOf(plane_.orient3d(d));
   }
@@ -88,8 +132,12 @@ class TrackedWorldKernel {
   }
 
   bool unsure_ = false;
-  bool has_plane_ = false;
+  bool has_plane_ = false;  // corners_ hold the last plane's corners
+  bool plane_inexact_ = false;
+  bool has_bounded_plane_ = false;
+  bool has_tracked_plane_ = false;
   Point corners_[3];
+  BoundedPlane bounded_plane_;
   TrackedPlane plane_;
 };
 
