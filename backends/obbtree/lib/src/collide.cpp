@@ -539,12 +539,17 @@ class Descent {
     const bool proper_b = detail::certainlyProper(tb);
     // Every corner exact in A's frame, the exact kernel below costs less than the filter's
     // exact fallback; otherwise the filter first, told the sides settled so far.
+    // A side the plane filter left undecided would be asked of the filter's test first, whose
+    // bound differs from the plane filter's only in its slack: it fails there too, and the
+    // whole test with it. So the filter's test runs only where every side is settled.
     if (!exact_in_a) {
       detail::settleSides(tb, ta, side_a);
       detail::settleSides(ta, tb, side_b);
-      if (std::optional<bool> hit = detail::trianglesIntersectCertifiedKnowingSides(
-              ta, side_a, proper_a, tb, side_b, proper_b))
-        return *hit;
+      if (detail::allSettled(side_a) && detail::allSettled(side_b)) {
+        if (std::optional<bool> hit = detail::trianglesIntersectCertifiedKnowingSides(
+                ta, side_a, proper_a, tb, side_b, proper_b))
+          return *hit;
+      }
     }
     detail::FaceSignPair pair{{p, q}, nullptr, {&a_, &b_}, {i, j}};
     std::copy(side_a, side_a + 3, pair.sides_of_a);

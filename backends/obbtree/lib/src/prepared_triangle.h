@@ -153,6 +153,11 @@ inline bool exactPlaneSeparates(const PreparedTriangle& t, const PreparedTriangl
 // settles most sides.
 void settleSides(const PreparedTriangle& t, const PreparedTriangle& other, int side[3]);
 
+// Whether every side is settled (certain, zero allowed).
+inline bool allSettled(const int side[3]) {
+  return side[0] != kUndecidedSign && side[1] != kUndecidedSign && side[2] != kUndecidedSign;
+}
+
 // Whether every side is certain and not zero (the sides of planeSeparates or settleSides).
 inline bool certainNonZero(const int side[3]) {
   return (side[0] == 1 || side[0] == -1) && (side[1] == 1 || side[1] == -1) &&
