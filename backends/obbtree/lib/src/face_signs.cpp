@@ -9,61 +9,6 @@
 
 namespace collido::obbtree::detail {
 
-void FaceSignCache::begin() {
-  if (++stamp_ == 0) {  // wrapped: old stamps could collide with new ones
-    for (Slot& slot : slots_)
-      slot.stamp = 0;
-    stamp_ = 1;
-  }
-  used_ = 0;
-}
-
-int FaceSignCache::find(int object, std::int32_t face, std::int32_t vertex) const {
-  if (slots_.empty()) return kNone;
-  const std::uint64_t key = keyOf(object, face, vertex);
-  const std::size_t mask = slots_.size() - 1;
-  for (std::size_t i = slotOf(key);; i = (i + 1) & mask) {
-    const Slot& slot = slots_[i];
-    if (slot.stamp != stamp_) return kNone;  // the table is never full: an empty slot ends it
-    if (slot.key == key) return slot.sign;
-  }
-}
-
-void FaceSignCache::store(int object, std::int32_t face, std::int32_t vertex, int sign) {
-  if (2 * (used_ + 1) > slots_.size()) grow();
-  const std::uint64_t key = keyOf(object, face, vertex);
-  const std::size_t mask = slots_.size() - 1;
-  for (std::size_t i = slotOf(key);; i = (i + 1) & mask) {
-    Slot& slot = slots_[i];
-    if (slot.stamp != stamp_) {
-      slot = Slot{key, stamp_, sign};
-      ++used_;
-      return;
-    }
-    if (slot.key == key) return;
-  }
-}
-
-void FaceSignCache::grow() {
-  std::vector<Slot> old;
-  old.swap(slots_);
-  const std::size_t size = old.empty() ? 256 : 2 * old.size();
-  slots_.assign(size, Slot{});
-  shift_ = 64 - __builtin_ctzll(size);
-  const std::uint32_t stamp = stamp_;
-  stamp_ = 1;  // the new table holds no stamp yet
-  used_ = 0;
-  for (const Slot& slot : old) {
-    if (slot.stamp != stamp) continue;
-    const std::size_t mask = slots_.size() - 1;
-    std::size_t i = slotOf(slot.key);
-    while (slots_[i].stamp == stamp_)
-      i = (i + 1) & mask;
-    slots_[i] = Slot{slot.key, stamp_, slot.sign};
-    ++used_;
-  }
-}
-
 namespace {
 
 // The orientation of corners sa, sb, sc, sd of the pair (0 to 2 A's, 3 to 5 B's): where the

@@ -14,6 +14,7 @@
 #include <collido/obbtree/tree.h>
 #include <collido/obbtree/triangle_intersection.h>
 
+#include "stamped_table.h"
 #include "static_orientation.h"
 #include "tracked_world.h"
 
@@ -39,39 +40,32 @@ struct FaceSignPair {
   const UncertainPoint& mapped(int slot) const { return corners[slot / 3][slot % 3]; }
 };
 
-/// The signs decided in one query, by (object of the face, face, vertex of the other object):
-/// an open-addressing table whose slots carry the query's stamp, so a new query clears nothing.
+/// The signs decided in one query, by (object of the face, face, vertex of the other object),
+/// in a table stamped by the query (stamped_table.h).
 class FaceSignCache {
  public:
   static constexpr int kNone = 2;
 
   /// Forgets the last query's signs.
-  void begin();
+  void begin() { table_.begin(); }
   /// The sign kept for the key, or kNone.
-  int find(int object, std::int32_t face, std::int32_t vertex) const;
-  void store(int object, std::int32_t face, std::int32_t vertex, int sign);
-  std::size_t bytes() const { return slots_.capacity() * sizeof(Slot); }
+  int find(int object, std::int32_t face, std::int32_t vertex) const {
+    const std::int32_t* sign = table_.find(keyOf(object, face, vertex));
+    return sign != nullptr ? *sign : kNone;
+  }
+  void store(int object, std::int32_t face, std::int32_t vertex, int sign) {
+    table_.store(keyOf(object, face, vertex), sign);
+  }
+  std::size_t bytes() const { return table_.bytes(); }
 
  private:
-  struct Slot {
-    std::uint64_t key = 0;
-    std::uint32_t stamp = 0;
-    std::int32_t sign = 0;
-  };
   static std::uint64_t keyOf(int object, std::int32_t face, std::int32_t vertex) {
     return (static_cast<std::uint64_t>(object) << 63) |
            (static_cast<std::uint64_t>(static_cast<std::uint32_t>(face)) << 32) |
            static_cast<std::uint32_t>(vertex);
   }
-  std::size_t slotOf(std::uint64_t key) const {
-    return static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ULL) >> shift_);
-  }
-  void grow();
 
-  std::vector<Slot> slots_;
-  std::uint32_t stamp_ = 0;
-  std::size_t used_ = 0;
-  int shift_ = 64;
+  StampedTable<std::int32_t> table_;
 };
 
 /// Where the exact signs are taken: on A's model coordinates, every corner exact there (A's as
