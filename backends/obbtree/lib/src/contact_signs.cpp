@@ -86,11 +86,31 @@ std::optional<TrackedDoubleDouble> PlaneSides::tracked(std::size_t side, std::si
   if (!trackedInRange(plane[0]) || !trackedInRange(plane[1]) || !trackedInRange(plane[2]) ||
       !trackedInRange(corner))
     return std::nullopt;
+  // Kept for the query by the plane's triangle and the corner's vertex, where named.
+  const bool named = known_ != nullptr && names_ != nullptr;
+  const int object = static_cast<int>(side);
+  const std::int32_t triangle = named ? names_->triangle[side] : 0;
+  const std::int32_t vertex = named ? names_->vertices[1 - side][k] : 0;
+  if (named) {
+    if (const std::optional<TrackedDoubleDouble>* kept =
+            known_->determinant(object, triangle, vertex)) {
+      determinant = *kept;
+      return determinant;
+    }
+  }
   std::optional<TrackedPlane>& tracked_plane = planes_[side];
-  if (!tracked_plane)
-    tracked_plane.emplace(plane[0]->tracked.world(), plane[1]->tracked.world(),
-                          plane[2]->tracked.world());
+  if (!tracked_plane) {
+    const TrackedPlane* kept = named ? known_->plane(object, triangle) : nullptr;
+    if (kept != nullptr) {
+      tracked_plane = *kept;
+    } else {
+      tracked_plane.emplace(plane[0]->tracked.world(), plane[1]->tracked.world(),
+                            plane[2]->tracked.world());
+      if (named) known_->keepPlane(object, triangle, *tracked_plane);
+    }
+  }
   determinant = tracked_plane->orient3d(corner->tracked.world());
+  if (named) known_->keepDeterminant(object, triangle, vertex, determinant);
   return determinant;
 }
 

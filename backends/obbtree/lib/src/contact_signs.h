@@ -17,6 +17,7 @@
 #include "exact_world.h"
 #include "face_signs.h"
 #include "plane_relations.h"
+#include "stamped_table.h"
 #include "tracked_world.h"
 
 namespace collido::obbtree::detail {
@@ -53,6 +54,49 @@ class ContactSignKernel {
   bool failed_ = false;
 };
 
+/// The tracked planes of triangles and the tracked determinants of vertices against them, kept
+/// for one query (stamped_table.h): near-coplanar faces meet in many triangle pairs, and each
+/// pair asks its neighbours' planes about the same vertices, for a sign and for the value a
+/// shallow crossing needs.
+class TrackedDeterminants {
+ public:
+  /// Forgets the last query's.
+  void begin() {
+    planes_.begin();
+    determinants_.begin();
+  }
+  /// The plane of triangle `position` of `object` (0: A, 1: B), if kept.
+  const TrackedPlane* plane(int object, std::int32_t position) const {
+    return planes_.find(planeKey(object, position));
+  }
+  void keepPlane(int object, std::int32_t position, const TrackedPlane& plane) {
+    planes_.store(planeKey(object, position), plane);
+  }
+  /// The determinant of the other object's `vertex` against that plane, if kept (std::nullopt
+  /// kept: out of the double-doubles' range).
+  const std::optional<TrackedDoubleDouble>* determinant(int object, std::int32_t position,
+                                                        std::int32_t vertex) const {
+    return determinants_.find(determinantKey(object, position, vertex));
+  }
+  void keepDeterminant(int object, std::int32_t position, std::int32_t vertex,
+                       const std::optional<TrackedDoubleDouble>& value) {
+    determinants_.store(determinantKey(object, position, vertex), value);
+  }
+
+ private:
+  static std::uint64_t planeKey(int object, std::int32_t position) {
+    return (static_cast<std::uint64_t>(object) << 63) | static_cast<std::uint32_t>(position);
+  }
+  static std::uint64_t determinantKey(int object, std::int32_t position, std::int32_t vertex) {
+    return (static_cast<std::uint64_t>(object) << 63) |
+           (static_cast<std::uint64_t>(static_cast<std::uint32_t>(position)) << 32) |
+           static_cast<std::uint32_t>(vertex);
+  }
+
+  StampedTable<TrackedPlane> planes_;
+  StampedTable<std::optional<TrackedDoubleDouble>> determinants_;
+};
+
 /// The sides of each of two triangles' corners of the other's plane, exact, and on request the
 /// signed distances behind them (orientation determinants, n . (x - corner 0) with n by the
 /// plane's winding, to within a few units in the last place). A corner the filter places costs
@@ -64,9 +108,11 @@ class PlaneSides {
   /// The corners must outlive this.
   PlaneSides(const PosedTriangle& a, const PosedTriangle& b) : a_(a), b_(b) {}
 
-  /// What names the pair's corners and planes for a table of face signs: each triangle's face
-  /// and turn against it (ObbTree::faceOf, faceTurn), and its corners' vertices; [0] A's.
+  /// What names the pair's corners and planes for the query's tables: each triangle's position
+  /// in its tree's leaf order, its face and turn against it (ObbTree::faceOf, faceTurn), and its
+  /// corners' vertices; [0] A's.
   struct FaceNames {
+    std::int32_t triangle[2] = {};
     std::int32_t face[2] = {};
     int turn[2] = {1, 1};
     std::int32_t vertices[2][3] = {};
@@ -77,6 +123,9 @@ class PlaneSides {
     cache_ = &cache;
     names_ = &names;
   }
+  /// Reads the planes and determinants from `known`, and keeps those computed there, by the
+  /// names given to keepSignsIn; `known` must outlive this.
+  void keepDeterminantsIn(TrackedDeterminants& known) { known_ = &known; }
 
   /// [0]: B's corners against A's plane, [1]: A's against B's (as PlaneSigns); nullopt
   /// when a sign was out of the expansions' reach (the caller then decides on rationals).
@@ -97,6 +146,7 @@ class PlaneSides {
   PosedTriangle b_;
   FaceSignCache* cache_ = nullptr;
   const FaceNames* names_ = nullptr;
+  TrackedDeterminants* known_ = nullptr;
   std::array<std::array<Memo, 3>, 2> values_{};
   std::array<std::optional<TrackedPlane>, 2> planes_{};
   std::array<std::array<std::optional<TrackedDoubleDouble>, 3>, 2> determinants_{};

@@ -281,6 +281,9 @@ void contactsOfPairs(const ObbTree& a, const std::vector<std::int32_t>& position
   // (face_signs.h). The table's signs are the world's; one a thread, cleared by a stamp.
   thread_local detail::FaceSignCache face_signs;
   face_signs.begin();
+  // And the same planes' double-doubles, which shallow crossings ask for their values.
+  thread_local detail::TrackedDeterminants determinants;
+  determinants.begin();
   for (const TrianglePair& pair : pairs) {
     const VertexIndices vertices_a = vertexIndices(a, positions_a, pair.a);
     const VertexIndices vertices_b = vertexIndices(b, positions_b, pair.b);
@@ -298,6 +301,8 @@ void contactsOfPairs(const ObbTree& a, const std::vector<std::int32_t>& position
       const std::int32_t position_a = positions_a[static_cast<std::size_t>(pair.a)];
       const std::int32_t position_b = positions_b[static_cast<std::size_t>(pair.b)];
       detail::PlaneSides::FaceNames names;
+      names.triangle[0] = position_a;
+      names.triangle[1] = position_b;
       names.face[0] = a.faceOf(position_a);
       names.face[1] = b.faceOf(position_b);
       names.turn[0] = a.faceTurn(position_a);
@@ -307,6 +312,7 @@ void contactsOfPairs(const ObbTree& a, const std::vector<std::int32_t>& position
         names.vertices[1][c] = vertices_b[c];
       }
       sides.keepSignsIn(face_signs, names);
+      sides.keepDeterminantsIn(determinants);
       const std::optional<detail::PlaneSigns> signs = sides.signs();
       if (signs && (*signs)[0] != Signs{0, 0, 0}) {
         set = doubleIntersection(world_a, world_b, signs, &sides);

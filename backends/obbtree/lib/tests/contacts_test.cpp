@@ -123,6 +123,24 @@ TEST(ObbTreeContacts, NearlyUprightBoxesMatchTheReference) {
   expectReference(box, Pose::Identity(), box, on_top, answer, "nearly upright");
 }
 
+// The same, turned a quarter about a nearly upright axis, so that the sides at +-x are flush too:
+// the corners along the shared edges lie within rounding of two planes of the other box,
+// each asked of the double-doubles, and every triangle's plane keeps its own determinants for
+// the query (contact_signs.h), however many pairs ask.
+TEST(ObbTreeContacts, BoxesFlushOnThreeFacesMatchTheReference) {
+  const Posed box = prepare(unwrap(makeBox(BoxParams{}), "box"));
+  const Eigen::Vector3d lower = box.mesh.vertices.rowwise().minCoeff();
+  const Eigen::Vector3d upper = box.mesh.vertices.rowwise().maxCoeff();
+  Pose flush = Pose::Identity();
+  flush.linear() = Eigen::AngleAxisd(0.5 * M_PI, Eigen::Vector3d(1e-18, -2e-18, 1.0).normalized())
+                       .toRotationMatrix();
+  // A quarter turn about z maps the cube onto itself: flush on top and at +-x, half of it
+  // overhanging in y.
+  flush.translation() = Eigen::Vector3d(0.0, 0.5 * (upper.y() - lower.y()), upper.z() - lower.z());
+  const ContactAnswer answer = contactsOf(box, Pose::Identity(), box, flush, {});
+  expectReference(box, Pose::Identity(), box, flush, answer, "flush on three faces");
+}
+
 // A box standing on a tessellated sheet turned about its normal (the plane exact, the rest
 // rounded), some sheet triangles wound the other way: the sides of the box's bottom corners
 // against the sheet's one face are decided once and read by every sheet triangle, each turned by
