@@ -467,16 +467,21 @@ class Descent {
   }
 
   // Sorts order[0 .. count) by the distance of lanes[order[k]]'s box centre from the other
-  // node's, nearest first.
+  // node's, nearest first. With vector box tests the batch just tested holds the centres.
   void nearestFirst(bool split_a, PairTask task, const std::int32_t* lanes, int count, int* order) {
-    const Eigen::Vector3d& other = split_a
-                                       ? mappedBoxOfB(nodes_b_, task.b, placement_, scratch_).center
-                                       : boxOfA(nodes_a_, task.a, scratch_).center;
+    const auto centerOf = [&](bool of_a, std::int32_t node) -> Eigen::Vector3d {
+      return of_a ? boxOfA(nodes_a_, node, scratch_).center
+                  : mappedBoxOfB(nodes_b_, node, placement_, scratch_).center;
+    };
+    const Eigen::Vector3d other =
+        vector_box_tests_ ? Eigen::Vector3d(Eigen::Map<const Eigen::Vector3d>(batch_.fixed_center))
+                          : centerOf(!split_a, split_a ? task.b : task.a);
     double distance[detail::kBoxLanes];
     for (int lane = 0; lane < count; ++lane) {
-      const Eigen::Vector3d& center =
-          split_a ? boxOfA(nodes_a_, lanes[lane], scratch_).center
-                  : mappedBoxOfB(nodes_b_, lanes[lane], placement_, scratch_).center;
+      const Eigen::Vector3d center =
+          vector_box_tests_
+              ? Eigen::Vector3d(Eigen::Map<const Eigen::Vector3d>(batch_.center[lane]))
+              : centerOf(split_a, lanes[lane]);
       distance[lane] = (center - other).squaredNorm();
     }
     // Insertion sort: at most four entries (std::sort on them trips GCC's bounds warning).
