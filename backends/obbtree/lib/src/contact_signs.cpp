@@ -92,8 +92,7 @@ std::optional<TrackedDoubleDouble> PlaneSides::tracked(std::size_t side, std::si
   const std::int32_t triangle = named ? names_->triangle[side] : 0;
   const std::int32_t vertex = named ? names_->vertices[1 - side][k] : 0;
   if (named) {
-    if (const std::optional<TrackedDoubleDouble>* kept =
-            known_->determinant(object, triangle, vertex)) {
+    if (const TrackedDoubleDouble* kept = known_->determinant(object, triangle, vertex)) {
       determinant = *kept;
       return determinant;
     }
@@ -110,7 +109,7 @@ std::optional<TrackedDoubleDouble> PlaneSides::tracked(std::size_t side, std::si
     }
   }
   determinant = tracked_plane->orient3d(corner->tracked.world());
-  if (named) known_->keepDeterminant(object, triangle, vertex, determinant);
+  if (named) known_->keepDeterminant(object, triangle, vertex, *determinant);
   return determinant;
 }
 

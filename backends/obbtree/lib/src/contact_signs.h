@@ -72,14 +72,13 @@ class TrackedDeterminants {
   void keepPlane(int object, std::int32_t position, const TrackedPlane& plane) {
     planes_.store(planeKey(object, position), plane);
   }
-  /// The determinant of the other object's `vertex` against that plane, if kept (std::nullopt
-  /// kept: out of the double-doubles' range).
-  const std::optional<TrackedDoubleDouble>* determinant(int object, std::int32_t position,
-                                                        std::int32_t vertex) const {
+  /// The determinant of the other object's `vertex` against that plane, if kept.
+  const TrackedDoubleDouble* determinant(int object, std::int32_t position,
+                                         std::int32_t vertex) const {
     return determinants_.find(determinantKey(object, position, vertex));
   }
   void keepDeterminant(int object, std::int32_t position, std::int32_t vertex,
-                       const std::optional<TrackedDoubleDouble>& value) {
+                       const TrackedDoubleDouble& value) {
     determinants_.store(determinantKey(object, position, vertex), value);
   }
 
@@ -94,7 +93,7 @@ class TrackedDeterminants {
   }
 
   StampedTable<TrackedPlane> planes_;
-  StampedTable<std::optional<TrackedDoubleDouble>> determinants_;
+  StampedTable<TrackedDoubleDouble> determinants_;
 };
 
 /// The sides of each of two triangles' corners of the other's plane, exact, and on request the

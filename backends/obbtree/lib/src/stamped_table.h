@@ -35,9 +35,8 @@ class StampedTable {
     }
   }
 
-  /// Keeps the value for the key (a key kept already keeps its first value); returns the value
-  /// kept, valid until the next store().
-  const Value& store(std::uint64_t key, const Value& value) {
+  /// Keeps the value for the key (a key kept already keeps its first value).
+  void store(std::uint64_t key, const Value& value) {
     if (2 * (used_ + 1) > slots_.size()) grow();
     const std::size_t mask = slots_.size() - 1;
     for (std::size_t i = slotOf(key);; i = (i + 1) & mask) {
@@ -47,9 +46,9 @@ class StampedTable {
         slot.stamp = stamp_;
         slot.value = value;
         ++used_;
-        return slot.value;
+        return;
       }
-      if (slot.key == key) return slot.value;
+      if (slot.key == key) return;
     }
   }
 
