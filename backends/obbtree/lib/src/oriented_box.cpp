@@ -1,5 +1,9 @@
 #include <collido/obbtree/oriented_box.h>
 
+#include <collido/assert.h>
+
+#include "box_frame_search.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -18,6 +22,8 @@ constexpr double kEpsilon = std::numeric_limits<double>::epsilon();
 constexpr double kUnderflowGuard = 1e-290;
 // Nodes of at least this many triangles also try the axis-aligned box (BoxFitter::fit).
 constexpr std::int32_t kAlignedCandidateMin = 64;
+// At most this many of a node's triangles (evenly spaced in its order) give candidate frames.
+constexpr std::int32_t kFrameTrianglesMax = 8;
 
 // Sets centre and extents of `box` (axes given) from the extreme projections of the vertices,
 // measured from `reference` to keep the numbers small, and widens the extents so that the box
@@ -65,6 +71,17 @@ auto cornersOf(const Eigen::Ref<const Eigen::Matrix3Xi>& triangles) {
   };
 }
 
+// The same over the triangles order[0 .. count) of `triangles`.
+auto cornersOf(const Eigen::Ref<const Eigen::Matrix3Xi>& triangles, const std::int32_t* order,
+               std::int32_t count) {
+  return [&triangles, order, count](auto&& visit) {
+    for (std::int32_t i = 0; i < count; ++i) {
+      for (int k = 0; k < 3; ++k)
+        visit(static_cast<Eigen::Index>(triangles(k, order[i])));
+    }
+  };
+}
+
 // The same over the triangles `range` of a TriangleList.
 auto cornersOf(const TriangleList& triangles, TriangleRange range) {
   return [&triangles, range](auto&& visit) {
@@ -85,6 +102,21 @@ auto verticesOf(const VertexSpan& span) {
   };
 }
 
+// Orders the axes by decreasing extent (the eigenvalue order is only a proxy for it), keeping
+// the frame right-handed, so that the longest axis is axis 0 for splitting. Swapping two columns
+// and negating the third are exact, so the box stays the very set it was measured as.
+void sortAxesByExtent(OrientedBox& box) {
+  for (int pass = 0; pass < 2; ++pass) {
+    for (int k = 0; k < 2; ++k) {
+      if (box.half_extents[k] < box.half_extents[k + 1]) {
+        box.axes.col(k).swap(box.axes.col(k + 1));
+        std::swap(box.half_extents[k], box.half_extents[k + 1]);
+        box.axes.col(2) = -box.axes.col(2);
+      }
+    }
+  }
+}
+
 }  // namespace
 
 OrientedBox fitBox(const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
@@ -93,6 +125,12 @@ OrientedBox fitBox(const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
   BoxFitter fitter(static_cast<std::size_t>(vertices.cols()));
   return fitter.fit(vertices, triangles, order, count);
 }
+
+BoxFitter::BoxFitter(std::size_t vertex_count)
+    : stamp_(vertex_count, 0), frame_points_(std::make_unique<detail::FramePoints>()) {}
+BoxFitter::~BoxFitter() = default;
+BoxFitter::BoxFitter(BoxFitter&&) noexcept = default;
+BoxFitter& BoxFitter::operator=(BoxFitter&&) noexcept = default;
 
 OrientedBox BoxFitter::fit(const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
                            const Eigen::Ref<const Eigen::Matrix3Xi>& triangles,
@@ -122,6 +160,9 @@ OrientedBox BoxFitter::fit(const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
     epoch_ = 1;
   }
   Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+  frame_points_->begin(mean);
+  last_order_ = order;
+  last_count_ = count;
   for (std::int32_t i = 0; i < count; ++i) {
     const auto t = triangles.col(order[i]);
     for (int k = 0; k < 3; ++k) {
@@ -130,6 +171,7 @@ OrientedBox BoxFitter::fit(const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
       stamp = epoch_;
       const Eigen::Vector3d d = vertices.col(t[k]) - mean;
       covariance += d * d.transpose();
+      frame_points_->add(vertices.col(t[k]));
     }
   }
 
@@ -141,12 +183,7 @@ OrientedBox BoxFitter::fit(const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
     box.axes.col(1) = solver.eigenvectors().col(1).normalized();
     box.axes.col(2) = box.axes.col(0).cross(box.axes.col(1)).normalized();
   }
-  const auto corners = [&](auto&& visit) {
-    for (std::int32_t i = 0; i < count; ++i) {
-      for (int k = 0; k < 3; ++k)
-        visit(static_cast<Eigen::Index>(triangles(k, order[i])));
-    }
-  };
+  const auto corners = cornersOf(triangles, order, count);
   setExtents(box, mean, vertices, corners);
   // The axis-aligned box instead where its surface is smaller: CAD parts and assemblies are often
   // aligned with their model axes, where the covariance's axes are not (a station module's
@@ -159,19 +196,32 @@ OrientedBox BoxFitter::fit(const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
     setExtents(aligned, mean, vertices, corners, /*axis_defect=*/0.0);
     if (surfaceMeasure(aligned) < surfaceMeasure(box)) box = aligned;
   }
-  // Order the axes by decreasing extent (the eigenvalue order is only a proxy for it), keeping
-  // the frame right-handed, so that the longest axis is axis 0 for splitting. Swapping two
-  // columns and negating the third are exact, so the box stays the very set it was measured as.
-  for (int pass = 0; pass < 2; ++pass) {
-    for (int k = 0; k < 2; ++k) {
-      if (box.half_extents[k] < box.half_extents[k + 1]) {
-        box.axes.col(k).swap(box.axes.col(k + 1));
-        std::swap(box.half_extents[k], box.half_extents[k + 1]);
-        box.axes.col(2) = -box.axes.col(2);
-      }
-    }
-  }
+  sortAxesByExtent(box);
   return box;
+}
+
+OrientedBox BoxFitter::tighten(const OrientedBox& box,
+                               const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
+                               const Eigen::Ref<const Eigen::Matrix3Xi>& triangles,
+                               const std::int32_t* order, std::int32_t count) {
+  COLLIDO_ASSERT(order == last_order_ && count == last_count_,
+                 "BoxFitter::tighten: not the triangles of the last fit()");
+  frame_triangles_.clear();
+  const std::int32_t step = std::max<std::int32_t>(1, count / kFrameTrianglesMax);
+  for (std::int32_t i = 0; i < count; i += step) {
+    for (int k = 0; k < 3; ++k)
+      frame_triangles_.push_back(vertices.col(triangles(k, order[i])));
+  }
+  frame_points_->extremesFirst(box.axes);
+  const Eigen::Matrix3d axes =
+      detail::leastSurfaceFrame(box.axes, surfaceMeasure(box), *frame_points_, frame_triangles_);
+  if (axes == box.axes) return box;
+  OrientedBox tighter;
+  tighter.axes = axes;
+
+  setExtents(tighter, frame_points_->mean(), vertices, cornersOf(triangles, order, count));
+  sortAxesByExtent(tighter);
+  return tighter;
 }
 
 void refitBoxExtents(OrientedBox& box, const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,

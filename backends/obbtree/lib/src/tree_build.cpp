@@ -5,10 +5,11 @@
 // cost model separates the triangles, by the dissertation's rule: the split plane is orthogonal
 // to the longest box axis and passes through the mean of the triangle centres; a triangle goes to
 // the side its centre lies on. If one side is empty, the next longest axis is tried; if all three
-// fail (e.g. all centres coincide), the node becomes a leaf that keeps all its triangles. Nodes are
-// emitted in depth-first order, so the first child is always the next node and only the second
-// child's index is stored. An explicit stack keeps adversarial inputs (very unbalanced splits) from
-// exhausting the call stack.
+// fail (e.g. all centres coincide), the node becomes a leaf that keeps all its triangles. A node
+// that was split then keeps a tighter box where a frame of its triangles gives one
+// (BoxFitter::tighten). Nodes are emitted in depth-first order, so the first child is always the
+// next node and only the second child's index is stored. An explicit stack keeps adversarial
+// inputs (very unbalanced splits) from exhausting the call stack.
 #include <algorithm>
 #include <numeric>
 
@@ -77,7 +78,8 @@ ObbTree ObbTree::build(const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
     if (task.parent >= 0) tree.nodes_[static_cast<std::size_t>(task.parent)].second_child = index;
     Node node;
     std::int32_t* range = order.data() + task.first;
-    node.box = fitter.fit(vertices, triangles, range, task.count);
+    const OrientedBox fitted = fitter.fit(vertices, triangles, range, task.count);
+    node.box = fitted;
     node.first = task.first;
     node.count = task.count;
     tree.depth_ = std::max(tree.depth_, task.depth);
@@ -85,13 +87,13 @@ ObbTree ObbTree::build(const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
     if (task.count <= max_leaf) continue;
 
     std::int32_t lower = options.split_by_cost
-                             ? detail::splitByCost(range, task.count, node.box, vertices, triangles,
+                             ? detail::splitByCost(range, task.count, fitted, vertices, triangles,
                                                    centroids, split_scratch)
                              : 0;
     // The mean split: the rule itself, or where no cost candidate separates the centres (then
     // no plane does). The axes are sorted longest first.
     for (int axis = 0; axis < 3 && (lower == 0 || lower == task.count); ++axis) {
-      lower = partition(range, task.count, node.box.axes.col(axis), centroids);
+      lower = partition(range, task.count, fitted.axes.col(axis), centroids);
       if (lower > 0 && lower < task.count) break;
     }
     if (lower == 0 || lower == task.count) {
@@ -99,6 +101,10 @@ ObbTree ObbTree::build(const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
       if (task.count <= kMaxLeafTriangles) continue;
       lower = task.count / 2;
     }
+    // An inner node keeps a tighter box where its triangles' frames give one; the split above
+    // followed the fitted box (BoxFitter::tighten).
+    tree.nodes_[static_cast<std::size_t>(index)].box =
+        fitter.tighten(fitted, vertices, triangles, range, task.count);
     // LIFO: the first child is popped next, so it lands at index + 1.
     stack.push_back(Task{task.first + lower, task.count - lower, index, task.depth + 1});
     stack.push_back(Task{task.first, lower, -1, task.depth + 1});

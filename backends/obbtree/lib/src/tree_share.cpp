@@ -38,7 +38,9 @@ ObbTree ObbTree::buildLike(const ObbTree& sibling,
     } else {
       node.second_child = sibling.nodes_[i].second_child;
     }
-    node.box = fitter.fit(vertices, triangles, identity.data() + node.first, node.count);
+    const std::int32_t* order = identity.data() + node.first;
+    node.box = fitter.fit(vertices, triangles, order, node.count);
+    if (!node.isLeaf()) node.box = fitter.tighten(node.box, vertices, triangles, order, node.count);
   }
   if (options.float_boxes) tree.storeFloatBoxes();
   if (options.deformable) {

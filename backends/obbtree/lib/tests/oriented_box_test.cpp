@@ -1,4 +1,5 @@
 #include <random>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -127,6 +128,86 @@ TEST(OrientedBoxFit, DegenerateSetsStillGetAContainingBox) {
   const OrientedBox box = fit(s);
   EXPECT_TRUE(box.axes.allFinite());
   EXPECT_TRUE(boxContains(box, Eigen::Vector3d(1, 2, 3)));
+}
+
+double surface(const OrientedBox& box) {
+  const Eigen::Vector3d& h = box.half_extents;
+  return h.x() * h.y() + h.y() * h.z() + h.z() * h.x();
+}
+
+// fit() then tighten() on the same triangles, as the build does for an inner node.
+std::pair<OrientedBox, OrientedBox> fitAndTighten(const Soup& s) {
+  BoxFitter fitter(static_cast<std::size_t>(s.vertices.cols()));
+  const auto count = static_cast<std::int32_t>(s.order.size());
+  const OrientedBox fitted = fitter.fit(s.vertices, s.triangles, s.order.data(), count);
+  return {fitted, fitter.tighten(fitted, s.vertices, s.triangles, s.order.data(), count)};
+}
+
+TEST(OrientedBoxTighten, ContainsEveryVertexAndNeverGrows) {
+  std::mt19937_64 rng(17);
+  int tightened = 0;
+  for (int trial = 0; trial < 200; ++trial) {
+    const double spread = std::pow(10.0, trial % 9 - 3);  // 1e-3 .. 1e5
+    Soup s = randomSoup(rng, 2 + trial % 40, spread);
+    if (trial % 5 == 0) s.vertices.colwise() += Eigen::Vector3d(1e7, -3e6, 5e5) * spread;
+    const auto [fitted, tight] = fitAndTighten(s);
+    for (int v = 0; v < s.vertices.cols(); ++v)
+      ASSERT_TRUE(boxContains(tight, s.vertices.col(v))) << "trial " << trial << " vertex " << v;
+    EXPECT_LT((tight.axes.transpose() * tight.axes - Eigen::Matrix3d::Identity()).norm(), 1e-12);
+    EXPECT_NEAR(tight.axes.determinant(), 1.0, 1e-12);
+    EXPECT_GE(tight.half_extents[0], tight.half_extents[1]);
+    EXPECT_GE(tight.half_extents[1], tight.half_extents[2]);
+    EXPECT_LE(surface(tight), surface(fitted) * (1.0 + 1e-9)) << "trial " << trial;
+    tightened += tight.axes != fitted.axes;
+  }
+  EXPECT_GT(tightened, 0);  // the search was exercised, not only its no-change path
+}
+
+// A flat 4 x 1 plate, tilted, whose vertices crowd along one diagonal (fans from two corners to
+// points on it): the covariance's first axis follows the diagonal, and its box is far larger
+// than the plate. The plate's own frame is the frame of a triangle that has one of its sides as
+// an edge.
+TEST(OrientedBoxTighten, FindsTheFrameOfAPlateWhoseVerticesCrowdAlongADiagonal) {
+  const Eigen::Matrix3d rotation =
+      Eigen::AngleAxisd(0.4, Eigen::Vector3d(2, -1, 3).normalized()).toRotationMatrix();
+  const Eigen::Vector3d offset(5, -2, 7);
+  const Eigen::Vector3d a(-2, -0.5, 0);
+  const Eigen::Vector3d b(2, -0.5, 0);
+  const Eigen::Vector3d c(2, 0.5, 0);
+  const Eigen::Vector3d d(-2, 0.5, 0);
+  const int on_diagonal = 40;  // a, then points along a -> c, ending at c
+  Soup s;
+  s.vertices.resize(3, on_diagonal + 3);
+  for (int i = 0; i <= on_diagonal; ++i)
+    s.vertices.col(i) = rotation * (a + (c - a) * (static_cast<double>(i) / on_diagonal)) + offset;
+  s.vertices.col(on_diagonal + 1) = rotation * b + offset;
+  s.vertices.col(on_diagonal + 2) = rotation * d + offset;
+  s.triangles.resize(3, 2 * on_diagonal);
+  for (int i = 0; i < on_diagonal; ++i) {
+    s.triangles.col(2 * i) << on_diagonal + 1, i + 1, i;
+    s.triangles.col(2 * i + 1) << on_diagonal + 2, i, i + 1;
+    s.order.push_back(2 * i);
+    s.order.push_back(2 * i + 1);
+  }
+  const auto [fitted, tight] = fitAndTighten(s);
+  ASSERT_GT(surface(fitted), 1.1 * surface(tight));  // the covariance's box is the loose one
+  EXPECT_NEAR(tight.half_extents[0], 2.0, 1e-9);
+  EXPECT_NEAR(tight.half_extents[1], 0.5, 1e-9);
+  EXPECT_LT(tight.half_extents[2], 1e-9);
+  EXPECT_NEAR(std::abs(tight.axes.col(0).dot(rotation.col(0))), 1.0, 1e-9);
+  EXPECT_NEAR(std::abs(tight.axes.col(2).dot(rotation.col(2))), 1.0, 1e-9);
+  EXPECT_LT((tight.center - offset).norm(), 1e-9);
+}
+
+// The cuboid's covariance frame is its own (RotatedCuboidGivesItsOwnAxesAndExtents): no frame of
+// its triangles is clearly smaller, so tighten keeps the box as fitted.
+TEST(OrientedBoxTighten, KeepsACuboidsOwnFrame) {
+  const Eigen::Matrix3d rotation =
+      Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+  const auto [fitted, tight] =
+      fitAndTighten(boxMesh(Eigen::Vector3d(3, 2, 1), rotation, Eigen::Vector3d(10, -4, 2)));
+  EXPECT_EQ(tight.axes, fitted.axes);
+  EXPECT_EQ(tight.half_extents, fitted.half_extents);
 }
 
 TEST(OrientedBoxRefit, KeepsAxesAndContainsMovedVertices) {

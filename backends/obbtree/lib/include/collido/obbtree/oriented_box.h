@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <memory>
 #include <vector>
 
 #include <Eigen/Core>
@@ -10,6 +11,9 @@
 #include <collido/obbtree/triangle_list.h>
 
 namespace collido::obbtree {
+namespace detail {
+class FramePoints;
+}
 
 /// An oriented box: the points center + axes * u with |u_k| <= half_extents[k].
 struct OrientedBox {
@@ -28,16 +32,31 @@ struct OrientedBox {
 /// computed. Holds scratch space for the distinct-vertex pass, reused across calls.
 class BoxFitter {
  public:
-  explicit BoxFitter(std::size_t vertex_count) : stamp_(vertex_count, 0) {}
+  explicit BoxFitter(std::size_t vertex_count);
+  ~BoxFitter();
+  BoxFitter(BoxFitter&&) noexcept;
+  BoxFitter& operator=(BoxFitter&&) noexcept;
 
   /// The box of triangles order[0 .. count).
   OrientedBox fit(const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
                   const Eigen::Ref<const Eigen::Matrix3Xi>& triangles, const std::int32_t* order,
                   std::int32_t count);
 
+  /// `box`, the last fit() of these triangles, or where one of their triangles' frames gives a
+  /// clearly smaller box (surface), that box (box_frame_search.h). For inner nodes: a node is
+  /// still split along fit()'s axes, the covariance's or the model's, which split CAD parts along
+  /// their own planes.
+  OrientedBox tighten(const OrientedBox& box, const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
+                      const Eigen::Ref<const Eigen::Matrix3Xi>& triangles,
+                      const std::int32_t* order, std::int32_t count);
+
  private:
   std::vector<std::uint32_t> stamp_;  // stamp_[v] == epoch_: vertex v already counted
   std::uint32_t epoch_ = 0;
+  std::unique_ptr<detail::FramePoints> frame_points_;  // of the last fit(), for tighten()
+  std::vector<Eigen::Vector3d> frame_triangles_;
+  const std::int32_t* last_order_ = nullptr;  // the triangles of the last fit()
+  std::int32_t last_count_ = 0;
 };
 
 /// One-off BoxFitter::fit.
