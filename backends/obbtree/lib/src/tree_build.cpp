@@ -6,10 +6,10 @@
 // to the longest box axis and passes through the mean of the triangle centres; a triangle goes to
 // the side its centre lies on. If one side is empty, the next longest axis is tried; if all three
 // fail (e.g. all centres coincide), the node becomes a leaf that keeps all its triangles. A node
-// that was split then keeps a tighter box where a frame of its triangles gives one
-// (BoxFitter::tighten). Nodes are emitted in depth-first order, so the first child is always the
-// next node and only the second child's index is stored. An explicit stack keeps adversarial
-// inputs (very unbalanced splits) from exhausting the call stack.
+// that is split keeps a tighter box where a frame of its triangles gives one (BoxFitter::tighten),
+// and the cost model's planes may follow that frame too. Nodes are emitted in depth-first order,
+// so the first child is always the next node and only the second child's index is stored. An
+// explicit stack keeps adversarial inputs (very unbalanced splits) from exhausting the call stack.
 #include <algorithm>
 #include <numeric>
 
@@ -86,10 +86,15 @@ ObbTree ObbTree::build(const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
     tree.nodes_.push_back(node);
     if (task.count <= max_leaf) continue;
 
-    std::int32_t lower = options.split_by_cost
-                             ? detail::splitByCost(range, task.count, fitted, vertices, triangles,
-                                                   centroids, split_scratch)
-                             : 0;
+    // A node that is split keeps a tighter box where a frame of its triangles gives one, and the
+    // cost model may take its planes along that frame too (tree_split.cpp).
+    const OrientedBox tighter = fitter.tighten(fitted, vertices, triangles, range, task.count);
+    const int tighter_frames = tighter.axes == fitted.axes ? 0 : 1;
+    std::int32_t lower =
+        options.split_by_cost
+            ? detail::splitByCost(range, task.count, fitted, &tighter.axes, tighter_frames,
+                                  vertices, triangles, centroids, split_scratch)
+            : 0;
     // The mean split: the rule itself, or where no cost candidate separates the centres (then
     // no plane does). The axes are sorted longest first.
     for (int axis = 0; axis < 3 && (lower == 0 || lower == task.count); ++axis) {
@@ -101,10 +106,7 @@ ObbTree ObbTree::build(const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
       if (task.count <= kMaxLeafTriangles) continue;
       lower = task.count / 2;
     }
-    // An inner node keeps a tighter box where its triangles' frames give one; the split above
-    // followed the fitted box (BoxFitter::tighten).
-    tree.nodes_[static_cast<std::size_t>(index)].box =
-        fitter.tighten(fitted, vertices, triangles, range, task.count);
+    tree.nodes_[static_cast<std::size_t>(index)].box = tighter;
     // LIFO: the first child is popped next, so it lands at index + 1.
     stack.push_back(Task{task.first + lower, task.count - lower, index, task.depth + 1});
     stack.push_back(Task{task.first, lower, -1, task.depth + 1});

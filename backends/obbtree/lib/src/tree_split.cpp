@@ -10,10 +10,13 @@
 // (On the bundled dense and CAD scenes, area or a full Minkowski volume in place of the sum of
 // extents gave box-test counts within 8% of it, none better on every scene.)
 //
-// Candidates: along each of the node box's three axes, the 15 planes between 16 equal bins of the
-// triangle centres (the mean of the corners, as the mean split's); a triangle goes to the side its
-// centre lies on; the triangles' bounds are binned too, so a node costs one pass over its
-// triangles and a sweep over the bins per axis.
+// Candidates: along each of the node box's three axes, and along those of a tighter frame where
+// the fit found one (BoxFitter::tighten), the 15 planes between 16 equal bins of the triangle
+// centres (the mean of the corners, as the mean split's); a triangle goes to the side its centre
+// lies on; the triangles' bounds are binned too, so a node costs one pass over its triangles and
+// a sweep over the bins per axis. The sides are sized on the node box's axes whatever frame the
+// planes follow: sized on the tighter frame's own axes, a tilted split looked cheaper than it was
+// (the teapot resting flush on its block took such splits, and a third more box tests).
 #include "tree_split.h"
 
 #include <limits>
@@ -43,37 +46,41 @@ int binOf(double offset, double extent) {
 
 }  // namespace
 
-std::int32_t splitByCost(std::int32_t* order, std::int32_t count, const OrientedBox& box,
-                         const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
-                         const Eigen::Ref<const Eigen::Matrix3Xi>& triangles,
-                         const Eigen::Matrix3Xd& centres, SplitScratch& scratch) {
+namespace {
+
+// The best split with planes along one frame's axes: its cost, axis and bin, and the binning it
+// was found with.
+struct FrameSplit {
+  double cost = std::numeric_limits<double>::infinity();
+  int axis = -1;
+  int bin = -1;  // the lower part: bins 0 .. bin
+  Eigen::Vector3d centre_low = Eigen::Vector3d::Zero();
+  Eigen::Vector3d spread = Eigen::Vector3d::Zero();
+};
+
+// Bins the centres along `axes` (scratch.centre gets their projections); the sides' sizes are
+// scratch.bounds, measured on the node box's axes whatever frame the planes follow, so that the
+// costs of splits along different frames compare.
+FrameSplit bestSplitAlong(const std::int32_t* order, std::int32_t count,
+                          const Eigen::Matrix3d& axes, const Eigen::Matrix3Xd& centres,
+                          SplitScratch& scratch) {
   const auto n = static_cast<std::size_t>(count);
-  scratch.bounds.resize(n);
-  scratch.centre.resize(n);
   Eigen::AlignedBox3d centres_bounds;
   for (std::size_t i = 0; i < n; ++i) {
-    const auto t = static_cast<Eigen::Index>(order[i]);
-    Eigen::AlignedBox3d& bounds = scratch.bounds[i];
-    bounds.setEmpty();
-    for (int c = 0; c < 3; ++c)
-      bounds.extend(box.axes.transpose() * vertices.col(triangles(c, t)));
     // Projected from the model frame's centre, so triangles with one centre share one bin.
-    scratch.centre[i] = box.axes.transpose() * centres.col(t);
+    scratch.centre[i] = axes.transpose() * centres.col(order[i]);
     centres_bounds.extend(scratch.centre[i]);
   }
-  const Eigen::Vector3d& centre_low = centres_bounds.min();
-  const Eigen::Vector3d spread = centres_bounds.sizes();
-
-  double best_cost = std::numeric_limits<double>::infinity();
-  int best_axis = -1;
-  int best_bin = -1;  // the lower part: bins 0 .. best_bin
+  FrameSplit best;
+  best.centre_low = centres_bounds.min();
+  best.spread = centres_bounds.sizes();
   for (int axis = 0; axis < 3; ++axis) {
-    const double extent = spread[axis];
+    const double extent = best.spread[axis];
     if (!(extent > 0.0)) continue;
     Eigen::AlignedBox3d bins[kBins];
     std::int32_t counts[kBins] = {};
     for (std::size_t i = 0; i < n; ++i) {
-      const int bin = binOf(scratch.centre[i][axis] - centre_low[axis], extent);
+      const int bin = binOf(scratch.centre[i][axis] - best.centre_low[axis], extent);
       bins[bin].extend(scratch.bounds[i]);
       ++counts[bin];
     }
@@ -93,20 +100,49 @@ std::int32_t splitByCost(std::int32_t* order, std::int32_t count, const Oriented
       lower_count += counts[b];
       if (lower_count == 0 || lower_count == count) continue;
       const double cost = lower_count * extentSum(lower) + upper_cost[b];
-      if (cost < best_cost) {
-        best_cost = cost;
-        best_axis = axis;
-        best_bin = b;
+      if (cost < best.cost) {
+        best.cost = cost;
+        best.axis = axis;
+        best.bin = b;
       }
     }
   }
-  if (best_axis < 0) return 0;
+  return best;
+}
 
-  // The order only: an entry swapped behind i is never read again, and the bounds and centres
-  // are measured anew for each node.
+}  // namespace
+
+std::int32_t splitByCost(std::int32_t* order, std::int32_t count, const OrientedBox& box,
+                         const Eigen::Matrix3d* plane_frames, int plane_frame_count,
+                         const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
+                         const Eigen::Ref<const Eigen::Matrix3Xi>& triangles,
+                         const Eigen::Matrix3Xd& centres, SplitScratch& scratch) {
+  const auto n = static_cast<std::size_t>(count);
+  scratch.bounds.resize(n);
+  scratch.centre.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto t = static_cast<Eigen::Index>(order[i]);
+    Eigen::AlignedBox3d& bounds = scratch.bounds[i];
+    bounds.setEmpty();
+    for (int c = 0; c < 3; ++c)
+      bounds.extend(box.axes.transpose() * vertices.col(triangles(c, t)));
+  }
+  FrameSplit best = bestSplitAlong(order, count, box.axes, centres, scratch);
+  const Eigen::Matrix3d* best_axes = &box.axes;
+  for (int f = 0; f < plane_frame_count; ++f) {
+    const FrameSplit split = bestSplitAlong(order, count, plane_frames[f], centres, scratch);
+    if (split.axis >= 0 && split.cost < best.cost) {
+      best = split;
+      best_axes = &plane_frames[f];
+    }
+  }
+  if (best.axis < 0) return 0;
+
+  // The order only: each centre projected as the search projected it, on the frame chosen.
   std::int32_t lower = 0;
   for (std::size_t i = 0; i < n; ++i) {
-    if (binOf(scratch.centre[i][best_axis] - centre_low[best_axis], spread[best_axis]) > best_bin)
+    const Eigen::Vector3d centre = best_axes->transpose() * centres.col(order[i]);
+    if (binOf(centre[best.axis] - best.centre_low[best.axis], best.spread[best.axis]) > best.bin)
       continue;
     std::swap(order[i], order[static_cast<std::size_t>(lower)]);
     ++lower;
