@@ -85,9 +85,15 @@ Eigen::Matrix3d leastSurfaceFrame(const Eigen::Matrix3d& axes, double surface,
     if (!(normal.squaredNorm() > 0.0) || !normal.allFinite()) continue;
     const Eigen::Vector3d n = normal.normalized();
     for (int e = 0; e < 3; ++e) {
+      // Eigen leaves a zero vector as it is when asked to normalise it: a frame of zeros would
+      // measure every box as empty. Unit vectors nearly orthogonal only, then.
+      const Eigen::Vector3d edge = c[(e + 1) % 3] - c[e];
+      if (!(edge.squaredNorm() > 0.0)) continue;
       Eigen::Matrix3d frame;
-      frame.col(0) = (c[(e + 1) % 3] - c[e]).normalized();
-      frame.col(1) = n.cross(frame.col(0)).normalized();
+      frame.col(0) = edge.normalized();
+      const Eigen::Vector3d side = n.cross(frame.col(0));
+      if (!(side.squaredNorm() > 0.5)) continue;
+      frame.col(1) = side.normalized();
       frame.col(2) = frame.col(0).cross(frame.col(1));
       if (!frame.allFinite()) continue;
       const double candidate = boxOnFrame(frame, points.points(), best).surface();

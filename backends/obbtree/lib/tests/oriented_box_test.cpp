@@ -199,6 +199,30 @@ TEST(OrientedBoxTighten, FindsTheFrameOfAPlateWhoseVerticesCrowdAlongADiagonal) 
   EXPECT_LT((tight.center - offset).norm(), 1e-9);
 }
 
+// Triangles with coincident or collinear corners have no frame: a zero edge or normal must not
+// become a frame of zeros, under which every box would look empty and win.
+TEST(OrientedBoxTighten, SkipsTheFramesOfDegenerateTriangles) {
+  std::mt19937_64 rng(23);
+  for (int trial = 0; trial < 50; ++trial) {
+    Soup s = randomSoup(rng, 12, 1.0);
+    for (int t = 0; t < 12; t += 2) {
+      const Eigen::Index first = s.triangles(0, t);
+      if (t % 4 == 0) {
+        s.vertices.col(s.triangles(1, t)) = s.vertices.col(first);  // two corners coincide
+      } else {
+        s.vertices.col(s.triangles(2, t)) =  // the third corner on the line of the others
+            2.0 * s.vertices.col(s.triangles(1, t)) - s.vertices.col(first);
+      }
+    }
+    const auto [fitted, tight] = fitAndTighten(s);
+    EXPECT_LT((tight.axes.transpose() * tight.axes - Eigen::Matrix3d::Identity()).norm(), 1e-12);
+    EXPECT_GT(tight.half_extents[0], 0.0);
+    EXPECT_LE(surface(tight), surface(fitted) * (1.0 + 1e-9));
+    for (int v = 0; v < s.vertices.cols(); ++v)
+      ASSERT_TRUE(boxContains(tight, s.vertices.col(v))) << "trial " << trial << " vertex " << v;
+  }
+}
+
 // The cuboid's covariance frame is its own (RotatedCuboidGivesItsOwnAxesAndExtents): no frame of
 // its triangles is clearly smaller, so tighten keeps the box as fitted.
 TEST(OrientedBoxTighten, KeepsACuboidsOwnFrame) {
