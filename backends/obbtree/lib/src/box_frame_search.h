@@ -1,18 +1,19 @@
-// A tighter frame for an inner node's box than the covariance's. The covariance of a node's
-// vertices follows where the vertices are dense, not where the surface reaches, and where two of
-// its eigenvalues are close (a patch of a sphere, a rounded part) its axes are close to
-// arbitrary. The smallest box of a point set has a face flush with a face of their hull; a node's
-// own triangles are near-hull faces of a small patch and sample the directions of a large one, so
+// A tighter frame for a node's box than the covariance's. The covariance of a node's vertices
+// follows where the vertices are dense, not where the surface reaches, and where two of its
+// eigenvalues are close (a patch of a sphere, a rounded part) its axes are close to arbitrary.
+// The smallest box of a point set has a face flush with a face of their hull; a node's own
+// triangles are near-hull faces of a small patch and sample the directions of a large one, so
 // each sampled triangle's plane, with each of its edges as the first axis, is a candidate frame,
 // taken where its box is clearly smaller (surface).
 // Candidates are measured on the node's distinct vertices, the current box's extreme ones first,
 // a losing one given up as soon as its partial measure exceeds the best; the box of the frame
 // chosen is then measured by setExtents (with its rounding allowance), so the search only ever
-// picks the axes, never the extents. Leaves keep the covariance's box: the least surface is the
-// wrong aim there. A triangle's boxes flush with any of its edges have the same area (twice the
-// triangle's), and the one flush with a rectangle's sides covers the rectangle's other triangle
-// too, where the covariance's box hugs the triangle across the diagonal and separates the two; on
-// flush CAD contact (the peg in its hole) that gave a third more triangle tests.
+// picks the axes, never the extents. A single triangle keeps the covariance's box: the least
+// surface is the wrong aim there. A triangle's boxes flush with any of its edges have the same
+// area (twice the triangle's), and the one flush with a rectangle's sides covers the rectangle's
+// other triangle too, where the covariance's box hugs the triangle across the diagonal and
+// separates the two; on flush CAD contact (the peg in its hole) that gave a third more triangle
+// tests.
 #pragma once
 
 #include <vector>

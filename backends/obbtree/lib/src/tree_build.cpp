@@ -1,15 +1,16 @@
 // Top-down construction of the OBB tree (the dissertation's method; Gottschalk et al. 1996).
 //
-// Per node: fit the box; if the node holds more than max_leaf_triangles, split: by default where
-// a cost model prefers (tree_split.cpp); with split_by_cost off, or where no candidate of the
+// Per node: fit the box (a node of two or more triangles then keeps a tighter one where a frame
+// of its triangles gives it, BoxFitter::tighten); if the node holds more than
+// max_leaf_triangles, split: by default where a cost model prefers (tree_split.cpp), its planes
+// along the fitted or the tighter frame; with split_by_cost off, or where no candidate of the
 // cost model separates the triangles, by the dissertation's rule: the split plane is orthogonal
-// to the longest box axis and passes through the mean of the triangle centres; a triangle goes to
-// the side its centre lies on. If one side is empty, the next longest axis is tried; if all three
-// fail (e.g. all centres coincide), the node becomes a leaf that keeps all its triangles. A node
-// that is split keeps a tighter box where a frame of its triangles gives one (BoxFitter::tighten),
-// and the cost model's planes may follow that frame too. Nodes are emitted in depth-first order,
-// so the first child is always the next node and only the second child's index is stored. An
-// explicit stack keeps adversarial inputs (very unbalanced splits) from exhausting the call stack.
+// to the longest axis of the fitted box and passes through the mean of the triangle centres; a
+// triangle goes to the side its centre lies on. If one side is empty, the next longest axis is
+// tried; if all three fail (e.g. all centres coincide), the node becomes a leaf that keeps all its
+// triangles. Nodes are emitted in depth-first order, so the first child is always the next node
+// and only the second child's index is stored. An explicit stack keeps adversarial inputs (very
+// unbalanced splits) from exhausting the call stack.
 #include <algorithm>
 #include <numeric>
 
@@ -78,17 +79,18 @@ ObbTree ObbTree::build(const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
     if (task.parent >= 0) tree.nodes_[static_cast<std::size_t>(task.parent)].second_child = index;
     Node node;
     std::int32_t* range = order.data() + task.first;
+    // Every node but a single triangle's keeps a tighter box where a frame of its triangles gives
+    // one (BoxFitter::tighten), and the cost model may take its planes along that frame too.
     const OrientedBox fitted = fitter.fit(vertices, triangles, range, task.count);
-    node.box = fitted;
+    const OrientedBox tighter =
+        task.count >= 2 ? fitter.tighten(fitted, vertices, triangles, range, task.count) : fitted;
+    node.box = tighter;
     node.first = task.first;
     node.count = task.count;
     tree.depth_ = std::max(tree.depth_, task.depth);
     tree.nodes_.push_back(node);
     if (task.count <= max_leaf) continue;
 
-    // A node that is split keeps a tighter box where a frame of its triangles gives one, and the
-    // cost model may take its planes along that frame too (tree_split.cpp).
-    const OrientedBox tighter = fitter.tighten(fitted, vertices, triangles, range, task.count);
     const int tighter_frames = tighter.axes == fitted.axes ? 0 : 1;
     std::int32_t lower =
         options.split_by_cost
@@ -106,7 +108,6 @@ ObbTree ObbTree::build(const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
       if (task.count <= kMaxLeafTriangles) continue;
       lower = task.count / 2;
     }
-    tree.nodes_[static_cast<std::size_t>(index)].box = tighter;
     // LIFO: the first child is popped next, so it lands at index + 1.
     stack.push_back(Task{task.first + lower, task.count - lower, index, task.depth + 1});
     stack.push_back(Task{task.first, lower, -1, task.depth + 1});
