@@ -4,6 +4,7 @@
 #include <cmath>
 #include <iterator>
 #include <limits>
+#include <optional>
 
 #include <Eigen/Geometry>
 
@@ -74,32 +75,45 @@ void FramePoints::extremesFirst(const Eigen::Matrix3d& axes) {
   }
 }
 
+std::optional<Eigen::Matrix3d> edgeFrame(const Eigen::Vector3d* corners, int e) {
+  const Eigen::Vector3d normal = (corners[1] - corners[0]).cross(corners[2] - corners[0]);
+  const Eigen::Vector3d edge = corners[(e + 1) % 3] - corners[e];
+  // Eigen leaves a zero vector as it is when asked to normalise it: a frame of zeros would
+  // measure every box as empty. Unit vectors nearly orthogonal only, then.
+  if (!(normal.squaredNorm() > 0.0) || !(edge.squaredNorm() > 0.0)) return std::nullopt;
+  Eigen::Matrix3d frame;
+  frame.col(0) = edge.normalized();
+  const Eigen::Vector3d side = normal.normalized().cross(frame.col(0));
+  if (!(side.squaredNorm() > 0.5)) return std::nullopt;
+  frame.col(1) = side.normalized();
+  frame.col(2) = frame.col(0).cross(frame.col(1));
+  if (!frame.allFinite()) return std::nullopt;
+  return frame;
+}
+
+std::optional<Eigen::Matrix3d> longestEdgeFrame(const Eigen::Vector3d* corners) {
+  int longest = 0;
+  for (int e = 1; e < 3; ++e) {
+    if ((corners[(e + 1) % 3] - corners[e]).squaredNorm() >
+        (corners[(longest + 1) % 3] - corners[longest]).squaredNorm())
+      longest = e;
+  }
+  return edgeFrame(corners, longest);
+}
+
 Eigen::Matrix3d leastSurfaceFrame(const Eigen::Matrix3d& axes, double surface,
                                   const FramePoints& points,
                                   const std::vector<Eigen::Vector3d>& triangle_corners) {
   double best = kClearMargin * surface;
   Eigen::Matrix3d best_axes = axes;
   for (std::size_t t = 0; t + 2 < triangle_corners.size(); t += 3) {
-    const Eigen::Vector3d* c = &triangle_corners[t];
-    const Eigen::Vector3d normal = (c[1] - c[0]).cross(c[2] - c[0]);
-    if (!(normal.squaredNorm() > 0.0) || !normal.allFinite()) continue;
-    const Eigen::Vector3d n = normal.normalized();
     for (int e = 0; e < 3; ++e) {
-      // Eigen leaves a zero vector as it is when asked to normalise it: a frame of zeros would
-      // measure every box as empty. Unit vectors nearly orthogonal only, then.
-      const Eigen::Vector3d edge = c[(e + 1) % 3] - c[e];
-      if (!(edge.squaredNorm() > 0.0)) continue;
-      Eigen::Matrix3d frame;
-      frame.col(0) = edge.normalized();
-      const Eigen::Vector3d side = n.cross(frame.col(0));
-      if (!(side.squaredNorm() > 0.5)) continue;
-      frame.col(1) = side.normalized();
-      frame.col(2) = frame.col(0).cross(frame.col(1));
-      if (!frame.allFinite()) continue;
-      const double candidate = boxOnFrame(frame, points.points(), best).surface();
+      const std::optional<Eigen::Matrix3d> frame = edgeFrame(&triangle_corners[t], e);
+      if (!frame) continue;
+      const double candidate = boxOnFrame(*frame, points.points(), best).surface();
       if (candidate < best) {
         best = candidate;
-        best_axes = frame;
+        best_axes = *frame;
       }
     }
   }

@@ -8,14 +8,16 @@
 // Candidates are measured on the node's distinct vertices, the current box's extreme ones first,
 // a losing one given up as soon as its partial measure exceeds the best; the box of the frame
 // chosen is then measured by setExtents (with its rounding allowance), so the search only ever
-// picks the axes, never the extents. A single triangle keeps the covariance's box: the least
-// surface is the wrong aim there. A triangle's boxes flush with any of its edges have the same
-// area (twice the triangle's), and the one flush with a rectangle's sides covers the rectangle's
-// other triangle too, where the covariance's box hugs the triangle across the diagonal and
-// separates the two; on flush CAD contact (the peg in its hole) that gave a third more triangle
-// tests.
+// picks the axes, never the extents.
+// A single triangle is not searched: its boxes flush with any of its edges all have twice its
+// area, so the least surface cannot choose, and what matters is what the box keeps out. The box
+// flush with its longest edge keeps out the neighbour across that edge, the widest one (on a
+// rectangle split in two, the other half), where a box flush with a rectangle's side would cover
+// the other half (a third more triangle tests on the peg in its hole) and the covariance's box
+// cuts across the neighbour at a slant.
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include <Eigen/Core>
@@ -43,6 +45,13 @@ class FramePoints {
   Eigen::Vector3d mean_ = Eigen::Vector3d::Zero();
   std::vector<Eigen::Vector3d> points_;
 };
+
+/// The frame of a triangle (corners[0 .. 2]) with the normal as the third axis and edge e
+/// (corners[e] to corners[e + 1 mod 3]) as the first; none where the edge or the normal is zero.
+std::optional<Eigen::Matrix3d> edgeFrame(const Eigen::Vector3d* corners, int e);
+
+/// edgeFrame on the triangle's longest edge.
+std::optional<Eigen::Matrix3d> longestEdgeFrame(const Eigen::Vector3d* corners);
 
 /// Among `axes` (whose box about the points has the surface measure `surface`, h0 h1 + h1 h2 +
 /// h2 h0 over its half extents) and the frames of the triangles given (corners c[3 k .. 3 k + 2]:

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <optional>
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
@@ -206,6 +207,17 @@ OrientedBox BoxFitter::tighten(const OrientedBox& box,
                                const std::int32_t* order, std::int32_t count) {
   COLLIDO_ASSERT(order == last_order_ && count == last_count_,
                  "BoxFitter::tighten: not the triangles of the last fit()");
+  if (count == 1) {  // box_frame_search.h: flush with the longest edge, unless that is larger
+    const auto t = triangles.col(order[0]);
+    const Eigen::Vector3d corners[3] = {vertices.col(t[0]), vertices.col(t[1]), vertices.col(t[2])};
+    const std::optional<Eigen::Matrix3d> frame = detail::longestEdgeFrame(corners);
+    if (!frame) return box;
+    OrientedBox flush;
+    flush.axes = *frame;
+    setExtents(flush, frame_points_->mean(), vertices, cornersOf(triangles, order, count));
+    sortAxesByExtent(flush);
+    return surfaceMeasure(flush) <= surfaceMeasure(box) ? flush : box;
+  }
   frame_triangles_.clear();
   const std::int32_t step = std::max<std::int32_t>(1, count / kFrameTrianglesMax);
   for (std::int32_t i = 0; i < count; i += step) {

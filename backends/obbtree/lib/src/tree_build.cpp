@@ -1,7 +1,7 @@
 // Top-down construction of the OBB tree (the dissertation's method; Gottschalk et al. 1996).
 //
-// Per node: fit the box (a node of two or more triangles then keeps a tighter one where a frame
-// of its triangles gives it, BoxFitter::tighten); if the node holds more than
+// Per node: fit the box (then keep a tighter one where a frame of its triangles gives it,
+// BoxFitter::tighten); if the node holds more than
 // max_leaf_triangles, split: by default where a cost model prefers (tree_split.cpp), its planes
 // along the fitted or the tighter frame; with split_by_cost off, or where no candidate of the
 // cost model separates the triangles, by the dissertation's rule: the split plane is orthogonal
@@ -79,11 +79,10 @@ ObbTree ObbTree::build(const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
     if (task.parent >= 0) tree.nodes_[static_cast<std::size_t>(task.parent)].second_child = index;
     Node node;
     std::int32_t* range = order.data() + task.first;
-    // Every node but a single triangle's keeps a tighter box where a frame of its triangles gives
-    // one (BoxFitter::tighten), and the cost model may take its planes along that frame too.
+    // A node keeps a tighter box where a frame of its triangles gives one (BoxFitter::tighten),
+    // and the cost model may take its planes along that frame too.
     const OrientedBox fitted = fitter.fit(vertices, triangles, range, task.count);
-    const OrientedBox tighter =
-        task.count >= 2 ? fitter.tighten(fitted, vertices, triangles, range, task.count) : fitted;
+    const OrientedBox tighter = fitter.tighten(fitted, vertices, triangles, range, task.count);
     node.box = tighter;
     node.first = task.first;
     node.count = task.count;

@@ -40,8 +40,7 @@ ObbTree ObbTree::buildLike(const ObbTree& sibling,
     }
     const std::int32_t* order = identity.data() + node.first;
     node.box = fitter.fit(vertices, triangles, order, node.count);
-    if (node.count >= 2)
-      node.box = fitter.tighten(node.box, vertices, triangles, order, node.count);
+    node.box = fitter.tighten(node.box, vertices, triangles, order, node.count);
   }
   if (options.float_boxes) tree.storeFloatBoxes();
   if (options.deformable) {

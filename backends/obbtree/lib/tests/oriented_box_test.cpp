@@ -1,3 +1,4 @@
+#include <cmath>
 #include <random>
 #include <utility>
 #include <vector>
@@ -221,6 +222,35 @@ TEST(OrientedBoxTighten, SkipsTheFramesOfDegenerateTriangles) {
     for (int v = 0; v < s.vertices.cols(); ++v)
       ASSERT_TRUE(boxContains(tight, s.vertices.col(v))) << "trial " << trial << " vertex " << v;
   }
+}
+
+// Half of a 2 x 1 rectangle: its box lies flush with the diagonal, so the other half's far
+// corner is outside it, and it is no larger than the covariance's box.
+TEST(OrientedBoxTighten, LaysASingleTriangleFlushWithItsLongestEdge) {
+  const Eigen::Matrix3d rotation =
+      Eigen::AngleAxisd(1.1, Eigen::Vector3d(-1, 3, 2).normalized()).toRotationMatrix();
+  const Eigen::Vector3d offset(-3, 8, 1);
+  const auto place = [&](double x, double y) {
+    return Eigen::Vector3d(rotation * Eigen::Vector3d(x, y, 0) + offset);
+  };
+  Soup s;
+  s.vertices.resize(3, 3);
+  s.vertices.col(0) = place(0, 0);
+  s.vertices.col(1) = place(2, 0);
+  s.vertices.col(2) = place(0, 1);
+  s.triangles.resize(3, 1);
+  s.triangles.col(0) << 0, 1, 2;
+  s.order = {0};
+  const auto [fitted, tight] = fitAndTighten(s);
+  const Eigen::Vector3d diagonal = (place(0, 1) - place(2, 0)).normalized();
+  EXPECT_NEAR(std::abs(tight.axes.col(0).dot(diagonal)), 1.0, 1e-12);
+  EXPECT_NEAR(tight.half_extents[0], 0.5 * std::sqrt(5.0), 1e-9);
+  EXPECT_NEAR(tight.half_extents[1], 1.0 / std::sqrt(5.0), 1e-9);  // half the altitude
+  EXPECT_LT(tight.half_extents[2], 1e-12);
+  EXPECT_LE(surface(tight), surface(fitted) * (1.0 + 1e-12));
+  for (int v = 0; v < 3; ++v)
+    EXPECT_TRUE(boxContains(tight, s.vertices.col(v)));
+  EXPECT_FALSE(boxContains(tight, place(2, 1)));
 }
 
 // The cuboid's covariance frame is its own (RotatedCuboidGivesItsOwnAxesAndExtents): no frame of

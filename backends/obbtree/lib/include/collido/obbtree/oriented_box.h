@@ -43,8 +43,8 @@ class BoxFitter {
                   std::int32_t count);
 
   /// `box`, the last fit() of these triangles, or where one of their triangles' frames gives a
-  /// clearly smaller box (surface), that box (box_frame_search.h). For nodes of two or more
-  /// triangles: a single triangle's covariance box hugs it better.
+  /// clearly smaller box (surface), that box; a single triangle's box flush with its longest
+  /// edge unless that is larger (box_frame_search.h).
   OrientedBox tighten(const OrientedBox& box, const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
                       const Eigen::Ref<const Eigen::Matrix3Xi>& triangles,
                       const std::int32_t* order, std::int32_t count);
