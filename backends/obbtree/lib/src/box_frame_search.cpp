@@ -47,13 +47,13 @@ FrameBox boxOnFrame(const Eigen::Matrix3d& axes, const std::vector<Eigen::Vector
 
 }  // namespace
 
-void FramePoints::extremesFirst(const Eigen::Matrix3d& axes) {
-  if (points_.empty()) return;
+void extremesFirst(std::vector<Eigen::Vector3d>& points, const Eigen::Matrix3d& axes) {
+  if (points.empty()) return;
   std::size_t extreme[6] = {};
-  Eigen::Vector3d lo = axes.transpose() * points_[0];
+  Eigen::Vector3d lo = axes.transpose() * points[0];
   Eigen::Vector3d hi = lo;
-  for (std::size_t k = 1; k < points_.size(); ++k) {
-    const Eigen::Vector3d u = axes.transpose() * points_[k];
+  for (std::size_t k = 1; k < points.size(); ++k) {
+    const Eigen::Vector3d u = axes.transpose() * points[k];
     for (int j = 0; j < 3; ++j) {
       if (u[j] < lo[j]) {
         lo[j] = u[j];
@@ -71,7 +71,7 @@ void FramePoints::extremesFirst(const Eigen::Matrix3d& axes) {
   std::size_t front = 0;
   for (std::size_t i = 0; i < 6; ++i) {
     if (i > 0 && extreme[i] == extreme[i - 1]) continue;
-    std::swap(points_[front++], points_[extreme[i]]);
+    std::swap(points[front++], points[extreme[i]]);
   }
 }
 
@@ -102,7 +102,7 @@ std::optional<Eigen::Matrix3d> longestEdgeFrame(const Eigen::Vector3d* corners) 
 }
 
 Eigen::Matrix3d leastSurfaceFrame(const Eigen::Matrix3d& axes, double surface,
-                                  const FramePoints& points,
+                                  const std::vector<Eigen::Vector3d>& points,
                                   const std::vector<Eigen::Vector3d>& triangle_corners) {
   double best = kClearMargin * surface;
   Eigen::Matrix3d best_axes = axes;
@@ -110,7 +110,7 @@ Eigen::Matrix3d leastSurfaceFrame(const Eigen::Matrix3d& axes, double surface,
     for (int e = 0; e < 3; ++e) {
       const std::optional<Eigen::Matrix3d> frame = edgeFrame(&triangle_corners[t], e);
       if (!frame) continue;
-      const double candidate = boxOnFrame(*frame, points.points(), best).surface();
+      const double candidate = boxOnFrame(*frame, points, best).surface();
       if (candidate < best) {
         best = candidate;
         best_axes = *frame;

@@ -24,27 +24,9 @@
 
 namespace collido::obbtree::detail {
 
-/// The distinct vertices of the node a frame search measures candidates on, about the node's
-/// mean (small numbers), gathered one node at a time.
-class FramePoints {
- public:
-  /// Starts a node whose vertices are about `mean`.
-  void begin(const Eigen::Vector3d& mean) {
-    mean_ = mean;
-    points_.clear();
-  }
-  /// Offers one distinct vertex of the node.
-  void add(const Eigen::Vector3d& vertex) { points_.push_back(vertex - mean_); }
-  /// Moves the extreme points along each of `axes` to the front, where they settle a losing
-  /// candidate's measure soonest.
-  void extremesFirst(const Eigen::Matrix3d& axes);
-  const Eigen::Vector3d& mean() const { return mean_; }
-  const std::vector<Eigen::Vector3d>& points() const { return points_; }
-
- private:
-  Eigen::Vector3d mean_ = Eigen::Vector3d::Zero();
-  std::vector<Eigen::Vector3d> points_;
-};
+/// Moves the extreme points along each of `axes` to the front of `points`, where they settle a
+/// losing candidate's measure soonest.
+void extremesFirst(std::vector<Eigen::Vector3d>& points, const Eigen::Matrix3d& axes);
 
 /// The frame of a triangle (corners[0 .. 2]) with the normal as the third axis and edge e
 /// (corners[e] to corners[e + 1 mod 3]) as the first; none where the edge or the normal is zero.
@@ -53,12 +35,13 @@ std::optional<Eigen::Matrix3d> edgeFrame(const Eigen::Vector3d* corners, int e);
 /// edgeFrame on the triangle's longest edge.
 std::optional<Eigen::Matrix3d> longestEdgeFrame(const Eigen::Vector3d* corners);
 
-/// Among `axes` (whose box about the points has the surface measure `surface`, h0 h1 + h1 h2 +
-/// h2 h0 over its half extents) and the frames of the triangles given (corners c[3 k .. 3 k + 2]:
-/// the plane's normal as the third axis, each edge in turn as the first), the one whose box about
-/// the points has the least surface, by a clear margin over `axes`.
+/// Among `axes` (whose box about `points`, a node's distinct vertices about its mean, has the
+/// surface measure `surface`, h0 h1 + h1 h2 + h2 h0 over its half extents) and the frames of the
+/// triangles given (corners c[3 k .. 3 k + 2]: the plane's normal as the third axis, each edge in
+/// turn as the first), the one whose box about the points has the least surface, by a clear margin
+/// over `axes`.
 Eigen::Matrix3d leastSurfaceFrame(const Eigen::Matrix3d& axes, double surface,
-                                  const FramePoints& points,
+                                  const std::vector<Eigen::Vector3d>& points,
                                   const std::vector<Eigen::Vector3d>& triangle_corners);
 
 }  // namespace collido::obbtree::detail

@@ -127,12 +127,6 @@ OrientedBox fitBox(const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
   return fitter.fit(vertices, triangles, order, count);
 }
 
-BoxFitter::BoxFitter(std::size_t vertex_count)
-    : stamp_(vertex_count, 0), frame_points_(std::make_unique<detail::FramePoints>()) {}
-BoxFitter::~BoxFitter() = default;
-BoxFitter::BoxFitter(BoxFitter&&) noexcept = default;
-BoxFitter& BoxFitter::operator=(BoxFitter&&) noexcept = default;
-
 OrientedBox BoxFitter::fit(const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
                            const Eigen::Ref<const Eigen::Matrix3Xi>& triangles,
                            const std::int32_t* order, std::int32_t count) {
@@ -161,7 +155,8 @@ OrientedBox BoxFitter::fit(const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
     epoch_ = 1;
   }
   Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
-  frame_points_->begin(mean);
+  frame_points_.clear();
+  frame_mean_ = mean;
   last_order_ = order;
   last_count_ = count;
   for (std::int32_t i = 0; i < count; ++i) {
@@ -172,7 +167,7 @@ OrientedBox BoxFitter::fit(const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
       stamp = epoch_;
       const Eigen::Vector3d d = vertices.col(t[k]) - mean;
       covariance += d * d.transpose();
-      frame_points_->add(vertices.col(t[k]));
+      frame_points_.push_back(d);
     }
   }
 
@@ -207,33 +202,30 @@ OrientedBox BoxFitter::tighten(const OrientedBox& box,
                                const std::int32_t* order, std::int32_t count) {
   COLLIDO_ASSERT(order == last_order_ && count == last_count_,
                  "BoxFitter::tighten: not the triangles of the last fit()");
+  Eigen::Matrix3d axes = box.axes;
   if (count == 1) {  // box_frame_search.h: flush with the longest edge, unless that is larger
     const auto t = triangles.col(order[0]);
     const Eigen::Vector3d corners[3] = {vertices.col(t[0]), vertices.col(t[1]), vertices.col(t[2])};
     const std::optional<Eigen::Matrix3d> frame = detail::longestEdgeFrame(corners);
     if (!frame) return box;
-    OrientedBox flush;
-    flush.axes = *frame;
-    setExtents(flush, frame_points_->mean(), vertices, cornersOf(triangles, order, count));
-    sortAxesByExtent(flush);
-    return surfaceMeasure(flush) <= surfaceMeasure(box) ? flush : box;
+    axes = *frame;
+  } else {
+    frame_triangles_.clear();
+    const std::int32_t step = std::max<std::int32_t>(1, count / kFrameTrianglesMax);
+    for (std::int32_t i = 0; i < count; i += step) {
+      for (int k = 0; k < 3; ++k)
+        frame_triangles_.push_back(vertices.col(triangles(k, order[i])));
+    }
+    detail::extremesFirst(frame_points_, box.axes);
+    axes =
+        detail::leastSurfaceFrame(box.axes, surfaceMeasure(box), frame_points_, frame_triangles_);
+    if (axes == box.axes) return box;
   }
-  frame_triangles_.clear();
-  const std::int32_t step = std::max<std::int32_t>(1, count / kFrameTrianglesMax);
-  for (std::int32_t i = 0; i < count; i += step) {
-    for (int k = 0; k < 3; ++k)
-      frame_triangles_.push_back(vertices.col(triangles(k, order[i])));
-  }
-  frame_points_->extremesFirst(box.axes);
-  const Eigen::Matrix3d axes =
-      detail::leastSurfaceFrame(box.axes, surfaceMeasure(box), *frame_points_, frame_triangles_);
-  if (axes == box.axes) return box;
   OrientedBox tighter;
   tighter.axes = axes;
-
-  setExtents(tighter, frame_points_->mean(), vertices, cornersOf(triangles, order, count));
+  setExtents(tighter, frame_mean_, vertices, cornersOf(triangles, order, count));
   sortAxesByExtent(tighter);
-  return tighter;
+  return surfaceMeasure(tighter) <= surfaceMeasure(box) ? tighter : box;
 }
 
 void refitBoxExtents(OrientedBox& box, const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,

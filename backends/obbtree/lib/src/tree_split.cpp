@@ -44,10 +44,6 @@ int binOf(double offset, double extent) {
   return static_cast<int>(position);
 }
 
-}  // namespace
-
-namespace {
-
 // The best split with planes along one frame's axes: its cost, axis and bin, and the binning it
 // was found with.
 struct FrameSplit {

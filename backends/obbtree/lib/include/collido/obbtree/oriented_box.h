@@ -3,7 +3,6 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
-#include <memory>
 #include <vector>
 
 #include <Eigen/Core>
@@ -11,10 +10,6 @@
 #include <collido/obbtree/triangle_list.h>
 
 namespace collido::obbtree {
-namespace detail {
-class FramePoints;
-}
-
 /// An oriented box: the points center + axes * u with |u_k| <= half_extents[k].
 struct OrientedBox {
   Eigen::Matrix3d axes = Eigen::Matrix3d::Identity();  ///< orthonormal, right-handed columns,
@@ -32,10 +27,7 @@ struct OrientedBox {
 /// computed. Holds scratch space for the distinct-vertex pass, reused across calls.
 class BoxFitter {
  public:
-  explicit BoxFitter(std::size_t vertex_count);
-  ~BoxFitter();
-  BoxFitter(BoxFitter&&) noexcept;
-  BoxFitter& operator=(BoxFitter&&) noexcept;
+  explicit BoxFitter(std::size_t vertex_count) : stamp_(vertex_count, 0) {}
 
   /// The box of triangles order[0 .. count).
   OrientedBox fit(const Eigen::Ref<const Eigen::Matrix3Xd>& vertices,
@@ -52,7 +44,9 @@ class BoxFitter {
  private:
   std::vector<std::uint32_t> stamp_;  // stamp_[v] == epoch_: vertex v already counted
   std::uint32_t epoch_ = 0;
-  std::unique_ptr<detail::FramePoints> frame_points_;  // of the last fit(), for tighten()
+  // The last fit()'s distinct vertices about its mean, for tighten().
+  std::vector<Eigen::Vector3d> frame_points_;
+  Eigen::Vector3d frame_mean_ = Eigen::Vector3d::Zero();
   std::vector<Eigen::Vector3d> frame_triangles_;
   const std::int32_t* last_order_ = nullptr;  // the triangles of the last fit()
   std::int32_t last_count_ = 0;
