@@ -46,6 +46,24 @@ void consumeProgress(std::string& buffer, const WorkerLaunch& launch) {
   }
 }
 
+// Reads what is left in the non-blocking pipe `reader` into `buffer`, handing out its lines:
+// stops at its end, or where nothing more is there now (a process the worker started may still
+// hold the pipe open; its later output is not waited for).
+void drainPipe(int reader, std::string& buffer, const WorkerLaunch& launch) {
+  char chunk[4096];
+  for (;;) {
+    const ssize_t got = read(reader, chunk, sizeof chunk);
+    if (got > 0) {
+      buffer.append(chunk, static_cast<std::size_t>(got));
+      consumeProgress(buffer, launch);
+    } else if (got < 0 && errno == EINTR) {
+      continue;
+    } else {
+      return;
+    }
+  }
+}
+
 [[noreturn]] void execChild(const WorkerLaunch& launch, int stdout_fd, pid_t parent) {
   setpgid(0, 0);
   // A worker dies with its driver (SIGKILL, or a lost session), instead of running on without a
@@ -160,7 +178,12 @@ WorkerOutcome runWorkerProcess(const WorkerLaunch& launch) {
       usleep(10 * 1000);  // a kernel without pidfd_open (before Linux 5.3)
     }
     const pid_t done = wait4(pid, &wait_status, WNOHANG, &usage);
-    if (done == pid) break;
+    if (done == pid) {
+      // What the worker wrote before it exited may still be in the pipe (a read takes a chunk
+      // per turn of this loop): read it all before the exit is taken.
+      if (reader_open) drainPipe(reader, buffer, launch);
+      break;
+    }
     const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
     const bool stop_asked = launch.stop != nullptr && launch.stop->load();
     if (!timed_out && !interrupted &&

@@ -116,11 +116,10 @@ TEST(RunWorkerProcess, TimeoutKillsTheWorkerAndEverythingItStarted) {
 }
 
 TEST(RunWorkerProcess, ProgressLinesReachTheCallback) {
-  // The last sleep keeps the script alive until its output has been read: runWorkerProcess stops
-  // reading once the worker has exited, so lines written just before the exit may go unseen.
+  // The sleep splits a line across two writes.
   WorkerLaunch launch = shell(
       "echo progress 2 5; echo 'not progress'; printf 'progr'; sleep 0.3; printf 'ess 3 5\\n';"
-      "echo progress 5 5; printf 'progress 6 5'; sleep 0.3",
+      "echo progress 5 5; printf 'progress 6 5'",
       "worker_progress");
   std::vector<std::pair<std::size_t, std::size_t>> seen;
   launch.on_progress = [&seen](std::size_t done, std::size_t total) {
@@ -130,6 +129,22 @@ TEST(RunWorkerProcess, ProgressLinesReachTheCallback) {
   EXPECT_EQ(outcome.status, WorkerStatus::kOk);
   // A line split across writes is read whole; an unfinished last line is not a report.
   EXPECT_EQ(seen, (std::vector<std::pair<std::size_t, std::size_t>>{{2, 5}, {3, 5}, {5, 5}}));
+}
+
+TEST(RunWorkerProcess, OutputWrittenJustBeforeTheExitIsRead) {
+  // Far more than one read's chunk, written at once, and the worker exits at once: every line
+  // must still be seen, however soon the exit is noticed.
+  WorkerLaunch launch = shell("printf 'progress %s 3000\\n' $(seq 1 3000)", "worker_burst");
+  std::size_t lines = 0;
+  std::size_t last = 0;
+  launch.on_progress = [&](std::size_t done, std::size_t) {
+    ++lines;
+    last = done;
+  };
+  const WorkerOutcome outcome = runWorkerProcess(launch);
+  EXPECT_EQ(outcome.status, WorkerStatus::kOk);
+  EXPECT_EQ(lines, 3000u);
+  EXPECT_EQ(last, 3000u);
 }
 
 TEST(RunWorkerProcess, EnvironmentIsAddedToOurs) {
