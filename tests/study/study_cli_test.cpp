@@ -557,6 +557,11 @@ TEST(StudyCli, ShardsMergeIntoTheWholeStudy) {
   const std::vector<std::string> files = jsonFilesIn(dir + "/m/results");
   EXPECT_EQ(std::set<std::string>(files.begin(), files.end()), merged_files);
   EXPECT_EQ(merged_plan.value().size(), 3u);
+  // ... and the run order the shards ran, not a default one.
+  const Result<std::optional<RunOrder>> merged_order = ResultStore(dir + "/m").readRunOrder();
+  ASSERT_TRUE(merged_order.ok() && merged_order.value().has_value());
+  EXPECT_EQ(merged_order.value()->rounds, 2);
+  EXPECT_EQ(merged_order.value()->seed, RunOrder{}.seed);
   std::map<std::string, CombinationResult> results = byBackend(readResults(dir + "/m"));
   ASSERT_EQ(results.size(), 3u);
   for (const auto& [backend, r] : results) {
@@ -585,11 +590,23 @@ TEST(StudyCli, ShardsMergeIntoTheWholeStudy) {
   // The same combinations run on other inputs (here the repetitions) are not one study.
   std::vector<std::string> a2 = studyArgs(scene, backends, dir + "/a2");
   *(std::find(a2.begin(), a2.end(), "--repetitions") + 1) = "2";
-  a2.insert(a2.end(), {"--shard", "0/2"});
+  a2.insert(a2.end(), {"--shard", "0/2", "--rounds", "2"});
   ASSERT_EQ(collido(a2, dir).exit_code, 0);
   const CommandRun mixed = collido({"merge", "--out", dir + "/x", dir + "/a", dir + "/a2"}, dir);
   EXPECT_EQ(mixed.exit_code, 2) << describe(mixed);
   EXPECT_NE(mixed.err.find("on different inputs"), std::string::npos) << mixed.err;
+
+  // Shards run in another order (another seed) are not one study either.
+  std::vector<std::string> b2 = studyArgs(scene, backends, dir + "/b2");
+  b2.insert(b2.end(), {"--shard", "1/2", "--oracle-store", dir + "/store", "--rounds", "2",
+                       "--order-seed", "7"});
+  ASSERT_EQ(collido(b2, dir).exit_code, 0);
+  const CommandRun reordered =
+      collido({"merge", "--out", dir + "/y", dir + "/a", dir + "/b2"}, dir);
+  EXPECT_EQ(reordered.exit_code, 2) << describe(reordered);
+  EXPECT_NE(reordered.err.find("in the order of seed 7"), std::string::npos) << reordered.err;
+  EXPECT_NE(reordered.err.find("merge only shards of one study"), std::string::npos)
+      << reordered.err;
 
   const CommandRun not_a_study = collido({"merge", "--out", dir + "/n", dir}, dir);
   EXPECT_EQ(not_a_study.exit_code, 2) << describe(not_a_study);

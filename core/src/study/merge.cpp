@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <set>
 
 #include <collido/study/driver.h>
@@ -26,6 +27,11 @@ bool sameFolder(const std::string& a, const std::string& b) {
   return std::filesystem::equivalent(a, b, ec) && !ec;
 }
 
+std::string describeOrder(const RunOrder& order) {
+  return std::to_string(order.rounds) + (order.rounds == 1 ? " round" : " rounds") +
+         " in the order of seed " + std::to_string(order.seed);
+}
+
 int mergeImpl(const std::string& out_dir, const std::vector<std::string>& inputs, bool replace,
               std::ostream& out, std::ostream& err) {
   std::vector<Combination> plan;
@@ -35,8 +41,11 @@ int mergeImpl(const std::string& out_dir, const std::vector<std::string>& inputs
   // Every shard lists the whole study's settings not applicable; each pair is kept once.
   std::vector<NotApplicable> not_applicable;
   std::set<std::pair<std::string, std::string>> not_applicable_seen;
-  // Shards of one study share their sweep, and so its field sides.
+  // Shards of one study share their sweep, and so its field sides, and their run order (the
+  // rounds and the seed): the merged plan says the order its results were run in.
   FieldSides field;
+  std::optional<RunOrder> order;
+  std::string order_source;
   for (const std::string& input : inputs) {
     const ResultStore shard(input);
     Result<std::vector<Combination>> shard_plan = shard.readPlan();
@@ -57,6 +66,21 @@ int mergeImpl(const std::string& out_dir, const std::vector<std::string>& inputs
       return 2;
     }
     field = shard_field.value();
+    Result<std::optional<RunOrder>> shard_order = shard.readRunOrder();
+    if (!shard_order.ok()) {
+      err << "error: " << shard_order.status().message() << "\n";
+      return 2;
+    }
+    if (const std::optional<RunOrder>& o = shard_order.value()) {
+      if (order && (order->rounds != o->rounds || order->seed != o->seed)) {
+        err << "error: " << input << " ran " << describeOrder(*o) << " and " << order_source
+            << " ran " << describeOrder(*order)
+            << "; merge only shards of one study (the same --rounds and --order-seed)\n";
+        return 2;
+      }
+      order = o;
+      order_source = input;
+    }
     for (NotApplicable& n : shard_not_applicable.value()) {
       if (not_applicable_seen.emplace(n.backend, n.scene).second)
         not_applicable.push_back(std::move(n));
@@ -122,7 +146,7 @@ int mergeImpl(const std::string& out_dir, const std::vector<std::string>& inputs
     }
     merged.push_back(result);
   }
-  if (Status s = store.writePlan(plan, not_applicable, RunOrder{}, field); !s.ok()) {
+  if (Status s = store.writePlan(plan, not_applicable, order, field); !s.ok()) {
     err << "error: " << s.message() << "\n";
     return 2;
   }

@@ -199,17 +199,34 @@ std::string ResultStore::planPath() const {
 
 Status ResultStore::writePlan(const std::vector<Combination>& plan,
                               const std::vector<NotApplicable>& not_applicable,
-                              const RunOrder& order, const FieldSides& field) const {
+                              const std::optional<RunOrder>& order, const FieldSides& field) const {
   Json list = Json::array();
   for (const Combination& c : plan)
     list.push_back(combinationToJson(c));
-  return io::writeFileAtomically(planPath(),
-                                 Json{{"collidoscope_plan", 1},
-                                      {"order", {{"rounds", order.rounds}, {"seed", order.seed}}},
-                                      {"combinations", list},
-                                      {"not_applicable", notApplicableToJson(not_applicable)},
-                                      {"field", {{"ours", field.ours}, {"peer", field.peer}}}}
-                                     .dump(1));
+  Json json{{"collidoscope_plan", 1},
+            {"combinations", list},
+            {"not_applicable", notApplicableToJson(not_applicable)},
+            {"field", {{"ours", field.ours}, {"peer", field.peer}}}};
+  if (order) json["order"] = Json{{"rounds", order->rounds}, {"seed", order->seed}};
+  return io::writeFileAtomically(planPath(), json.dump(1));
+}
+
+Result<std::optional<RunOrder>> ResultStore::readRunOrder() const {
+  Result<std::optional<Json>> json = readPlanJson();
+  if (!json.ok()) return json.status();
+  const std::optional<Json>& plan = json.value();
+  if (!plan || !plan->is_object() || !plan->contains("order")) return std::optional<RunOrder>();
+  const Json& order = plan->at("order");
+  const bool valid = order.is_object() && order.contains("rounds") &&
+                     order.at("rounds").is_number_integer() && order.at("rounds").get<int>() >= 1 &&
+                     order.contains("seed") && order.at("seed").is_number_unsigned();
+  if (!valid) {
+    return Status(StatusCode::kInvalidArgument,
+                  planPath() + ": /order: expected {\"rounds\": a count of at least 1, " +
+                      "\"seed\": an unsigned integer}");
+  }
+  return std::optional<RunOrder>(
+      RunOrder{order.at("rounds").get<int>(), order.at("seed").get<std::uint64_t>()});
 }
 
 Result<std::optional<Json>> ResultStore::readPlanJson() const {

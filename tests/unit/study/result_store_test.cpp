@@ -335,6 +335,35 @@ TEST(ResultStore, WritesHasAndReadsBackInPlanOrder) {
   EXPECT_EQ(all.value()[2].combination.id, stray.id);
 }
 
+TEST(ResultStore, ThePlanKeepsItsRunOrderOrSaysNone) {
+  const std::string dir = test::makeTempDirectory("store_order");
+  const ResultStore store(dir);
+  ASSERT_TRUE(store.prepare().ok());
+  const Result<std::optional<RunOrder>> no_plan = store.readRunOrder();
+  ASSERT_TRUE(no_plan.ok());
+  EXPECT_FALSE(no_plan.value().has_value());
+
+  const std::vector<Combination> plan = {testdata::combination("aa")};
+  ASSERT_TRUE(store.writePlan(plan, {}, RunOrder{3, 12345678901234ULL}).ok());
+  const Result<std::optional<RunOrder>> kept = store.readRunOrder();
+  ASSERT_TRUE(kept.ok()) << kept.status().message();
+  ASSERT_TRUE(kept.value().has_value());
+  EXPECT_EQ(kept.value()->rounds, 3);
+  EXPECT_EQ(kept.value()->seed, 12345678901234ULL);
+
+  ASSERT_TRUE(store.writePlan(plan, {}, std::nullopt).ok());
+  const Result<std::optional<RunOrder>> unknown = store.readRunOrder();
+  ASSERT_TRUE(unknown.ok());
+  EXPECT_FALSE(unknown.value().has_value());
+
+  test::writeFile(dir + "/plan.json",
+                  R"({"collidoscope_plan": 1, "combinations": [], "order": {"rounds": 0}})");
+  const Result<std::optional<RunOrder>> bad = store.readRunOrder();
+  ASSERT_FALSE(bad.ok());
+  EXPECT_NE(bad.status().message().find(dir + "/plan.json: /order"), std::string::npos)
+      << bad.status().message();
+}
+
 TEST(ResultStore, ReadAllWithoutAPlanIsInIdOrder) {
   const ResultStore store(test::makeTempDirectory("store_noplan"));
   ASSERT_TRUE(store.prepare().ok());

@@ -86,15 +86,20 @@ class ResultStore {
   Result<std::vector<CombinationResult>> readAll() const;
 
   /// plan.json: the combinations in the order they run, the settings not planned on some scene
-  /// (plan.h), the rounds and seed that order came from, and the field table's sides.
+  /// (plan.h), the rounds and seed that order came from (left out when unknown), and the field
+  /// table's sides.
   Status writePlan(const std::vector<Combination>& plan,
                    const std::vector<NotApplicable>& not_applicable = {},
-                   const RunOrder& order = {}, const FieldSides& field = {}) const;
+                   const std::optional<RunOrder>& order = RunOrder{},
+                   const FieldSides& field = {}) const;
   /// The stored plan, or an empty one when none was written.
   Result<std::vector<Combination>> readPlan() const;
   /// The stored plan's settings not planned on some scene; none without a plan, or in a plan
   /// written before studies left them out.
   Result<std::vector<NotApplicable>> readNotApplicable() const;
+  /// The rounds and seed the stored plan's order came from; none without a plan, or in a plan
+  /// that does not say (written before it did, or merged from shards that did not).
+  Result<std::optional<RunOrder>> readRunOrder() const;
   /// The stored plan's field sides; the defaults without a plan, or in a plan written before
   /// they were a setting.
   Result<FieldSides> readFieldSides() const;
