@@ -11,7 +11,7 @@
 set -euo pipefail
 
 packages=(
-  build-essential cmake ninja-build ccache pkg-config
+  build-essential cmake ninja-build ccache pkg-config python3
   libeigen3-dev libcgal-dev libgmp-dev libmpfr-dev libboost-dev libpng-dev
   libassimp-dev nlohmann-json3-dev libcli11-dev libfccp-dev libxxhash-dev liburdfdom-dev
   libgtest-dev libgmock-dev libbenchmark-dev

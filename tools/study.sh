@@ -88,8 +88,13 @@ if [[ -f "$previous/.complete" ]]; then
   baseline=(--baseline "$previous")
 fi
 build/release/collido report "$out" "${baseline[@]}" -o "$out/report.html" > /dev/null
-# The headline: the OBB tree against the field (the whole table is in table.txt).
-awk '/^The OBB tree against the field/ {show = 1} show && /^$/ {exit} show' "$out/table.txt"
+# The headline: the field table, found by its key (the whole table is in table.txt).
+python3 - "$out/sections.json" <<'PY'
+import json, sys
+for section in json.load(open(sys.argv[1], encoding="utf-8"))["sections"]:
+    if section["key"] == "field":
+        print(section["heading"] + ":\n" + section["text"], end="")
+PY
 echo
 echo "table: $out/table.txt"
 echo "dashboard: $out/report.html"

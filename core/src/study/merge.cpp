@@ -138,13 +138,16 @@ int mergeImpl(const std::string& out_dir, const std::vector<std::string>& inputs
     err << "error: " << s.message() << "\n";
     return 2;
   }
+  // In plan order, as a study's own outputs are (ResultStore::readAll), not in id order.
   std::vector<CombinationResult> merged;
-  for (auto& [id, result] : results) {
-    if (Status s = store.write(result); !s.ok()) {
+  for (const Combination& c : plan) {
+    const auto found = results.find(c.id);
+    if (found == results.end()) continue;
+    if (Status s = store.write(found->second); !s.ok()) {
       err << "error: " << s.message() << "\n";
       return 2;
     }
-    merged.push_back(result);
+    merged.push_back(found->second);
   }
   if (Status s = store.writePlan(plan, not_applicable, order, field); !s.ok()) {
     err << "error: " << s.message() << "\n";

@@ -132,10 +132,55 @@ std::string benchmarkJsonWith(const std::vector<CombinationResult>& results,
   return document.dump(2) + "\n";
 }
 
+// The summary sections, each found by its key (what to pick first: table.txt prints it above
+// the table of every setting, the others below it, in this order).
+std::vector<TableSection> summarySectionsWith(const std::vector<CombinationResult>& results,
+                                              const std::vector<SceneQueryPicks>& picks,
+                                              const std::vector<NotApplicable>& not_applicable,
+                                              const FieldSides& sides) {
+  std::vector<TableSection> sections;
+  const auto add = [&sections](const char* key, std::string title, const std::string& detail,
+                               std::string text) {
+    if (text.empty()) return;
+    std::string heading = title + (detail.empty() ? "" : " (" + detail + ")");
+    sections.push_back({key, std::move(title), std::move(heading), std::move(text)});
+  };
+  add("what_to_pick", "What to pick", "per scene and query", whatToPickText(picks, PickBudget{}));
+  add("not_applicable", "Not applicable, so not planned",
+      "the setting answers none of the query kinds the scene asks",
+      notApplicableText(not_applicable));
+  add("needs", "What the scene's needs save",
+      "every against declared and changed, per backend setting, scene and query",
+      needsTable(results));
+  add("field", fieldTableTitle(sides), "single thread, exact answers; per scene and query",
+      fieldTable(results, sides));
+  add("contacts", "Contacts against the exact reference", "", contactTable(results));
+  add("deforming", "Deforming scenes", "update, then query, every frame", deformTable(results));
+  add("tracking", "Poses from tracked markers", "collision error against the true poses",
+      trackingTable(results));
+  if (const std::string robustness = robustnessText(robustnessMatrix(results));
+      !robustness.empty()) {
+    // The two rate matrices: the text up to the table of every count.
+    add("robustness", "Robustness matrix",
+        "stress scenes by category; every count in robustness.txt",
+        robustness.substr(0, robustness.find("\nEvery count")));
+  }
+  return sections;
+}
+
+std::string sectionsJson(const std::vector<TableSection>& sections) {
+  OrderedJson list = OrderedJson::array();
+  for (const TableSection& section : sections) {
+    list.push_back({{"key", section.key},
+                    {"title", section.title},
+                    {"heading", section.heading},
+                    {"text", section.text}});
+  }
+  return OrderedJson{{"collidoscope_sections", 1}, {"sections", list}}.dump(1) + "\n";
+}
+
 std::string studyTableWith(const std::vector<CombinationResult>& results,
-                           const std::vector<SceneQueryPicks>& picks,
-                           const std::vector<NotApplicable>& not_applicable,
-                           const FieldSides& sides) {
+                           const std::vector<TableSection>& sections) {
   std::vector<std::string> header = {"backend", "setting", "scene", "query"};
   for (const std::string& column : measurementHeaders())
     header.push_back(column);
@@ -166,44 +211,14 @@ std::string studyTableWith(const std::vector<CombinationResult>& results,
     }
   }
   std::ostringstream out;
-  if (const std::string text = whatToPickText(picks, PickBudget{}); !text.empty()) {
-    out << "What to pick (per scene and query):\n" << text << "\nEvery setting:\n";
+  for (const TableSection& section : sections) {
+    if (section.key == "what_to_pick")
+      out << section.heading << ":\n" << section.text << "\nEvery setting:\n";
   }
   out << formatTextTable(header, rows, 4);
   out << measurementColumnsLegend("summary.json");
-  if (const std::string text = notApplicableText(not_applicable); !text.empty()) {
-    out << "\nNot applicable, so not planned (the setting answers none of the query kinds the "
-           "scene asks):\n"
-        << text;
-  }
-
-  if (const std::string needs = needsTable(results); !needs.empty()) {
-    out << "\nWhat the scene's needs save (every against declared and changed, per backend "
-           "setting, scene and query):\n";
-    out << needs;
-  }
-  if (const std::string field = fieldTable(results, sides); !field.empty()) {
-    out << "\n"
-        << fieldTableTitle(sides) << " (single thread, exact answers; per scene and query):\n";
-    out << field;
-  }
-  if (const std::string contacts = contactTable(results); !contacts.empty()) {
-    out << "\nContacts against the exact reference:\n";
-    out << contacts;
-  }
-  if (const std::string deforming = deformTable(results); !deforming.empty()) {
-    out << "\nDeforming scenes (update, then query, every frame):\n";
-    out << deforming;
-  }
-  if (const std::string tracking = trackingTable(results); !tracking.empty()) {
-    out << "\nPoses from tracked markers (collision error against the true poses):\n";
-    out << tracking;
-  }
-  if (const std::string robustness = robustnessText(robustnessMatrix(results));
-      !robustness.empty()) {
-    out << "\nRobustness matrix (stress scenes by category; every count in robustness.txt):\n";
-    // The two rate matrices: the text up to the table of every count.
-    out << robustness.substr(0, robustness.find("\nEvery count"));
+  for (const TableSection& section : sections) {
+    if (section.key != "what_to_pick") out << "\n" << section.heading << ":\n" << section.text;
   }
   if (!failures.empty()) {
     out << "\nFailures:\n";
@@ -221,7 +236,14 @@ std::string benchmarkJson(const std::vector<CombinationResult>& results) {
 
 std::string studyTable(const std::vector<CombinationResult>& results,
                        const std::vector<NotApplicable>& not_applicable, const FieldSides& field) {
-  return studyTableWith(results, whatToPick(results), not_applicable, field);
+  return studyTableWith(results,
+                        summarySectionsWith(results, whatToPick(results), not_applicable, field));
+}
+
+std::vector<TableSection> summarySections(const std::vector<CombinationResult>& results,
+                                          const std::vector<NotApplicable>& not_applicable,
+                                          const FieldSides& field) {
+  return summarySectionsWith(results, whatToPick(results), not_applicable, field);
 }
 
 Status writeStudyOutputs(const std::string& directory,
@@ -254,9 +276,15 @@ Status writeStudyOutputs(const std::string& directory,
       return s;
     }
   }
-  return io::writeFileAtomically(
-      (folder / "table.txt").string(),
-      studyTableWith(results, picks, not_applicable.value(), field.value()));
+  const std::vector<TableSection> sections =
+      summarySectionsWith(results, picks, not_applicable.value(), field.value());
+  if (Status s =
+          io::writeFileAtomically((folder / "sections.json").string(), sectionsJson(sections));
+      !s.ok()) {
+    return s;
+  }
+  return io::writeFileAtomically((folder / "table.txt").string(),
+                                 studyTableWith(results, sections));
 }
 
 std::string robustnessReport(const std::vector<CombinationResult>& results) {

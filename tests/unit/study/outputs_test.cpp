@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <set>
 #include <sstream>
 #include <string>
@@ -30,6 +31,13 @@ std::vector<std::string> linesOf(const std::string& text) {
 }
 
 /// ok (obbtree, declared), ok (obbtree, every), crashed (fcl:obb), failed (bullet, exit 3).
+std::string readFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
 std::vector<CombinationResult> mixedResults() {
   CombinationResult failed = testdata::crashedResult(testdata::combination("bullet"));
   failed.outcome.status = WorkerStatus::kFailed;
@@ -195,7 +203,7 @@ TEST(StudyTable, FailedQueriesAreListedAsFailures) {
       << table;
 }
 
-TEST(WriteStudyOutputs, WritesTheFourFiles) {
+TEST(WriteStudyOutputs, WritesTheFiveFiles) {
   const std::string dir = test::makeTempDirectory("outputs");
   const std::vector<CombinationResult> results = mixedResults();
   ASSERT_TRUE(writeStudyOutputs(dir, results).ok());
@@ -203,8 +211,8 @@ TEST(WriteStudyOutputs, WritesTheFourFiles) {
   for (const auto& entry : std::filesystem::directory_iterator(dir))
     names.push_back(entry.path().filename().string());
   std::sort(names.begin(), names.end());
-  EXPECT_EQ(names,
-            (std::vector<std::string>{"records.jsonl", "summary.json", "table.txt", "times.json"}));
+  EXPECT_EQ(names, (std::vector<std::string>{"records.jsonl", "sections.json", "summary.json",
+                                             "table.txt", "times.json"}));
   std::ifstream table(dir + "/table.txt");
   std::stringstream text;
   text << table.rdbuf();
@@ -252,6 +260,32 @@ TEST(WriteStudyOutputs, ListsWhatThePlanLeftOutOnce) {
                   "{\"combinations\": [], \"not_applicable\": [{\"backend\": 3}]}");
   EXPECT_NE(store.readNotApplicable().status().message().find(dir + "/plan.json"),
             std::string::npos);
+}
+
+// sections.json keys table.txt's summary sections, so that a tool finds the field section
+// whatever the study's field sides name it.
+TEST(WriteStudyOutputs, SectionsAreKeyedAndPrintedInTheTable) {
+  const std::string dir = test::makeTempDirectory("outputs_sections");
+  const std::vector<CombinationResult> results = {
+      testdata::okResult(testdata::combination("obbtree")),
+      testdata::okResult(testdata::combination("fcl:obb"))};
+  const FieldSides field{"fcl", "obbtree"};
+  ASSERT_TRUE(ResultStore(dir).writePlan({results[0].combination}, {}, RunOrder{}, field).ok());
+  ASSERT_TRUE(writeStudyOutputs(dir, results).ok());
+  const std::string table = readFile(dir + "/table.txt");
+  const nlohmann::json json = nlohmann::json::parse(readFile(dir + "/sections.json"));
+  std::map<std::string, nlohmann::json> by_key;
+  for (const nlohmann::json& section : json.at("sections")) {
+    by_key[section.at("key").get<std::string>()] = section;
+    const std::string printed =
+        section.at("heading").get<std::string>() + ":\n" + section.at("text").get<std::string>();
+    EXPECT_NE(table.find(printed), std::string::npos) << printed;
+  }
+  ASSERT_EQ(by_key.count("field"), 1u) << json.dump(1);
+  EXPECT_EQ(by_key["field"].at("title"), "fcl against the field");
+  ASSERT_EQ(by_key.count("what_to_pick"), 1u);
+  EXPECT_EQ(by_key["what_to_pick"].at("title"), "What to pick");
+  EXPECT_EQ(table.rfind("What to pick (per scene and query):\n", 0), 0u) << table;
 }
 
 TEST(ReportData, ListsWhatThePlanLeftOutWithWhy) {
