@@ -1,6 +1,9 @@
 #include "exact_elements.h"
 
 #include <algorithm>
+#include <cstdint>
+#include <cstring>
+#include <type_traits>
 #include <utility>
 
 #include <CGAL/intersections.h>
@@ -8,7 +11,8 @@
 namespace collido::exact {
 namespace {
 
-Box boxOf(const Point& p) {
+template <class P>
+Box boxOf(const P& p) {
   Box b;
   for (int k = 0; k < 3; ++k) {
     const std::pair<double, double> range = CGAL::to_interval(p[k]);
@@ -18,40 +22,27 @@ Box boxOf(const Point& p) {
   return b;
 }
 
-bool triTri(const Element& x, const Element& y) {
-  return CGAL::do_intersect(triangleOf(x), triangleOf(y));
-}
-bool triSeg(const Element& x, const Element& y) {
-  return CGAL::do_intersect(triangleOf(x), segmentOf(y));
-}
-bool triPoint(const Element& x, const Element& y) {
-  return triangleOf(x).has_on(y.p[0]);
-}
-bool segTri(const Element& x, const Element& y) {
-  return triSeg(y, x);
-}
-bool segSeg(const Element& x, const Element& y) {
-  return CGAL::do_intersect(segmentOf(x), segmentOf(y));
-}
-bool segPoint(const Element& x, const Element& y) {
-  return segmentOf(x).has_on(y.p[0]);
-}
-bool pointTri(const Element& x, const Element& y) {
-  return triPoint(y, x);
-}
-bool pointSeg(const Element& x, const Element& y) {
-  return segPoint(y, x);
-}
-bool pointPoint(const Element& x, const Element& y) {
+// Whether two elements share a point: CGAL's exact test for their two kinds.
+template <class K>
+bool meet(const ElementIn<K>& x, const ElementIn<K>& y) {
+  using Triangle = typename K::Triangle_3;
+  using Segment = typename K::Segment_3;
+  const auto triangle = [](const ElementIn<K>& e) { return Triangle(e.p[0], e.p[1], e.p[2]); };
+  const auto segment = [](const ElementIn<K>& e) { return Segment(e.p[0], e.p[1]); };
+  if (x.kind > y.kind) return meet(y, x);  // x is the triangle, or the segment of the two
+  switch (x.kind) {
+    case kTriangleElement:
+      if (y.kind == kTriangleElement) return CGAL::do_intersect(triangle(x), triangle(y));
+      if (y.kind == kSegmentElement) return CGAL::do_intersect(triangle(x), segment(y));
+      return triangle(x).has_on(y.p[0]);
+    case kSegmentElement:
+      if (y.kind == kSegmentElement) return CGAL::do_intersect(segment(x), segment(y));
+      return segment(x).has_on(y.p[0]);
+    case kPointElement:
+      break;
+  }
   return x.p[0] == y.p[0];
 }
-
-using ExactTest = bool (*)(const Element&, const Element&);
-constexpr ExactTest kExactTests[3][3] = {
-    {&triTri, &triSeg, &triPoint},
-    {&segTri, &segSeg, &segPoint},
-    {&pointTri, &pointSeg, &pointPoint},
-};
 
 // Whether the corners are certainly not collinear, decided on their interval approximations: a
 // projection onto a coordinate plane whose orientation interval excludes 0. A triangle in an
@@ -95,18 +86,24 @@ std::vector<Point> poseVertices(const TriangleMesh& mesh, const Pose& pose) {
   return points;
 }
 
-Element classify(const Point& a, const Point& b, const Point& c) {
-  Element e;
-  if (certainlyNotCollinear(a, b, c) || !CGAL::collinear(a, b, c)) {
+namespace {
+
+template <class K>
+ElementIn<K> classifyIn(const typename K::Point_3& a, const typename K::Point_3& b,
+                        const typename K::Point_3& c) {
+  using P = typename K::Point_3;
+  ElementIn<K> e;
+  bool proper = false;
+  if constexpr (std::is_same_v<K, EK>) proper = certainlyNotCollinear(a, b, c);
+  if (proper || !CGAL::collinear(a, b, c)) {
     e.kind = kTriangleElement;
     e.p[0] = a;
     e.p[1] = b;
     e.p[2] = c;
   } else {
-    Point sorted[3] = {a, b, c};
-    std::sort(std::begin(sorted), std::end(sorted), [](const Point& x, const Point& y) {
-      return CGAL::compare_xyz(x, y) == CGAL::SMALLER;
-    });
+    P sorted[3] = {a, b, c};
+    std::sort(std::begin(sorted), std::end(sorted),
+              [](const P& x, const P& y) { return CGAL::compare_xyz(x, y) == CGAL::SMALLER; });
     if (sorted[0] == sorted[2]) {
       e.kind = kPointElement;
       e.p[0] = sorted[0];
@@ -120,6 +117,12 @@ Element classify(const Point& a, const Point& b, const Point& c) {
   e.box.add(boxOf(b));
   e.box.add(boxOf(c));
   return e;
+}
+
+}  // namespace
+
+Element classify(const Point& a, const Point& b, const Point& c) {
+  return classifyIn<EK>(a, b, c);
 }
 
 PosedMesh poseMesh(const TriangleMesh& mesh, const Pose& pose) {
@@ -143,7 +146,27 @@ EK::Segment_3 segmentOf(const Element& e) {
 }
 
 bool elementsIntersect(const Element& x, const Element& y) {
-  return kExactTests[x.kind][y.kind](x, y);
+  return meet(x, y);
+}
+bool elementsIntersect(const ExactElement& x, const ExactElement& y) {
+  return meet(x, y);
+}
+
+ExactElement posedExactElement(const std::array<Eigen::Vector3d, 3>& corners, const Pose& pose) {
+  using FX = ExactKernel::FT;
+  const Eigen::Matrix3d& r = pose.linear();
+  const Eigen::Vector3d& t = pose.translation();
+  ExactKernel::Point_3 posed[3];
+  for (std::size_t k = 0; k < 3; ++k) {
+    const Eigen::Vector3d& x = corners[k];
+    FX world[3];
+    for (int row = 0; row < 3; ++row) {
+      world[row] = FX(r(row, 0)) * FX(x.x()) + FX(r(row, 1)) * FX(x.y()) +
+                   FX(r(row, 2)) * FX(x.z()) + FX(t[row]);
+    }
+    posed[k] = ExactKernel::Point_3(world[0], world[1], world[2]);
+  }
+  return classifyIn<ExactKernel>(posed[0], posed[1], posed[2]);
 }
 
 // One triangle given by its model corners, posed exactly and classified.
@@ -166,6 +189,26 @@ Element posedElement(const TriangleMesh& mesh, const Pose& pose, std::int32_t t)
 
 Eigen::Vector3d rounded(const Point& p) {
   return {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
+}
+namespace {
+
+// The double nearest x (ties to the even one): CGAL's to_double of a rational truncates.
+double nearestDouble(const ExactKernel::FT& x) {
+  const std::pair<double, double> bounds = CGAL::to_interval(x);
+  if (bounds.first == bounds.second) return bounds.first;
+  const ExactKernel::FT middle =
+      (ExactKernel::FT(bounds.first) + ExactKernel::FT(bounds.second)) / 2;
+  if (x < middle) return bounds.first;
+  if (x > middle) return bounds.second;
+  std::uint64_t bits = 0;
+  std::memcpy(&bits, &bounds.first, sizeof bits);
+  return (bits & 1U) == 0 ? bounds.first : bounds.second;
+}
+
+}  // namespace
+
+Eigen::Vector3d rounded(const ExactKernel::Point_3& p) {
+  return {nearestDouble(p.x()), nearestDouble(p.y()), nearestDouble(p.z())};
 }
 
 }  // namespace collido::exact

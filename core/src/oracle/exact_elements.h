@@ -43,11 +43,19 @@ struct Box {
   bool empty() const { return (lo.array() > hi.array()).any(); }
 };
 
-struct Element {
+/// A triangle, segment or point with corners of kernel K: Epeck for the oracle's searches (most
+/// decisions settle on the interval approximations), its exact kernel of rationals where every
+/// point is constructed exactly anyway (the contact reference's intersection sets: there the lazy
+/// kernel only adds its bookkeeping, a std::call_once per number).
+template <class K>
+struct ElementIn {
   ElementKind kind = kTriangleElement;
-  Point p[3];  // triangle corners; a segment uses p[0], p[1]; a point p[0]
+  typename K::Point_3 p[3];  // triangle corners; a segment uses p[0], p[1]; a point p[0]
   Box box;
 };
+using Element = ElementIn<EK>;
+using ExactKernel = EK::Exact_kernel;
+using ExactElement = ElementIn<ExactKernel>;
 
 struct PosedMesh {
   std::vector<Element> elements;
@@ -64,21 +72,26 @@ PosedMesh poseMesh(const TriangleMesh& mesh, const Pose& pose);
 Element posedElement(const std::array<Eigen::Vector3d, 3>& corners, const Pose& pose);
 /// Triangle t of `mesh`, posed exactly and classified.
 Element posedElement(const TriangleMesh& mesh, const Pose& pose, std::int32_t t);
+/// One triangle given by its model corners, posed and classified in the exact kernel.
+ExactElement posedExactElement(const std::array<Eigen::Vector3d, 3>& corners, const Pose& pose);
 
 EK::Triangle_3 triangleOf(const Element& e);
 EK::Segment_3 segmentOf(const Element& e);
 
 /// Whether two elements share a point, decided exactly.
 bool elementsIntersect(const Element& x, const Element& y);
+bool elementsIntersect(const ExactElement& x, const ExactElement& y);
 /// The exact squared distance of two elements (0 when they share a point).
 FT elementsSquaredDistance(const Element& x, const Element& y);
 /// The points where two intersecting elements meet: a point, a segment's two ends or a coplanar
 /// polygon's corners (empty when they do not meet).
 std::vector<Point> intersectionPoints(const Element& x, const Element& y);
+std::vector<ExactKernel::Point_3> intersectionPoints(const ExactElement& x, const ExactElement& y);
 /// The closest points of two elements that do not meet.
 void closestPointsOfElements(const Element& x, const Element& y, Point& on_x, Point& on_y);
 
 /// A point rounded to the nearest doubles.
 Eigen::Vector3d rounded(const Point& p);
+Eigen::Vector3d rounded(const ExactKernel::Point_3& p);
 
 }  // namespace collido::exact
