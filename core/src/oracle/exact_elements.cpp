@@ -152,21 +152,40 @@ bool elementsIntersect(const ExactElement& x, const ExactElement& y) {
   return meet(x, y);
 }
 
-ExactElement posedExactElement(const std::array<Eigen::Vector3d, 3>& corners, const Pose& pose) {
-  using FX = ExactKernel::FT;
+bool elementsIntersect(const IntervalElement& x, const IntervalElement& y) {
+  return meet(x, y);
+}
+
+namespace {
+
+// The triangle pose * corners in kernel K, classified.
+template <class K>
+ElementIn<K> posedIn(const std::array<Eigen::Vector3d, 3>& corners, const Pose& pose) {
+  using N = typename K::FT;
   const Eigen::Matrix3d& r = pose.linear();
   const Eigen::Vector3d& t = pose.translation();
-  ExactKernel::Point_3 posed[3];
+  typename K::Point_3 posed[3];
   for (std::size_t k = 0; k < 3; ++k) {
     const Eigen::Vector3d& x = corners[k];
-    FX world[3];
+    N world[3];
     for (int row = 0; row < 3; ++row) {
-      world[row] = FX(r(row, 0)) * FX(x.x()) + FX(r(row, 1)) * FX(x.y()) +
-                   FX(r(row, 2)) * FX(x.z()) + FX(t[row]);
+      world[row] =
+          N(r(row, 0)) * N(x.x()) + N(r(row, 1)) * N(x.y()) + N(r(row, 2)) * N(x.z()) + N(t[row]);
     }
-    posed[k] = ExactKernel::Point_3(world[0], world[1], world[2]);
+    posed[k] = typename K::Point_3(world[0], world[1], world[2]);
   }
-  return classifyIn<ExactKernel>(posed[0], posed[1], posed[2]);
+  return classifyIn<K>(posed[0], posed[1], posed[2]);
+}
+
+}  // namespace
+
+ExactElement posedExactElement(const std::array<Eigen::Vector3d, 3>& corners, const Pose& pose) {
+  return posedIn<ExactKernel>(corners, pose);
+}
+
+IntervalElement posedIntervalElement(const std::array<Eigen::Vector3d, 3>& corners,
+                                     const Pose& pose) {
+  return posedIn<IntervalKernel>(corners, pose);
 }
 
 // One triangle given by its model corners, posed exactly and classified.
@@ -190,6 +209,7 @@ Element posedElement(const TriangleMesh& mesh, const Pose& pose, std::int32_t t)
 Eigen::Vector3d rounded(const Point& p) {
   return {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
 }
+
 namespace {
 
 // The double nearest x (ties to the even one): CGAL's to_double of a rational truncates.

@@ -56,6 +56,11 @@ struct ElementIn {
 using Element = ElementIn<EK>;
 using ExactKernel = EK::Exact_kernel;
 using ExactElement = ElementIn<ExactKernel>;
+/// Epeck's approximate kernel (intervals): its predicates throw
+/// CGAL::Uncertain_conversion_exception where the intervals cannot decide, so a result computed in
+/// it without one is certain. Use under CGAL::Protect_FPU_rounding.
+using IntervalKernel = EK::Approximate_kernel;
+using IntervalElement = ElementIn<IntervalKernel>;
 
 struct PosedMesh {
   std::vector<Element> elements;
@@ -74,6 +79,9 @@ Element posedElement(const std::array<Eigen::Vector3d, 3>& corners, const Pose& 
 Element posedElement(const TriangleMesh& mesh, const Pose& pose, std::int32_t t);
 /// One triangle given by its model corners, posed and classified in the exact kernel.
 ExactElement posedExactElement(const std::array<Eigen::Vector3d, 3>& corners, const Pose& pose);
+/// The same in intervals (may throw CGAL::Uncertain_conversion_exception).
+IntervalElement posedIntervalElement(const std::array<Eigen::Vector3d, 3>& corners,
+                                     const Pose& pose);
 
 EK::Triangle_3 triangleOf(const Element& e);
 EK::Segment_3 segmentOf(const Element& e);
@@ -81,12 +89,15 @@ EK::Segment_3 segmentOf(const Element& e);
 /// Whether two elements share a point, decided exactly.
 bool elementsIntersect(const Element& x, const Element& y);
 bool elementsIntersect(const ExactElement& x, const ExactElement& y);
+bool elementsIntersect(const IntervalElement& x, const IntervalElement& y);
 /// The exact squared distance of two elements (0 when they share a point).
 FT elementsSquaredDistance(const Element& x, const Element& y);
 /// The points where two intersecting elements meet: a point, a segment's two ends or a coplanar
 /// polygon's corners (empty when they do not meet).
 std::vector<Point> intersectionPoints(const Element& x, const Element& y);
 std::vector<ExactKernel::Point_3> intersectionPoints(const ExactElement& x, const ExactElement& y);
+std::vector<IntervalKernel::Point_3> intersectionPoints(const IntervalElement& x,
+                                                        const IntervalElement& y);
 /// The closest points of two elements that do not meet.
 void closestPointsOfElements(const Element& x, const Element& y, Point& on_x, Point& on_y);
 
