@@ -50,8 +50,12 @@ previous=$out.previous
 # on a 2-core machine (scenes/sweeps/*.times.json).
 expected=$times
 if [[ -f "$previous/times.json" ]]; then expected=$previous/times.json; fi
+# The exact answers live beside the study folder, not in it: a new run moves the folder to
+# $previous, and would otherwise compute every scene's oracle again (kept by each scene's digest,
+# so a changed scene gets new ones).
 study=(build/release/collido study "${scenes[@]}" --surfaces scenes/surfaces/*.json
-       --frep scenes/frep/*.json --sweep "$sweep" --out "$out" --expected-times "$expected")
+       --frep scenes/frep/*.json --sweep "$sweep" --out "$out" --expected-times "$expected"
+       --oracle-store build/release/oracle)
 
 if [[ -f "$out/plan.json" && ! -f "$out/.complete" ]]; then
   # Interrupted earlier: finish it. A different plan (scenes or sweep changed) starts afresh.
