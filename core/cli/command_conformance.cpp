@@ -3,21 +3,17 @@
 // pass/skip/fail table with every failure of every check.
 #include <unistd.h>
 
-#include <cstdio>
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
-#include <map>
 #include <memory>
-#include <sstream>
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
 #include <collido/host/plugin_library.h>
-#include <collido/io/files.h>
+#include <collido/study/conformance_report.h>
 #include <collido/study/worker_process.h>
 
 #include "commands.h"
@@ -50,66 +46,6 @@ int runKit(const std::string& kit, const std::vector<std::string>& arguments,
   return outcome.signal != 0 ? -outcome.signal : outcome.exit_code;
 }
 
-// A failure message without GoogleTest's "file:line" and "Failed" lines, one string per line.
-std::vector<std::string> messageLines(const std::string& text) {
-  std::vector<std::string> out;
-  std::istringstream lines(text);
-  std::string line;
-  while (std::getline(lines, line)) {
-    const bool location = line.rfind('/', 0) == 0 && line.find(' ') == std::string::npos;
-    if (!line.empty() && !location && line != "Failed") out.push_back(line);
-  }
-  if (out.empty()) out.push_back(text);
-  return out;
-}
-
-struct Row {
-  std::string check;
-  std::string result;
-  std::string detail;
-  std::vector<std::string> more;  ///< the lines of every further failure message
-};
-
-std::vector<Row> readReport(const std::string& path) {
-  std::vector<Row> rows;
-  // No report, or a broken one (the kit crashed while writing it): no rows, and the caller shows
-  // the kit's log instead.
-  const Result<nlohmann::json> read = io::readJsonFile(path);
-  if (!read.ok()) return rows;
-  const nlohmann::json& report = read.value();
-  for (const auto& suite : report.value("testsuites", nlohmann::json::array())) {
-    for (const auto& test : suite.value("testsuite", nlohmann::json::array())) {
-      Row row;
-      std::string suite_name = suite.value("name", "");
-      if (const auto slash = suite_name.find('/'); slash != std::string::npos) {
-        suite_name = suite_name.substr(slash + 1);
-      }
-      row.check = suite_name + "." + test.value("name", "");
-      if (test.contains("failures")) {
-        row.result = "FAIL";
-        // Every failure of the check (a scene reports each query that failed), in full.
-        for (const auto& failure : test["failures"]) {
-          for (const std::string& line : messageLines(failure.value("failure", ""))) {
-            if (row.detail.empty()) {
-              row.detail = line;
-            } else {
-              row.more.push_back(line);
-            }
-          }
-        }
-      } else if (test.value("result", "") == "SKIPPED") {
-        row.result = "skip";
-        row.detail = test.value("detail", "");
-      } else {
-        row.result = "pass";
-        row.detail = test.value("detail", "");
-      }
-      rows.push_back(row);
-    }
-  }
-  return rows;
-}
-
 int runConformance(const ConformanceArguments& args) {
   const std::string here = executableDirectory();
   const std::string kit = (here.empty() ? std::string(".") : here) + "/collido_conformance";
@@ -139,7 +75,7 @@ int runConformance(const ConformanceArguments& args) {
   unsetenv("GTEST_TOTAL_SHARDS");
   unsetenv("GTEST_SHARD_INDEX");
   const int status = runKit(kit, argv, log);
-  const std::vector<Row> rows = readReport(json);
+  const std::vector<study::ConformanceRow> rows = study::readConformanceReport(json);
   // The kit's own output is kept only where asked; the folder goes either way.
   std::string kept_log;
   if (!args.log.empty()) {
@@ -157,23 +93,12 @@ int runConformance(const ConformanceArguments& args) {
     return status < 0 ? 1 : (status == 0 ? 1 : status);
   }
   clean_up();
-  std::size_t width = 5;
-  for (const Row& r : rows)
-    width = std::max(width, r.check.size());
-  std::map<std::string, int> totals;
-  std::cout << std::string("check") + std::string(width - 5, ' ') << "  result  detail\n";
-  for (const Row& r : rows) {
-    ++totals[r.result];
-    std::cout << r.check << std::string(width - r.check.size(), ' ') << "  " << r.result
-              << std::string(6 - r.result.size(), ' ') << "  " << r.detail << "\n";
-    for (const std::string& line : r.more)
-      std::cout << std::string(width + 10, ' ') << line << "\n";
-  }
-  std::cout << "\n"
-            << totals["pass"] << " passed, " << totals["skip"] << " skipped, " << totals["FAIL"]
-            << " failed" << (kept_log.empty() ? "" : "; the kit's output: " + kept_log) << "\n";
+  std::cout << study::conformanceTable(rows)
+            << (kept_log.empty() ? "" : "; the kit's output: " + kept_log) << "\n";
+  const bool failed = std::any_of(
+      rows.begin(), rows.end(), [](const study::ConformanceRow& r) { return r.result == "FAIL"; });
   if (status < 0) std::cout << "the kit died of signal " << -status << "\n";
-  return totals["FAIL"] == 0 && status == 0 ? 0 : 1;
+  return !failed && status == 0 ? 0 : 1;
 }
 
 }  // namespace

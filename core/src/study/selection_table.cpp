@@ -6,6 +6,7 @@
 #include <sstream>
 #include <tuple>
 
+#include <collido/runner/measurement_json.h>
 #include <collido/runner/text_table.h>
 #include <collido/study/robustness.h>
 
@@ -142,10 +143,6 @@ std::string costLine(const std::vector<Candidate>& all, const std::optional<Pick
   const PickedSetting& wrong = fastest->setting;
   return wrong.backend + " is " + ratioWithInterval(*ratio) + " faster than " + chosen.backend +
          " here but wrong on " + wrongText(wrong) + " frames";
-}
-
-Json intervalJson(const Interval& interval) {
-  return Json::array({interval.lo, interval.hi});
 }
 
 // {"fcl:obb": [ratio, low, high], ...}: each other setting's time over this one's.

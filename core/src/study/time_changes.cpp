@@ -5,6 +5,7 @@
 #include <sstream>
 #include <tuple>
 
+#include <collido/runner/measurement_json.h>
 #include <collido/runner/text_table.h>
 
 namespace collido::study {
@@ -52,10 +53,6 @@ std::vector<std::pair<Key, const QueryMeasurement*>> answered(
 std::optional<double> logStandardError(const Interval& ci) {
   if (!(ci.lo > 0.0) || !(ci.hi >= ci.lo)) return std::nullopt;
   return (std::log(ci.hi) - std::log(ci.lo)) / (2.0 * kZ95);
-}
-
-Json intervalJson(const Interval& ci) {
-  return Json::array({ci.lo, ci.hi});
 }
 
 }  // namespace

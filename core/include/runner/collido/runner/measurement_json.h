@@ -7,6 +7,7 @@
 
 #include <collido/runner/record_fields.h>
 #include <collido/runner/runner.h>
+#include <collido/runner/time_statistic.h>
 #include <collido/status.h>
 
 namespace collido {
@@ -17,6 +18,11 @@ nlohmann::json measurementToJson(const QueryMeasurement& measurement);
 
 /// Reads what measurementToJson wrote; errors name the missing or mistyped field.
 Result<QueryMeasurement> measurementFromJson(const nlohmann::json& json);
+
+/// [low, high]: an interval as summary.json and the study's outputs write it.
+inline nlohmann::json intervalJson(const Interval& interval) {
+  return nlohmann::json::array({interval.lo, interval.hi});
+}
 
 template <typename JsonT>
 JsonT contactScoreJson(const ContactScore& c);
