@@ -82,7 +82,8 @@ mkdir -p "$out/views"
 for file in "${scenes[@]}"; do
   [[ $file == scenes/stress/* ]] && continue
   name=$(basename "$file" .json)
-  if ! build/release/collido view "$file" --results "$out" -o "$out/views/$name.html" --quiet \
+  if ! build/release/collido view "$file" --results "$out" --oracle-store build/release/oracle \
+      -o "$out/views/$name.html" --quiet \
       2> "$out/views/$name.txt"; then
     echo "warning: collido view $file failed: see $out/views/$name.txt" >&2
   fi

@@ -34,6 +34,7 @@ struct ViewArguments {
   std::string out;
   std::vector<std::string> backends;
   std::string results;
+  std::string oracle_store;  ///< the exact answers' store ("": the study's RESULTS/oracle, if any)
   std::string web;
   double timeout_s = 600.0;
   double resolution = 1.0;
@@ -151,8 +152,10 @@ int view(const ViewArguments& args, const PluginOptions& plugins) {
   // The exact answers (and solved placements) from the study's store when it has them: the study
   // computed them for the same scene. Else they are computed here once, shared with the children.
   std::string oracle_directory = (work / "oracle").string();
-  if (!args.results.empty() &&
-      std::filesystem::is_directory(std::filesystem::path(args.results) / "oracle", ec)) {
+  if (!args.oracle_store.empty()) {
+    oracle_directory = std::filesystem::absolute(args.oracle_store).string();
+  } else if (!args.results.empty() &&
+             std::filesystem::is_directory(std::filesystem::path(args.results) / "oracle", ec)) {
     oracle_directory = (std::filesystem::path(args.results) / "oracle").string();
   }
   const Result<Scene> scene = loadReporting(args.scene, args.resolution, oracle_directory);
@@ -298,6 +301,9 @@ void addViewCommands(CLI::App& app, const PluginOptions& plugins, int& exit_code
       ->delimiter(',');
   command->add_option("--results", args->results,
                       "a study folder (collido study --out): show the backends it ran here");
+  command->add_option("--oracle-store", args->oracle_store,
+                      "the folder of stored exact answers to read and add to (as collido study's "
+                      "--oracle-store; default: --results' oracle/ when it has one)");
   command->add_option("--timeout", args->timeout_s,
                       "seconds a backend may take for all its answers (default 600)");
   command
