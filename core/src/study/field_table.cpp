@@ -21,14 +21,6 @@ struct Answer {
   QueryMeasurement measurement;
 };
 
-bool runsOnOneThread(const std::string& backend) {
-  const auto parsed = parseBackendText(backend);
-  if (!parsed.ok()) return true;
-  const auto& options = parsed.value().second;
-  const auto threads = options.find("threads");
-  return threads == options.end() || threads->second == "1" || threads->second == "0";
-}
-
 /// The fastest of `answers` that `admit` lets in, or none.
 template <typename Admit>
 const Answer* fastest(const std::vector<Answer>& answers, Admit admit) {

@@ -206,6 +206,14 @@ std::vector<Combination> planComparisons(const std::vector<PlannedScene>& files,
   return plan;
 }
 
+bool runsOnOneThread(const std::string& backend) {
+  const auto parsed = parseBackendText(backend);
+  if (!parsed.ok()) return true;
+  const auto& options = parsed.value().second;
+  const auto threads = options.find("threads");
+  return threads == options.end() || threads->second == "1" || threads->second == "0";
+}
+
 std::vector<Combination> shardOf(const std::vector<Combination>& plan, std::size_t index,
                                  std::size_t count) {
   std::vector<Combination> part;

@@ -51,7 +51,7 @@ void readAnswer(const std::string& answer_path, CombinationResult& result) {
 CombinationResult runInWorker(const Combination& c, const ResultStore& store, int repetitions,
                               double timeout_s, const std::string& plugin_file,
                               const StudyRequest& request, StudyProgress& progress,
-                              const std::atomic<bool>& stop) {
+                              const std::atomic<bool>& stop, int worker_cpu) {
   const std::string request_path = store.scratchPath(c.id + ".request");
   const std::string answer_path = store.scratchPath(c.id);
   std::filesystem::remove(answer_path);
@@ -83,6 +83,9 @@ CombinationResult runInWorker(const Combination& c, const ResultStore& store, in
   launch.log_path = store.logPath(c.id);
   launch.timeout_s = timeout_s;
   launch.stop = &stop;
+  // One processor of its own, the driver kept off it (WorkerProcessor); a setting that runs on
+  // several threads gets them all.
+  launch.cpu = runsOnOneThread(c.backend) ? worker_cpu : -1;
   launch.on_progress = [&progress](std::size_t done, std::size_t total) {
     progress.frames(done, total);
   };
@@ -120,6 +123,7 @@ struct WorkerQueue {
   const StudyRequest& request;
   const StopOnSignals& stop;
   std::ostream& err;
+  int worker_cpu = -1;  // WorkerProcessor::cpu()
 };
 
 // Runs `todo` one worker at a time, storing each result; stops when asked to, or before a worker
@@ -137,7 +141,7 @@ Result<StudyEnd> runQueue(
     CombinationResult result =
         runInWorker(c, q.store, q.repetitions, q.timeout_s,
                     plugin_file == q.plugin_file_of.end() ? std::string() : plugin_file->second,
-                    q.request, progress, q.stop.requested());
+                    q.request, progress, q.stop.requested(), q.worker_cpu);
     if (result.outcome.status == WorkerStatus::kInterrupted) return StudyEnd::kInterrupted;
     if (Status s = q.store.write(result); !s.ok()) {
       q.err << "\n";  // ends the progress line
@@ -201,8 +205,10 @@ Result<StudyEnd> executePlan(const StudyRequest& request, const StudyPlan& plan,
   const StopOnSignals stop;
   StudyProgress progress(err, folder.todo.size(), !request.quiet && request.interactive);
   progress.setExpected(estimate.seconds);
+  const WorkerProcessor worker_processor;
   const WorkerQueue queue{
-      folder.store, plan.repetitions, plan.timeout_s, backends.plugin_file_of, request, stop, err};
+      folder.store, plan.repetitions,      plan.timeout_s, backends.plugin_file_of, request, stop,
+      err,          worker_processor.cpu()};
   Result<StudyEnd> end = runQueue(folder.todo, queue, progress);
   // Then more rounds where the rounds so far cannot pin a figure down, within the time budget.
   const int rounds = plan.order.rounds;

@@ -5,6 +5,7 @@
 
 #include <fcntl.h>
 #include <poll.h>
+#include <sched.h>
 #include <signal.h>
 #include <sys/prctl.h>
 #include <sys/resource.h>
@@ -66,6 +67,12 @@ void drainPipe(int reader, std::string& buffer, const WorkerLaunch& launch) {
 
 [[noreturn]] void execChild(const WorkerLaunch& launch, int stdout_fd, pid_t parent) {
   setpgid(0, 0);
+  if (launch.cpu >= 0) {
+    cpu_set_t one;
+    CPU_ZERO(&one);
+    CPU_SET(launch.cpu, &one);
+    (void)sched_setaffinity(0, sizeof one, &one);  // not fatal: the worker runs unpinned
+  }
   // A worker dies with its driver (SIGKILL, or a lost session), instead of running on without a
   // time limit. The parent may have died before this line: then nobody would send the signal.
   prctl(PR_SET_PDEATHSIG, SIGKILL);
@@ -114,6 +121,34 @@ std::string fileTail(const std::string& path, std::size_t bytes) {
     text.erase(0, first);
   }
   return text;
+}
+
+namespace {
+
+bool setProcessors(const std::vector<int>& cpus) {
+  cpu_set_t set;
+  CPU_ZERO(&set);
+  for (int cpu : cpus)
+    CPU_SET(cpu, &set);
+  return sched_setaffinity(0, sizeof set, &set) == 0;
+}
+
+}  // namespace
+
+WorkerProcessor::WorkerProcessor() {
+  cpu_set_t allowed;
+  CPU_ZERO(&allowed);
+  if (sched_getaffinity(0, sizeof allowed, &allowed) != 0) return;
+  for (int cpu = 0; cpu < CPU_SETSIZE; ++cpu) {
+    if (CPU_ISSET(cpu, &allowed)) driver_cpus_.push_back(cpu);
+  }
+  if (driver_cpus_.size() < 2) return;
+  std::vector<int> rest(driver_cpus_.begin(), driver_cpus_.end() - 1);
+  if (setProcessors(rest)) cpu_ = driver_cpus_.back();
+}
+
+WorkerProcessor::~WorkerProcessor() {
+  if (cpu_ >= 0) (void)setProcessors(driver_cpus_);
 }
 
 WorkerOutcome runWorkerProcess(const WorkerLaunch& launch) {

@@ -2,6 +2,7 @@
 // reported, progress lines, time limits, stop requests and the log tail.
 #include <collido/study/worker_process.h>
 
+#include <sched.h>
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -145,6 +146,41 @@ TEST(RunWorkerProcess, OutputWrittenJustBeforeTheExitIsRead) {
   EXPECT_EQ(outcome.status, WorkerStatus::kOk);
   EXPECT_EQ(lines, 3000u);
   EXPECT_EQ(last, 3000u);
+}
+
+std::vector<int> allowedProcessors() {
+  cpu_set_t set;
+  CPU_ZERO(&set);
+  std::vector<int> cpus;
+  if (sched_getaffinity(0, sizeof set, &set) != 0) return cpus;
+  for (int cpu = 0; cpu < CPU_SETSIZE; ++cpu) {
+    if (CPU_ISSET(cpu, &set)) cpus.push_back(cpu);
+  }
+  return cpus;
+}
+
+// The driver keeps off the last processor while a study runs, and a worker pinned there runs
+// there alone; the driver gets its processors back afterwards.
+TEST(WorkerProcessor, ReservesTheLastProcessorForPinnedWorkers) {
+  const std::vector<int> before = allowedProcessors();
+  {
+    const WorkerProcessor reserved;
+    if (before.size() < 2) {
+      EXPECT_EQ(reserved.cpu(), -1);
+      GTEST_SKIP() << "one processor: nothing to reserve";
+    }
+    ASSERT_EQ(reserved.cpu(), before.back());
+    const std::vector<int> driver = allowedProcessors();
+    EXPECT_EQ(driver, std::vector<int>(before.begin(), before.end() - 1));
+
+    WorkerLaunch launch = shell("grep Cpus_allowed_list /proc/self/status", "worker_pinned");
+    launch.cpu = reserved.cpu();
+    std::string seen;
+    launch.on_line = [&seen](const std::string& line) { seen += line; };
+    EXPECT_EQ(runWorkerProcess(launch).status, WorkerStatus::kOk);
+    EXPECT_EQ(seen, "Cpus_allowed_list:\t" + std::to_string(reserved.cpu()));
+  }
+  EXPECT_EQ(allowedProcessors(), before);
 }
 
 TEST(RunWorkerProcess, EnvironmentIsAddedToOurs) {

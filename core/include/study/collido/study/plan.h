@@ -115,6 +115,10 @@ std::vector<Combination> planComparisons(const std::vector<PlannedScene>& files,
                                          const std::vector<std::string>& backends,
                                          const std::vector<int>& grid);
 
+/// Whether a backend setting ("name[key=value;...]") runs its queries on one thread: no
+/// `threads` option, or 0 or 1 (a text that does not parse counts as one thread).
+bool runsOnOneThread(const std::string& backend);
+
 /// The part of a plan that shard `index` of `count` runs (every count-th combination from
 /// `index`, so each shard gets a fair mix of cheap and dear ones).
 std::vector<Combination> shardOf(const std::vector<Combination>& plan, std::size_t index,

@@ -25,6 +25,28 @@ struct WorkerLaunch {
   std::function<void()> on_tick;
   /// When it becomes true the worker is killed and the outcome is "interrupted".
   const std::atomic<bool>* stop = nullptr;
+  /// The processor the worker runs on (set before it starts, inherited by what it starts); -1:
+  /// wherever the scheduler puts it.
+  int cpu = -1;
+};
+
+/// While it lives, keeps the calling thread (a driver of timed workers) off one processor, the last
+/// of those it may use, so that a worker pinned there (WorkerLaunch::cpu) shares it with nothing
+/// the study runs and is not moved between processors mid-call; restores the driver's processors
+/// when it ends. Reserves none where fewer than two are allowed.
+class WorkerProcessor {
+ public:
+  WorkerProcessor();
+  ~WorkerProcessor();
+  WorkerProcessor(const WorkerProcessor&) = delete;
+  WorkerProcessor& operator=(const WorkerProcessor&) = delete;
+
+  /// The reserved processor, or -1.
+  int cpu() const { return cpu_; }
+
+ private:
+  std::vector<int> driver_cpus_;  // the processors this process could use before
+  int cpu_ = -1;
 };
 
 /// Starts the worker in its own process group, dying with this process (PR_SET_PDEATHSIG), follows
