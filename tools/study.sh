@@ -77,14 +77,36 @@ fi
 # Finished; the commit it ran (tools/publish_results.sh names it on the published page).
 git rev-parse --short HEAD 2>/dev/null > "$out/.complete" || touch "$out/.complete"
 # The studied scenes' 3D views (collido view), each with the backends the study ran on it, linked
-# from the dashboard; one view at a time, each backend in its own process.
+# from the dashboard; one view at a time, each backend in its own process. A view shows answers,
+# not times: the previous run's page is kept when nothing it is made from changed (the program,
+# the plugins, the viewer's front-end, the scene's files as the plan digests them, and the
+# settings run on it), and remade otherwise.
 mkdir -p "$out/views"
+tools_digest=$({ sha256sum build/release/collido build/release/plugins/*.so
+                 find web/view -type f -print0 | sort -z | xargs -0 sha256sum; } | sha256sum)
 for file in "${scenes[@]}"; do
   [[ $file == scenes/stress/* ]] && continue
   name=$(basename "$file" .json)
-  if ! build/release/collido view "$file" --results "$out" --oracle-store build/release/oracle \
-      -o "$out/views/$name.html" --quiet \
-      2> "$out/views/$name.txt"; then
+  settings=$(python3 - "$out/plan.json" "$file" <<'PY'
+import json, os, sys
+plan = json.load(open(sys.argv[1], encoding="utf-8"))
+path = os.path.abspath(sys.argv[2])
+for c in plan["combinations"]:
+    if c.get("scene_path") == path:
+        print(c["backend"], c["scene_digest"], c["plugin"], c["resolution"], c["needs"])
+PY
+)
+  key=$(printf '%s\n%s\n' "$tools_digest" "$settings" | sha256sum | cut -c1-64)
+  if [[ -n $settings && -f "$previous/views/$name.html" &&
+        "$(cat "$previous/views/$name.key" 2>/dev/null)" == "$key" ]]; then
+    cp "$previous/views/$name.html" "$previous/views/$name.key" "$out/views/"
+    cp "$previous/views/$name.txt" "$out/views/" 2>/dev/null || true
+    continue
+  fi
+  if build/release/collido view "$file" --results "$out" --oracle-store build/release/oracle \
+      -o "$out/views/$name.html" --quiet 2> "$out/views/$name.txt"; then
+    echo "$key" > "$out/views/$name.key"
+  else
     echo "warning: collido view $file failed: see $out/views/$name.txt" >&2
   fi
 done
