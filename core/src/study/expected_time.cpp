@@ -64,7 +64,7 @@ Result<CombinationTimes> loadCombinationTimes(const std::string& path) {
 }
 
 double TimeEstimate::total() const {
-  return std::accumulate(seconds.begin(), seconds.end(), 0.0);
+  return std::accumulate(seconds.begin(), seconds.end(), 0.0) + extra_rounds_s;
 }
 
 TimeEstimate estimateTimes(const std::vector<const Combination*>& combinations,
@@ -108,10 +108,16 @@ std::string startLine(std::size_t planned, std::size_t to_run, const TimeEstimat
     line << "expected time unknown (no earlier timings: --expected-times)";
   } else {
     line << "expected about " << formatDuration(estimate.total());
+    std::vector<std::string> how;
     if (estimate.measured != count) {
-      line << " (" << estimate.measured << " timed before, " << estimate.from_scene
-           << " from their scene's other settings, " << estimate.unknown << " guessed)";
+      how.push_back(std::to_string(estimate.measured) + " timed before, " +
+                    std::to_string(estimate.from_scene) + " from their scene's other settings, " +
+                    std::to_string(estimate.unknown) + " guessed");
     }
+    if (estimate.extra_rounds_s > 0.0)
+      how.push_back("up to " + formatDuration(estimate.extra_rounds_s) + " of extra rounds");
+    for (std::size_t k = 0; k < how.size(); ++k)
+      line << (k == 0 ? " (" : "; ") << how[k] << (k + 1 == how.size() ? ")" : "");
   }
   line << ", results in " << out;
   return line.str();

@@ -198,7 +198,9 @@ TimeEstimate expectedTime(const StudyRequest& request, const std::vector<const C
 Result<StudyEnd> executePlan(const StudyRequest& request, const StudyPlan& plan,
                              const StudyBackends& backends, const StudyFolder& folder,
                              std::ostream& err) {
-  const TimeEstimate estimate = expectedTime(request, folder.todo, err);
+  TimeEstimate estimate = expectedTime(request, folder.todo, err);
+  // The extra rounds follow the planned ones, when some were run (not for a study of one round).
+  if (plan.order.rounds > 1 && !folder.todo.empty()) estimate.extra_rounds_s = plan.adaptive_s;
   err << startLine(plan.combinations.size(), folder.todo.size(), estimate, plan.shard, request.out)
       << "\n";
   // Ctrl-C, SIGTERM or a lost session stops the running worker; what finished stays stored.

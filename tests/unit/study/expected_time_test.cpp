@@ -51,6 +51,12 @@ TEST(ExpectedTime, EachCombinationFromItsOwnTimeElseItsSceneElseAll) {
   EXPECT_EQ(startLine(5, 3, estimate, "", "out"),
             "study: 5 combinations, 3 to run, expected about 10s (1 timed before, 1 from their "
             "scene's other settings, 1 guessed), results in out");
+  // The extra rounds' budget counts too, and is said.
+  TimeEstimate with_extra = estimate;
+  with_extra.extra_rounds_s = 20.0;
+  EXPECT_EQ(startLine(5, 3, with_extra, "", "out"),
+            "study: 5 combinations, 3 to run, expected about 30s (1 timed before, 1 from their "
+            "scene's other settings, 1 guessed; up to 20s of extra rounds), results in out");
 }
 
 TEST(ExpectedTime, WithoutEarlierTimesTheLineSaysSo) {

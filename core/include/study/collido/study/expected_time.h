@@ -29,7 +29,11 @@ struct TimeEstimate {
   std::size_t measured = 0;     ///< combinations timed before under the same label
   std::size_t from_scene = 0;   ///< estimated from the mean of the same scene's other settings
   std::size_t unknown = 0;      ///< no time of the same scene: the mean over all known times
+  /// The time the extra rounds of unstable rows may take after the planned ones (the sweep's
+  /// adaptive budget): on 2 cores they use most of it.
+  double extra_rounds_s = 0.0;
 
+  /// Every combination's time and the extra rounds'.
   double total() const;
 };
 
