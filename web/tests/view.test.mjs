@@ -141,6 +141,11 @@ test('the view draws the scene and each backend\'s answers as the result file ha
       verdicts += 1;
     }
     assert.ok(verdicts > 0, `no backend answered ${booleanQuery}`);
+    // At 1,400 pixels every answer keeps room to be read beside the longest backend name.
+    const answerWidths = await page.evaluate(() =>
+      [...document.querySelectorAll('#verdicts td.good, #verdicts td.bad')].map((td) => td.getBoundingClientRect().width));
+    assert.ok(answerWidths.length > 0, 'no answers listed');
+    assert.ok(Math.min(...answerWidths) >= 140, `answers squeezed to ${Math.min(...answerWidths)} px`);
     await page.evaluate((q) => window.collidoView.setQuery(q), queryName);
 
     // Clicking the middle of the contacts picks a triangle and lists its pairs.
