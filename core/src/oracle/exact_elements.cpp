@@ -25,19 +25,15 @@ Box boxOf(const P& p) {
 // Whether two elements share a point: CGAL's exact test for their two kinds.
 template <class K>
 bool meet(const ElementIn<K>& x, const ElementIn<K>& y) {
-  using Triangle = typename K::Triangle_3;
-  using Segment = typename K::Segment_3;
-  const auto triangle = [](const ElementIn<K>& e) { return Triangle(e.p[0], e.p[1], e.p[2]); };
-  const auto segment = [](const ElementIn<K>& e) { return Segment(e.p[0], e.p[1]); };
   if (x.kind > y.kind) return meet(y, x);  // x is the triangle, or the segment of the two
   switch (x.kind) {
     case kTriangleElement:
-      if (y.kind == kTriangleElement) return CGAL::do_intersect(triangle(x), triangle(y));
-      if (y.kind == kSegmentElement) return CGAL::do_intersect(triangle(x), segment(y));
-      return triangle(x).has_on(y.p[0]);
+      if (y.kind == kTriangleElement) return CGAL::do_intersect(triangleOf(x), triangleOf(y));
+      if (y.kind == kSegmentElement) return CGAL::do_intersect(triangleOf(x), segmentOf(y));
+      return triangleOf(x).has_on(y.p[0]);
     case kSegmentElement:
-      if (y.kind == kSegmentElement) return CGAL::do_intersect(segment(x), segment(y));
-      return segment(x).has_on(y.p[0]);
+      if (y.kind == kSegmentElement) return CGAL::do_intersect(segmentOf(x), segmentOf(y));
+      return segmentOf(x).has_on(y.p[0]);
     case kPointElement:
       break;
   }
@@ -76,12 +72,7 @@ std::vector<Point> poseVertices(const TriangleMesh& mesh, const Pose& pose) {
       points.emplace_back(x.x(), x.y(), x.z());
       continue;
     }
-    FT world[3];
-    for (int row = 0; row < 3; ++row) {
-      world[row] = FT(r(row, 0)) * FT(x.x()) + FT(r(row, 1)) * FT(x.y()) +
-                   FT(r(row, 2)) * FT(x.z()) + FT(t[row]);
-    }
-    points.emplace_back(world[0], world[1], world[2]);
+    points.push_back(posedPoint<Point>(x, pose));
   }
   return points;
 }
@@ -138,13 +129,6 @@ PosedMesh poseMesh(const TriangleMesh& mesh, const Pose& pose) {
   return out;
 }
 
-EK::Triangle_3 triangleOf(const Element& e) {
-  return {e.p[0], e.p[1], e.p[2]};
-}
-EK::Segment_3 segmentOf(const Element& e) {
-  return {e.p[0], e.p[1]};
-}
-
 bool elementsIntersect(const Element& x, const Element& y) {
   return meet(x, y);
 }
@@ -161,20 +145,9 @@ namespace {
 // The triangle pose * corners in kernel K, classified.
 template <class K>
 ElementIn<K> posedIn(const std::array<Eigen::Vector3d, 3>& corners, const Pose& pose) {
-  using N = typename K::FT;
-  const Eigen::Matrix3d& r = pose.linear();
-  const Eigen::Vector3d& t = pose.translation();
-  typename K::Point_3 posed[3];
-  for (std::size_t k = 0; k < 3; ++k) {
-    const Eigen::Vector3d& x = corners[k];
-    N world[3];
-    for (int row = 0; row < 3; ++row) {
-      world[row] =
-          N(r(row, 0)) * N(x.x()) + N(r(row, 1)) * N(x.y()) + N(r(row, 2)) * N(x.z()) + N(t[row]);
-    }
-    posed[k] = typename K::Point_3(world[0], world[1], world[2]);
-  }
-  return classifyIn<K>(posed[0], posed[1], posed[2]);
+  using P = typename K::Point_3;
+  return classifyIn<K>(posedPoint<P>(corners[0], pose), posedPoint<P>(corners[1], pose),
+                       posedPoint<P>(corners[2], pose));
 }
 
 }  // namespace

@@ -83,8 +83,28 @@ ExactElement posedExactElement(const std::array<Eigen::Vector3d, 3>& corners, co
 IntervalElement posedIntervalElement(const std::array<Eigen::Vector3d, 3>& corners,
                                      const Pose& pose);
 
-EK::Triangle_3 triangleOf(const Element& e);
-EK::Segment_3 segmentOf(const Element& e);
+/// The element as CGAL's triangle (of its three corners) or segment (of its first two).
+template <class K>
+typename K::Triangle_3 triangleOf(const ElementIn<K>& e) {
+  return {e.p[0], e.p[1], e.p[2]};
+}
+template <class K>
+typename K::Segment_3 segmentOf(const ElementIn<K>& e) {
+  return {e.p[0], e.p[1]};
+}
+/// The point pose * x with each coordinate computed in the number type N (exact for Epeck's and
+/// its exact kernel's numbers, an enclosing interval for intervals).
+template <class P>
+P posedPoint(const Eigen::Vector3d& x, const Pose& pose) {
+  using N = typename CGAL::Kernel_traits<P>::Kernel::FT;
+  const Eigen::Matrix3d& r = pose.linear();
+  const Eigen::Vector3d& t = pose.translation();
+  N world[3];
+  for (int row = 0; row < 3; ++row)
+    world[row] =
+        N(r(row, 0)) * N(x.x()) + N(r(row, 1)) * N(x.y()) + N(r(row, 2)) * N(x.z()) + N(t[row]);
+  return P(world[0], world[1], world[2]);
+}
 
 /// Whether two elements share a point, decided exactly.
 bool elementsIntersect(const Element& x, const Element& y);

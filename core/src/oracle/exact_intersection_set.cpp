@@ -35,21 +35,17 @@ void collectPoints(const Result& result, std::vector<typename K::Point_3>& point
 
 template <class K>
 std::vector<typename K::Point_3> pointsWhereMeet(const ElementIn<K>& x, const ElementIn<K>& y) {
-  using Triangle = typename K::Triangle_3;
-  using Segment = typename K::Segment_3;
-  const auto triangle = [](const ElementIn<K>& e) { return Triangle(e.p[0], e.p[1], e.p[2]); };
-  const auto segment = [](const ElementIn<K>& e) { return Segment(e.p[0], e.p[1]); };
   std::vector<typename K::Point_3> points;
   if (x.kind == kPointElement) return {x.p[0]};
   if (y.kind == kPointElement) return {y.p[0]};
   if (x.kind == kTriangleElement && y.kind == kTriangleElement) {
-    collectPoints<K>(CGAL::intersection(triangle(x), triangle(y)), points);
+    collectPoints<K>(CGAL::intersection(triangleOf(x), triangleOf(y)), points);
   } else if (x.kind == kTriangleElement) {
-    collectPoints<K>(CGAL::intersection(triangle(x), segment(y)), points);
+    collectPoints<K>(CGAL::intersection(triangleOf(x), segmentOf(y)), points);
   } else if (y.kind == kTriangleElement) {
-    collectPoints<K>(CGAL::intersection(triangle(y), segment(x)), points);
+    collectPoints<K>(CGAL::intersection(triangleOf(y), segmentOf(x)), points);
   } else {
-    collectPoints<K>(CGAL::intersection(segment(x), segment(y)), points);
+    collectPoints<K>(CGAL::intersection(segmentOf(x), segmentOf(y)), points);
   }
   return points;
 }

@@ -132,6 +132,15 @@ std::string benchmarkJsonWith(const std::vector<CombinationResult>& results,
   return document.dump(2) + "\n";
 }
 
+// One of table.txt's summary sections (outputs.h, sections.json): `heading` is the line printed
+// over it, its title with what its rows are.
+struct TableSection {
+  std::string key;
+  std::string title;
+  std::string heading;
+  std::string text;
+};
+
 // The summary sections, each found by its key (what to pick first: table.txt prints it above
 // the table of every setting, the others below it, in this order).
 std::vector<TableSection> summarySectionsWith(const std::vector<CombinationResult>& results,
@@ -238,12 +247,6 @@ std::string studyTable(const std::vector<CombinationResult>& results,
                        const std::vector<NotApplicable>& not_applicable, const FieldSides& field) {
   return studyTableWith(results,
                         summarySectionsWith(results, whatToPick(results), not_applicable, field));
-}
-
-std::vector<TableSection> summarySections(const std::vector<CombinationResult>& results,
-                                          const std::vector<NotApplicable>& not_applicable,
-                                          const FieldSides& field) {
-  return summarySectionsWith(results, whatToPick(results), not_applicable, field);
 }
 
 Status writeStudyOutputs(const std::string& directory,

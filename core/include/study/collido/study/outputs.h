@@ -29,23 +29,6 @@ std::string studyTable(const std::vector<CombinationResult>& results,
                        const std::vector<NotApplicable>& not_applicable = {},
                        const FieldSides& field = {});
 
-/// One of table.txt's summary sections, found by its key: what_to_pick, not_applicable, needs,
-/// field, contacts, deforming, tracking, robustness (a section with nothing to show is left out).
-/// `title` names it (the field's follows the study's FieldSides); `heading` is the line table.txt
-/// prints over it, the title with what its rows are.
-struct TableSection {
-  std::string key;
-  std::string title;
-  std::string heading;
-  std::string text;
-};
-
-/// table.txt's summary sections, in its order; sections.json holds the same, for tools that
-/// publish them (tools/publish_results.sh) without matching a title that a sweep can rename.
-std::vector<TableSection> summarySections(const std::vector<CombinationResult>& results,
-                                          const std::vector<NotApplicable>& not_applicable = {},
-                                          const FieldSides& field = {});
-
 /// robustness.txt: the robustness matrix of the stress scenes (study/robustness.h); empty when
 /// the study ran none.
 std::string robustnessReport(const std::vector<CombinationResult>& results);
@@ -53,6 +36,10 @@ std::string robustnessReport(const std::vector<CombinationResult>& results);
 /// Writes records.jsonl, summary.json, times.json (expected_time.h), sections.json and table.txt
 /// into `directory`, and robustness.txt when the study ran stress scenes, each atomically; the
 /// settings not applicable and the field table's sides come from the folder's plan.json.
+/// sections.json holds table.txt's summary sections (what_to_pick, not_applicable, needs, field,
+/// contacts, deforming, tracking, robustness; one with nothing to show is left out), each with
+/// its title, the heading table.txt prints over it and its text: tools that publish them
+/// (tools/publish_results.sh) find them by key, not by a title a sweep can rename.
 Status writeStudyOutputs(const std::string& directory,
                          const std::vector<CombinationResult>& results);
 
