@@ -301,9 +301,11 @@ void addViewCommands(CLI::App& app, const PluginOptions& plugins, int& exit_code
       ->delimiter(',');
   command->add_option("--results", args->results,
                       "a study folder (collido study --out): show the backends it ran here");
-  command->add_option("--oracle-store", args->oracle_store,
-                      "the folder of stored exact answers to read and add to (as collido study's "
-                      "--oracle-store; default: --results' oracle/ when it has one)");
+  command
+      ->add_option("--oracle-store", args->oracle_store,
+                   "the folder of stored exact answers to read and add to (as collido study's "
+                   "--oracle-store; default: --results' oracle/ when it has one)")
+      ->check(CLI::ExistingDirectory | CLI::NonexistentPath);
   command->add_option("--timeout", args->timeout_s,
                       "seconds a backend may take for all its answers (default 600)");
   command

@@ -1099,6 +1099,11 @@ TEST(StudyCli, BadArgumentsAreRefused) {
   EXPECT_EQ(study_file_store.exit_code, 2) << describe(study_file_store);
   EXPECT_NE(study_file_store.err.find("--oracle-store"), std::string::npos) << study_file_store.err;
   EXPECT_FALSE(fs::exists(dir + "/o"));
+  const CommandRun view_file_store =
+      collido({"view", scene, "--oracle-store", scene, "-o", dir + "/v.html"}, dir);
+  EXPECT_EQ(view_file_store.exit_code, 2) << describe(view_file_store);
+  EXPECT_NE(view_file_store.err.find("--oracle-store"), std::string::npos) << view_file_store.err;
+  EXPECT_FALSE(fs::exists(dir + "/v.html"));
 }
 
 // Plugins are loaded by child processes before the driver uses them: one that crashes or hangs
