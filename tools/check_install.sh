@@ -96,6 +96,11 @@ cat "$work/run.out"
   --backends obbtree -o "$work/view.html" > /dev/null
 grep -q "OrbitControls" "$work/view.html"
 
+# FRep solids are polygonized by OpenVDB in a module the installed tool opens on first use.
+"$prefix/bin/collido" frep "$prefix/share/collido/scenes/frep/seed_quadric.json" --repetitions 1 \
+  --backends obbtree --resolutions 12 > "$work/frep.out"
+grep -Eq "obbtree +12 .* ok" "$work/frep.out"
+
 # An application recorded with Collidoscope::record (Eigen only), then its recording studied: the
 # path a user takes from their own FCL loop to a study. Only where the build had FCL.
 if [[ -x "$build/examples/record_fcl_app/record_fcl_app" ]]; then
