@@ -18,11 +18,14 @@ void addImportCommand(CLI::App& app, int& exit_code) {
       "the clearance of its last link or the --clearance links (scenes/README.md, \"Robots from "
       "URDF\")");
   auto request = std::make_shared<UrdfImportRequest>();
+  auto environment = std::make_shared<std::vector<std::string>>();
   urdf->add_option("robot", request->urdf, "the URDF file")->required();
   urdf->add_option("--trajectory", request->trajectory,
                    "joints CSV: a header of joint names, one row of values per frame (radians, "
                    "metres); default: seeded random configurations within the limits");
-  urdf->add_option("--environment", request->environment, "mesh files fixed in the world");
+  urdf->add_option("--environment", *environment,
+                   "mesh files fixed in the world, each FILE or FILE@X,Y,Z or "
+                   "FILE@X,Y,Z,ROLL,PITCH,YAW to place it (metres, radians: URDF's xyz and rpy)");
   urdf->add_option("-o,--output", request->output, "the scene file to write")->required();
   urdf->add_option("--frames", request->frames, "random configurations (default 24)")
       ->check(CLI::Range(1, 1000000));
@@ -34,7 +37,12 @@ void addImportCommand(CLI::App& app, int& exit_code) {
   urdf->add_option("--clearance", request->clearance_links,
                    "LINK: ask its distance to each environment object (repeatable; default: the "
                    "link with the most joints above it)");
-  urdf->callback([request, &exit_code] {
+  urdf->callback([request, environment, &exit_code] {
+    if (Status s = parseEnvironmentMeshes(*environment, request->environment); !s.ok()) {
+      std::cerr << "error: " << s.message() << "\n";
+      exit_code = 2;
+      return;
+    }
     const Result<UrdfImport> imported = importUrdf(*request);
     if (!imported.ok()) {
       std::cerr << "error: " << imported.status().message() << "\n";

@@ -86,10 +86,13 @@ void addStudyCommands(CLI::App& app, const PluginOptions& plugins, int& exit_cod
       "OUT/table.txt, OUT/records.jsonl, OUT/summary.json (Google Benchmark format) and "
       "OUT/results/. Exit code: 0 done, 2 bad input, 130 interrupted (resume with --resume)");
   auto args = std::make_shared<study::StudyRequest>();
+  auto robot = std::make_shared<RobotInputOptions>();
   command->add_option("scenes", args->scenes,
-                      "scene files (JSON), or mesh files (any other extension): scenes of the "
-                      "meshes are written into OUT/scenes and run with the default sweep unless "
+                      "scene files (JSON), robots (URDF, with --trajectory and --environment), "
+                      "or mesh files (any other extension): scenes of the robots and meshes are "
+                      "written into OUT/scenes, the meshes' run with the default sweep unless "
                       "--sweep is given");
+  addRobotInputOptions(*command, *robot);
   command->add_option("--surfaces", args->surface_files,
                       "NURBS surface files, each compared as collido surface-distance does: the "
                       "seed method and every backend setting in workers of their own (the "
@@ -152,7 +155,7 @@ void addStudyCommands(CLI::App& app, const PluginOptions& plugins, int& exit_cod
   command->add_option("--expected-times", args->expected_times,
                       "an earlier study folder or its times.json: the expected time printed at "
                       "the start and the progress estimate come from its wall times");
-  command->callback([args, &plugins, &exit_code] {
+  command->callback([args, robot, &plugins, &exit_code] {
     if (thisExecutable().empty()) {
       std::cerr << "error: cannot find this program's own path (/proc/self/exe) to start the "
                    "workers\n";
@@ -160,6 +163,11 @@ void addStudyCommands(CLI::App& app, const PluginOptions& plugins, int& exit_cod
       return;
     }
     study::StudyRequest request = *args;
+    if (Status s = importRobotInputs(request.scenes, *robot, request.out, std::cerr); !s.ok()) {
+      std::cerr << "error: " << s.message() << "\n";
+      exit_code = 2;
+      return;
+    }
     request.executable = thisExecutable();
     request.worker_environment = workerEnvironment();
     request.plugin_paths = plugins.paths;

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdlib>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -44,6 +45,20 @@ void addReportCommand(CLI::App& app, int& exit_code);
 void addCompareCommand(CLI::App& app, int& exit_code);
 void addViewCommands(CLI::App& app, const PluginOptions& plugins, int& exit_code);
 void addStudyCommands(CLI::App& app, const PluginOptions& plugins, int& exit_code);
+
+/// What `collido study` imports a URDF among its scenes with (collido/urdf/urdf_import.h).
+struct RobotInputOptions {
+  std::string trajectory;                ///< joints CSV; "": seeded random configurations
+  std::vector<std::string> environment;  ///< FILE or FILE@X,Y,Z[,ROLL,PITCH,YAW]
+};
+
+/// Registers --trajectory and --environment on `command`.
+void addRobotInputOptions(CLI::App& command, RobotInputOptions& options);
+
+/// Each URDF among `scenes` imported into OUT/scenes/<its stem>.json and replaced by that scene;
+/// fails naming the file, or when the options are given without a URDF.
+Status importRobotInputs(std::vector<std::string>& scenes, const RobotInputOptions& options,
+                         const std::string& out, std::ostream& err);
 
 /// An option that takes a number >= 0. Its error names the value given (CLI11's own
 /// NonNegativeNumber prints its range up to the largest double).

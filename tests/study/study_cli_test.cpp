@@ -891,6 +891,63 @@ TEST(StudyCli, MeshFilesBecomeScenesWrittenBesideTheResults) {
   EXPECT_EQ(readText(edited).back(), ' ');
 }
 
+// A robot studied in one command: its URDF imported into OUT/scenes as collido import urdf does,
+// with its trajectory and a placed environment mesh, then run like any scene.
+TEST(StudyCli, ARobotIsStudiedFromItsUrdfInOneCommand) {
+  const std::string dir = test::makeTempDirectory("study_robot");
+  const std::string out = dir + "/study";
+  test::writeFile(dir + "/arm.urdf", R"(<robot name="two_link">
+  <link name="base"><collision><geometry><box size="0.2 0.2 0.2"/></geometry></collision></link>
+  <link name="arm"><collision><origin xyz="0.3 0 0"/><geometry><box size="0.6 0.05 0.05"/>
+    </geometry></collision></link>
+  <joint name="swing" type="continuous"><parent link="base"/><child link="arm"/>
+    <origin xyz="0 0 0.2"/><axis xyz="0 0 1"/></joint>
+</robot>
+)");
+  test::writeFile(dir + "/joints.csv", "swing\n0\n1.5707963\n3.1415926\n");
+  // A unit cube about its corner, placed so that the arm sweeps into it in the last frame.
+  test::writeFile(dir + "/post.obj",
+                  "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nv 0 0 1\nv 1 0 1\nv 0 1 1\nv 1 1 1\n"
+                  "f 1 3 4\nf 1 4 2\nf 5 6 8\nf 5 8 7\nf 1 2 6\nf 1 6 5\n"
+                  "f 3 7 8\nf 3 8 4\nf 1 5 7\nf 1 7 3\nf 2 4 8\nf 2 8 6\n");
+  const CommandRun run =
+      collido({"study", dir + "/arm.urdf", "--trajectory", dir + "/joints.csv", "--environment",
+               dir + "/post.obj@-1.5,-0.5,0", "--backends", "obbtree", "--rounds", "1",
+               "--adaptive-seconds", "0", "--repetitions", "1", "--out", out},
+              dir);
+  ASSERT_EQ(run.exit_code, 0) << describe(run);
+  const std::string scene = out + "/scenes/arm.json";
+  EXPECT_NE(run.err.find("scene of the robot: " + scene), std::string::npos) << run.err;
+  const Result<Scene> loaded = loadScene(scene);
+  ASSERT_TRUE(loaded.ok()) << loaded.status().toString();
+  EXPECT_EQ(loaded.value().frames, 3u);
+  const std::vector<CombinationResult> results = readResults(out);
+  ASSERT_EQ(results.size(), 1u);
+  EXPECT_EQ(results[0].outcome.status, WorkerStatus::kOk);
+  bool robot_vs_environment_asked = false;
+  for (const QueryMeasurement& m : results[0].measurements) {
+    EXPECT_EQ(m.disagreements, 0u) << m.query;
+    if (m.query != "robot vs environment") continue;
+    robot_vs_environment_asked = true;
+    ASSERT_EQ(m.frames.size(), 3u);
+    EXPECT_FALSE(m.frames[0].oracle_intersecting);  // the arm along +x
+    EXPECT_TRUE(m.frames[2].oracle_intersecting);   // swung to -x, into the post
+  }
+  EXPECT_TRUE(robot_vs_environment_asked);
+
+  // The robot's options without a robot, and a pose that is not one, are refused up front.
+  const CommandRun no_robot =
+      collido({"study", scene, "--environment", dir + "/post.obj", "--out", dir + "/other"}, dir);
+  EXPECT_EQ(no_robot.exit_code, 2);
+  EXPECT_NE(no_robot.err.find("--environment is for a robot"), std::string::npos) << no_robot.err;
+  const CommandRun bad_pose = collido(
+      {"study", dir + "/arm.urdf", "--environment", dir + "/post.obj@1,2", "--out", dir + "/other"},
+      dir);
+  EXPECT_EQ(bad_pose.exit_code, 2);
+  EXPECT_NE(bad_pose.err.find("got 2 numbers"), std::string::npos) << bad_pose.err;
+  EXPECT_FALSE(fs::exists(dir + "/other"));
+}
+
 // Surface and FRep files run as combinations too: the seed method and each backend setting in a
 // worker of its own (a crashing backend costs its own rows only), stored, resumable, joined per
 // file into what collido report shows.

@@ -207,13 +207,13 @@ class SceneBuilder {
   }
 
   Status addEnvironment(std::size_t frames) {
-    for (const std::string& file : request_.environment) {
-      Result<TriangleMesh> mesh = loadMesh(file);
+    for (const EnvironmentMesh& environment : request_.environment) {
+      Result<TriangleMesh> mesh = loadMesh(environment.file);
       if (!mesh.ok()) return mesh.status();
       SceneObjectPlan o;
-      o.name = uniqueName("env_" + fs::path(file).stem().string());
-      o.shape = {{"mesh", relativePath(file, folder())}};
-      o.world.assign(frames, Eigen::Isometry3d::Identity());
+      o.name = uniqueName("env_" + fs::path(environment.file).stem().string());
+      o.shape = {{"mesh", relativePath(environment.file, folder())}};
+      o.world.assign(frames, environment.pose);
       if (objects_.size() > robot_objects_) o.parent = robot_objects_;
       objects_.push_back(std::move(o));
     }
@@ -444,7 +444,7 @@ Result<UrdfImport> importUrdf(const UrdfImportRequest& request) {
                             " by collido import urdf: " + source;
   for (std::size_t e = 0; e < request.environment.size(); ++e) {
     description += e == 0 ? "; its environment: " : ", ";
-    description += fs::path(request.environment[e]).filename().string();
+    description += fs::path(request.environment[e].file).filename().string();
   }
   description += ".";
   std::error_code error;

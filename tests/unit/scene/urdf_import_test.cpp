@@ -111,7 +111,7 @@ UrdfImportRequest requestWithEnvironment(const Files& f) {
   UrdfImportRequest request;
   request.urdf = f.urdf;
   request.trajectory = f.csv;
-  request.environment = {f.dir + "/far_box.obj"};
+  request.environment = {{f.dir + "/far_box.obj"}};
   request.output = f.dir + "/scene/robot.json";
   return request;
 }
@@ -236,6 +236,68 @@ TEST(UrdfImport, ClearanceIsAskedForTheNamedLinks) {
     EXPECT_NE(refused.status().message().find("--clearance " + link + ": " + problem),
               std::string::npos)
         << refused.status().message();
+  }
+}
+
+// An environment mesh placed by --environment FILE@X,Y,Z,ROLL,PITCH,YAW sits there in every
+// frame, loaded back: URDF's rpy, about the fixed axes.
+TEST(UrdfImport, EnvironmentMeshesArePlacedWhereTheArgumentSays) {
+  const Files f = writeRobot(kRobot, "yaw\n0\n0.5\n");
+  UrdfImportRequest request = requestWithEnvironment(f);
+  const Result<EnvironmentMesh> placed =
+      parseEnvironmentMesh(f.dir + "/far_box.obj@1.5,-2,0.25,0.1,-0.2,0.3");
+  ASSERT_TRUE(placed.ok()) << placed.status().toString();
+  EXPECT_EQ(placed.value().file, f.dir + "/far_box.obj");
+  request.environment = {placed.value(), {f.dir + "/far_box.obj"}};
+  ASSERT_TRUE(importUrdf(request).ok());
+  const Result<Scene> loaded = loadScene(request.output);
+  ASSERT_TRUE(loaded.ok()) << loaded.status().toString();
+  std::map<std::string, const SceneObject*> by_name;
+  for (const SceneObject& object : loaded.value().objects)
+    by_name[object.name] = &object;
+  ASSERT_EQ(by_name.count("env_far_box"), 1u);
+  ASSERT_EQ(by_name.count("env_far_box_2"), 1u);
+  // Written out: roll about x, then pitch about y, then yaw about z, all about the fixed axes.
+  const double cr = std::cos(0.1), sr = std::sin(0.1), cp = std::cos(-0.2), sp = std::sin(-0.2),
+               cy = std::cos(0.3), sy = std::sin(0.3);
+  Eigen::Matrix3d roll, pitch, yaw;
+  roll << 1, 0, 0, 0, cr, -sr, 0, sr, cr;
+  pitch << cp, 0, sp, 0, 1, 0, -sp, 0, cp;
+  yaw << cy, -sy, 0, sy, cy, 0, 0, 0, 1;
+  for (std::size_t frame = 0; frame < 2; ++frame) {
+    const Pose& got = by_name["env_far_box"]->poseAt(frame);
+    EXPECT_LT((got.linear() - yaw * pitch * roll).cwiseAbs().maxCoeff(), 1e-12);
+    EXPECT_LT((got.translation() - Eigen::Vector3d(1.5, -2, 0.25)).cwiseAbs().maxCoeff(), 1e-12);
+    // The second stays at its file's coordinates, whatever the first's pose.
+    EXPECT_TRUE(by_name["env_far_box_2"]->poseAt(frame).isApprox(Pose::Identity(), 1e-12));
+  }
+}
+
+TEST(UrdfImport, EnvironmentArgumentsAreReadOrRefusedByName) {
+  const Result<EnvironmentMesh> moved = parseEnvironmentMesh("bench.stl@0.5,0,-0.4");
+  ASSERT_TRUE(moved.ok()) << moved.status().toString();
+  EXPECT_EQ(moved.value().file, "bench.stl");
+  EXPECT_TRUE(moved.value().pose.linear().isIdentity());
+  EXPECT_EQ(moved.value().pose.translation(), Eigen::Vector3d(0.5, 0, -0.4));
+  // An '@' followed by something other than numbers is part of the name.
+  for (const char* name : {"bench.stl", "parts@v2/bench.stl", "bench@2x.stl"}) {
+    const Result<EnvironmentMesh> plain = parseEnvironmentMesh(name);
+    ASSERT_TRUE(plain.ok()) << name;
+    EXPECT_EQ(plain.value().file, name);
+    EXPECT_TRUE(plain.value().pose.isApprox(Pose::Identity()));
+  }
+  for (const auto& [argument, problem] : std::vector<std::pair<std::string, std::string>>{
+           {"bench.stl@1,2", "got 2 numbers"},
+           {"bench.stl@1,2,3,4", "got 4 numbers"},
+           {"bench.stl@1,nan,3", "Y is not a finite number"},
+           {"bench.stl@1,2,3,0,0,inf", "YAW is not a finite number"},
+           {"bench.stl@1e999,0,0", "X is not a finite number"},
+           {"@1,2,3", "no mesh file before the '@'"}}) {
+    const Result<EnvironmentMesh> refused = parseEnvironmentMesh(argument);
+    ASSERT_FALSE(refused.ok()) << argument;
+    const std::string& message = refused.status().message();
+    EXPECT_EQ(message.rfind("--environment '" + argument + "': ", 0), 0u) << message;
+    EXPECT_NE(message.find(problem), std::string::npos) << message;
   }
 }
 

@@ -9,16 +9,34 @@
 #include <utility>
 #include <vector>
 
+#include <Eigen/Geometry>
+
 #include <collido/status.h>
 
 namespace collido {
+
+/// A mesh fixed in the world: its file, and where it sits (identity: at its file's coordinates).
+struct EnvironmentMesh {
+  std::string file;
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+};
+
+/// Reads an environment argument: FILE, FILE@X,Y,Z or FILE@X,Y,Z,ROLL,PITCH,YAW (metres and
+/// radians; roll, pitch and yaw about the fixed x, y and z axes, as URDF's `rpy`). Text after the
+/// last '@' that is not such a list is part of the file's name. Fails naming the argument for a
+/// list of another length or a number that is not finite.
+Result<EnvironmentMesh> parseEnvironmentMesh(const std::string& argument);
+
+/// Every argument read into `meshes` (replacing what it held), or the first one's failure.
+Status parseEnvironmentMeshes(const std::vector<std::string>& arguments,
+                              std::vector<EnvironmentMesh>& meshes);
 
 /// What an import is asked.
 struct UrdfImportRequest {
   std::string urdf;        ///< the robot
   std::string trajectory;  ///< joints CSV (a header of joint names, a row per frame); "": random
-  std::vector<std::string> environment;  ///< mesh files fixed in the world
-  std::string output;                    ///< the scene file written
+  std::vector<EnvironmentMesh> environment;  ///< meshes fixed in the world
+  std::string output;                        ///< the scene file written
   std::size_t frames = 24;  ///< without a trajectory: seeded random configurations in the limits
   std::uint64_t seed = 1;
   /// Link pairs never asked, and link pairs asked whatever the rules say (names as in the URDF).
