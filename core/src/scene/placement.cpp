@@ -2,21 +2,14 @@
 
 #include <nlohmann/json.hpp>
 
+#include <collido/io/scene_pose.h>
+
 #include "scene_reader.h"
 
 namespace collido {
 namespace {
 
 using Json = nlohmann::json;
-
-/// A pose as scenes/README.md writes it, with the rotation as a matrix: read back exactly.
-Json poseJson(const Pose& pose) {
-  Json rows = Json::array();
-  for (int i = 0; i < 3; ++i)
-    rows.push_back({pose.linear()(i, 0), pose.linear()(i, 1), pose.linear()(i, 2)});
-  const Eigen::Vector3d& t = pose.translation();
-  return Json{{"translation", {t.x(), t.y(), t.z()}}, {"rotation", {{"matrix", rows}}}};
-}
 
 }  // namespace
 
@@ -38,12 +31,12 @@ Result<std::string> placedSceneText(const std::string& path, const SceneLoadOpti
     if (node.contains("motion") && node["motion"].contains("poses")) {
       Json& keyframes = node["motion"]["poses"];
       for (std::size_t f = 0; f < keyframes.size(); ++f)
-        keyframes[f] = poseJson(object.poses[f]);
+        keyframes[f] = io::scenePoseJson(object.poses[f]);
     } else if (node.contains("motion") && node["motion"].contains("linear")) {
-      node["motion"]["linear"]["from"] = poseJson(object.poses.front());
-      node["motion"]["linear"]["to"] = poseJson(object.poses.back());
+      node["motion"]["linear"]["from"] = io::scenePoseJson(object.poses.front());
+      node["motion"]["linear"]["to"] = io::scenePoseJson(object.poses.back());
     } else {
-      node["pose"] = poseJson(object.poses.front());
+      node["pose"] = io::scenePoseJson(object.poses.front());
     }
   }
   Json& variables = document["constraints"]["variables"];

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include <collido/io/files.h>
+#include <collido/io/scene_pose.h>
 #include <collido/mesh/mesh_io.h>
 #include <collido/oracle/exact_oracle.h>
 
@@ -32,10 +33,6 @@ struct Part {
   std::shared_ptr<const TriangleMesh> mesh;
   BoundingSphere sphere;  // what the scene's random motion places objects by
 };
-
-Json translationPose(const Eigen::Vector3d& t) {
-  return {{"translation", {t.x(), t.y(), t.z()}}};
-}
 
 Json queriesOf(const std::vector<Part>& parts) {
   Json queries = Json::array();
@@ -76,9 +73,9 @@ Json approachMotion(const Part& fixed, const Part& moving, std::size_t index) {
     from = apart + kApproachSpan;
     to = std::max(0.0, inside - kApproachSpan);
   }
-  return {
-      {"linear",
-       {{"from", translationPose(translation(from))}, {"to", translationPose(translation(to))}}}};
+  return {{"linear",
+           {{"from", io::scenePoseJson(Pose(Eigen::Translation3d(translation(from))))},
+            {"to", io::scenePoseJson(Pose(Eigen::Translation3d(translation(to))))}}}};
 }
 
 Json sceneOf(const std::vector<Part>& parts, const std::string& name, bool approach) {

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include <collido/io/files.h>
+#include <collido/io/scene_pose.h>
 #include <collido/mesh/mesh_io.h>
 #include <collido/mesh/procedural.h>
 #include <collido/oracle/exact_oracle.h>
@@ -34,17 +35,6 @@ struct SceneObjectPlan {
   Eigen::Isometry3d reference = Eigen::Isometry3d::Identity();
   std::optional<std::size_t> parent;  // object index
 };
-
-Json poseJson(const Eigen::Isometry3d& pose) {
-  const Eigen::Matrix3d r = pose.linear();
-  const Eigen::Vector3d t = pose.translation();
-  return {{"translation", {t.x(), t.y(), t.z()}},
-          {"rotation",
-           {{"matrix",
-             {{r(0, 0), r(0, 1), r(0, 2)},
-              {r(1, 0), r(1, 1), r(1, 2)},
-              {r(2, 0), r(2, 1), r(2, 2)}}}}}};
-}
 
 std::string relativePath(const std::string& file, const fs::path& folder) {
   // Lexical, as the scene loader joins them: a symbolic link in between is kept, not resolved.
@@ -342,11 +332,11 @@ class SceneBuilder {
         return (p.matrix() - relative[0].matrix()).cwiseAbs().maxCoeff() <= 1e-14;
       });
       if (still) {
-        object["pose"] = poseJson(relative[0]);
+        object["pose"] = io::scenePoseJson(relative[0]);
       } else {
         Json poses = Json::array();
         for (const Eigen::Isometry3d& p : relative)
-          poses.push_back(poseJson(p));
+          poses.push_back(io::scenePoseJson(p));
         object["motion"] = {{"poses", std::move(poses)}};
       }
       objects.push_back(std::move(object));
