@@ -223,6 +223,36 @@ std::string webDirectory(const std::string& explicit_directory) {
 #endif
 }
 
+// The dashboard's script: the files web/report/scripts.json lists, in its order (each file one
+// part of the page, using what the files before it define), joined into one <script>.
+Result<std::string> reportScript(const std::filesystem::path& web) {
+  const std::filesystem::path manifest = web / "report" / "scripts.json";
+  Result<Json> names = io::readJsonFile(manifest.string());
+  if (!names.ok()) return names.status();
+  if (!names.value().is_array() || names.value().empty()) {
+    return Status(StatusCode::kInvalidArgument,
+                  manifest.string() + ": expected a list of the dashboard's script files");
+  }
+  std::vector<io::PagePart> parts;
+  for (const Json& entry : names.value()) {
+    const std::string name = entry.is_string() ? entry.get<std::string>() : std::string();
+    const bool plain = name.size() > 3 && name.compare(name.size() - 3, 3, ".js") == 0 &&
+                       std::filesystem::path(name).filename() == name;
+    if (!plain) {
+      return Status(StatusCode::kInvalidArgument,
+                    manifest.string() + ": " + entry.dump() +
+                        " is not the name of a .js file beside the manifest");
+    }
+    parts.push_back({"@" + name + "@", web / "report" / name});
+  }
+  std::map<std::string, std::string> texts;
+  if (Status read = io::readPageParts(web, parts, texts); !read.ok()) return read;
+  std::string script;
+  for (const io::PagePart& part : parts)
+    script += "// " + part.file.filename().string() + "\n" + texts[part.marker] + "\n";
+  return script;
+}
+
 Result<std::string> renderReport(const Json& data, const std::string& web_directory) {
   const std::filesystem::path web(web_directory);
   Result<std::string> page =
@@ -236,10 +266,12 @@ Result<std::string> renderReport(const Json& data, const std::string& web_direct
       {{"@CSS@", web / "report" / "report.css", false},
        {"@VEGA@", web / "node_modules" / "vega" / "build" / "vega.min.js"},
        {"@VEGA_LITE@", web / "node_modules" / "vega-lite" / "build" / "vega-lite.min.js"},
-       {"@VEGA_EMBED@", web / "node_modules" / "vega-embed" / "build" / "vega-embed.min.js"},
-       {"@REPORT_JS@", web / "report" / "report.js"}},
+       {"@VEGA_EMBED@", web / "node_modules" / "vega-embed" / "build" / "vega-embed.min.js"}},
       values);
   if (!read.ok()) return read;
+  Result<std::string> script = reportScript(web);
+  if (!script.ok()) return script.status();
+  values["@REPORT_JS@"] = std::move(script).value();
   return io::fillTemplate(page.value(), values);
 }
 

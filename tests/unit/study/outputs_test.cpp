@@ -301,3 +301,50 @@ TEST(ReportData, ListsWhatThePlanLeftOutWithWhy) {
 
 }  // namespace
 }  // namespace collido::study
+
+namespace collido::study {
+namespace {
+
+// The dashboard's script is the files web/report/scripts.json lists, joined in its order; a name
+// that reaches outside the folder, or a manifest that is not a list, is refused naming the file.
+TEST(ReportPage, ScriptIsTheManifestsFilesInOrderAndNothingOutside) {
+  const std::string web = test::makeTempDirectory("report_web");
+  std::filesystem::create_directories(web + "/report");
+  test::writeFile(web + "/report/template.html",
+                  "<title>@TITLE@</title><style>@CSS@</style><script>@VEGA@@VEGA_LITE@"
+                  "@VEGA_EMBED@</script><script>@REPORT_JS@</script><pre>@DATA@</pre>");
+  test::writeFile(web + "/report/report.css", "body {}");
+  for (const char* library : {"vega/build/vega.min.js", "vega-lite/build/vega-lite.min.js",
+                              "vega-embed/build/vega-embed.min.js"}) {
+    const std::filesystem::path file = std::filesystem::path(web) / "node_modules" / library;
+    std::filesystem::create_directories(file.parent_path());
+    test::writeFile(file.string(), "/* library */");
+  }
+  test::writeFile(web + "/report/first.js", "const First = 1;");
+  test::writeFile(web + "/report/second.js", "const Second = First + 1;");
+  test::writeFile(web + "/report/scripts.json", R"(["first.js", "second.js"])");
+  const Result<std::string> page = renderReport(nlohmann::json{{"title", "t"}}, web);
+  ASSERT_TRUE(page.ok()) << page.status().toString();
+  const std::size_t first = page.value().find("const First = 1;");
+  const std::size_t second = page.value().find("const Second = First + 1;");
+  ASSERT_NE(first, std::string::npos);
+  ASSERT_NE(second, std::string::npos);
+  EXPECT_LT(first, second);
+
+  for (const char* manifest : {R"(["first.js", "../report.css"])", R"(["first.js", 3])",
+                               R"({"scripts": ["first.js"]})", "[]"}) {
+    test::writeFile(web + "/report/scripts.json", manifest);
+    const Result<std::string> refused = renderReport(nlohmann::json{{"title", "t"}}, web);
+    ASSERT_FALSE(refused.ok()) << manifest;
+    EXPECT_NE(refused.status().message().find("scripts.json"), std::string::npos)
+        << refused.status().message();
+  }
+  test::writeFile(web + "/report/scripts.json", R"(["first.js", "missing.js"])");
+  const Result<std::string> missing = renderReport(nlohmann::json{{"title", "t"}}, web);
+  ASSERT_FALSE(missing.ok());
+  EXPECT_NE(missing.status().message().find("missing.js"), std::string::npos)
+      << missing.status().message();
+}
+
+}  // namespace
+}  // namespace collido::study
