@@ -76,9 +76,8 @@ int runWorkerMode(const std::string& request_path, const std::string& out_path, 
   return 1;
 }
 
-}  // namespace
-
-void addStudyCommands(CLI::App& app, const PluginOptions& plugins, int& exit_code) {
+// `collido study`: its options and its run.
+void addStudyCommand(CLI::App& app, const PluginOptions& plugins, int& exit_code) {
   CLI::App* command = app.add_subcommand(
       "study",
       "Run every combination of scenes x backend settings x sweep in worker processes, each "
@@ -175,7 +174,10 @@ void addStudyCommands(CLI::App& app, const PluginOptions& plugins, int& exit_cod
     request.interactive = isatty(STDERR_FILENO) != 0;
     exit_code = study::runStudy(request, std::cout, std::cerr);
   });
+}
 
+// Internal: one plugin loaded in a process of its own, its variants reported (the study's probe).
+void addPluginInfoCommand(CLI::App& app, int& exit_code) {
   CLI::App* info = app.add_subcommand("plugin-info", "");  // internal: one plugin, probed
   info->group("");
   auto info_file = std::make_shared<std::string>();
@@ -196,7 +198,10 @@ void addStudyCommands(CLI::App& app, const PluginOptions& plugins, int& exit_cod
     if (!written.ok()) std::cerr << "error: " << written.message() << "\n";
     exit_code = written.ok() ? 0 : 2;
   });
+}
 
+// Internal: one combination, run in a worker process the study started.
+void addWorkerCommand(CLI::App& app, const PluginOptions& plugins, int& exit_code) {
   CLI::App* worker = app.add_subcommand("worker", "");  // internal: one combination
   worker->group("");
   auto request = std::make_shared<std::string>();
@@ -210,7 +215,10 @@ void addStudyCommands(CLI::App& app, const PluginOptions& plugins, int& exit_cod
   worker->callback([request, out, repetitions, oracle_directory, &plugins, &exit_code] {
     exit_code = runWorkerMode(*request, *out, *repetitions, *oracle_directory, plugins);
   });
+}
 
+// `collido merge`: the folders of a sharded study joined into one.
+void addMergeCommand(CLI::App& app, int& exit_code) {
   CLI::App* merge = app.add_subcommand(
       "merge",
       "Join the folders of a sharded study (collido study --shard I/N) into one, with its "
@@ -225,6 +233,15 @@ void addStudyCommands(CLI::App& app, const PluginOptions& plugins, int& exit_cod
   merge->callback([merge_out, inputs, replace, &exit_code] {
     exit_code = study::mergeStudies(*merge_out, *inputs, *replace, std::cout, std::cerr);
   });
+}
+
+}  // namespace
+
+void addStudyCommands(CLI::App& app, const PluginOptions& plugins, int& exit_code) {
+  addStudyCommand(app, plugins, exit_code);
+  addPluginInfoCommand(app, exit_code);
+  addWorkerCommand(app, plugins, exit_code);
+  addMergeCommand(app, exit_code);
 }
 
 }  // namespace collido::cli

@@ -136,76 +136,48 @@ view::ViewBackend answersOf(const ViewArguments& args, const PluginOptions& plug
   return result;
 }
 
-int view(const ViewArguments& args, const PluginOptions& plugins) {
+// The exact answers (and solved placements) from the study's store when it has them: the study
+// computed them for the same scene. Else they are computed in the work folder once, shared with
+// the backends' processes.
+std::string oracleDirectoryOf(const ViewArguments& args, const std::filesystem::path& work) {
   std::error_code ec;
-  const std::filesystem::path work =
-      std::filesystem::path(args.out).parent_path() /
-      (std::filesystem::path(args.out).filename().string() + ".work");
-  // The work folder (the children's answers, an oracle store of its own) goes with any return.
-  struct RemoveOnReturn {
-    std::filesystem::path folder;
-    ~RemoveOnReturn() {
-      std::error_code ignored;
-      std::filesystem::remove_all(folder, ignored);
-    }
-  } const remove_work{work};
-  // The exact answers (and solved placements) from the study's store when it has them: the study
-  // computed them for the same scene. Else they are computed here once, shared with the children.
-  std::string oracle_directory = (work / "oracle").string();
-  if (!args.oracle_store.empty()) {
-    oracle_directory = std::filesystem::absolute(args.oracle_store).string();
-  } else if (!args.results.empty() &&
-             std::filesystem::is_directory(std::filesystem::path(args.results) / "oracle", ec)) {
-    oracle_directory = (std::filesystem::path(args.results) / "oracle").string();
-  }
-  const Result<Scene> scene = loadReporting(args.scene, args.resolution, oracle_directory);
-  if (!scene.ok()) return 2;
+  if (!args.oracle_store.empty()) return std::filesystem::absolute(args.oracle_store).string();
+  if (!args.results.empty() &&
+      std::filesystem::is_directory(std::filesystem::path(args.results) / "oracle", ec))
+    return (std::filesystem::path(args.results) / "oracle").string();
+  return (work / "oracle").string();
+}
+
+// The backends to show: those asked, else those the study ran on the scene, else every variant
+// found. A misspelt backend is bad input, said before any work (an engine failing is not).
+Result<std::vector<std::string>> backendsToShow(const ViewArguments& args,
+                                                const PluginOptions& plugins, const Scene& scene) {
   std::vector<std::string> backends = args.backends;
   if (backends.empty() && !args.results.empty()) {
-    Result<std::vector<std::string>> ran =
-        studyBackends(args.results, scene.value().name, args.resolution);
-    if (!ran.ok()) {
-      std::cerr << "error: " << ran.status().message() << "\n";
-      return 2;
-    }
+    Result<std::vector<std::string>> ran = studyBackends(args.results, scene.name, args.resolution);
+    if (!ran.ok()) return ran.status();
     backends = std::move(ran).value();
   }
   if (backends.empty()) backends = everyVariant(plugins);
   if (backends.empty()) {
-    std::cerr << "error: no backends to show (build the plugins, pass --plugin or --backends)\n";
-    return 2;
+    return Status(StatusCode::kInvalidArgument,
+                  "no backends to show (build the plugins, pass --plugin or --backends)");
   }
-  // A misspelt backend is bad input, said before any work; an engine failing is not.
   const PluginDiscovery found = discoverPlugins(plugins.paths, !plugins.no_defaults);
   if (Result<std::vector<BackendSpec>> specs = resolveBackends(backends, found.plugins);
-      !specs.ok()) {
-    std::cerr << "error: " << specs.status().message() << "\n";
-    return 2;
-  }
-  if (Status s = view::checkViewFrontEnd(study::webDirectory(args.web)); !s.ok()) {
-    std::cerr << "error: " << s.message() << "\n";
-    return 2;
-  }
-  if (thisExecutable().empty()) {
-    std::cerr << "error: cannot find this program's own path (/proc/self/exe) to start the "
-                 "backends' processes\n";
-    return 2;
-  }
-  std::filesystem::create_directories(work / "oracle", ec);
-  if (ec) {
-    std::cerr << "error: " << work.string() << ": " << ec.message() << "\n";
-    return 2;
-  }
-  // The exact answers once, before any backend.
-  {
-    OracleCache oracle(scene.value());
-    const study::StoredOracle stored(oracle_directory, oracle);
-    precomputeOracleAnswers(oracle);
-    stored.keepNew();
-  }
-  // Ctrl-C, SIGTERM or a lost session stops the running backends' processes, not only this one.
-  const study::StopOnSignals stop;
-  // Views time nothing, so backends answer side by side, each in its own process.
+      !specs.ok())
+    return specs.status();
+  return backends;
+}
+
+// Every backend's answers, side by side (views time nothing), each in its own process: --jobs at
+// a time, by default one per processor.
+std::vector<view::ViewBackend> answersSideBySide(const ViewArguments& args,
+                                                 const PluginOptions& plugins,
+                                                 const std::vector<std::string>& backends,
+                                                 const std::string& work,
+                                                 const std::string& oracle_directory,
+                                                 const study::StopOnSignals& stop) {
   const unsigned processors = std::max(1U, std::thread::hardware_concurrency());
   const std::size_t jobs =
       std::min<std::size_t>(backends.size(), args.jobs == 0 ? processors : args.jobs);
@@ -218,8 +190,8 @@ int view(const ViewArguments& args, const PluginOptions& plugins) {
         const std::lock_guard<std::mutex> lock(output);
         std::cerr << "view: " << backends[i] << "\n";
       }
-      answers[i] = answersOf(args, plugins, backends[i], work.string(), oracle_directory, i,
-                             stop.requested());
+      answers[i] =
+          answersOf(args, plugins, backends[i], work, oracle_directory, i, stop.requested());
       if (!answers[i].problem.empty() && !stop.requested().load()) {
         const std::lock_guard<std::mutex> lock(output);
         std::cerr << "warning: " << backends[i] << ": " << answers[i].problem << "\n";
@@ -232,18 +204,61 @@ int view(const ViewArguments& args, const PluginOptions& plugins) {
   answerNext();
   for (std::thread& t : threads)
     t.join();
+  return answers;
+}
+
+int view(const ViewArguments& args, const PluginOptions& plugins) {
+  const std::filesystem::path work =
+      std::filesystem::path(args.out).parent_path() /
+      (std::filesystem::path(args.out).filename().string() + ".work");
+  // The work folder (the children's answers, an oracle store of its own) goes with any return.
+  struct RemoveOnReturn {
+    std::filesystem::path folder;
+    ~RemoveOnReturn() {
+      std::error_code ignored;
+      std::filesystem::remove_all(folder, ignored);
+    }
+  } const remove_work{work};
+  const std::string oracle_directory = oracleDirectoryOf(args, work);
+  const Result<Scene> scene = loadReporting(args.scene, args.resolution, oracle_directory);
+  if (!scene.ok()) return 2;
+  const Result<std::vector<std::string>> backends = backendsToShow(args, plugins, scene.value());
+  Status ready =
+      backends.ok() ? view::checkViewFrontEnd(study::webDirectory(args.web)) : backends.status();
+  if (ready.ok() && thisExecutable().empty()) {
+    ready = Status(StatusCode::kInvalidArgument,
+                   "cannot find this program's own path (/proc/self/exe) to start the backends' "
+                   "processes");
+  }
+  if (ready.ok()) {
+    std::error_code ec;
+    std::filesystem::create_directories(work / "oracle", ec);
+    if (ec) ready = Status(StatusCode::kInvalidArgument, work.string() + ": " + ec.message());
+  }
+  if (!ready.ok()) {
+    std::cerr << "error: " << ready.message() << "\n";
+    return 2;
+  }
+  // The exact answers once, before any backend.
+  {
+    OracleCache oracle(scene.value());
+    const study::StoredOracle stored(oracle_directory, oracle);
+    precomputeOracleAnswers(oracle);
+    stored.keepNew();
+  }
+  // Ctrl-C, SIGTERM or a lost session stops the running backends' processes, not only this one.
+  const study::StopOnSignals stop;
+  const std::vector<view::ViewBackend> answers =
+      answersSideBySide(args, plugins, backends.value(), work.string(), oracle_directory, stop);
   if (stop.requested().load()) {
     std::cerr << "view interrupted (signal " << stop.signal() << "): nothing written\n";
     return 130;
   }
   Result<std::string> page =
       view::renderViewPage(scene.value(), answers, study::webDirectory(args.web));
-  if (!page.ok()) {
-    std::cerr << "error: " << page.status().message() << "\n";
-    return 2;
-  }
-  if (Status s = io::writeFileAtomically(args.out, page.value()); !s.ok()) {
-    std::cerr << "error: " << s.message() << "\n";
+  Status written = page.ok() ? io::writeFileAtomically(args.out, page.value()) : page.status();
+  if (!written.ok()) {
+    std::cerr << "error: " << written.message() << "\n";
     return 2;
   }
   if (!args.quiet) std::cerr << "view: wrote " << args.out << "\n";
