@@ -16,7 +16,7 @@ const ReportMemory = (() => {
         bytes: bytes, rss_mib: r.backend_rss_mib, heap_peak: r.heap_peak_bytes_per_triangle },
       family(r.backend), queries);
       rows.push(bar('backend figure', r.bytes_per_triangle));
-      if (r.heap_bytes_per_triangle !== null) rows.push(bar('heap kept (hooks)', r.heap_bytes_per_triangle));
+      if (typeof r.heap_bytes_per_triangle === 'number') rows.push(bar('heap kept (hooks)', r.heap_bytes_per_triangle));
     }
     return rows;
   }

@@ -15,7 +15,10 @@ const ReportRobustness = (() => {
     return {
       backend: c.backend, category: c.category, cases: c.cases, status: a.status,
       rate: measured ? a.wrong_rate : null,
-      text: measured ? (a.wrong === 0 ? '0' : pct(a.wrong_rate)) : a.status,
+      // 'none': the category asks no such question (distance cases ask no boolean, and the
+      // reverse), neither answered nor failed.
+      text: measured ? (a.wrong === 0 ? '0' : pct(a.wrong_rate)) :
+        a.status === 'none' ? 'not asked' : a.status,
       wrong: a.wrong, answered: a.answered, false_negatives: a.false_negatives,
       false_positives: a.false_positives, unsupported: a.unsupported, failed: a.failed,
       invalid_pairs: a.invalid_pairs,
@@ -63,7 +66,8 @@ const ReportRobustness = (() => {
             scale: { type: 'sqrt', domain: [0, 1], scheme: 'orangered' } } } },
         { transform: [{ filter: 'datum.rate === null' }], mark: { type: 'rect', stroke: '#fff' },
           encoding: { color: {
-            condition: { test: "datum.status === 'unsupported'", value: '#d4d4d4' },
+            condition: [{ test: "datum.status === 'unsupported'", value: '#d4d4d4' },
+              { test: "datum.status === 'none'", value: '#f4f4f4' }],
             value: '#a5806a' } } },
         { mark: { type: 'text', fontSize: 9 },
           encoding: { text: { field: 'text' },
@@ -94,7 +98,8 @@ const ReportRobustness = (() => {
       'share of cases whose answer differs from the exact oracle\'s, for the boolean question ' +
       'and for the set of intersecting triangle pairs. Green is none wrong; grey is a question the ' +
       'backend does not answer (unsupported), brown one it failed to answer (errors, crashed ' +
-      'workers): neither is ever shown as zero errors. The tooltip has the counts: false ' +
+      'workers): neither is ever shown as zero errors; a pale cell is a question the category ' +
+      'does not ask. The tooltip has the counts: false ' +
       'negatives and positives, missed and extra triangle pairs.');
     const cells = model.data.robustness || [];
     if (cells.length === 0) {

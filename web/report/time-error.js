@@ -131,7 +131,7 @@ const ReportTimeError = (() => {
     figure(p.contacts_per_frame, 3), figure(p.contact_position_error, 3),
     figure(p.contact_surface_error, 3), figure(p.contact_normal_error_deg, 3),
     figure(p.contact_depth_error, 3),
-    p.contact_coverage === null ? '-' : (100 * p.contact_coverage).toFixed(1) + '%',
+    typeof p.contact_coverage !== 'number' ? '-' : (100 * p.contact_coverage).toFixed(1) + '%',
     String(p.contact_false_pairs)];
 
   function contactError(model) {
