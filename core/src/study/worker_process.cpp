@@ -17,6 +17,8 @@
 #include <chrono>
 #include <cstring>
 #include <fstream>
+#include <optional>
+#include <string>
 
 namespace collido::study {
 namespace {
@@ -151,23 +153,40 @@ WorkerProcessor::~WorkerProcessor() {
   if (cpu_ >= 0) (void)setProcessors(driver_cpus_);
 }
 
-WorkerOutcome runWorkerProcess(const WorkerLaunch& launch) {
-  WorkerOutcome outcome;
+namespace {
+
+// A worker started: its process, the read end of its progress pipe, and a descriptor readable
+// once it has exited (-1 where the kernel has no pidfd_open).
+struct StartedWorker {
+  pid_t pid = -1;
+  int reader = -1;
+  int exited = -1;
+};
+
+// How a worker ended: its wait status and resources, and whether it was killed for its time or
+// for a stop request.
+struct WorkerEnd {
+  int wait_status = 0;
+  struct rusage usage {};
+  bool timed_out = false;
+  bool interrupted = false;
+};
+
+// Forks and executes the worker in a process group of its own; empty with the reason in
+// `problem` when no process could be started.
+std::optional<StartedWorker> startWorker(const WorkerLaunch& launch, std::string& problem) {
   int pipe_fds[2];
   if (pipe2(pipe_fds, O_CLOEXEC) != 0) {
-    outcome.status = WorkerStatus::kFailed;
-    outcome.log_tail = std::string("cannot create a pipe: ") + std::strerror(errno);
-    return outcome;
+    problem = std::string("cannot create a pipe: ") + std::strerror(errno);
+    return std::nullopt;
   }
-  const Clock::time_point start = Clock::now();
   const pid_t parent = getpid();
   const pid_t pid = fork();
   if (pid < 0) {
     close(pipe_fds[0]);
     close(pipe_fds[1]);
-    outcome.status = WorkerStatus::kFailed;
-    outcome.log_tail = std::string("cannot fork: ") + std::strerror(errno);
-    return outcome;
+    problem = std::string("cannot fork: ") + std::strerror(errno);
+    return std::nullopt;
   }
   if (pid == 0) {
     close(pipe_fds[0]);
@@ -176,29 +195,32 @@ WorkerOutcome runWorkerProcess(const WorkerLaunch& launch) {
   }
   setpgid(pid, pid);  // also here: whichever of parent and child runs first
   close(pipe_fds[1]);
-  const int reader = pipe_fds[0];
-  fcntl(reader, F_SETFL, fcntl(reader, F_GETFL) | O_NONBLOCK);
+  StartedWorker worker;
+  worker.pid = pid;
+  worker.reader = pipe_fds[0];
+  fcntl(worker.reader, F_SETFL, fcntl(worker.reader, F_GETFL) | O_NONBLOCK);
   // Readable when the worker has exited. A worker closes its output a moment before it exits;
   // waiting for that exit on a fixed 50 ms sleep cost about that much a worker (a one-scene study
   // of 31 workers, run one after another: 12.4 s, now 10.7 s).
 #ifdef SYS_pidfd_open
-  const int exited = static_cast<int>(syscall(SYS_pidfd_open, pid, 0));
-#else
-  const int exited = -1;
+  worker.exited = static_cast<int>(syscall(SYS_pidfd_open, pid, 0));
 #endif
+  return worker;
+}
 
+// Reads the worker's progress until it exits, killing its group at the time limit or on a stop
+// request; closes the worker's descriptors.
+WorkerEnd superviseWorker(const WorkerLaunch& launch, const StartedWorker& worker,
+                          Clock::time_point start) {
+  WorkerEnd end;
   std::string buffer;
   bool reader_open = true;
-  bool timed_out = false;
-  bool interrupted = false;
-  int wait_status = 0;
-  struct rusage usage {};
   for (;;) {
     if (reader_open) {
-      pollfd descriptor{reader, POLLIN, 0};
+      pollfd descriptor{worker.reader, POLLIN, 0};
       if (poll(&descriptor, 1, 200) > 0) {
         char chunk[4096];
-        const ssize_t got = read(reader, chunk, sizeof chunk);
+        const ssize_t got = read(worker.reader, chunk, sizeof chunk);
         if (got > 0) {
           buffer.append(chunk, static_cast<std::size_t>(got));
           consumeProgress(buffer, launch);
@@ -206,42 +228,57 @@ WorkerOutcome runWorkerProcess(const WorkerLaunch& launch) {
           reader_open = false;
         }
       }
-    } else if (exited >= 0) {
-      pollfd descriptor{exited, POLLIN, 0};
+    } else if (worker.exited >= 0) {
+      pollfd descriptor{worker.exited, POLLIN, 0};
       poll(&descriptor, 1, 200);
     } else {
       usleep(10 * 1000);  // a kernel without pidfd_open (before Linux 5.3)
     }
-    const pid_t done = wait4(pid, &wait_status, WNOHANG, &usage);
-    if (done == pid) {
+    const pid_t done = wait4(worker.pid, &end.wait_status, WNOHANG, &end.usage);
+    if (done == worker.pid) {
       // What the worker wrote before it exited may still be in the pipe (a read takes a chunk
       // per turn of this loop): read it all before the exit is taken.
-      if (reader_open) drainPipe(reader, buffer, launch);
+      if (reader_open) drainPipe(worker.reader, buffer, launch);
       break;
     }
     const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
     const bool stop_asked = launch.stop != nullptr && launch.stop->load();
-    if (!timed_out && !interrupted &&
+    if (!end.timed_out && !end.interrupted &&
         ((launch.timeout_s > 0.0 && elapsed > launch.timeout_s) || stop_asked)) {
-      (stop_asked ? interrupted : timed_out) = true;
-      kill(-pid, SIGKILL);
-      kill(pid, SIGKILL);
+      (stop_asked ? end.interrupted : end.timed_out) = true;
+      kill(-worker.pid, SIGKILL);
+      kill(worker.pid, SIGKILL);
     }
     if (launch.on_tick) launch.on_tick();
   }
-  close(reader);
-  if (exited >= 0) close(exited);
+  close(worker.reader);
+  if (worker.exited >= 0) close(worker.exited);
+  return end;
+}
 
+}  // namespace
+
+WorkerOutcome runWorkerProcess(const WorkerLaunch& launch) {
+  WorkerOutcome outcome;
+  const Clock::time_point start = Clock::now();
+  std::string problem;
+  const std::optional<StartedWorker> worker = startWorker(launch, problem);
+  if (!worker) {
+    outcome.status = WorkerStatus::kFailed;
+    outcome.log_tail = problem;
+    return outcome;
+  }
+  const WorkerEnd end = superviseWorker(launch, *worker, start);
   outcome.wall_s = std::chrono::duration<double>(Clock::now() - start).count();
-  outcome.peak_rss_bytes = static_cast<std::size_t>(usage.ru_maxrss) * 1024;  // Linux: KiB
-  if (WIFEXITED(wait_status)) outcome.exit_code = WEXITSTATUS(wait_status);
-  if (WIFSIGNALED(wait_status)) {
-    outcome.signal = WTERMSIG(wait_status);
+  outcome.peak_rss_bytes = static_cast<std::size_t>(end.usage.ru_maxrss) * 1024;  // Linux: KiB
+  if (WIFEXITED(end.wait_status)) outcome.exit_code = WEXITSTATUS(end.wait_status);
+  if (WIFSIGNALED(end.wait_status)) {
+    outcome.signal = WTERMSIG(end.wait_status);
     outcome.signal_name = signalName(outcome.signal);
   }
-  if (interrupted) {
+  if (end.interrupted) {
     outcome.status = WorkerStatus::kInterrupted;
-  } else if (timed_out) {
+  } else if (end.timed_out) {
     outcome.status = WorkerStatus::kTimeout;
   } else if (outcome.signal != 0) {
     outcome.status = WorkerStatus::kCrashed;
