@@ -24,8 +24,9 @@ for argument in "$@"; do
 done
 tools/install_deps.sh
 tools/web_deps.sh
-# The conformance kit too: `collido conformance PLUGIN.so` runs it on a plugin of your own.
-tools/configure.sh release --target collido collido_plugins collido_conformance
+# What the study runs, and no more: the conformance kit (`collido conformance PLUGIN.so`) is built
+# by the test command, or by `cmake --build build/release --target collido_conformance`.
+tools/configure.sh release --target collido collido_plugins
 if $full; then
   out=build/release/study_full
   scenes=(scenes/*.json scenes/stress/*.json)
@@ -77,15 +78,16 @@ fi
 # Finished; the commit it ran (tools/publish_results.sh names it on the published page).
 git rev-parse --short HEAD 2>/dev/null > "$out/.complete" || touch "$out/.complete"
 # The studied scenes' 3D views (collido view), each with the backends the study ran on it, linked
-# from the dashboard; one view at a time, each backend in its own process. A view shows answers,
+# from the dashboard; two views at a time, each backend in its own process. A view shows answers,
 # not times: the previous run's page is kept when nothing it is made from changed (the program,
 # the plugins, the viewer's front-end, the scene's files as the plan digests them, and the
 # settings run on it), and remade otherwise.
 mkdir -p "$out/views"
 tools_digest=$({ sha256sum build/release/collido build/release/plugins/*.so
                  find web/view -type f -print0 | sort -z | xargs -0 sha256sum; } | sha256sum)
-for file in "${scenes[@]}"; do
-  [[ $file == scenes/stress/* ]] && continue
+# One view's page, kept from the previous run or made anew.
+view_of() {
+  local file=$1 name settings key
   name=$(basename "$file" .json)
   settings=$(python3 - "$out/plan.json" "$file" <<'PY'
 import json, os, sys
@@ -101,7 +103,7 @@ PY
         "$(cat "$previous/views/$name.key" 2>/dev/null)" == "$key" ]]; then
     cp "$previous/views/$name.html" "$previous/views/$name.key" "$out/views/"
     cp "$previous/views/$name.txt" "$out/views/" 2>/dev/null || true
-    continue
+    return
   fi
   if build/release/collido view "$file" --results "$out" --oracle-store build/release/oracle \
       -o "$out/views/$name.html" --quiet 2> "$out/views/$name.txt"; then
@@ -109,7 +111,15 @@ PY
   else
     echo "warning: collido view $file failed: see $out/views/$name.txt" >&2
   fi
+}
+# Two views at a time: a view times nothing, and one alone left a processor idle while it loaded
+# its scene and wrote its page.
+for file in "${scenes[@]}"; do
+  [[ $file == scenes/stress/* ]] && continue
+  while (( $(jobs -rp | wc -l) >= 2 )); do wait -n || true; done
+  view_of "$file" &
 done
+wait
 baseline=()
 if [[ -f "$previous/.complete" ]]; then
   baseline=(--baseline "$previous")
