@@ -78,7 +78,7 @@ fi
 # Finished; the commit it ran (tools/publish_results.sh names it on the published page).
 git rev-parse --short HEAD 2>/dev/null > "$out/.complete" || touch "$out/.complete"
 # The studied scenes' 3D views (collido view), each with the backends the study ran on it, linked
-# from the dashboard; two views at a time, each backend in its own process. A view shows answers,
+# from the dashboard; one view at a time, each backend in its own process. A view shows answers,
 # not times: the previous run's page is kept when nothing it is made from changed (the program,
 # the plugins, the viewer's front-end, the scene's files as the plan digests them, and the
 # settings run on it), and remade otherwise.
@@ -112,14 +112,10 @@ PY
     echo "warning: collido view $file failed: see $out/views/$name.txt" >&2
   fi
 }
-# Two views at a time: a view times nothing, and one alone left a processor idle while it loaded
-# its scene and wrote its page.
 for file in "${scenes[@]}"; do
   [[ $file == scenes/stress/* ]] && continue
-  while (( $(jobs -rp | wc -l) >= 2 )); do wait -n || true; done
-  view_of "$file" &
+  view_of "$file"
 done
-wait
 baseline=()
 if [[ -f "$previous/.complete" ]]; then
   baseline=(--baseline "$previous")
