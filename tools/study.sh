@@ -85,9 +85,8 @@ git rev-parse --short HEAD 2>/dev/null > "$out/.complete" || touch "$out/.comple
 mkdir -p "$out/views"
 tools_digest=$({ sha256sum build/release/collido build/release/plugins/*.so
                  find web/view -type f -print0 | sort -z | xargs -0 sha256sum; } | sha256sum)
-# One view's page, kept from the previous run or made anew.
-view_of() {
-  local file=$1 name settings key
+for file in "${scenes[@]}"; do
+  [[ $file == scenes/stress/* ]] && continue
   name=$(basename "$file" .json)
   settings=$(python3 - "$out/plan.json" "$file" <<'PY'
 import json, os, sys
@@ -103,7 +102,7 @@ PY
         "$(cat "$previous/views/$name.key" 2>/dev/null)" == "$key" ]]; then
     cp "$previous/views/$name.html" "$previous/views/$name.key" "$out/views/"
     cp "$previous/views/$name.txt" "$out/views/" 2>/dev/null || true
-    return
+    continue
   fi
   if build/release/collido view "$file" --results "$out" --oracle-store build/release/oracle \
       -o "$out/views/$name.html" --quiet 2> "$out/views/$name.txt"; then
@@ -111,10 +110,6 @@ PY
   else
     echo "warning: collido view $file failed: see $out/views/$name.txt" >&2
   fi
-}
-for file in "${scenes[@]}"; do
-  [[ $file == scenes/stress/* ]] && continue
-  view_of "$file"
 done
 baseline=()
 if [[ -f "$previous/.complete" ]]; then
