@@ -324,8 +324,9 @@ class BulletBackend final : public Backend {
       case QueryKind::kContacts:
         collectContacts(pose_a, request.max_contacts, result);
         break;
-      case QueryKind::kDistance:  // not offered: GImpact has no mesh-mesh distance
-        break;
+      default:  // not offered (GImpact has no mesh-mesh distance): the host refuses it first
+        return {StatusCode::kUnsupported,
+                std::string("bullet: does not answer ") + queryKindName(request.kind) + " queries"};
     }
     return {};
   }

@@ -307,10 +307,11 @@ class OdeBackend final : public Backend {
         return allPairsQuery(model_a, model_b, request.max_pairs, result);
       case QueryKind::kContacts:
         return contactsQuery(model_a, model_b, pose_a, request.max_contacts, result);
-      case QueryKind::kDistance:  // not offered: ODE has no trimesh-trimesh distance
+      default:  // not offered (ODE has no trimesh-trimesh distance): the host refuses it first
         break;
     }
-    return {StatusCode::kInternal, "ode: unknown query kind"};
+    return {StatusCode::kUnsupported,
+            std::string("ode: does not answer ") + queryKindName(request.kind) + " queries"};
   }
 
  private:

@@ -460,12 +460,12 @@ TEST(SceneBadInput, QueryOfAnObjectWithItself) {
 }
 
 // "bad.json: /queries/0/kind: unknown query kind 'penetration' (known: boolean, all_pairs,
-//  contacts, distance)"
+//  contacts or distance)"
 TEST(SceneBadInput, UnknownQueryKind) {
   Json scene = validScene();
   scene["queries"][0]["kind"] = "penetration";
   EXPECT_TRUE(rejected(parse(scene), {"/queries/0/kind:", "unknown query kind 'penetration'",
-                                      "boolean, all_pairs, contacts, distance"}));
+                                      "boolean, all_pairs, contacts or distance"}));
 }
 
 // "bad.json: /queries/0/max_pairs: expected an integer in [0, 9223372036854775807], got -1"

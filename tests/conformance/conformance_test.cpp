@@ -150,8 +150,8 @@ TEST_P(Interface, UnsupportedRequestsAnswerUnsupported) {
   ASSERT_TRUE(backend);
   const QueryKindSet supported = backend->capabilities().queries;
   std::vector<QueryKind> missing;
-  for (QueryKind kind : kAllQueryKinds) {
-    if (!supported.contains(kind)) missing.push_back(kind);
+  for (const QueryKindInfo& kind : kQueryKinds) {
+    if (!supported.contains(kind.kind)) missing.push_back(kind.kind);
   }
   if (missing.empty()) COLLIDO_KIT_SKIP(target().variant + " answers every query kind");
   for (QueryKind kind : missing) {
@@ -181,8 +181,10 @@ TEST_P(Interface, BadHandlesAreErrors) {
   ASSERT_TRUE(a.ok() && b.ok());
   ASSERT_TRUE(backend->release(b.value()).ok());
   QueryRequest request;
-  request.kind = *std::find_if(std::begin(kAllQueryKinds), std::end(kAllQueryKinds),
-                               [&](QueryKind k) { return supported.contains(k); });
+  request.kind =
+      std::find_if(std::begin(kQueryKinds), std::end(kQueryKinds), [&](const QueryKindInfo& k) {
+        return supported.contains(k.kind);
+      })->kind;
   QueryResult result;
   for (ModelHandle bad : {b.value(), ModelHandle{0}, a.value() + 12345}) {
     const Status s = backend->query(a.value(), Pose::Identity(), bad, moved(0.5), request, result);

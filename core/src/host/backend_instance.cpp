@@ -183,7 +183,7 @@ Status BackendInstance::query(ModelHandle a, const Pose& pose_a, ModelHandle b, 
       d.triangle_b = c.triangle_b;
     }
   }
-  if (request.kind == QueryKind::kDistance) {
+  if (queryKindInfo(request.kind).has(AnswerPart::kDistance)) {
     const CollidoDistance& d = out.distance;
     result.distance.distance = d.distance;
     result.distance.point_a = Eigen::Vector3d(d.point_a[0], d.point_a[1], d.point_a[2]);

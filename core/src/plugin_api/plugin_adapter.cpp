@@ -108,8 +108,9 @@ std::string handleText(CollidoModelHandle handle) {
 }
 
 bool isSingleQueryKind(std::uint32_t kind) {
-  return std::any_of(std::begin(kAllQueryKinds), std::end(kAllQueryKinds),
-                     [kind](QueryKind k) { return kind == static_cast<std::uint32_t>(k); });
+  return std::any_of(
+      std::begin(kQueryKinds), std::end(kQueryKinds),
+      [kind](const QueryKindInfo& k) { return kind == static_cast<std::uint32_t>(k.kind); });
 }
 
 bool isTolerance(double value) {
@@ -436,9 +437,10 @@ std::int32_t queryEntry(CollidoInstance* instance, CollidoModelHandle a, const C
                   label + ": query: kind " + std::to_string(request->kind) + " is not one kind");
     }
     const auto kind = static_cast<QueryKind>(request->kind);
+    const QueryKindInfo& info = queryKindInfo(kind);
     if (!instance->capabilities.queries.contains(kind)) {
       return fail(error, StatusCode::kUnsupported,
-                  label + ": does not answer " + queryKindName(kind) + " queries");
+                  label + ": does not answer " + info.name + " queries");
     }
     CollidoInstance::Slot* slot_a = findSlot(instance, a);
     CollidoInstance::Slot* slot_b = findSlot(instance, b);
@@ -450,7 +452,7 @@ std::int32_t queryEntry(CollidoInstance* instance, CollidoModelHandle a, const C
       if (!slot->needs.queries.contains(kind)) {
         return fail(error, StatusCode::kInvalidArgument,
                     label + ": query: " + handleText(handle) + " was built for " +
-                        queryKindsText(slot->needs.queries) + ", not " + queryKindName(kind));
+                        queryKindsText(slot->needs.queries) + ", not " + info.name);
       }
     }
     Pose world_a;
@@ -461,7 +463,7 @@ std::int32_t queryEntry(CollidoInstance* instance, CollidoModelHandle a, const C
     if (Status s = toPose(pose_b, "pose of B", world_b); !s.ok()) {
       return fail(error, s.code(), label + ": query: " + s.message());
     }
-    if (kind == QueryKind::kDistance &&
+    if (info.tolerances &&
         !(isTolerance(request->abs_tolerance) && isTolerance(request->rel_tolerance))) {
       return fail(error, StatusCode::kInvalidArgument,
                   label + ": query: distance tolerances must be finite and >= 0 (absolute " +
@@ -477,7 +479,7 @@ std::int32_t queryEntry(CollidoInstance* instance, CollidoModelHandle a, const C
         !s.ok()) {
       return report(error, s);
     }
-    if (kind == QueryKind::kDistance) {
+    if (info.has(AnswerPart::kDistance)) {
       if (Status s = checkDistance(result.distance); !s.ok()) {
         return fail(error, s.code(), label + ": " + s.message());
       }

@@ -224,8 +224,8 @@ std::vector<FrameWork> stepFrames(const QueryRun& run, const std::optional<Broad
         work.asked.emplace_back(ia, ib);
       }
       if (options.reuse_unchanged) answers[{ia, ib}] = result;
-      const OracleAnswer& truth =
-          run.oracle.get(ia, ib, frame, run.query.request.kind == QueryKind::kDistance);
+      const OracleAnswer& truth = run.oracle.get(
+          ia, ib, frame, queryKindInfo(run.query.request.kind).oracle == OracleNeed::kDistance);
       const AskedPair asked{frame,
                             ia,
                             ib,
@@ -386,8 +386,8 @@ void runSceneOnBackend(const Scene& scene, const BackendSpec& spec, OracleCache&
     std::optional<TrackingComparison> tracking;
     std::vector<FrameObserver*> observers{&comparison};
     if (options.keep_answers) observers.push_back(&keeper.emplace());
-    if (query.request.kind == QueryKind::kAllPairs)
-      observers.push_back(&floor.emplace(options.repetitions));
+    const QueryKindInfo& kind = queryKindInfo(query.request.kind);
+    if (kind.has(AnswerPart::kPairSet)) observers.push_back(&floor.emplace(options.repetitions));
     if (finest_oracle != nullptr) observers.push_back(&finest.emplace(*finest_oracle, query));
     if (truth_oracle) {
       observers.push_back(&tracking.emplace(scene, *truth_oracle, query, options.tracking_sigmas));
@@ -402,8 +402,7 @@ void runSceneOnBackend(const Scene& scene, const BackendSpec& spec, OracleCache&
 
     std::optional<BroadPhase> broad_phase;
     // A distance has an answer however far apart: only collision questions can be culled.
-    if (query.isGroup() ||
-        (options.skip_apart_pairs && query.request.kind != QueryKind::kDistance)) {
+    if (query.isGroup() || (options.skip_apart_pairs && kind.settled_when_apart)) {
       broad_phase.emplace(scene, query);
     }
     const std::vector<FrameWork> work =

@@ -30,7 +30,7 @@ std::string repeated(const QueryMeasurement& m) {
 }
 
 std::string pairFigure(const QueryMeasurement& m, double value) {
-  return m.kind == QueryKind::kAllPairs ? formatNumber("%.4f", value) : "-";
+  return queryKindInfo(m.kind).has(AnswerPart::kPairSet) ? formatNumber("%.4f", value) : "-";
 }
 
 // The registered checks' figures that declare a column (runner/checks.h), after the runner's.

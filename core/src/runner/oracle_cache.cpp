@@ -22,8 +22,7 @@ const OracleAnswer& OracleCache::get(std::size_t ia, std::size_t ib, std::size_t
     const bool needs_all =
         !witness_only_ &&
         std::any_of(scene_.queries.begin(), scene_.queries.end(), [&](const SceneQuery& q) {
-          const QueryKind k = q.request.kind;
-          return (k == QueryKind::kAllPairs || k == QueryKind::kContacts) &&
+          return queryKindInfo(q.request.kind).oracle == OracleNeed::kAllPairs &&
                  (q.isGroup() ? q.asksPair(ia, ib) : q.a == ia && q.b == ib);
         });
     found = answers_

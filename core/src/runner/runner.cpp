@@ -96,7 +96,7 @@ void summariseMeasurement(QueryMeasurement& m) {
     reported_pairs += f.reported_pairs;
     matched_pairs += f.matched_pairs;
   }
-  if (m.kind == QueryKind::kAllPairs) {
+  if (queryKindInfo(m.kind).has(AnswerPart::kPairSet)) {
     m.recall = oracle_pairs == 0 ? 1.0 : static_cast<double>(matched_pairs) / oracle_pairs;
     m.precision = reported_pairs == 0 ? 1.0 : static_cast<double>(matched_pairs) / reported_pairs;
   }
@@ -154,7 +154,7 @@ void compareDistance(const TriangleMesh& a, const Pose& pose_a, const TriangleMe
 void compareWithOracle(const TriangleMesh& a, const Pose& pose_a, const TriangleMesh& b,
                        const Pose& pose_b, const QueryRequest& request, const QueryResult& result,
                        const OracleAnswer& truth, FrameRecord& record) {
-  const QueryKind kind = request.kind;
+  const QueryKindInfo& kind = queryKindInfo(request.kind);
   record.oracle_intersecting = truth.intersecting;
   record.reported_intersecting = result.intersecting;
   record.truncated = result.truncated;
@@ -170,7 +170,7 @@ void compareWithOracle(const TriangleMesh& a, const Pose& pose_a, const Triangle
       ++record.invalid_pairs;
     }
   }
-  if (kind == QueryKind::kDistance) {
+  if (kind.has(AnswerPart::kDistance)) {
     if (truth.distance) {
       compareDistance(a, pose_a, b, pose_b, request, result.distance, *truth.distance, record);
     }
@@ -181,20 +181,19 @@ void compareWithOracle(const TriangleMesh& a, const Pose& pose_a, const Triangle
   reported.erase(std::unique(reported.begin(), reported.end()), reported.end());
   record.invalid_pairs += before_dedupe - reported.size();
 
-  if (kind == QueryKind::kContacts) {
+  if (kind.has(AnswerPart::kContacts)) {
     record.oracle_pairs = truth.pairs.size();
     record.contact = scoreContacts(a, pose_a, b, pose_b, truth.pairs, result.contacts);
-    return;
   }
-  if (kind == QueryKind::kBoolean) {
+  if (kind.has(AnswerPart::kWitnessPairs)) {
     // A witness, when given, must really intersect.
     for (const TrianglePair& p : reported) {
       if (!exactPairIntersects(a, pose_a, b, pose_b, p)) {
         ++record.invalid_pairs;
       }
     }
-    return;
   }
+  if (!kind.has(AnswerPart::kPairSet)) return;
   record.oracle_pairs = truth.pairs.size();
   record.reported_pairs = reported.size();
   std::vector<TrianglePair> matched;
@@ -203,15 +202,19 @@ void compareWithOracle(const TriangleMesh& a, const Pose& pose_a, const Triangle
   record.matched_pairs = matched.size();
 }
 
-bool FrameRecord::disagrees(QueryKind kind) const {
-  if (kind == QueryKind::kDistance) {
+bool FrameRecord::disagrees(QueryKind query_kind) const {
+  const QueryKindInfo& kind = queryKindInfo(query_kind);
+  if (kind.has(AnswerPart::kDistance)) {
     if (!oracle_distance || !reported_distance) return true;
-    return invalid_distance_witness || *reported_distance < *oracle_distance - distance_below ||
-           *reported_distance > *oracle_distance + distance_above;
+    if (invalid_distance_witness || *reported_distance < *oracle_distance - distance_below ||
+        *reported_distance > *oracle_distance + distance_above)
+      return true;
   }
-  if (oracle_intersecting != reported_intersecting || invalid_pairs != 0) return true;
-  if (kind == QueryKind::kContacts) return contact && contact->anyWrong();
-  if (kind != QueryKind::kAllPairs) return false;
+  if (kind.has(AnswerPart::kIntersecting) &&
+      (oracle_intersecting != reported_intersecting || invalid_pairs != 0))
+    return true;
+  if (kind.has(AnswerPart::kContacts) && contact && contact->anyWrong()) return true;
+  if (!kind.has(AnswerPart::kPairSet)) return false;
   // A truncated answer is right when every pair it gives is real and some were left out.
   if (truncated) return matched_pairs != reported_pairs || reported_pairs >= oracle_pairs;
   return matched_pairs != oracle_pairs || matched_pairs != reported_pairs;
@@ -232,7 +235,8 @@ void precomputeOracleAnswers(OracleCache& oracle, bool distances) {
   for (const SceneQuery& query : scene.queries) {
     std::optional<BroadPhase> broad_phase;
     if (query.isGroup()) broad_phase.emplace(scene, query);
-    const bool distance = distances && query.request.kind == QueryKind::kDistance;
+    const bool distance =
+        distances && queryKindInfo(query.request.kind).oracle == OracleNeed::kDistance;
     for (std::size_t frame = 0; frame < scene.frames; ++frame) {
       if (!query.asked.contains(frame)) continue;
       const std::vector<std::pair<std::size_t, std::size_t>> candidates =

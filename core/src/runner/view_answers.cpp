@@ -38,9 +38,9 @@ Json distanceJson(const DistanceResult& d) {
 
 // The triangle pairs a backend names in its answer: all-pairs and witness pairs, and for
 // contact queries the pairs its contacts name (engines that say which triangles touch).
-std::vector<TrianglePair> namedPairs(const QueryResult& result, QueryKind kind) {
+std::vector<TrianglePair> namedPairs(const QueryResult& result, const QueryKindInfo& kind) {
   std::vector<TrianglePair> pairs = result.pairs;
-  if (kind == QueryKind::kContacts) {
+  if (kind.has(AnswerPart::kContacts)) {
     for (const Contact& c : result.contacts) {
       if (c.triangle_a >= 0 && c.triangle_b >= 0) pairs.push_back({c.triangle_a, c.triangle_b});
     }
@@ -50,16 +50,17 @@ std::vector<TrianglePair> namedPairs(const QueryResult& result, QueryKind kind) 
   return pairs;
 }
 
-Json pairJson(const Scene& scene, std::size_t frame, const PairAnswers& answers, QueryKind kind) {
+Json pairJson(const Scene& scene, std::size_t frame, const PairAnswers& answers,
+              const QueryKindInfo& kind) {
   const std::vector<TrianglePair> reported =
-      kind == QueryKind::kAllPairs ? answers.reported.pairs : namedPairs(answers.reported, kind);
+      kind.has(AnswerPart::kPairSet) ? answers.reported.pairs : namedPairs(answers.reported, kind);
   Json out = {{"a", answers.a},
               {"b", answers.b},
               {"intersecting", answers.reported.intersecting},
               {"oracle_intersecting", answers.oracle_intersecting},
               {"reported", flatPairs(reported)},
               {"oracle", flatPairs(answers.oracle_pairs)}};
-  if (kind == QueryKind::kBoolean || kind == QueryKind::kContacts) {
+  if (kind.has(AnswerPart::kWitnessPairs) || kind.has(AnswerPart::kContacts)) {
     // The oracle keeps one witness where no all-pairs query asks the same pair, so whether a
     // backend's witness really intersects is decided here, pair by pair.
     const SceneObject& a = scene.objects[answers.a];
@@ -75,7 +76,7 @@ Json pairJson(const Scene& scene, std::size_t frame, const PairAnswers& answers,
     }
     out["reported_exact"] = std::move(exact);
   }
-  if (kind == QueryKind::kDistance) {
+  if (kind.has(AnswerPart::kDistance)) {
     out["distance"] = distanceJson(answers.reported.distance);
     out["oracle_distance"] =
         answers.oracle_distance ? distanceJson(*answers.oracle_distance) : Json(nullptr);
@@ -94,7 +95,7 @@ std::string viewAnswersJson(const Scene& scene, const RunReport& report,
     for (const FrameRecord& f : m.frames) {
       Json pairs = Json::array();
       for (const PairAnswers& answers : f.answers)
-        pairs.push_back(pairJson(scene, f.frame, answers, m.kind));
+        pairs.push_back(pairJson(scene, f.frame, answers, queryKindInfo(m.kind)));
       frames.push_back({{"frame", f.frame},
                         {"disagrees", f.disagrees(m.kind)},
                         {"object_pairs", f.object_pairs},

@@ -13,10 +13,26 @@
 namespace collido::scene_reading {
 namespace {
 
+// The names of the kinds `holds` is true of, "a, b or c".
+template <typename Predicate>
+std::string kindNames(Predicate holds) {
+  std::vector<const char*> names;
+  for (const QueryKindInfo& kind : kQueryKinds) {
+    if (holds(kind)) names.push_back(kind.name);
+  }
+  std::string text;
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    if (i > 0) text += i + 1 == names.size() ? " or " : ", ";
+    text += names[i];
+  }
+  return text;
+}
+
 QueryKind readQueryKind(const Reader& r, const Node& node) {
   const std::string text = r.string(node);
   if (const std::optional<QueryKind> kind = parseQueryKind(text)) return *kind;
-  r.fail(node, "unknown query kind '" + text + "' (known: boolean, all_pairs, contacts, distance)");
+  r.fail(node, "unknown query kind '" + text +
+                   "' (known: " + kindNames([](const QueryKindInfo&) { return true; }) + ")");
 }
 
 // The objects a query entry names: "name" (that object) or {"subtree": "name"} (it and every
@@ -161,12 +177,12 @@ void readQueries(const Reader& r, const Node& queries,
     query.request.kind = readQueryKind(r, node.at("kind"));
     // A group's answer is the union over its object pairs: pairs and contacts add up, a
     // boolean or a distance over a group would need a definition of its own.
-    if (query.isGroup() && query.request.kind != QueryKind::kAllPairs &&
-        query.request.kind != QueryKind::kContacts) {
+    const QueryKindInfo& kind = queryKindInfo(query.request.kind);
+    if (query.isGroup() && !kind.over_groups) {
       r.fail(node.at("kind"),
-             "a group query ('among', or a subtree of more than one object) asks "
-             "all_pairs or contacts only, not " +
-                 std::string(queryKindName(query.request.kind)));
+             "a group query ('among', or a subtree of more than one object) asks " +
+                 kindNames([](const QueryKindInfo& k) { return k.over_groups; }) + " only, not " +
+                 kind.name);
     }
     query.request.max_pairs =
         static_cast<std::uint64_t>(r.integer(node, "max_pairs", 0, 0, INT64_MAX));
@@ -174,8 +190,10 @@ void readQueries(const Reader& r, const Node& queries,
         static_cast<std::uint64_t>(r.integer(node, "max_contacts", 0, 0, INT64_MAX));
     for (const char* key : {"abs_tolerance", "rel_tolerance"}) {
       if (!node.has(key)) continue;
-      if (query.request.kind != QueryKind::kDistance) {
-        r.fail(node.at(key), std::string(key) + " applies to distance queries only");
+      if (!kind.tolerances) {
+        r.fail(node.at(key), std::string(key) + " applies to " +
+                                 kindNames([](const QueryKindInfo& k) { return k.tolerances; }) +
+                                 " queries only");
       }
       const double value = r.number(node.at(key));
       if (value < 0.0) r.fail(node.at(key), std::string(key) + " must be >= 0");

@@ -9,8 +9,8 @@ namespace {
 
 nlohmann::json kindNames(QueryKindSet set) {
   nlohmann::json names = nlohmann::json::array();
-  for (const QueryKind kind : kAllQueryKinds)
-    if (set.contains(kind)) names.push_back(queryKindName(kind));
+  for (const QueryKindInfo& kind : kQueryKinds)
+    if (set.contains(kind.kind)) names.push_back(kind.name);
   return names;
 }
 

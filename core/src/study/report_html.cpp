@@ -87,7 +87,7 @@ Json failuresOf(const std::vector<CombinationResult>& results) {
         std::ostringstream text;
         text << m.disagreements << " of " << m.frames.size() << " frames differ from the oracle ("
              << m.false_negatives << " missed contacts, " << m.false_positives << " false contacts";
-        if (m.kind == QueryKind::kAllPairs) {
+        if (queryKindInfo(m.kind).has(AnswerPart::kPairSet)) {
           text << ", pair recall " << m.recall << ", precision " << m.precision;
         }
         text << ")";

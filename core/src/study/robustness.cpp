@@ -51,17 +51,18 @@ void addDistanceFrame(const FrameRecord& f, RobustnessAnswers& answers) {
   if (wrong) ++answers.wrong;
 }
 
-void addFrame(const FrameRecord& f, QueryKind kind, RobustnessAnswers& answers) {
-  if (kind == QueryKind::kDistance) {
+void addFrame(const FrameRecord& f, QueryKind query_kind, RobustnessAnswers& answers) {
+  const QueryKindInfo& kind = queryKindInfo(query_kind);
+  if (kind.has(AnswerPart::kDistance)) {
     addDistanceFrame(f, answers);
     return;
   }
   ++answers.answered;
-  if (f.disagrees(kind)) ++answers.wrong;
+  if (f.disagrees(query_kind)) ++answers.wrong;
   if (f.oracle_intersecting && !f.reported_intersecting) ++answers.false_negatives;
   if (!f.oracle_intersecting && f.reported_intersecting) ++answers.false_positives;
   answers.invalid_pairs += f.invalid_pairs;
-  if (kind != QueryKind::kAllPairs) return;
+  if (!kind.has(AnswerPart::kPairSet)) return;
   answers.true_pairs += f.oracle_pairs;
   answers.reported_pairs += f.reported_pairs;
   answers.extra_pairs += f.reported_pairs - std::min(f.reported_pairs, f.matched_pairs);

@@ -31,7 +31,7 @@ Candidate candidateOf(const std::string& backend, const QueryMeasurement& m) {
   s.triangles = m.triangles;
   s.wrong_frames = m.disagreements;
   s.frames = m.frames.size();
-  if (m.kind == QueryKind::kAllPairs) {
+  if (queryKindInfo(m.kind).has(AnswerPart::kPairSet)) {
     s.recall = m.recall;
     s.precision = m.precision;
   }

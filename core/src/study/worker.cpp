@@ -58,8 +58,7 @@ Result<CombinationResult> runCombination(const WorkerRequest& request) {
   }
   if (c.limit != 0) {
     for (SceneQuery& q : scene.queries) {
-      if (q.request.kind == QueryKind::kAllPairs) q.request.max_pairs = c.limit;
-      if (q.request.kind == QueryKind::kContacts) q.request.max_contacts = c.limit;
+      if (const auto limit = queryKindInfo(q.request.kind).limit) q.request.*limit = c.limit;
     }
   }
 

@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cstdint>
+#include <initializer_list>
 #include <limits>
 #include <optional>
 #include <string>
@@ -18,10 +19,6 @@ enum class QueryKind : std::uint32_t {
   kContacts = 1u << 2,  ///< contact points with normal and depth
   kDistance = 1u << 3,  ///< the distance between the shapes, with closest points
 };
-
-/// Every query kind, in the order tables list them.
-inline constexpr QueryKind kAllQueryKinds[] = {QueryKind::kBoolean, QueryKind::kAllPairs,
-                                               QueryKind::kContacts, QueryKind::kDistance};
 
 /// Stable lower-case name ("boolean", "all_pairs", "contacts").
 const char* queryKindName(QueryKind kind);
@@ -91,6 +88,67 @@ struct QueryRequest {
   double abs_tolerance = 0.0;
   double rel_tolerance = 0.0;
 };
+
+/// The parts of an answer; the runner checks each part a kind's answer carries against the
+/// oracle (runner/compare.h), so a kind made of known parts needs no code of its own there.
+enum class AnswerPart : std::uint32_t {
+  kIntersecting = 1u << 0,  ///< QueryResult::intersecting, against the exact answer
+  kWitnessPairs = 1u << 1,  ///< QueryResult::pairs where given: each pair really intersects
+  kPairSet = 1u << 2,       ///< QueryResult::pairs: every intersecting pair (recall, precision)
+  kContacts = 1u << 3,      ///< QueryResult::contacts, scored against the exact intersection
+  kDistance = 1u << 4,      ///< QueryResult::distance: the distance and closest points
+};
+
+/// What the exact reference computes for a kind's answers to be checked.
+enum class OracleNeed {
+  kWitness,   ///< whether the shapes intersect, with one intersecting pair
+  kAllPairs,  ///< every intersecting pair
+  kDistance,  ///< the exact distance with closest points
+};
+
+/// One query kind: what it asks, what its answer holds, what checks it. Every place that
+/// treats kinds differently reads this entry rather than naming kinds (../shared/DESIGN.md).
+struct QueryKindInfo {
+  QueryKind kind;
+  const char* name;            ///< stable lower-case name, in scene files and results
+  const char* summary;         ///< the question, one line for help texts
+  std::uint32_t answer_parts;  ///< AnswerPart bits
+  /// The request's limit that may cut the answer short, or nullptr.
+  std::uint64_t QueryRequest::*limit;
+  bool tolerances;          ///< reads abs_tolerance and rel_tolerance
+  bool over_groups;         ///< may be asked of a group: answers add up over its object pairs
+  bool settled_when_apart;  ///< objects a broad phase proves apart need not be asked
+  OracleNeed oracle;
+
+  constexpr bool has(AnswerPart part) const {
+    return (answer_parts & static_cast<std::uint32_t>(part)) != 0;
+  }
+};
+
+constexpr std::uint32_t answerParts(std::initializer_list<AnswerPart> parts) {
+  std::uint32_t bits = 0;
+  for (AnswerPart part : parts)
+    bits |= static_cast<std::uint32_t>(part);
+  return bits;
+}
+
+/// Every query kind, in the order tables list them: the one table of kinds.
+inline constexpr QueryKindInfo kQueryKinds[] = {
+    {QueryKind::kBoolean, "boolean", "do the shapes share a point? (a witness pair where given)",
+     answerParts({AnswerPart::kIntersecting, AnswerPart::kWitnessPairs}), nullptr, false, false,
+     true, OracleNeed::kWitness},
+    {QueryKind::kAllPairs, "all_pairs", "every intersecting (triangle of A, triangle of B) pair",
+     answerParts({AnswerPart::kIntersecting, AnswerPart::kPairSet}), &QueryRequest::max_pairs,
+     false, true, true, OracleNeed::kAllPairs},
+    {QueryKind::kContacts, "contacts", "contact points with normal and depth",
+     answerParts({AnswerPart::kIntersecting, AnswerPart::kContacts}), &QueryRequest::max_contacts,
+     false, true, true, OracleNeed::kAllPairs},
+    {QueryKind::kDistance, "distance", "the distance between the shapes, with closest points",
+     answerParts({AnswerPart::kDistance}), nullptr, true, false, false, OracleNeed::kDistance},
+};
+
+/// The table's entry of `kind`.
+const QueryKindInfo& queryKindInfo(QueryKind kind);
 
 /// The answer to a kDistance query, in the world frame. 0 when the shapes share a point;
 /// otherwise |point_b - point_a|, with point_a on A and point_b on B.

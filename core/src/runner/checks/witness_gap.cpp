@@ -35,7 +35,7 @@ class WitnessGapCheck final : public Check {
              [](const QueryMeasurement& m) { return largestFrameValue(m, kFrameValue); }}};
   }
   std::unique_ptr<FrameObserver> observe(const SceneQuery& query) const override {
-    if (query.request.kind != QueryKind::kDistance) return nullptr;
+    if (!queryKindInfo(query.request.kind).has(AnswerPart::kDistance)) return nullptr;
     return std::make_unique<WitnessGapObserver>();
   }
 };
