@@ -167,14 +167,15 @@ TEST(SceneBadInput, UnknownKeyInRotation) {
                                       "allowed: axis, degrees, matrix, quaternion"}));
 }
 
-// "bad.json: /queries/0: unknown key 'max_pair' (allowed: a, abs_tolerance, among, b, except,
-//  frames, kind, max_contacts, max_pairs, name, rel_tolerance)"
+// "bad.json: /queries/0: unknown key 'max_pair' (allowed: a, abs_tolerance, among, b,
+//  bracket_width, except, frames, kind, max_contacts, max_pairs, name, rel_tolerance)"
 TEST(SceneBadInput, UnknownKeyInQuery) {
   Json scene = validScene();
   scene["queries"][0]["max_pair"] = 3;
-  EXPECT_TRUE(rejected(parse(scene), {"/queries/0:", "unknown key 'max_pair'",
-                                      "allowed: a, abs_tolerance, among, b, except, frames, kind, "
-                                      "max_contacts, max_pairs, name, rel_tolerance"}));
+  EXPECT_TRUE(
+      rejected(parse(scene), {"/queries/0:", "unknown key 'max_pair'",
+                              "allowed: a, abs_tolerance, among, b, bracket_width, except, "
+                              "frames, kind, max_contacts, max_pairs, name, rel_tolerance"}));
 }
 
 // "bad.json: /queries/0/frames/1: ranges must be ascending and apart: this one starts at frame 1,
@@ -185,13 +186,72 @@ TEST(SceneBadInput, FrameRangesThatTouch) {
   EXPECT_TRUE(rejected(parse(scene), {"/queries/0/frames/1:", "ascending and apart"}));
 }
 
-// "bad.json: /queries/0/frames: query 'q' is asked in frame 0, where object 'b' does not exist"
+// "bad.json: /queries/0/frames: query 'q' is asked in frame 0, but object 'b' does not exist in
+//  frame 0"
 TEST(SceneBadInput, QueryAskedWhereItsObjectDoesNotExist) {
   Json scene = validScene();
   scene["objects"][1]["frames"] = Json::parse("[[1, 1]]");
   scene["queries"][0]["frames"] = Json::parse("[[0, 1]]");
   EXPECT_TRUE(rejected(parse(scene),
                        {"/queries/0/frames:", "asked in frame 0", "object 'b' does not exist"}));
+}
+
+// A first-contact query asks about the step from each frame to the next.
+TEST(SceneBadInput, AFirstContactQueryAsksEveryStepAndItsWidth) {
+  Json scene = validScene();
+  scene["queries"][0]["kind"] = "first_contact";
+  scene["queries"][0]["bracket_width"] = 0.01;
+  Result<Scene> loaded = parse(scene);
+  ASSERT_TRUE(loaded.ok()) << loaded.status().toString();
+  EXPECT_EQ(loaded.value().queries[0].asked.text(), "frame 0");
+  EXPECT_EQ(loaded.value().queries[0].request.bracket_width, 0.01);
+}
+
+// "bad.json: /queries/0/frames: query 'q' is asked over a step from frame 1, the last: a step
+//  needs the frame after it"
+TEST(SceneBadInput, AFirstContactQueryFromTheLastFrame) {
+  Json scene = validScene();
+  scene["queries"][0]["kind"] = "first_contact";
+  scene["queries"][0]["frames"] = Json::parse("[[0, 1]]");
+  EXPECT_TRUE(rejected(parse(scene), {"/queries/0/frames:", "step from frame 1, the last"}));
+}
+
+// "bad.json: /queries/0/frames: query 'q' is asked over the step from frame 0, but object 'b'
+//  does not exist in frame 1"
+TEST(SceneBadInput, AFirstContactStepWhereAnObjectIsGoneInTheNextFrame) {
+  Json scene = validScene();
+  scene["frames"] = 3;
+  scene["objects"][1]["frames"] = Json::parse("[[0, 0], [2, 2]]");
+  scene["queries"][0]["kind"] = "first_contact";
+  scene["queries"][0]["frames"] = Json::parse("[[0, 0]]");
+  EXPECT_TRUE(rejected(parse(scene), {"/queries/0/frames:", "over the step from frame 0",
+                                      "object 'b' does not exist in frame 1"}));
+}
+
+// "bad.json: /queries/0/bracket_width: bracket_width must be > 0"
+TEST(SceneBadInput, ABracketWidthAtOrBelowZero) {
+  for (const double width : {0.0, -0.1}) {
+    Json scene = validScene();
+    scene["queries"][0]["kind"] = "first_contact";
+    scene["queries"][0]["bracket_width"] = width;
+    EXPECT_TRUE(rejected(parse(scene), {"/queries/0/bracket_width:", "must be > 0"}));
+  }
+}
+
+// "bad.json: /queries/0/bracket_width: bracket_width applies to first_contact queries only"
+TEST(SceneBadInput, ABracketWidthOnASnapshotQuery) {
+  Json scene = validScene();
+  scene["queries"][0]["bracket_width"] = 0.01;
+  EXPECT_TRUE(rejected(parse(scene), {"/queries/0/bracket_width:", "first_contact queries only"}));
+}
+
+// "bad.json: /queries/0/kind: a first_contact query is asked over a step from one frame to the
+//  next: the scene needs at least two frames"
+TEST(SceneBadInput, AFirstContactQueryOfAOneFrameScene) {
+  Json scene = validScene();
+  scene["frames"] = 1;
+  scene["queries"][0]["kind"] = "first_contact";
+  EXPECT_TRUE(rejected(parse(scene), {"/queries/0/kind:", "at least two frames"}));
 }
 
 TEST(SceneBadInput, ADistanceQueryWithTolerancesLoads) {
@@ -460,12 +520,12 @@ TEST(SceneBadInput, QueryOfAnObjectWithItself) {
 }
 
 // "bad.json: /queries/0/kind: unknown query kind 'penetration' (known: boolean, all_pairs,
-//  contacts or distance)"
+//  contacts, distance or first_contact)"
 TEST(SceneBadInput, UnknownQueryKind) {
   Json scene = validScene();
   scene["queries"][0]["kind"] = "penetration";
   EXPECT_TRUE(rejected(parse(scene), {"/queries/0/kind:", "unknown query kind 'penetration'",
-                                      "boolean, all_pairs, contacts or distance"}));
+                                      "boolean, all_pairs, contacts, distance or first_contact"}));
 }
 
 // "bad.json: /queries/0/max_pairs: expected an integer in [0, 9223372036854775807], got -1"

@@ -155,6 +155,12 @@ Status BackendInstance::query(ModelHandle a, const Pose& pose_a, ModelHandle b, 
   c_request.max_contacts = request.max_contacts;
   c_request.abs_tolerance = request.abs_tolerance;
   c_request.rel_tolerance = request.rel_tolerance;
+  const QueryKindInfo& kind = queryKindInfo(request.kind);
+  if (kind.over_a_step) {
+    c_request.end_a = toCollidoPose(request.end_pose_a);
+    c_request.end_b = toCollidoPose(request.end_pose_b);
+    c_request.bracket_width = request.bracket_width;
+  }
   CollidoQueryResult out{};
   CollidoMessage message{};
   if (Status s = fromCode(library_->table().query(instance_, a, &c_pose_a, b, &c_pose_b, &c_request,
@@ -183,7 +189,11 @@ Status BackendInstance::query(ModelHandle a, const Pose& pose_a, ModelHandle b, 
       d.triangle_b = c.triangle_b;
     }
   }
-  if (queryKindInfo(request.kind).has(AnswerPart::kDistance)) {
+  if (kind.has(AnswerPart::kFirstContact)) {
+    const CollidoFirstContact& c = out.first_contact;
+    result.first_contact = {c.touches != 0, c.t_lo, c.t_hi, c.triangle_a, c.triangle_b};
+  }
+  if (kind.has(AnswerPart::kDistance)) {
     const CollidoDistance& d = out.distance;
     result.distance.distance = d.distance;
     result.distance.point_a = Eigen::Vector3d(d.point_a[0], d.point_a[1], d.point_a[2]);

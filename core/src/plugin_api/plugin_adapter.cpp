@@ -16,6 +16,7 @@
 #include <type_traits>
 #include <vector>
 
+#include <collido/motion.h>
 #include <collido/plugin_export.h>
 
 struct CollidoInstance {
@@ -141,20 +142,47 @@ Status toPose(const CollidoPose* in, const char* which, Pose& out) {
       rotation(r, c) = in->rotation[3 * r + c];
   }
   const Eigen::Vector3d translation(in->translation[0], in->translation[1], in->translation[2]);
-  if (!rotation.allFinite() || !translation.allFinite()) {
-    return {StatusCode::kInvalidArgument, std::string(which) + ": pose has a non-finite entry"};
-  }
-  const double drift = (rotation.transpose() * rotation - Eigen::Matrix3d::Identity()).norm();
-  if (drift > 1e-6 || rotation.determinant() < 0.0) {
-    return {StatusCode::kInvalidArgument,
-            std::string(which) + ": not a rotation (|R^T R - I| = " + std::to_string(drift) +
-                ", det = " + std::to_string(rotation.determinant()) +
-                "; a pose must be rigid: orthonormal, determinant +1)"};
-  }
-  out.linear() = rotation;
-  out.translation() = translation;
-  out.makeAffine();
+  Pose pose = Pose::Identity();
+  pose.linear() = rotation;
+  pose.translation() = translation;
+  if (Status s = checkRigidPose(pose, which); !s.ok()) return s;
+  out = pose;
   return {};
+}
+
+// A step's end poses and bracket width, for the kinds asked over a step.
+Status readStep(const CollidoQueryRequest& in, QueryRequest& out) {
+  if (Status s = toPose(&in.end_a, "end pose of A", out.end_pose_a); !s.ok()) return s;
+  if (Status s = toPose(&in.end_b, "end pose of B", out.end_pose_b); !s.ok()) return s;
+  if (!(std::isfinite(in.bracket_width) && in.bracket_width > 0.0)) {
+    return {StatusCode::kInvalidArgument,
+            "the bracket width must be finite and > 0, not " + std::to_string(in.bracket_width)};
+  }
+  out.bracket_width = in.bracket_width;
+  return {};
+}
+
+// A first contact's answer must be a bracket within the step, no wider than asked.
+Status checkFirstContact(const FirstContactResult& c, double width) {
+  if (!c.touches) return {};
+  if (!(c.t_lo >= 0.0 && c.t_lo <= c.t_hi && c.t_hi <= 1.0)) {
+    return {StatusCode::kInternal, "first contact answered the bracket [" + std::to_string(c.t_lo) +
+                                       ", " + std::to_string(c.t_hi) + "], not within [0, 1]"};
+  }
+  if (c.t_hi - c.t_lo > width) {
+    return {StatusCode::kInternal, "first contact answered a bracket " +
+                                       std::to_string(c.t_hi - c.t_lo) + " wide, wider than the " +
+                                       std::to_string(width) + " asked"};
+  }
+  return {};
+}
+
+void copyFirstContact(const FirstContactResult& c, CollidoFirstContact& out) {
+  out.touches = c.touches ? 1u : 0u;
+  out.t_lo = c.t_lo;
+  out.t_hi = c.t_hi;
+  out.triangle_a = c.triangle_a;
+  out.triangle_b = c.triangle_b;
 }
 
 std::int32_t capabilitiesEntry(CollidoInstance* instance, CollidoCapabilities* out,
@@ -470,8 +498,13 @@ std::int32_t queryEntry(CollidoInstance* instance, CollidoModelHandle a, const C
                       std::to_string(request->abs_tolerance) + ", relative " +
                       std::to_string(request->rel_tolerance) + ")");
     }
-    const QueryRequest req{kind, request->max_pairs, request->max_contacts, request->abs_tolerance,
-                           request->rel_tolerance};
+    QueryRequest req{kind, request->max_pairs, request->max_contacts, request->abs_tolerance,
+                     request->rel_tolerance};
+    if (info.over_a_step) {
+      if (Status s = readStep(*request, req); !s.ok()) {
+        return fail(error, s.code(), label + ": query: " + s.message());
+      }
+    }
     QueryResult& result = instance->scratch;
     result.clear();
     if (Status s =
@@ -501,6 +534,12 @@ std::int32_t queryEntry(CollidoInstance* instance, CollidoModelHandle a, const C
       out->distance.has_bounds = d.lower ? 1u : 0u;
       out->distance.lower = d.lower.value_or(0.0);
       out->distance.upper = d.upper.value_or(0.0);
+    }
+    if (info.has(AnswerPart::kFirstContact)) {
+      if (Status s = checkFirstContact(result.first_contact, req.bracket_width); !s.ok()) {
+        return fail(error, s.code(), label + ": " + s.message());
+      }
+      copyFirstContact(result.first_contact, out->first_contact);
     }
     out->intersecting = result.intersecting ? 1u : 0u;
     out->truncated = result.truncated ? 1u : 0u;

@@ -77,9 +77,19 @@ struct QueryRun {
   ModelHandle modelAt(std::size_t object, std::size_t frame) const {
     return models.at(object)[scene.objects[object].stateAt(frame)].handle;
   }
-  Status ask(std::size_t ia, std::size_t ib, std::size_t frame, QueryResult& result) const {
+  // The query's request in `frame`: over a step, with the poses of the frame after.
+  QueryRequest requestAt(std::size_t frame) const {
+    QueryRequest request = query.request;
+    if (queryKindInfo(request.kind).over_a_step) {
+      request.end_pose_a = scene.objects[query.a].poseAt(frame + 1);
+      request.end_pose_b = scene.objects[query.b].poseAt(frame + 1);
+    }
+    return request;
+  }
+  Status ask(std::size_t ia, std::size_t ib, std::size_t frame, const QueryRequest& request,
+             QueryResult& result) const {
     return backend.query(modelAt(ia, frame), scene.objects[ia].poseAt(frame), modelAt(ib, frame),
-                         scene.objects[ib].poseAt(frame), query.request, result);
+                         scene.objects[ib].poseAt(frame), request, result);
   }
 };
 
@@ -117,6 +127,8 @@ std::set<std::size_t> heldObjects(const QueryRun& run, std::size_t frame,
                                   const Shapes& before) {
   std::set<std::size_t> held;
   if (!previous || before.empty()) return held;
+  // An answer over a step depends on the frame after too.
+  if (queryKindInfo(run.query.request.kind).over_a_step) return held;
   for (std::size_t i : run.objects) {
     const SceneObject& o = run.scene.objects[i];
     if (o.poseAt(frame).matrix() != o.poseAt(*previous).matrix()) continue;
@@ -170,8 +182,10 @@ struct FrameWork {
 std::optional<double> timedCall(const QueryRun& run, const FrameWork& work, std::size_t frame,
                                 QueryResult& result, QueryMeasurement& m) {
   if (work.all_reused) return 0.0;
-  const Result<double> took = timeFrameCall(
-      work.asked, [&](std::size_t ia, std::size_t ib) { return run.ask(ia, ib, frame, result); });
+  const QueryRequest request = run.requestAt(frame);
+  const Result<double> took = timeFrameCall(work.asked, [&](std::size_t ia, std::size_t ib) {
+    return run.ask(ia, ib, frame, request, result);
+  });
   if (took.ok()) return took.value();
   m.status = frameFailure(frame, took.status().toString());
   return std::nullopt;
@@ -210,6 +224,7 @@ std::vector<FrameWork> stepFrames(const QueryRun& run, const std::optional<Broad
     updateDeforming(run, frame, shapes, work.held, &record, m);
     if (!m.ok()) break;
     std::map<std::pair<std::size_t, std::size_t>, QueryResult> answers;
+    const QueryRequest request = run.requestAt(frame);
     for (const auto& [ia, ib] : candidates) {
       const auto previous = last_answers.find({ia, ib});
       const bool reuse =
@@ -217,15 +232,14 @@ std::vector<FrameWork> stepFrames(const QueryRun& run, const std::optional<Broad
       if (reuse) {
         result = previous->second;
         ++record.reused_pairs;
-      } else if (Status s = run.ask(ia, ib, frame, result); !s.ok()) {
+      } else if (Status s = run.ask(ia, ib, frame, request, result); !s.ok()) {
         m.status = frameFailure(frame, s.toString());
         break;
       } else {
         work.asked.emplace_back(ia, ib);
       }
       if (options.reuse_unchanged) answers[{ia, ib}] = result;
-      const OracleAnswer& truth = run.oracle.get(
-          ia, ib, frame, queryKindInfo(run.query.request.kind).oracle == OracleNeed::kDistance);
+      const OracleAnswer& truth = run.oracle.answerFor(run.query, ia, ib, frame);
       const AskedPair asked{frame,
                             ia,
                             ib,
@@ -233,7 +247,7 @@ std::vector<FrameWork> stepFrames(const QueryRun& run, const std::optional<Broad
                             *shapes.at(ib),
                             run.scene.objects[ia].poseAt(frame),
                             run.scene.objects[ib].poseAt(frame),
-                            run.query.request,
+                            request,
                             result,
                             truth};
       for (FrameObserver* observer : observers)

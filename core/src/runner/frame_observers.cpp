@@ -23,6 +23,14 @@ void addAnswer(const FrameRecord& one, FrameRecord& frame) {
   frame.distance_below = one.distance_below;
   frame.distance_above = one.distance_above;
   frame.invalid_distance_witness = one.invalid_distance_witness;
+  // So are queries over a step.
+  frame.oracle_touches = one.oracle_touches;
+  frame.oracle_t_lo = one.oracle_t_lo;
+  frame.oracle_t_hi = one.oracle_t_hi;
+  frame.reported_t_lo = one.reported_t_lo;
+  frame.reported_t_hi = one.reported_t_hi;
+  frame.first_contact_error = one.first_contact_error;
+  frame.invalid_first_contact = one.invalid_first_contact;
   if (one.contact) {
     if (!frame.contact) frame.contact.emplace();
     frame.contact->add(*one.contact);

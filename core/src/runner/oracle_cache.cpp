@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <type_traits>
 
+#include <collido/motion.h>
 #include <collido/runner/digest.h>
 #include <collido/runner/runner.h>
 
@@ -39,6 +40,38 @@ const OracleAnswer& OracleCache::get(std::size_t ia, std::size_t ib, std::size_t
         exactMeshDistance(*a.shapeAt(frame), a.poseAt(frame), *b.shapeAt(frame), b.poseAt(frame));
   }
   return found->second;
+}
+
+const OracleAnswer& OracleCache::getStep(std::size_t ia, std::size_t ib, std::size_t frame,
+                                         double width) {
+  get(ia, ib, frame);
+  OracleAnswer& answer = answers_.at(std::make_tuple(ia, ib, frame));
+  if (answer.first_contact && answer.first_contact_width <= width) return answer;
+  const SceneObject& a = scene_.objects[ia];
+  const SceneObject& b = scene_.objects[ib];
+  // The scene reader has made sure both poses are rigid and the frame after exists.
+  const auto motion = [&](const SceneObject& o) {
+    return StepMotion::between(o.poseAt(frame), o.poseAt(frame + 1), o.name).value();
+  };
+  ++computed_;
+  answer.first_contact =
+      exactFirstContact(*a.shapeAt(frame), motion(a), *b.shapeAt(frame), motion(b), width);
+  answer.first_contact_width = width;
+  return answer;
+}
+
+const OracleAnswer& OracleCache::answerFor(const SceneQuery& query, std::size_t a, std::size_t b,
+                                           std::size_t frame, bool distances) {
+  switch (queryKindInfo(query.request.kind).oracle) {
+    case OracleNeed::kDistance:
+      return get(a, b, frame, distances);
+    case OracleNeed::kFirstContact:
+      return getStep(a, b, frame, query.request.bracket_width);
+    case OracleNeed::kWitness:
+    case OracleNeed::kAllPairs:
+      break;
+  }
+  return get(a, b, frame);
 }
 
 std::string OracleCache::fingerprint() const {
@@ -77,6 +110,7 @@ std::string OracleCache::fingerprint() const {
       d.value(index);
     // Only when given, so that the stored answers of scenes without it keep their digests.
     if (!q.except.empty()) d.value(q.except.size());
+    if (queryKindInfo(q.request.kind).over_a_step) d.value(q.request.bracket_width);
     for (const auto& [i, j] : q.except) {
       d.value(i);
       d.value(j);

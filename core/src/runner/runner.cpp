@@ -7,6 +7,7 @@
 #include <set>
 #include <tuple>
 
+#include <collido/motion.h>
 #include <collido/oracle/distance_oracle.h>
 #include <collido/oracle/exact_oracle.h>
 #include <collido/oracle/proximity.h>
@@ -100,6 +101,13 @@ void summariseMeasurement(QueryMeasurement& m) {
     m.recall = oracle_pairs == 0 ? 1.0 : static_cast<double>(matched_pairs) / oracle_pairs;
     m.precision = reported_pairs == 0 ? 1.0 : static_cast<double>(matched_pairs) / reported_pairs;
   }
+  m.max_first_contact_error.reset();
+  for (const FrameRecord& f : m.frames) {
+    if (f.first_contact_error) {
+      m.max_first_contact_error =
+          std::max(m.max_first_contact_error.value_or(0.0), *f.first_contact_error);
+    }
+  }
   m.floor_ratio.reset();
   if (floor_us > 0.0) m.floor_ratio = timed_with_floor_us / floor_us;
   m.update_median_us.reset();
@@ -149,6 +157,49 @@ void compareDistance(const TriangleMesh& a, const Pose& pose_a, const TriangleMe
   record.invalid_distance_witness = invalid;
 }
 
+// The reported first contact against the oracle's certified bracket: the verdicts, the brackets
+// (each proves its free part and its contact, so a right bracket meets the oracle's), and the
+// witness at the reported t_hi.
+void compareFirstContact(const TriangleMesh& a, const Pose& pose_a, const TriangleMesh& b,
+                         const Pose& pose_b, const QueryRequest& request,
+                         const FirstContactResult& reported, const ExactFirstContact& truth,
+                         FrameRecord& record) {
+  constexpr double kTimeRounding = 1e-12;
+  using Outcome = ExactFirstContact::Outcome;
+  record.reported_intersecting = reported.touches;
+  record.oracle_t_lo = truth.t_lo;
+  if (truth.outcome != Outcome::kUndecided) {
+    record.oracle_touches = truth.outcome == Outcome::kTouch;
+    record.oracle_intersecting = *record.oracle_touches;
+  } else {
+    record.oracle_intersecting = reported.touches;
+  }
+  if (truth.outcome == Outcome::kTouch) record.oracle_t_hi = truth.t_hi;
+  if (!reported.touches) return;
+  record.reported_t_lo = reported.t_lo;
+  record.reported_t_hi = reported.t_hi;
+  bool invalid = reported.t_hi < truth.t_lo - kTimeRounding;
+  if (truth.outcome == Outcome::kTouch) {
+    invalid = invalid || reported.t_lo > truth.t_hi + kTimeRounding;
+    record.first_contact_error =
+        std::max({reported.t_hi - truth.t_lo, truth.t_hi - reported.t_lo, 0.0});
+  }
+  if (reported.triangle_a >= 0 && reported.triangle_b >= 0) {
+    const TrianglePair pair{reported.triangle_a, reported.triangle_b};
+    if (static_cast<std::size_t>(pair.a) >= a.triangleCount() ||
+        static_cast<std::size_t>(pair.b) >= b.triangleCount()) {
+      invalid = true;
+    } else {
+      const auto at_t_hi = [&](const Pose& start, const Pose& end) {
+        return StepMotion::between(start, end, "").value().at(reported.t_hi);
+      };
+      invalid = invalid || !exactPairIntersects(a, at_t_hi(pose_a, request.end_pose_a), b,
+                                                at_t_hi(pose_b, request.end_pose_b), pair);
+    }
+  }
+  record.invalid_first_contact = invalid;
+}
+
 }  // namespace
 
 void compareWithOracle(const TriangleMesh& a, const Pose& pose_a, const TriangleMesh& b,
@@ -169,6 +220,13 @@ void compareWithOracle(const TriangleMesh& a, const Pose& pose_a, const Triangle
     } else {
       ++record.invalid_pairs;
     }
+  }
+  if (kind.has(AnswerPart::kFirstContact)) {
+    if (truth.first_contact) {
+      compareFirstContact(a, pose_a, b, pose_b, request, result.first_contact, *truth.first_contact,
+                          record);
+    }
+    return;
   }
   if (kind.has(AnswerPart::kDistance)) {
     if (truth.distance) {
@@ -213,6 +271,9 @@ bool FrameRecord::disagrees(QueryKind query_kind) const {
   if (kind.has(AnswerPart::kIntersecting) &&
       (oracle_intersecting != reported_intersecting || invalid_pairs != 0))
     return true;
+  if (kind.has(AnswerPart::kFirstContact) &&
+      (invalid_first_contact || oracle_intersecting != reported_intersecting))
+    return true;
   if (kind.has(AnswerPart::kContacts) && contact && contact->anyWrong()) return true;
   if (!kind.has(AnswerPart::kPairSet)) return false;
   // A truncated answer is right when every pair it gives is real and some were left out.
@@ -235,14 +296,12 @@ void precomputeOracleAnswers(OracleCache& oracle, bool distances) {
   for (const SceneQuery& query : scene.queries) {
     std::optional<BroadPhase> broad_phase;
     if (query.isGroup()) broad_phase.emplace(scene, query);
-    const bool distance =
-        distances && queryKindInfo(query.request.kind).oracle == OracleNeed::kDistance;
     for (std::size_t frame = 0; frame < scene.frames; ++frame) {
       if (!query.asked.contains(frame)) continue;
       const std::vector<std::pair<std::size_t, std::size_t>> candidates =
           detail::objectPairsAt(broad_phase, query, frame);
       for (const auto& [ia, ib] : candidates)
-        (void)oracle.get(ia, ib, frame, distance);
+        (void)oracle.answerFor(query, ia, ib, frame, distances);
     }
   }
 }

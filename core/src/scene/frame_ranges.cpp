@@ -77,16 +77,28 @@ FrameRanges readFrameRanges(const Reader& r, const Node& node, std::size_t frame
 void checkQueryFrames(const Reader& r, const Node& queries, const Scene& scene) {
   for (std::size_t i = 0; i < scene.queries.size(); ++i) {
     const SceneQuery& query = scene.queries[i];
+    const Node node = queries.at(i);
+    const Node& where = node.has("frames") ? node.at("frames") : node;
+    // A step from frame k needs both objects in k and in k + 1.
+    const bool over_a_step = queryKindInfo(query.request.kind).over_a_step;
+    if (over_a_step && scene.frames > 0 && query.asked.contains(scene.frames - 1)) {
+      r.fail(where, "query '" + query.name + "' is asked over a step from frame " +
+                        std::to_string(scene.frames - 1) +
+                        ", the last: a step needs the frame after it");
+    }
     if (query.isGroup()) continue;  // the broad phase passes only pairs of present objects
     for (const std::size_t object : {query.a, query.b}) {
       const FrameRanges& present = scene.objects[object].present;
       if (present.everyFrame()) continue;
       for (std::size_t frame = 0; frame < scene.frames; ++frame) {
-        if (query.asked.contains(frame) && !present.contains(frame)) {
-          const Node node = queries.at(i);
-          r.fail(node.has("frames") ? node.at("frames") : node,
-                 "query '" + query.name + "' is asked in frame " + std::to_string(frame) +
-                     ", where object '" + scene.objects[object].name + "' does not exist");
+        if (!query.asked.contains(frame)) continue;
+        for (const std::size_t needed : {frame, frame + 1}) {
+          if (needed == frame + 1 && !over_a_step) break;
+          if (present.contains(needed)) continue;
+          r.fail(where, "query '" + query.name + "' is asked " +
+                            (over_a_step ? "over the step from frame " : "in frame ") +
+                            std::to_string(frame) + ", but object '" + scene.objects[object].name +
+                            "' does not exist in frame " + std::to_string(needed));
         }
       }
     }

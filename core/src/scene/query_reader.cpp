@@ -28,6 +28,40 @@ std::string kindNames(Predicate holds) {
   return text;
 }
 
+// The bracket width of a kind asked over a step, and its default frames: every frame that has a
+// next one (a step from frame k is asked "in frame k").
+void readStep(const Reader& r, const Node& node, const QueryKindInfo& kind, const Scene& scene,
+              SceneQuery& query) {
+  if (!kind.over_a_step) {
+    if (node.has("bracket_width")) {
+      r.fail(node.at("bracket_width"),
+             "bracket_width applies to " +
+                 kindNames([](const QueryKindInfo& k) { return k.over_a_step; }) + " queries only");
+    }
+    return;
+  }
+  query.request.bracket_width = kDefaultBracketWidth;
+  if (node.has("bracket_width")) {
+    const double width = r.number(node.at("bracket_width"));
+    if (!(width > 0.0)) r.fail(node.at("bracket_width"), "bracket_width must be > 0");
+    query.request.bracket_width = width;
+  }
+  if (scene.frames < 2) {
+    r.fail(node.at("kind"), std::string("a ") + kind.name +
+                                " query is asked over a step from one frame to the next: the "
+                                "scene needs at least two frames");
+  }
+  query.asked.ranges = {{0, scene.frames - 2}};
+  // The step moves each object rigidly: a shape that changes between frames has no one motion.
+  for (const std::size_t object : {query.a, query.b}) {
+    if (scene.objects[object].changesShape()) {
+      r.fail(node.at("kind"),
+             std::string("a ") + kind.name + " query moves its objects rigidly: '" +
+                 scene.objects[object].name + "' changes shape (states or movable nodes)");
+    }
+  }
+}
+
 QueryKind readQueryKind(const Reader& r, const Node& node) {
   const std::string text = r.string(node);
   if (const std::optional<QueryKind> kind = parseQueryKind(text)) return *kind;
@@ -161,7 +195,7 @@ void readQueries(const Reader& r, const Node& queries,
   for (std::size_t i = 0; i < queries.value.size(); ++i) {
     const Node node = queries.at(i);
     r.expectObject(node, {"name", "a", "b", "among", "except", "kind", "max_pairs", "max_contacts",
-                          "abs_tolerance", "rel_tolerance", "frames"});
+                          "abs_tolerance", "rel_tolerance", "bracket_width", "frames"});
     SceneQuery query;
     std::string label;
     if (node.has("among")) {
@@ -199,6 +233,7 @@ void readQueries(const Reader& r, const Node& queries,
       if (value < 0.0) r.fail(node.at(key), std::string(key) + " must be >= 0");
       (key[0] == 'a' ? query.request.abs_tolerance : query.request.rel_tolerance) = value;
     }
+    readStep(r, node, kind, scene, query);
     if (node.has("frames")) query.asked = readFrameRanges(r, node.at("frames"), scene.frames);
     if (node.has("name")) {
       query.name = r.string(node.at("name"));

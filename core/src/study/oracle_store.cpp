@@ -65,7 +65,7 @@ Status loadOracleAnswers(const std::string& path, OracleCache& cache) {
       if (answer.intersecting == answer.pairs.empty()) {
         return bad("an answer whose pairs contradict its verdict");
       }
-      if (entry.size() > 7) {
+      if (entry.size() > 7 && !entry.at(7).is_null()) {
         // [distance, pair a, pair b, point a xyz, point b xyz, candidates, exact tests]
         const Json& d = entry.at(7);
         MeshDistance distance;
@@ -81,6 +81,27 @@ Status loadOracleAnswers(const std::string& path, OracleCache& cache) {
           return bad("a distance that contradicts its verdict");
         }
         answer.distance = distance;
+      }
+      if (entry.size() > 8) {
+        // [outcome, t_lo, t_hi, witness a, witness b, width, distances, intersection tests]
+        const Json& c = entry.at(8);
+        ExactFirstContact contact;
+        const int outcome = c.at(0).get<int>();
+        if (outcome < 0 || outcome > static_cast<int>(ExactFirstContact::Outcome::kUndecided)) {
+          return bad("a first contact of unknown outcome " + std::to_string(outcome));
+        }
+        contact.outcome = static_cast<ExactFirstContact::Outcome>(outcome);
+        contact.t_lo = c.at(1).get<double>();
+        contact.t_hi = c.at(2).get<double>();
+        contact.witness = TrianglePair{c.at(3).get<std::int32_t>(), c.at(4).get<std::int32_t>()};
+        answer.first_contact_width = c.at(5).get<double>();
+        contact.distance_evaluations = c.at(6).get<std::size_t>();
+        contact.intersection_tests = c.at(7).get<std::size_t>();
+        if (!(0.0 <= contact.t_lo && contact.t_lo <= contact.t_hi && contact.t_hi <= 1.0) ||
+            !(answer.first_contact_width > 0.0)) {
+          return bad("a first contact whose bracket is not within the step");
+        }
+        answer.first_contact = contact;
       }
       read.emplace_back(key, std::move(answer));
     }
@@ -108,6 +129,13 @@ Status saveOracleAnswers(const std::string& path, const OracleCache& cache) {
       entry.push_back(Json::array({d.distance, d.pair.a, d.pair.b, d.point_a.x(), d.point_a.y(),
                                    d.point_a.z(), d.point_b.x(), d.point_b.y(), d.point_b.z(),
                                    d.candidate_pairs, d.exact_tests}));
+    }
+    if (answer.first_contact) {
+      if (!answer.distance) entry.push_back(nullptr);
+      const ExactFirstContact& c = *answer.first_contact;
+      entry.push_back(
+          Json::array({static_cast<int>(c.outcome), c.t_lo, c.t_hi, c.witness.a, c.witness.b,
+                       answer.first_contact_width, c.distance_evaluations, c.intersection_tests}));
     }
     answers.push_back(std::move(entry));
   }

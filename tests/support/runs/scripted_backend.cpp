@@ -1,5 +1,6 @@
 #include "support/runs/scripted_backend.h"
 
+#include <optional>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -35,17 +36,19 @@ class ScriptedCall {
 class ScriptedBackend final : public Backend {
  public:
   ScriptedBackend(std::int64_t fail_build, std::int64_t fail_update, std::int64_t fail_query,
-                  double distance)
+                  double distance, std::optional<FirstContactResult> first_contact)
       : build_("build", fail_build),
         update_("update", fail_update),
         query_("query", fail_query),
-        distance_(distance) {}
+        distance_(distance),
+        first_contact_(first_contact) {}
 
   Capabilities capabilities() const override {
     Capabilities caps;
     caps.shape_kinds = static_cast<std::uint32_t>(ShapeKind::kTriangleMesh);
     caps.queries = QueryKindSet(QueryKind::kBoolean) | QueryKind::kAllPairs | QueryKind::kContacts |
                    QueryKind::kDistance;
+    if (first_contact_) caps.queries |= QueryKind::kFirstContact;
     caps.update = true;
     caps.notes = "test backend: fails where scripted";
     return caps;
@@ -69,6 +72,7 @@ class ScriptedBackend final : public Backend {
       result.distance.point_a = Eigen::Vector3d::Zero();
       result.distance.point_b = Eigen::Vector3d::Zero();
     }
+    if (request.kind == QueryKind::kFirstContact) result.first_contact = *first_contact_;
     return query_.next();
   }
 
@@ -77,6 +81,7 @@ class ScriptedBackend final : public Backend {
   ScriptedCall update_;
   ScriptedCall query_;
   double distance_;
+  std::optional<FirstContactResult> first_contact_;
 };
 
 Result<std::unique_ptr<Backend>> create(const std::string& /*variant*/, BackendOptions& options) {
@@ -89,8 +94,26 @@ Result<std::unique_ptr<Backend>> create(const std::string& /*variant*/, BackendO
   }
   const Result<double> distance = options.getDouble("distance", 0.0, 0.0, 1e9);
   if (!distance.ok()) return distance.status();
-  return std::unique_ptr<Backend>(
-      std::make_unique<ScriptedBackend>(fail[0], fail[1], fail[2], distance.value()));
+  // First contact, offered only when scripted: apart, or a touch with touch_lo and touch_hi.
+  std::optional<FirstContactResult> first_contact;
+  const Result<bool> offers = options.getBool("first_contact", false);
+  const Result<double> touch_lo = options.getDouble("touch_lo", -1.0, -1.0, 1.0);
+  const Result<double> touch_hi = options.getDouble("touch_hi", -1.0, -1.0, 1.0);
+  for (const Status& s :
+       {offers.ok() ? Status() : offers.status(), touch_lo.ok() ? Status() : touch_lo.status(),
+        touch_hi.ok() ? Status() : touch_hi.status()}) {
+    if (!s.ok()) return s;
+  }
+  if (offers.value()) {
+    first_contact.emplace();
+    if (touch_hi.value() >= 0.0) {
+      first_contact->touches = true;
+      first_contact->t_lo = touch_lo.value();
+      first_contact->t_hi = touch_hi.value();
+    }
+  }
+  return std::unique_ptr<Backend>(std::make_unique<ScriptedBackend>(
+      fail[0], fail[1], fail[2], distance.value(), first_contact));
 }
 
 const PluginInfo& describe() {
@@ -99,7 +122,9 @@ const PluginInfo& describe() {
       "1.0.0",
       "none (test backend)",
       "1.0.0",
-      {{"scripted", "answers apart; fail_build/update/query=N fail; distance=D"}},
+      {{"scripted",
+        "answers apart; fail_build/update/query=N fail; distance=D; "
+        "first_contact=true answers first contacts apart, or touching with touch_lo=T;touch_hi=T"}},
       &create};
   return info;
 }

@@ -27,7 +27,8 @@ TEST(QueryKinds, EveryEntryIsOneBitOfThePluginInterfaceAndNamedOnce) {
     EXPECT_NE(kind.answer_parts, 0u) << kind.name << " answers nothing";
   }
   const std::uint32_t c_bits = COLLIDO_QUERY_BOOLEAN | COLLIDO_QUERY_ALL_PAIRS |
-                               COLLIDO_QUERY_CONTACTS | COLLIDO_QUERY_DISTANCE;
+                               COLLIDO_QUERY_CONTACTS | COLLIDO_QUERY_DISTANCE |
+                               COLLIDO_QUERY_FIRST_CONTACT;
   EXPECT_EQ(bits, c_bits) << "the C interface's CollidoQueryKind and the table differ";
   EXPECT_FALSE(parseQueryKind("penetration"));
 }
@@ -50,6 +51,9 @@ TEST(QueryKinds, TheOracleComputesWhatEachAnswerPartIsCheckedAgainst) {
     if (kind.tolerances) {
       EXPECT_TRUE(kind.has(AnswerPart::kDistance));
     }
+    // A step's answer is checked against the oracle's bracket over that step.
+    EXPECT_EQ(kind.over_a_step, kind.oracle == OracleNeed::kFirstContact);
+    EXPECT_EQ(kind.over_a_step, kind.has(AnswerPart::kFirstContact));
   }
 }
 

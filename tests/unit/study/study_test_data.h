@@ -101,7 +101,7 @@ inline QueryMeasurement booleanMeasurement(const std::string& backend) {
 }
 
 /// A contacts query whose frames carry every optional figure a run can record (tracking, distance,
-/// contacts, floor, update work), timed under the cycled protocol in two rounds.
+/// first contact, contacts, floor, update work), timed under the cycled protocol in two rounds.
 inline QueryMeasurement everyFieldMeasurement(const std::string& backend) {
   QueryMeasurement m = named(backend, "tracked_tori", "touch", QueryKind::kContacts);
   m.protocol = TimingProtocol::kCycled;
@@ -126,6 +126,13 @@ inline QueryMeasurement everyFieldMeasurement(const std::string& backend) {
     f.distance_below = 1e-12;
     f.distance_above = 2e-12;
     f.invalid_distance_witness = i == 1;
+    f.oracle_touches = i == 0;
+    f.oracle_t_lo = 0.25;
+    f.oracle_t_hi = 0.25 + 1e-3;
+    f.reported_t_lo = 0.2;
+    f.reported_t_hi = 0.201;
+    f.first_contact_error = 0.0505;
+    f.invalid_first_contact = i == 1;
     ContactScore contact;
     contact.contacts = 4;
     contact.false_pairs = 1;

@@ -27,7 +27,7 @@ extern "C" {
 #endif
 
 /** The interface version; bump it on any change to the structures or functions below. */
-#define COLLIDO_PLUGIN_ABI_VERSION 5u
+#define COLLIDO_PLUGIN_ABI_VERSION 6u
 
 /** The one symbol a plugin shared library exports. */
 #define COLLIDO_PLUGIN_ENTRY_SYMBOL "collido_plugin_table"
@@ -48,7 +48,8 @@ typedef enum CollidoQueryKind {
   COLLIDO_QUERY_BOOLEAN = 1u << 0,   /**< do the two shapes share a point? (early exit allowed) */
   COLLIDO_QUERY_ALL_PAIRS = 1u << 1, /**< every intersecting (triangle of A, triangle of B) pair */
   COLLIDO_QUERY_CONTACTS = 1u << 2,  /**< contact points with normal and depth */
-  COLLIDO_QUERY_DISTANCE = 1u << 3   /**< the distance between the shapes, with closest points */
+  COLLIDO_QUERY_DISTANCE = 1u << 3,  /**< the distance between the shapes, with closest points */
+  COLLIDO_QUERY_FIRST_CONTACT = 1u << 4 /**< when the shapes first touch as they move over a step */
 } CollidoQueryKind;
 
 /** Bit flags naming the shape kinds a backend can build. */
@@ -161,6 +162,12 @@ typedef struct CollidoQueryRequest {
    *  can. Finite and >= 0. */
   double abs_tolerance;
   double rel_tolerance;
+  /** FIRST_CONTACT: the poses of A and B at the step's end (the query's poses are its start);
+   *  each object's origin moves on the line between its two poses and it turns at a constant
+   *  rate about one fixed axis through its origin (collido::StepMotion). Rigid. */
+  CollidoPose end_a;
+  CollidoPose end_b;
+  double bracket_width; /**< FIRST_CONTACT: the widest bracket of the first contact, > 0 */
 } CollidoQueryRequest;
 
 /** An intersecting pair: triangle index in A, triangle index in B (as given to build). */
@@ -194,6 +201,16 @@ typedef struct CollidoDistance {
   uint32_t has_params; /**< 1 when params_a and params_b are set (both shapes are surfaces) */
 } CollidoDistance;
 
+/** The answer to a FIRST_CONTACT query, t in [0, 1] along the step. */
+typedef struct CollidoFirstContact {
+  uint32_t touches;   /**< 1 when the shapes share a point at some t of the step */
+  uint32_t reserved;  /**< zero */
+  double t_lo;        /**< touches: no shared point before t_lo */
+  double t_hi;        /**< touches: a shared point at t_hi; t_lo <= t_hi <= t_lo + bracket_width */
+  int32_t triangle_a; /**< a pair touching at t_hi, or -1 when the engine does not say */
+  int32_t triangle_b;
+} CollidoFirstContact;
+
 /** Work the backend did for one query; fields are valid only where `counted` has the bit. */
 typedef struct CollidoWorkCounters {
   uint64_t bv_tests;        /**< bounding-volume overlap tests */
@@ -210,7 +227,8 @@ typedef struct CollidoQueryResult {
   uint64_t pair_count;
   const CollidoContact* contacts;
   uint64_t contact_count;
-  CollidoDistance distance; /**< DISTANCE queries only */
+  CollidoDistance distance;          /**< DISTANCE queries only */
+  CollidoFirstContact first_contact; /**< FIRST_CONTACT queries only */
   CollidoWorkCounters counters;
 } CollidoQueryResult;
 

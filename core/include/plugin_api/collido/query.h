@@ -10,14 +10,17 @@
 
 #include <Eigen/Core>
 
+#include <collido/geometry.h>
+
 namespace collido {
 
 /// The question a query asks; values are CollidoQueryKind bits.
 enum class QueryKind : std::uint32_t {
-  kBoolean = 1u << 0,   ///< do the shapes share a point? (a backend may stop at the first hit)
-  kAllPairs = 1u << 1,  ///< every intersecting (triangle of A, triangle of B) pair
-  kContacts = 1u << 2,  ///< contact points with normal and depth
-  kDistance = 1u << 3,  ///< the distance between the shapes, with closest points
+  kBoolean = 1u << 0,       ///< do the shapes share a point? (a backend may stop at the first hit)
+  kAllPairs = 1u << 1,      ///< every intersecting (triangle of A, triangle of B) pair
+  kContacts = 1u << 2,      ///< contact points with normal and depth
+  kDistance = 1u << 3,      ///< the distance between the shapes, with closest points
+  kFirstContact = 1u << 4,  ///< the first time the shapes touch as they move over a step
 };
 
 /// Stable lower-case name ("boolean", "all_pairs", "contacts").
@@ -87,6 +90,12 @@ struct QueryRequest {
   /// d) beyond rounding; both 0 asks for the backend's best.
   double abs_tolerance = 0.0;
   double rel_tolerance = 0.0;
+  /// kFirstContact: the poses of A and B at the step's end (the query's poses are its start;
+  /// both move as StepMotion says), and the widest bracket of the first contact's time asked
+  /// for, > 0.
+  Pose end_pose_a = Pose::Identity();
+  Pose end_pose_b = Pose::Identity();
+  double bracket_width = 0.0;
 };
 
 /// The parts of an answer; the runner checks each part a kind's answer carries against the
@@ -97,13 +106,15 @@ enum class AnswerPart : std::uint32_t {
   kPairSet = 1u << 2,       ///< QueryResult::pairs: every intersecting pair (recall, precision)
   kContacts = 1u << 3,      ///< QueryResult::contacts, scored against the exact intersection
   kDistance = 1u << 4,      ///< QueryResult::distance: the distance and closest points
+  kFirstContact = 1u << 5,  ///< QueryResult::first_contact: whether and when over the step
 };
 
 /// What the exact reference computes for a kind's answers to be checked.
 enum class OracleNeed {
-  kWitness,   ///< whether the shapes intersect, with one intersecting pair
-  kAllPairs,  ///< every intersecting pair
-  kDistance,  ///< the exact distance with closest points
+  kWitness,       ///< whether the shapes intersect, with one intersecting pair
+  kAllPairs,      ///< every intersecting pair
+  kDistance,      ///< the exact distance with closest points
+  kFirstContact,  ///< the certified bracket of the first contact over the step
 };
 
 /// One query kind: what it asks, what its answer holds, what checks it. Every place that
@@ -116,6 +127,7 @@ struct QueryKindInfo {
   /// The request's limit that may cut the answer short, or nullptr.
   std::uint64_t QueryRequest::*limit;
   bool tolerances;          ///< reads abs_tolerance and rel_tolerance
+  bool over_a_step;         ///< asked from one frame to the next: reads the end poses and width
   bool over_groups;         ///< may be asked of a group: answers add up over its object pairs
   bool settled_when_apart;  ///< objects a broad phase proves apart need not be asked
   OracleNeed oracle;
@@ -134,17 +146,25 @@ constexpr std::uint32_t answerParts(std::initializer_list<AnswerPart> parts) {
 
 /// Every query kind, in the order tables list them: the one table of kinds.
 inline constexpr QueryKindInfo kQueryKinds[] = {
+    // kind, name, summary,
+    // answer parts, limit,
+    // tolerances, over_a_step, over_groups, settled_when_apart, oracle
     {QueryKind::kBoolean, "boolean", "do the shapes share a point? (a witness pair where given)",
      answerParts({AnswerPart::kIntersecting, AnswerPart::kWitnessPairs}), nullptr, false, false,
-     true, OracleNeed::kWitness},
+     false, true, OracleNeed::kWitness},
     {QueryKind::kAllPairs, "all_pairs", "every intersecting (triangle of A, triangle of B) pair",
      answerParts({AnswerPart::kIntersecting, AnswerPart::kPairSet}), &QueryRequest::max_pairs,
-     false, true, true, OracleNeed::kAllPairs},
+     false, false, true, true, OracleNeed::kAllPairs},
     {QueryKind::kContacts, "contacts", "contact points with normal and depth",
      answerParts({AnswerPart::kIntersecting, AnswerPart::kContacts}), &QueryRequest::max_contacts,
-     false, true, true, OracleNeed::kAllPairs},
+     false, false, true, true, OracleNeed::kAllPairs},
     {QueryKind::kDistance, "distance", "the distance between the shapes, with closest points",
-     answerParts({AnswerPart::kDistance}), nullptr, true, false, false, OracleNeed::kDistance},
+     answerParts({AnswerPart::kDistance}), nullptr, true, false, false, false,
+     OracleNeed::kDistance},
+    {QueryKind::kFirstContact, "first_contact",
+     "when the shapes first touch as they move from this frame's poses to the next's",
+     answerParts({AnswerPart::kFirstContact}), nullptr, false, true, false, false,
+     OracleNeed::kFirstContact},
 };
 
 /// The table's entry of `kind`.
@@ -166,6 +186,16 @@ struct DistanceResult {
   std::optional<double> upper;
 };
 
+/// The answer to a kFirstContact query: whether the shapes touch during the step and, if so,
+/// a bracket [t_lo, t_hi] of the first time they do, t in [0, 1] along the step.
+struct FirstContactResult {
+  bool touches = false;
+  double t_lo = 1.0;  ///< no shared point before t_lo
+  double t_hi = 1.0;  ///< the shapes share a point at t_hi; t_hi - t_lo <= the width asked
+  std::int32_t triangle_a = -1;  ///< a pair touching at t_hi, or -1 when the engine does not say
+  std::int32_t triangle_b = -1;
+};
+
 /// Work a backend did for one query; each figure is meaningful only when its flag is set.
 struct WorkCounters {
   std::uint64_t bv_tests = 0;           ///< bounding-volume overlap tests
@@ -176,11 +206,12 @@ struct WorkCounters {
 
 /// The answer to one query. Reuse one object across queries: its vectors keep their capacity.
 struct QueryResult {
-  bool intersecting = false;        ///< the shapes share at least one point
-  bool truncated = false;           ///< a limit in the request stopped the query early
-  std::vector<TrianglePair> pairs;  ///< kAllPairs (and, where known, kBoolean's witness)
-  std::vector<Contact> contacts;    ///< kContacts
-  DistanceResult distance;          ///< kDistance
+  bool intersecting = false;         ///< the shapes share at least one point
+  bool truncated = false;            ///< a limit in the request stopped the query early
+  std::vector<TrianglePair> pairs;   ///< kAllPairs (and, where known, kBoolean's witness)
+  std::vector<Contact> contacts;     ///< kContacts
+  DistanceResult distance;           ///< kDistance
+  FirstContactResult first_contact;  ///< kFirstContact
   WorkCounters counters;
 
   /// Empties the answer, keeping vector capacity.
@@ -190,6 +221,7 @@ struct QueryResult {
     pairs.clear();
     contacts.clear();
     distance = DistanceResult{};
+    first_contact = FirstContactResult{};
     counters = WorkCounters{};
   }
 };

@@ -10,6 +10,7 @@
 #include <collido/geometry.h>
 #include <collido/mesh/triangle_mesh.h>
 #include <collido/oracle/distance_oracle.h>
+#include <collido/oracle/first_contact_oracle.h>
 #include <collido/query.h>
 
 namespace collido {
@@ -28,6 +29,10 @@ struct OracleAnswer {
   std::size_t exact_tests = 0;      ///< pairs decided by exact predicates
   /// The exact distance, where a distance query asks about the pair (exactMeshDistance).
   std::optional<MeshDistance> distance;
+  /// The first contact over the step from this frame to the next, where a query over a step
+  /// asks about the pair (exactFirstContact), and the bracket width it was computed to.
+  std::optional<ExactFirstContact> first_contact;
+  double first_contact_width = 0.0;
 };
 
 /// Every pair (triangle of A, triangle of B) whose closed triangles share at least one point,

@@ -85,6 +85,13 @@ void visitFrameFields(Frame& f, bool counts_bv_tests, bool counts_primitive_test
   visit("distance_above", f.distance_above, Absent::kKeep);
   visit("invalid_distance_witness", f.invalid_distance_witness, Absent::kKeep);
   visit("contact", f.contact, Absent::kKeep);
+  visit("oracle_touches", f.oracle_touches, Absent::kKeep);
+  visit("oracle_t_lo", f.oracle_t_lo, Absent::kKeep);
+  visit("oracle_t_hi", f.oracle_t_hi, Absent::kKeep);
+  visit("reported_t_lo", f.reported_t_lo, Absent::kKeep);
+  visit("reported_t_hi", f.reported_t_hi, Absent::kKeep);
+  visit("first_contact_error", f.first_contact_error, Absent::kKeep);
+  visit("invalid_first_contact", f.invalid_first_contact, Absent::kKeep);
   visit("median_us", f.median_us, Absent::kError);
   visit("floor_us", f.floor_us, Absent::kKeep);
   visit("update_us", f.update_us, Absent::kKeep);
@@ -141,6 +148,7 @@ void visitMeasurementSummary(const QueryMeasurement& m, Visit&& visit) {
   visit("tracking_missed_within_margin", m.tracking_missed_within_margin);
   visit("max_distance_error", m.max_distance_error);
   visit("max_relative_distance_error", m.max_relative_distance_error);
+  visit("max_first_contact_error", m.max_first_contact_error);
   visit("contact", m.contact);
   visit("recall", m.recall);
   visit("precision", m.precision);

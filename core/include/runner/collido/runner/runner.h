@@ -144,6 +144,22 @@ struct FrameRecord {
   bool invalid_distance_witness = false;
   /// kContacts: the contacts held to the exact reference (docs/DESIGN.md, "Contact geometry").
   std::optional<ContactScore> contact;
+  /// kFirstContact: whether the shapes touch over the step (unset where the oracle could not
+  /// decide: a grazing pass within rounding), the oracle's bracket and the reported one (where
+  /// the backend says they touch), and the largest error of a first-contact time within the
+  /// reported bracket, max(reported t_hi - oracle t_lo, oracle t_hi - reported t_lo), where both
+  /// say they touch. oracle_intersecting and reported_intersecting hold the verdicts (the
+  /// backend's verdict stands for the oracle's where the oracle could not decide).
+  std::optional<bool> oracle_touches;
+  std::optional<double> oracle_t_lo;
+  std::optional<double> oracle_t_hi;
+  std::optional<double> reported_t_lo;
+  std::optional<double> reported_t_hi;
+  std::optional<double> first_contact_error;
+  /// kFirstContact: the reported bracket contradicts the oracle's (its contact lies where the
+  /// oracle proved none, or its free part past the oracle's proven contact, beyond 1e-12), or
+  /// its witness pair does not share a point at its t_hi (decided exactly).
+  bool invalid_first_contact = false;
   std::uint64_t bv_tests = 0;
   std::uint64_t primitive_tests = 0;
   /// Object pairs asked: 1 for a two-object query (0 where RunOptions::skip_apart_pairs culled
@@ -217,6 +233,8 @@ struct QueryMeasurement {
   /// to the exact distance (frames at distance 0 count in the absolute figure only).
   std::optional<double> max_distance_error;
   std::optional<double> max_relative_distance_error;
+  /// kFirstContact: the largest FrameRecord::first_contact_error over the frames.
+  std::optional<double> max_first_contact_error;
   /// kContacts: the frames' contact scores folded together (maxima of the errors, coverage of
   /// all frames' intersection curves together); unset for other queries.
   std::optional<ContactScore> contact;
@@ -272,6 +290,13 @@ class OracleCache {
   /// scene asks about both, else a witness; with `distance`, the exact distance too (computed on
   /// the first distance query that asks, so backends that answer no distance never pay for it).
   const OracleAnswer& get(std::size_t a, std::size_t b, std::size_t frame, bool distance = false);
+  /// get()'s answer with the first contact over the step from `frame` to the next, bracketed to
+  /// `width` at most (computed on first use, and again when a narrower bracket is asked).
+  const OracleAnswer& getStep(std::size_t a, std::size_t b, std::size_t frame, double width);
+  /// The answer `query` is checked against for objects `a` and `b` in `frame`: what its kind's
+  /// QueryKindInfo::oracle says (with `distances` false, a distance query's needs no distance).
+  const OracleAnswer& answerFor(const SceneQuery& query, std::size_t a, std::size_t b,
+                                std::size_t frame, bool distances = true);
   const Scene& scene() const { return scene_; }
   bool witnessOnly() const { return witness_only_; }
 

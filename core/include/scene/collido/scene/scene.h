@@ -96,6 +96,10 @@ struct SceneObject {
   std::shared_ptr<const TriangleMesh> shapeAt(std::size_t frame) const;
 };
 
+/// The bracket width of a query asked over a step whose file gives none: a thousandth of the
+/// step.
+inline constexpr double kDefaultBracketWidth = 1e-3;
+
 /// One question asked in every frame (or those of `asked`): of two objects, or of a group of
 /// objects after a shared broad phase (a pile: every object pair whose bounds may touch gets the
 /// question).
@@ -114,7 +118,8 @@ struct SceneQuery {
   /// pairs), each (low, high) index, sorted.
   std::vector<std::pair<std::size_t, std::size_t>> except;
   QueryRequest request;
-  /// The frames it is asked in; a group query skips a pair whose object is absent.
+  /// The frames it is asked in; a group query skips a pair whose object is absent. A query
+  /// over a step (QueryKindInfo::over_a_step) asked in frame k asks about the step to k + 1.
   FrameRanges asked;
 
   bool isGroup() const { return !among.empty(); }
