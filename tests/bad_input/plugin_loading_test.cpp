@@ -452,6 +452,35 @@ TEST(PluginLoading, NegativeOrNonFiniteDistanceToleranceIsInvalid) {
   }
 }
 
+// A first contact asked with a bad end of its step, or a bracket width at or below zero:
+// "obbtree: query: end pose of B: pose has a non-finite entry",
+// "obbtree: query: end pose of A: not a rotation (...)",
+// "obbtree: query: the bracket width must be finite and > 0, not 0.000000"
+TEST(PluginLoading, AFirstContactWithABadStepIsInvalid) {
+  Built built = builtTetrahedron(BuildNeeds{QueryKindSet(QueryKind::kFirstContact)});
+  ASSERT_NE(built.model, 0u);
+  const auto ask = [&](const QueryRequest& request) {
+    QueryResult result;
+    return built.backend->query(built.model, Pose::Identity(), built.model, Pose::Identity(),
+                                request, result);
+  };
+  QueryRequest request;
+  request.kind = QueryKind::kFirstContact;
+  request.bracket_width = 1e-3;
+  ASSERT_TRUE(ask(request).ok());
+  QueryRequest not_finite = request;
+  not_finite.end_pose_b.translation().y() = std::numeric_limits<double>::infinity();
+  EXPECT_TRUE(rejected(ask(not_finite), {"obbtree", "end pose of B", "non-finite"}));
+  QueryRequest sheared = request;
+  sheared.end_pose_a.linear()(0, 1) = 0.5;
+  EXPECT_TRUE(rejected(ask(sheared), {"obbtree", "end pose of A", "not a rotation"}));
+  for (const double width : {0.0, -1.0, std::numeric_limits<double>::quiet_NaN()}) {
+    QueryRequest bad_width = request;
+    bad_width.bracket_width = width;
+    EXPECT_TRUE(rejected(ask(bad_width), {"obbtree", "bracket width must be finite and > 0"}));
+  }
+}
+
 // A request must name exactly one kind: "obbtree: query: kind 3 is not one kind"
 TEST(PluginLoading, QueryOfTwoKindsAtOnceIsInvalid) {
   const CollidoPluginTable& table = *collido_plugin_table_obbtree();

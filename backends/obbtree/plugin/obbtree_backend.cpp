@@ -4,6 +4,7 @@
 #include <collido/obbtree/collide.h>
 #include <collido/obbtree/contacts.h>
 #include <collido/obbtree/distance.h>
+#include <collido/obbtree/first_contact.h>
 #include <collido/obbtree/tree.h>
 #include <collido/plugin_export.h>
 
@@ -16,19 +17,27 @@ class ObbTreeModel final : public BackendModel {
  public:
   // A model that will answer contacts keeps where each input triangle sits in leaf order
   // (4 bytes a triangle); others pay nothing for contacts.
-  ObbTreeModel(ObbTree tree, bool contacts) : tree_(std::move(tree)) {
+  ObbTreeModel(ObbTree tree, bool contacts)
+      : tree_(std::move(tree)), radius_(radiusAboutOrigin(tree_)) {
     if (contacts) positions_ = leafPositionsOfIds(tree_);
   }
   std::size_t memoryBytes() const override {
     return sizeof(*this) + tree_.memoryBytes() + positions_.capacity() * sizeof(std::int32_t);
   }
-  ObbTree& tree() { return tree_; }
   const ObbTree& tree() const { return tree_; }
+  // The vertices' largest distance from the origin, a motion's reach, kept with the vertices.
+  double radius() const { return radius_; }
+  RefitReport refit(const Eigen::Ref<const Eigen::Matrix3Xd>& positions) {
+    const RefitReport report = tree_.refit(positions);
+    radius_ = radiusAboutOrigin(tree_);
+    return report;
+  }
   // The adapter asks contacts only of models whose needs announced them.
   const std::vector<std::int32_t>& leafPositions() const { return positions_; }
 
  private:
   ObbTree tree_;
+  double radius_ = 0.0;
   std::vector<std::int32_t> positions_;
 };
 
@@ -46,7 +55,7 @@ class ObbTreeBackend final : public Backend {
     Capabilities caps;
     caps.shape_kinds = static_cast<std::uint32_t>(ShapeKind::kTriangleMesh);
     caps.queries = QueryKindSet(QueryKind::kBoolean) | QueryKind::kAllPairs | QueryKind::kContacts |
-                   QueryKind::kDistance;
+                   QueryKind::kDistance | QueryKind::kFirstContact;
     caps.update = true;
     caps.counts_bv_tests = true;
     caps.counts_primitive_tests = true;
@@ -60,7 +69,9 @@ class ObbTreeBackend final : public Backend {
         "docs/DESIGN.md defines them: one per exact intersecting pair at the mean of its "
         "intersection set (double precision where well conditioned, else exact), the face "
         "normal with the smaller local depth; merged within contact_merge_radius, capped by "
-        "max_contacts keeping a spread of them.";
+        "max_contacts keeping a spread of them. First contact over a step by conservative "
+        "advancement on the certified distance, closed by exact collision tests: certified as "
+        "the exact reference's bracket is.";
     return caps;
   }
 
@@ -83,7 +94,7 @@ class ObbTreeBackend final : public Backend {
 
   Status update(BackendModel& model, const Eigen::Ref<const Eigen::Matrix3Xd>& positions,
                 UpdateCounters& counters) override {
-    const RefitReport report = static_cast<ObbTreeModel&>(model).tree().refit(positions);
+    const RefitReport report = static_cast<ObbTreeModel&>(model).refit(positions);
     counters.nodes_refit = report.nodes_refit;
     counters.rebuilds = report.subtrees_rebuilt;
     counters.nodes_rebuilt = report.nodes_rebuilt;
@@ -97,6 +108,9 @@ class ObbTreeBackend final : public Backend {
     const ObbTreeModel& model_b = static_cast<ObbTreeModel&>(b);
     const ObbTree& tree_a = model_a.tree();
     const ObbTree& tree_b = model_b.tree();
+    if (request.kind == QueryKind::kFirstContact) {
+      return firstContactQuery(model_a, pose_a, model_b, pose_b, request, result);
+    }
     if (request.kind == QueryKind::kDistance) {
       DistanceAnswer answer;
       distance(tree_a, pose_a, tree_b, pose_b,
@@ -150,6 +164,25 @@ class ObbTreeBackend final : public Backend {
   }
 
  private:
+  static Status firstContactQuery(const ObbTreeModel& a, const Pose& pose_a, const ObbTreeModel& b,
+                                  const Pose& pose_b, const QueryRequest& request,
+                                  QueryResult& result) {
+    // The adapter has checked every pose is rigid.
+    const StepMotion motion_a = StepMotion::between(pose_a, request.end_pose_a, "A").value();
+    const StepMotion motion_b = StepMotion::between(pose_b, request.end_pose_b, "B").value();
+    FirstContactAnswer answer;
+    firstContact(MovingTree{a.tree(), motion_a, a.radius()},
+                 MovingTree{b.tree(), motion_b, b.radius()}, request.bracket_width, answer);
+    result.first_contact = {answer.touches, answer.t_lo, answer.t_hi, answer.triangle_a,
+                            answer.triangle_b};
+    result.intersecting = answer.touches;
+    result.counters.bv_tests = answer.box_tests;
+    result.counters.primitive_tests = answer.triangle_tests;
+    result.counters.counts_bv_tests = true;
+    result.counters.counts_primitive_tests = true;
+    return {};
+  }
+
   BuildOptions options_;
   int threads_ = 1;
   bool share_states_ = true;

@@ -164,7 +164,11 @@ Status readStep(const CollidoQueryRequest& in, QueryRequest& out) {
 
 // A first contact's answer must be a bracket within the step, no wider than asked.
 Status checkFirstContact(const FirstContactResult& c, double width) {
-  if (!c.touches) return {};
+  if (!c.touches) {
+    if (c.t_lo >= 0.0 && c.t_lo <= 1.0) return {};
+    return {StatusCode::kInternal, "first contact answered no contact after t_lo = " +
+                                       std::to_string(c.t_lo) + ", not within [0, 1]"};
+  }
   if (!(c.t_lo >= 0.0 && c.t_lo <= c.t_hi && c.t_hi <= 1.0)) {
     return {StatusCode::kInternal, "first contact answered the bracket [" + std::to_string(c.t_lo) +
                                        ", " + std::to_string(c.t_hi) + "], not within [0, 1]"};

@@ -175,12 +175,15 @@ void compareFirstContact(const TriangleMesh& a, const Pose& pose_a, const Triang
     record.oracle_intersecting = reported.touches;
   }
   if (truth.outcome == Outcome::kTouch) record.oracle_t_hi = truth.t_hi;
+  // Every answer claims its free part: a free part past the oracle's proven contact is wrong.
+  const bool free_too_long =
+      truth.outcome == Outcome::kTouch && reported.t_lo > truth.t_hi + kTimeRounding;
+  record.invalid_first_contact = free_too_long;
   if (!reported.touches) return;
   record.reported_t_lo = reported.t_lo;
   record.reported_t_hi = reported.t_hi;
-  bool invalid = reported.t_hi < truth.t_lo - kTimeRounding;
+  bool invalid = free_too_long || reported.t_hi < truth.t_lo - kTimeRounding;
   if (truth.outcome == Outcome::kTouch) {
-    invalid = invalid || reported.t_lo > truth.t_hi + kTimeRounding;
     record.first_contact_error =
         std::max({reported.t_hi - truth.t_lo, truth.t_hi - reported.t_lo, 0.0});
   }

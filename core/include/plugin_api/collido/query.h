@@ -190,7 +190,9 @@ struct DistanceResult {
 /// a bracket [t_lo, t_hi] of the first time they do, t in [0, 1] along the step.
 struct FirstContactResult {
   bool touches = false;
-  double t_lo = 1.0;  ///< no shared point before t_lo
+  /// No shared point before t_lo. Without a touch, t_lo = 1 says apart over the whole step;
+  /// below 1, the backend could not decide past t_lo (a grazing pass) and claims nothing there.
+  double t_lo = 1.0;
   double t_hi = 1.0;  ///< the shapes share a point at t_hi; t_hi - t_lo <= the width asked
   std::int32_t triangle_a = -1;  ///< a pair touching at t_hi, or -1 when the engine does not say
   std::int32_t triangle_b = -1;
