@@ -15,6 +15,7 @@
 #include <utility>
 
 #include <collido/host/backend_instance.h>
+#include <collido/motion.h>
 #include <collido/runner/statistics.h>
 #include <collido/runner/timed_calls.h>
 
@@ -39,20 +40,65 @@ Result<double> timeFrameCall(const ObjectPairs& candidates, const Ask& ask) {
   });
 }
 
+// A step's answer from boolean answers at t = k / substeps, k = 0 .. substeps: the first that
+// touches closes the bracket. Counters are the calls' summed.
+Status substepAnswer(BackendInstance& backend, ModelHandle model_a, const Pose& pose_a,
+                     ModelHandle model_b, const Pose& pose_b, const QueryRequest& request,
+                     int substeps, QueryResult& result) {
+  // The scene reader and the runner made these poses; a step between them always exists.
+  const StepMotion motion_a = StepMotion::between(pose_a, request.end_pose_a, "A").value();
+  const StepMotion motion_b = StepMotion::between(pose_b, request.end_pose_b, "B").value();
+  QueryRequest boolean;
+  boolean.kind = QueryKind::kBoolean;
+  FirstContactResult answer;
+  WorkCounters counters;
+  for (int k = 0; k <= substeps; ++k) {
+    const double t = static_cast<double>(k) / substeps;
+    if (Status s = backend.query(model_a, motion_a.at(t), model_b, motion_b.at(t), boolean, result);
+        !s.ok()) {
+      return s;
+    }
+    counters.bv_tests += result.counters.bv_tests;
+    counters.primitive_tests += result.counters.primitive_tests;
+    counters.counts_bv_tests = result.counters.counts_bv_tests;
+    counters.counts_primitive_tests = result.counters.counts_primitive_tests;
+    if (!result.intersecting) continue;
+    answer.touches = true;
+    answer.t_lo = k == 0 ? 0.0 : static_cast<double>(k - 1) / substeps;
+    answer.t_hi = t;
+    if (!result.pairs.empty()) {
+      answer.triangle_a = result.pairs.front().a;
+      answer.triangle_b = result.pairs.front().b;
+    }
+    break;
+  }
+  result.clear();
+  result.intersecting = answer.touches;
+  result.first_contact = answer;
+  result.counters = counters;
+  return {};
+}
+
 MeasurementStatus frameFailure(std::size_t frame, const std::string& what) {
   return MeasurementStatus::failed("frame " + std::to_string(frame) + ": " + what);
 }
 
 // Why the backend cannot answer `query` of `scene` (a skipped measurement), or nothing.
 std::optional<MeasurementStatus> cannotAnswer(const Scene& scene, const SceneQuery& query,
-                                              const Capabilities& caps, const std::string& label) {
+                                              const Capabilities& caps, const std::string& label,
+                                              int substeps) {
   if (!caps.buildsShape(ShapeKind::kTriangleMesh)) {
     return MeasurementStatus::skipped(
         label + " builds no triangle meshes (the scene's objects are meshes)");
   }
-  if (!caps.queries.contains(query.request.kind)) {
-    return MeasurementStatus::skipped(label + " does not answer " +
-                                      queryKindName(query.request.kind) + " queries");
+  const QueryKindSet asked = askedKinds(query.request.kind, substeps);
+  if (!caps.queries.containsAll(asked)) {
+    return MeasurementStatus::skipped(
+        label + " does not answer " + queryKindsText(asked) + " queries" +
+        (asked == QueryKindSet(query.request.kind)
+             ? std::string()
+             : std::string(" (its ") + queryKindName(query.request.kind) +
+                   " by sub-steps asks them)"));
   }
   const std::vector<std::size_t> objects = query.objects();
   const bool deforms = std::any_of(objects.begin(), objects.end(), [&](std::size_t i) {
@@ -73,6 +119,7 @@ struct QueryRun {
   const SceneModels& models;
   BackendInstance& backend;
   OracleCache& oracle;
+  int substeps = 0;  ///< BackendSpec::substeps
 
   ModelHandle modelAt(std::size_t object, std::size_t frame) const {
     return models.at(object)[scene.objects[object].stateAt(frame)].handle;
@@ -88,6 +135,11 @@ struct QueryRun {
   }
   Status ask(std::size_t ia, std::size_t ib, std::size_t frame, const QueryRequest& request,
              QueryResult& result) const {
+    if (substeps > 0 && queryKindInfo(request.kind).over_a_step) {
+      return substepAnswer(backend, modelAt(ia, frame), scene.objects[ia].poseAt(frame),
+                           modelAt(ib, frame), scene.objects[ib].poseAt(frame), request, substeps,
+                           result);
+    }
     return backend.query(modelAt(ia, frame), scene.objects[ia].poseAt(frame), modelAt(ib, frame),
                          scene.objects[ib].poseAt(frame), request, result);
   }
@@ -333,6 +385,16 @@ void timeRepeatedAfterCycled(const QueryRun& run, const std::vector<FrameWork>& 
 
 }  // namespace
 
+QueryKindSet askedKinds(QueryKindSet kinds, int substeps) {
+  if (substeps <= 0) return kinds;
+  QueryKindSet asked;
+  for (const QueryKindInfo& kind : kQueryKinds) {
+    if (!kinds.contains(kind.kind)) continue;
+    asked |= kind.over_a_step ? QueryKindSet(QueryKind::kBoolean) : QueryKindSet(kind.kind);
+  }
+  return asked;
+}
+
 void runSceneOnBackend(const Scene& scene, const BackendSpec& spec, OracleCache& oracle,
                        OracleCache* finest_oracle, const RunOptions& options, RunReport& report) {
   const std::string label = spec.label();
@@ -345,7 +407,7 @@ void runSceneOnBackend(const Scene& scene, const BackendSpec& spec, OracleCache&
     return m;
   };
   Result<std::unique_ptr<BackendInstance>> created =
-      BackendInstance::create(spec.library, spec.variant, spec.options);
+      BackendInstance::create(spec.library, spec.variant, spec.pluginOptions());
   if (!created.ok()) {
     report.problems.push_back(created.status().message());
     for (const SceneQuery& q : scene.queries) {
@@ -359,7 +421,7 @@ void runSceneOnBackend(const Scene& scene, const BackendSpec& spec, OracleCache&
   const Capabilities& caps = backend.capabilities();
   // Queries the backend cannot answer are skipped below with the reason.
   const SceneModels models = caps.buildsShape(ShapeKind::kTriangleMesh)
-                                 ? buildSceneModels(scene, backend, options, label)
+                                 ? buildSceneModels(scene, backend, options, label, spec.substeps())
                                  : SceneModels();
 
   // Objects posed from tracked markers: the same scene at the true poses, whose exact answers
@@ -375,12 +437,13 @@ void runSceneOnBackend(const Scene& scene, const BackendSpec& spec, OracleCache&
   for (const SceneQuery& query : scene.queries) {
     QueryMeasurement m = measurementOf(query);
     m.protocol = options.protocol;
-    if (std::optional<MeasurementStatus> skipped = cannotAnswer(scene, query, caps, label)) {
+    if (std::optional<MeasurementStatus> skipped =
+            cannotAnswer(scene, query, caps, label, spec.substeps())) {
       m.status = *skipped;
       report.measurements.push_back(m);
       continue;
     }
-    const QueryRun run{scene, query, query.objects(), models, backend, oracle};
+    const QueryRun run{scene, query, query.objects(), models, backend, oracle, spec.substeps()};
     if (const std::string error = buildError(models, run.objects); !error.empty()) {
       m.status = MeasurementStatus::failed("build: " + error);
       report.measurements.push_back(m);

@@ -4,6 +4,10 @@
 
 namespace collido::detail {
 
+/// The kinds a backend is asked for `kinds`: with sub-steps (BackendSpec::substeps), a kind
+/// over a step is answered from boolean answers.
+QueryKindSet askedKinds(QueryKindSet kinds, int substeps);
+
 /// Runs every query of `scene` on one backend setting and appends one measurement per query to
 /// `report`: builds the objects, checks that the backend can answer each query (else a skipped
 /// or failed measurement with the reason), steps through the frames with the observers the

@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <charconv>
 #include <set>
 #include <sstream>
 
@@ -18,6 +19,36 @@ std::string BackendSpec::label() const {
     first = false;
   }
   return text + "]";
+}
+
+namespace {
+
+// The number of sub-steps "substeps=N" asks for, or why it is not one.
+Result<int> parseSubsteps(const std::string& text) {
+  int value = 0;
+  const char* end = text.data() + text.size();
+  const auto [stop, error] = std::from_chars(text.data(), end, value);
+  if (error != std::errc() || stop != end || value < 1 || value > 4096) {
+    return Status(StatusCode::kInvalidArgument, std::string(kSubstepsOption) + "=" + text +
+                                                    ": sub-steps must be a whole number "
+                                                    "from 1 to 4096");
+  }
+  return value;
+}
+
+}  // namespace
+
+int BackendSpec::substeps() const {
+  const auto found = options.find(kSubstepsOption);
+  if (found == options.end()) return 0;
+  const Result<int> value = parseSubsteps(found->second);
+  return value.ok() ? value.value() : 0;
+}
+
+std::map<std::string, std::string> BackendSpec::pluginOptions() const {
+  std::map<std::string, std::string> plugin = options;
+  plugin.erase(kSubstepsOption);
+  return plugin;
 }
 
 Result<std::pair<std::string, std::map<std::string, std::string>>> parseBackendText(
@@ -73,6 +104,12 @@ Result<std::vector<BackendSpec>> resolveBackends(
           known.push_back(v.name);
       }
       return unknownBackend(variant, known);
+    }
+    if (const auto substeps = options.find(kSubstepsOption); substeps != options.end()) {
+      if (Result<int> n = parseSubsteps(substeps->second); !n.ok()) {
+        return Status(StatusCode::kInvalidArgument,
+                      "backend '" + text + "': " + n.status().message());
+      }
     }
     specs.push_back(BackendSpec{*found, variant, options});
   }

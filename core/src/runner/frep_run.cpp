@@ -216,7 +216,7 @@ Result<FrepRun> runFrep(const FrepFile& file, const std::string& path,
   MeshCache meshes(file);
   for (const BackendSpec& spec : request.backends) {
     Result<std::unique_ptr<BackendInstance>> created =
-        BackendInstance::create(spec.library, spec.variant, spec.options);
+        BackendInstance::create(spec.library, spec.variant, spec.pluginOptions());
     for (const int resolution : request.resolutions) {
       if (!created.ok()) {
         FrepBackendRow row;

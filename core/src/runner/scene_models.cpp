@@ -1,5 +1,7 @@
 #include "scene_models.h"
 
+#include "backend_run.h"
+
 #include <chrono>
 
 #include <collido/runner/heap_probe.h>
@@ -50,11 +52,13 @@ std::optional<T> sumIfBoth(const std::optional<T>& a, const std::optional<T>& b)
 }  // namespace
 
 SceneModels buildSceneModels(const Scene& scene, BackendInstance& backend,
-                             const RunOptions& options, const std::string& label) {
+                             const RunOptions& options, const std::string& label, int substeps) {
   SceneModels models;
   const Capabilities& caps = backend.capabilities();
   for (std::size_t index : scene.queriedObjects()) {
     BuildNeeds needs = scene.needsOf(index);
+    needs.queries = askedKinds(needs.queries, substeps);
+    needs.linked_queries = askedKinds(needs.linked_queries, substeps);
     if (options.build_every_need) needs.queries = needs.linked_queries = caps.queries;
     needs.queries = QueryKindSet(needs.queries.bits() & caps.queries.bits());
     needs.linked_queries = QueryKindSet(needs.linked_queries.bits() & caps.queries.bits());

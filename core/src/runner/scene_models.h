@@ -31,8 +31,10 @@ using SceneModels = std::map<std::size_t, std::vector<BuiltModel>>;
 /// backend answers with RunOptions::build_every_need), restricted to what the backend answers;
 /// objects it needs for nothing are left out. A state with the first state's triangle list is
 /// built as its sibling, so the backend may share what does not depend on positions.
+/// With `substeps` (BackendSpec::substeps), models are built for the kinds asked of the backend
+/// (askedKinds).
 SceneModels buildSceneModels(const Scene& scene, BackendInstance& backend,
-                             const RunOptions& options, const std::string& label);
+                             const RunOptions& options, const std::string& label, int substeps);
 
 /// Adds the build figures of `objects`' models (every state's) to `m`: build time, triangles,
 /// the backend's bytes, and the heap figures where every model has them.

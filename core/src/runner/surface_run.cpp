@@ -128,7 +128,7 @@ std::vector<SurfaceBackendRow> backendRows(const SurfaceRunRequest& request, con
   std::vector<SurfaceBackendRow> rows;
   for (const BackendSpec& spec : request.backends) {
     Result<std::unique_ptr<BackendInstance>> created =
-        BackendInstance::create(spec.library, spec.variant, spec.options);
+        BackendInstance::create(spec.library, spec.variant, spec.pluginOptions());
     if (!created.ok()) {
       rows.push_back(
           unmeasuredRow(spec.label(), SurfaceRowEnd::kNotCreated, created.status().message()));

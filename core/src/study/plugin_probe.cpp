@@ -139,11 +139,19 @@ std::vector<std::string> PluginProbe::variantNames() const {
 nlohmann::json pluginInfoJson(const std::shared_ptr<PluginLibrary>& plugin,
                               const std::vector<std::string>& settings) {
   // What an instance of `variant` with `options` answers; null when it cannot be created.
+  // With the runner's sub-steps, a setting answers every kind over a step from its booleans.
   const auto answers = [&plugin](const std::string& variant,
                                  const std::map<std::string, std::string>& options) {
+    const BackendSpec spec{plugin, variant, options};
     Result<std::unique_ptr<BackendInstance>> instance =
-        BackendInstance::create(plugin, variant, options);
-    return instance.ok() ? abilityJson(instance.value()->capabilities()) : nlohmann::json();
+        BackendInstance::create(plugin, variant, spec.pluginOptions());
+    if (!instance.ok()) return nlohmann::json();
+    Capabilities caps = instance.value()->capabilities();
+    if (spec.substeps() > 0 && caps.queries.contains(QueryKind::kBoolean)) {
+      for (const QueryKindInfo& kind : kQueryKinds)
+        if (kind.over_a_step) caps.queries |= kind.kind;
+    }
+    return abilityJson(caps);
   };
   const CollidoPluginTable& table = plugin->table();
   nlohmann::json variants = nlohmann::json::array();

@@ -73,6 +73,53 @@ TEST(FirstContactRun, EachStepIsHeldToTheOraclesBracket) {
   EXPECT_EQ(late.disagreements, 2u);
 }
 
+// The OBB tree's own answer agrees with the oracle; the runner's discrete checks of its boolean
+// answers miss the crossing with one sub-step and find it with 512 (1/512 < 0.004).
+TEST(FirstContactRun, SubStepsOfAnyBackendAndTheTreesOwnAnswer) {
+  const Result<Scene> scene = parseScene(kCrossing, "crossing.json", ".");
+  ASSERT_TRUE(scene.ok()) << scene.status().toString();
+  const RunReport own = test::runPlugin(scene.value(), "obbtree", "obbtree", test::repeated(1));
+  ASSERT_EQ(own.measurements.size(), 1u);
+  const QueryMeasurement& tree = own.measurements.front();
+  ASSERT_TRUE(tree.ok()) << tree.status.text();
+  EXPECT_EQ(tree.disagreements, 0u);
+  ASSERT_TRUE(tree.frames[0].reported_t_hi);
+  EXPECT_LE(*tree.frames[0].reported_t_hi - *tree.frames[0].reported_t_lo, 0.01);
+
+  const RunReport one =
+      test::runPlugin(scene.value(), "obbtree", "obbtree", test::repeated(1), {{"substeps", "1"}});
+  ASSERT_EQ(one.measurements.size(), 1u);
+  EXPECT_EQ(one.measurements.front().backend, "obbtree[substeps=1]");
+  EXPECT_EQ(one.measurements.front().false_negatives, 1u);
+  EXPECT_EQ(one.measurements.front().disagreements, 1u);
+
+  const RunReport fine = test::runPlugin(scene.value(), "obbtree", "obbtree", test::repeated(1),
+                                         {{"substeps", "512"}});
+  const QueryMeasurement& discrete = fine.measurements.front();
+  EXPECT_EQ(discrete.disagreements, 0u);
+  ASSERT_TRUE(discrete.frames[0].reported_t_hi);
+  EXPECT_DOUBLE_EQ(*discrete.frames[0].reported_t_hi - *discrete.frames[0].reported_t_lo,
+                   1.0 / 512);
+}
+
+TEST(FirstContactRun, SubStepsMustBeAWholeNumberFromOneTo4096) {
+  for (const char* text : {"scripted[substeps=0]", "scripted[substeps=4097]",
+                           "scripted[substeps=x]", "scripted[substeps=2.5]"}) {
+    const Result<std::vector<BackendSpec>> specs =
+        resolveBackends({text}, {test::scriptedBackend()});
+    ASSERT_FALSE(specs.ok()) << text;
+    EXPECT_NE(specs.status().message().find("sub-steps must be a whole number from 1 to 4096"),
+              std::string::npos)
+        << specs.status().message();
+  }
+  const Result<std::vector<BackendSpec>> four =
+      resolveBackends({"scripted[substeps=4;distance=1]"}, {test::scriptedBackend()});
+  ASSERT_TRUE(four.ok()) << four.status().toString();
+  EXPECT_EQ(four.value()[0].substeps(), 4);
+  EXPECT_EQ(four.value()[0].pluginOptions(),
+            (std::map<std::string, std::string>{{"distance", "1"}}));
+}
+
 TEST(FirstContactRun, ABackendWithoutTheKindIsSkippedNotFailed) {
   const Result<Scene> scene = parseScene(kCrossing, "crossing.json", ".");
   ASSERT_TRUE(scene.ok()) << scene.status().toString();

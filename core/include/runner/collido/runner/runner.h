@@ -27,7 +27,18 @@ struct BackendSpec {
 
   /// "variant" or "variant[key=value;...]", as shown in tables.
   std::string label() const;
+  /// The runner's own option "substeps=N" (1 to 4096; resolveBackends checks it), 0 without:
+  /// a query over a step is answered by the runner from the backend's boolean answers at the
+  /// N + 1 evenly spaced times of the step, t = k / N (a planner's discrete checks at a
+  /// resolution); the first that touches, at k, gives the bracket [(k - 1) / N, k / N], none
+  /// gives no contact. Every other query is the backend's own answer.
+  int substeps() const;
+  /// `options` without the runner's own: what the plugin is given.
+  std::map<std::string, std::string> pluginOptions() const;
 };
+
+/// The runner's backend option key (BackendSpec::substeps).
+inline constexpr const char* kSubstepsOption = "substeps";
 
 /// Parses "variant" or "variant[key=value;key=value]" into a variant and options.
 Result<std::pair<std::string, std::map<std::string, std::string>>> parseBackendText(
@@ -156,9 +167,10 @@ struct FrameRecord {
   std::optional<double> reported_t_lo;
   std::optional<double> reported_t_hi;
   std::optional<double> first_contact_error;
-  /// kFirstContact: the reported bracket contradicts the oracle's (its contact lies where the
-  /// oracle proved none, or its free part past the oracle's proven contact, beyond 1e-12), or
-  /// its witness pair does not share a point at its t_hi (decided exactly).
+  /// kFirstContact: the reported bracket contradicts the oracle's by more than the bracket width
+  /// asked for (its contact lies that far inside the oracle's proven free part, or its free part
+  /// reaches that far past the oracle's proven contact), or its witness pair does not share a
+  /// point at its t_hi (decided exactly).
   bool invalid_first_contact = false;
   std::uint64_t bv_tests = 0;
   std::uint64_t primitive_tests = 0;
