@@ -72,7 +72,7 @@ Disagreement disagreementOf(const FrameRecord& f, QueryKind kind) {
   d.disagreeing_frames = f.disagrees(kind) ? 1 : 0;
   // A distance answer's points that do not hold together are a false witness too.
   d.invalid_pairs = f.invalid_pairs + (f.invalid_distance_witness ? 1 : 0);
-  if (kind == QueryKind::kAllPairs) {
+  if (queryKindInfo(kind).has(AnswerPart::kPairSet)) {
     // A truncated answer leaves pairs out on purpose; only its wrong pairs count.
     if (!f.truncated) d.missed_pairs = f.oracle_pairs - f.matched_pairs;
     d.extra_pairs = f.reported_pairs - f.matched_pairs;

@@ -8,6 +8,7 @@
 
 #include "support/runs/run_plugin.h"
 #include "support/runs/scripted_backend.h"
+#include "support/test_paths.h"
 
 namespace collido {
 namespace {
@@ -100,6 +101,29 @@ TEST(FirstContactRun, SubStepsOfAnyBackendAndTheTreesOwnAnswer) {
   ASSERT_TRUE(discrete.frames[0].reported_t_hi);
   EXPECT_DOUBLE_EQ(*discrete.frames[0].reported_t_hi - *discrete.frames[0].reported_t_lo,
                    1.0 / 512);
+}
+
+// The bundled crossing scene does what its comment says: no frame shows contact, the tree's
+// first contact finds the three crossings, 64 sub-steps miss them all.
+TEST(FirstContactRun, TheThinCrossingSceneTunnelsBetweenFrames) {
+  const std::string path = test::sourcePath("scenes/continuous/thin_crossing.json");
+  const Result<Scene> scene = loadScene(path);
+  ASSERT_TRUE(scene.ok()) << scene.status().toString();
+  const RunReport own = test::runPlugin(scene.value(), "obbtree", "obbtree", test::repeated(1));
+  ASSERT_EQ(own.measurements.size(), 2u);
+  const QueryMeasurement& crossing = own.measurements[0];
+  const QueryMeasurement& snapshot = own.measurements[1];
+  EXPECT_EQ(crossing.disagreements, 0u);
+  int touches = 0;
+  for (const FrameRecord& f : crossing.frames)
+    touches += f.oracle_touches.value_or(false) ? 1 : 0;
+  EXPECT_EQ(touches, 3);
+  EXPECT_EQ(snapshot.disagreements, 0u);
+  for (const FrameRecord& f : snapshot.frames)
+    EXPECT_FALSE(f.oracle_intersecting) << "frame " << f.frame;
+  const RunReport coarse =
+      test::runPlugin(scene.value(), "obbtree", "obbtree", test::repeated(1), {{"substeps", "64"}});
+  EXPECT_EQ(coarse.measurements[0].false_negatives, 3u);
 }
 
 TEST(FirstContactRun, SubStepsMustBeAWholeNumberFromOneTo4096) {
