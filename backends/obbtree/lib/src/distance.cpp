@@ -486,7 +486,9 @@ class Search {
     PairDistance pair{worldLower(computed.lower), computed.upper * grow_, 0.0,
                       pose_a_ * computed.point_a, pose_a_ * computed.point_b};
     pair.value = std::clamp(computed.value, pair.lower, pair.upper);
-    if (pair.lower > 0.0 && pair.upper - pair.lower <= kRelativeWidth * pair.lower) return {pair};
+    if (pair.lower > 0.0 &&
+        (request_.bound_only || pair.upper - pair.lower <= kRelativeWidth * pair.lower))
+      return {pair};
     if (pair.lower == 0.0) {
       const std::array<Eigen::Vector3d, 3> local_b = localCornersB(position_b);
       if (std::optional<bool> touches = touchesCertified(corners_a, corners_b, local_b)) {

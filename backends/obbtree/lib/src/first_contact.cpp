@@ -57,8 +57,8 @@ void firstContact(const MovingTree& a, const MovingTree& b, double width,
   double t = 0.0;
   for (;;) {
     if (answer.advances == kMaxAdvances) return;  // undecided past t_lo
-    distance(a.tree, a.motion.at(t), b.tree, b.motion.at(t), DistanceRequest{0.0, kDistanceShare},
-             distance_answer);
+    distance(a.tree, a.motion.at(t), b.tree, b.motion.at(t),
+             DistanceRequest{0.0, kDistanceShare, /*bound_only=*/true}, distance_answer);
     ++answer.advances;
     answer.box_tests += distance_answer.box_tests;
     answer.triangle_tests += distance_answer.triangle_tests;

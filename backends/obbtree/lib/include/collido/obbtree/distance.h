@@ -15,6 +15,11 @@ struct DistanceRequest {
   /// asks for the exact distance (to rounding).
   double abs_tolerance = 0.0;
   double rel_tolerance = 0.0;
+  /// Only the certified lower bound is wanted (conservative advancement): a pair apart is
+  /// settled with its double-precision interval however wide, never refined to its exact closest
+  /// points, so `lower_bound` stays certified while `distance` and the points may be off by that
+  /// interval's width. Contact is still decided exactly.
+  bool bound_only = false;
 };
 
 /// The distance between two posed trees, with where it is attained and the work done. The
