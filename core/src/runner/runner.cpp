@@ -178,8 +178,7 @@ void compareFirstContact(const TriangleMesh& a, const Pose& pose_a, const Triang
   }
   if (truth.outcome == Outcome::kTouch) record.oracle_t_hi = truth.t_hi;
   // Every answer claims its free part: a free part past the oracle's proven contact is wrong.
-  const bool free_too_long =
-      truth.outcome == Outcome::kTouch && reported.t_lo > truth.t_hi + slack;
+  const bool free_too_long = truth.outcome == Outcome::kTouch && reported.t_lo > truth.t_hi + slack;
   record.invalid_first_contact = free_too_long;
   if (!reported.touches) return;
   record.reported_t_lo = reported.t_lo;
