@@ -282,9 +282,9 @@ class FclBackend final : public Backend {
     fcl_request.ccd_motion_type = fcl::CCDM_LINEAR;
     fcl_request.ccd_solver_type = fcl::CCDC_CONSERVATIVE_ADVANCEMENT;
     fcl::ContinuousCollisionResultd fcl_result;
-    const fcl::InterpMotion<double> motion_a(toTransform(pose_a), toTransform(request.end_pose_a),
+    const fcl::InterpMotion<double> motion_a(toTransform(pose_a), toTransform(request.step->pose_a),
                                              fcl::Vector3d::Zero());
-    const fcl::InterpMotion<double> motion_b(toTransform(pose_b), toTransform(request.end_pose_b),
+    const fcl::InterpMotion<double> motion_b(toTransform(pose_b), toTransform(request.step->pose_b),
                                              fcl::Vector3d::Zero());
     const double toc = fcl::continuousCollide(&a.geometry(), &motion_a, &b.geometry(), &motion_b,
                                               fcl_request, fcl_result);

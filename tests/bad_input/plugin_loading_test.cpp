@@ -466,17 +466,17 @@ TEST(PluginLoading, AFirstContactWithABadStepIsInvalid) {
   };
   QueryRequest request;
   request.kind = QueryKind::kFirstContact;
-  request.bracket_width = 1e-3;
+  request.step = StepEnd{Pose::Identity(), Pose::Identity(), 1e-3};
   ASSERT_TRUE(ask(request).ok());
   QueryRequest not_finite = request;
-  not_finite.end_pose_b.translation().y() = std::numeric_limits<double>::infinity();
+  not_finite.step->pose_b.translation().y() = std::numeric_limits<double>::infinity();
   EXPECT_TRUE(rejected(ask(not_finite), {"obbtree", "end pose of B", "non-finite"}));
   QueryRequest sheared = request;
-  sheared.end_pose_a.linear()(0, 1) = 0.5;
+  sheared.step->pose_a.linear()(0, 1) = 0.5;
   EXPECT_TRUE(rejected(ask(sheared), {"obbtree", "end pose of A", "not a rotation"}));
   for (const double width : {0.0, -1.0, std::numeric_limits<double>::quiet_NaN()}) {
     QueryRequest bad_width = request;
-    bad_width.bracket_width = width;
+    bad_width.step->bracket_width = width;
     EXPECT_TRUE(rejected(ask(bad_width), {"obbtree", "bracket width must be finite and > 0"}));
   }
 }

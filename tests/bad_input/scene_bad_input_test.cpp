@@ -204,7 +204,7 @@ TEST(SceneBadInput, AFirstContactQueryAsksEveryStepAndItsWidth) {
   Result<Scene> loaded = parse(scene);
   ASSERT_TRUE(loaded.ok()) << loaded.status().toString();
   EXPECT_EQ(loaded.value().queries[0].asked.text(), "frame 0");
-  EXPECT_EQ(loaded.value().queries[0].request.bracket_width, 0.01);
+  EXPECT_EQ(loaded.value().queries[0].request.step->bracket_width, 0.01);
 }
 
 // "bad.json: /queries/0/frames: query 'q' is asked over a step from frame 1, the last: a step

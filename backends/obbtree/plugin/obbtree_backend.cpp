@@ -168,11 +168,11 @@ class ObbTreeBackend final : public Backend {
                                   const Pose& pose_b, const QueryRequest& request,
                                   QueryResult& result) {
     // The adapter has checked every pose is rigid.
-    const StepMotion motion_a = StepMotion::between(pose_a, request.end_pose_a, "A").value();
-    const StepMotion motion_b = StepMotion::between(pose_b, request.end_pose_b, "B").value();
+    const StepMotion motion_a = StepMotion::between(pose_a, request.step->pose_a, "A").value();
+    const StepMotion motion_b = StepMotion::between(pose_b, request.step->pose_b, "B").value();
     FirstContactAnswer answer;
     firstContact(MovingTree{a.tree(), motion_a, a.radius()},
-                 MovingTree{b.tree(), motion_b, b.radius()}, request.bracket_width, answer);
+                 MovingTree{b.tree(), motion_b, b.radius()}, request.step->bracket_width, answer);
     result.first_contact = {answer.touches, answer.t_lo, answer.t_hi, answer.triangle_a,
                             answer.triangle_b};
     result.intersecting = answer.touches;

@@ -156,10 +156,12 @@ Status BackendInstance::query(ModelHandle a, const Pose& pose_a, ModelHandle b, 
   c_request.abs_tolerance = request.abs_tolerance;
   c_request.rel_tolerance = request.rel_tolerance;
   const QueryKindInfo& kind = queryKindInfo(request.kind);
-  if (kind.over_a_step) {
-    c_request.end_a = toCollidoPose(request.end_pose_a);
-    c_request.end_b = toCollidoPose(request.end_pose_b);
-    c_request.bracket_width = request.bracket_width;
+  // Without a step, the end poses stay zero: the plugin refuses them (not a rotation) once it
+  // has said whether it answers the kind at all.
+  if (kind.over_a_step && request.step) {
+    c_request.end_a = toCollidoPose(request.step->pose_a);
+    c_request.end_b = toCollidoPose(request.step->pose_b);
+    c_request.bracket_width = request.step->bracket_width;
   }
   CollidoQueryResult out{};
   CollidoMessage message{};

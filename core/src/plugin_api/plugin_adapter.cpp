@@ -152,13 +152,14 @@ Status toPose(const CollidoPose* in, const char* which, Pose& out) {
 
 // A step's end poses and bracket width, for the kinds asked over a step.
 Status readStep(const CollidoQueryRequest& in, QueryRequest& out) {
-  if (Status s = toPose(&in.end_a, "end pose of A", out.end_pose_a); !s.ok()) return s;
-  if (Status s = toPose(&in.end_b, "end pose of B", out.end_pose_b); !s.ok()) return s;
+  StepEnd& step = out.step.emplace();
+  if (Status s = toPose(&in.end_a, "end pose of A", step.pose_a); !s.ok()) return s;
+  if (Status s = toPose(&in.end_b, "end pose of B", step.pose_b); !s.ok()) return s;
   if (!(std::isfinite(in.bracket_width) && in.bracket_width > 0.0)) {
     return {StatusCode::kInvalidArgument,
             "the bracket width must be finite and > 0, not " + std::to_string(in.bracket_width)};
   }
-  out.bracket_width = in.bracket_width;
+  step.bracket_width = in.bracket_width;
   return {};
 }
 
@@ -540,7 +541,7 @@ std::int32_t queryEntry(CollidoInstance* instance, CollidoModelHandle a, const C
       out->distance.upper = d.upper.value_or(0.0);
     }
     if (info.has(AnswerPart::kFirstContact)) {
-      if (Status s = checkFirstContact(result.first_contact, req.bracket_width); !s.ok()) {
+      if (Status s = checkFirstContact(result.first_contact, req.step->bracket_width); !s.ok()) {
         return fail(error, s.code(), label + ": " + s.message());
       }
       copyFirstContact(result.first_contact, out->first_contact);

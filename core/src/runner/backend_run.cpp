@@ -46,8 +46,8 @@ Status substepAnswer(BackendInstance& backend, ModelHandle model_a, const Pose& 
                      ModelHandle model_b, const Pose& pose_b, const QueryRequest& request,
                      int substeps, QueryResult& result) {
   // The scene reader and the runner made these poses; a step between them always exists.
-  const StepMotion motion_a = StepMotion::between(pose_a, request.end_pose_a, "A").value();
-  const StepMotion motion_b = StepMotion::between(pose_b, request.end_pose_b, "B").value();
+  const StepMotion motion_a = StepMotion::between(pose_a, request.step->pose_a, "A").value();
+  const StepMotion motion_b = StepMotion::between(pose_b, request.step->pose_b, "B").value();
   QueryRequest boolean;
   boolean.kind = QueryKind::kBoolean;
   FirstContactResult answer;
@@ -128,8 +128,11 @@ struct QueryRun {
   QueryRequest requestAt(std::size_t frame) const {
     QueryRequest request = query.request;
     if (queryKindInfo(request.kind).over_a_step) {
-      request.end_pose_a = scene.objects[query.a].poseAt(frame + 1);
-      request.end_pose_b = scene.objects[query.b].poseAt(frame + 1);
+      // A scene made in code may leave the step out: the reader's default width then.
+      if (!request.step)
+        request.step = StepEnd{Pose::Identity(), Pose::Identity(), kDefaultBracketWidth};
+      request.step->pose_a = scene.objects[query.a].poseAt(frame + 1);
+      request.step->pose_b = scene.objects[query.b].poseAt(frame + 1);
     }
     return request;
   }

@@ -66,7 +66,7 @@ const OracleAnswer& OracleCache::answerFor(const SceneQuery& query, std::size_t 
     case OracleNeed::kDistance:
       return get(a, b, frame, distances);
     case OracleNeed::kFirstContact:
-      return getStep(a, b, frame, query.request.bracket_width);
+      return getStep(a, b, frame, query.request.step->bracket_width);
     case OracleNeed::kWitness:
     case OracleNeed::kAllPairs:
       break;
@@ -110,7 +110,7 @@ std::string OracleCache::fingerprint() const {
       d.value(index);
     // Only when given, so that the stored answers of scenes without it keep their digests.
     if (!q.except.empty()) d.value(q.except.size());
-    if (queryKindInfo(q.request.kind).over_a_step) d.value(q.request.bracket_width);
+    if (queryKindInfo(q.request.kind).over_a_step) d.value(q.request.step->bracket_width);
     for (const auto& [i, j] : q.except) {
       d.value(i);
       d.value(j);

@@ -166,7 +166,7 @@ void compareFirstContact(const TriangleMesh& a, const Pose& pose_a, const Triang
                          FrameRecord& record) {
   // A claim contradicted by less than the width asked for is an error of the time (measured
   // below), not a wrong answer: a backend whose time is within its accuracy of the contact.
-  const double slack = request.bracket_width + 1e-12;
+  const double slack = request.step->bracket_width + 1e-12;
   using Outcome = ExactFirstContact::Outcome;
   record.reported_intersecting = reported.touches;
   record.oracle_t_lo = truth.t_lo;
@@ -197,8 +197,8 @@ void compareFirstContact(const TriangleMesh& a, const Pose& pose_a, const Triang
       const auto at_t_hi = [&](const Pose& start, const Pose& end) {
         return StepMotion::between(start, end, "").value().at(reported.t_hi);
       };
-      invalid = invalid || !exactPairIntersects(a, at_t_hi(pose_a, request.end_pose_a), b,
-                                                at_t_hi(pose_b, request.end_pose_b), pair);
+      invalid = invalid || !exactPairIntersects(a, at_t_hi(pose_a, request.step->pose_a), b,
+                                                at_t_hi(pose_b, request.step->pose_b), pair);
     }
   }
   record.invalid_first_contact = invalid;

@@ -40,11 +40,12 @@ void readStep(const Reader& r, const Node& node, const QueryKindInfo& kind, cons
     }
     return;
   }
-  query.request.bracket_width = kDefaultBracketWidth;
+  query.request.step.emplace();
+  query.request.step->bracket_width = kDefaultBracketWidth;
   if (node.has("bracket_width")) {
     const double width = r.number(node.at("bracket_width"));
     if (!(width > 0.0)) r.fail(node.at("bracket_width"), "bracket_width must be > 0");
-    query.request.bracket_width = width;
+    query.request.step->bracket_width = width;
   }
   if (scene.frames < 2) {
     r.fail(node.at("kind"), std::string("a ") + kind.name +

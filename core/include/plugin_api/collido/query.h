@@ -81,6 +81,14 @@ struct Contact {
   std::int32_t triangle_b = -1;  ///< triangle of B, or -1 when the engine does not say
 };
 
+/// The end of the step a query over a step asks about (QueryKindInfo::over_a_step): the query's
+/// poses are its start, and both objects move as StepMotion says.
+struct StepEnd {
+  Pose pose_a = Pose::Identity();  ///< A's pose at the step's end
+  Pose pose_b = Pose::Identity();  ///< B's pose at the step's end
+  double bracket_width = 0.0;      ///< the widest bracket of the first contact asked for, > 0
+};
+
 /// The question asked of one pair of models, with its limits.
 struct QueryRequest {
   QueryKind kind = QueryKind::kBoolean;
@@ -90,12 +98,9 @@ struct QueryRequest {
   /// d) beyond rounding; both 0 asks for the backend's best.
   double abs_tolerance = 0.0;
   double rel_tolerance = 0.0;
-  /// kFirstContact: the poses of A and B at the step's end (the query's poses are its start;
-  /// both move as StepMotion says), and the widest bracket of the first contact's time asked
-  /// for, > 0.
-  Pose end_pose_a = Pose::Identity();
-  Pose end_pose_b = Pose::Identity();
-  double bracket_width = 0.0;
+  /// Kinds over a step (kFirstContact): where the step ends. Empty for the others, so a
+  /// snapshot request costs nothing to make (the timed calls make one each).
+  std::optional<StepEnd> step = std::nullopt;
 };
 
 /// The parts of an answer; the runner checks each part a kind's answer carries against the
