@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstring>
 #include <exception>
+#include <iterator>
 #include <limits>
 #include <memory>
 #include <new>
@@ -108,10 +109,10 @@ std::string handleText(CollidoModelHandle handle) {
          std::to_string(handle >> 32);
 }
 
+// One bit, and one of the table's: the table lists the kinds in the order of their bits
+// (checked where queryKindInfo is defined), so this needs no scan on every call.
 bool isSingleQueryKind(std::uint32_t kind) {
-  return std::any_of(
-      std::begin(kQueryKinds), std::end(kQueryKinds),
-      [kind](const QueryKindInfo& k) { return kind == static_cast<std::uint32_t>(k.kind); });
+  return kind != 0 && (kind & (kind - 1)) == 0 && kind < (1u << std::size(kQueryKinds));
 }
 
 bool isTolerance(double value) {
