@@ -7,6 +7,8 @@
 #include <collido/obbtree/collide.h>
 #include <collido/obbtree/distance.h>
 
+#include "step_advance.h"
+
 namespace collido::obbtree {
 namespace {
 
@@ -54,24 +56,42 @@ void firstContact(const MovingTree& a, const MovingTree& b, double width,
     answer.triangle_a = ta;
     answer.triangle_b = tb;
   };
+  detail::StepRates rates;
+  rates.closing_velocity = (a.motion.end().translation() - a.motion.start().translation()) -
+                           (b.motion.end().translation() - b.motion.start().translation());
+  rates.turn_a = a.motion.angle();
+  rates.turn_b = b.motion.angle();
+  rates.allowance = allowance;
   double t = 0.0;
   for (;;) {
     if (answer.advances == kMaxAdvances) return;  // undecided past t_lo
-    distance(a.tree, a.motion.at(t), b.tree, b.motion.at(t),
-             DistanceRequest{0.0, kDistanceShare, /*bound_only=*/true}, distance_answer);
+    const Eigen::Isometry3d pose_a = a.motion.at(t);
+    const Eigen::Isometry3d pose_b = b.motion.at(t);
+    detail::AdvanceCounters counters;
+    double advance =
+        detail::certifiedAdvance(a.tree, pose_a, b.tree, pose_b, rates, 1.0 - t, counters);
     ++answer.advances;
-    answer.box_tests += distance_answer.box_tests;
-    answer.triangle_tests += distance_answer.triangle_tests;
+    answer.box_tests += counters.box_tests;
+    answer.triangle_tests += counters.triangle_tests;
     answer.t_lo = t;
-    if (distance_answer.distance == 0.0) {
-      touch(t, t, distance_answer.triangle_a, distance_answer.triangle_b);
-      return;
+    if (advance >= 1.0 - t) break;
+    if (advance == 0.0) {
+      // A pair within rounding of contact: decided by the exact distance search, which also
+      // gives a certified advance (with the whole trees' motion bound) when they do not touch.
+      distance(a.tree, pose_a, b.tree, pose_b,
+               DistanceRequest{0.0, kDistanceShare, /*bound_only=*/true}, distance_answer);
+      answer.box_tests += distance_answer.box_tests;
+      answer.triangle_tests += distance_answer.triangle_tests;
+      if (distance_answer.distance == 0.0) {
+        touch(t, t, distance_answer.triangle_a, distance_answer.triangle_b);
+        return;
+      }
+      if (speed == 0.0) break;
+      const double free_distance = distance_answer.lower_bound * (1.0 - 1e-12) - allowance;
+      if (free_distance <= 0.0) return;  // a grazing pass: nothing claimed past t
+      advance = free_distance / speed;
+      if (t + advance > 1.0) break;
     }
-    if (speed == 0.0) break;
-    const double free_distance = distance_answer.lower_bound * (1.0 - 1e-12) - allowance;
-    if (free_distance <= 0.0) return;  // a grazing pass: nothing claimed past t
-    const double advance = free_distance / speed;
-    if (t + advance > 1.0) break;
     if (advance < width) {
       int halvings = 0;
       for (double reach_out = width; reach_out > advance && halvings <= kMaxHalvings;

@@ -30,9 +30,9 @@ StepMotion motion(const Pose& start, const Pose& end) {
 // The tree's answer against the oracle's, with the tree's witness touching at its t_hi; returns
 // whether they touch.
 bool expectAgrees(const TriangleMesh& a, const StepMotion& ma, const TriangleMesh& b,
-                  const StepMotion& mb, double width) {
-  const ObbTree tree_a = ObbTree::build(a.vertices, a.triangles);
-  const ObbTree tree_b = ObbTree::build(b.vertices, b.triangles);
+                  const StepMotion& mb, double width, const BuildOptions& options = {}) {
+  const ObbTree tree_a = ObbTree::build(a.vertices, a.triangles, options);
+  const ObbTree tree_b = ObbTree::build(b.vertices, b.triangles, options);
   FirstContactAnswer ours;
   firstContact(MovingTree{tree_a, ma, radiusAboutOrigin(tree_a)},
                MovingTree{tree_b, mb, radiusAboutOrigin(tree_b)}, width, ours);
@@ -95,6 +95,49 @@ TEST(FirstContact, TurningToriAgreeWithTheReference) {
   // Both verdicts are exercised.
   EXPECT_GT(touches, 0);
   EXPECT_LT(touches, trials);
+}
+
+// A peg sliding down a sleeve with little clearance while it drifts and tilts into the wall:
+// every advance's pairs face each other across the gap, moving mostly along it, where a motion
+// bound per pair along its own direction counts (and must still never step past the contact).
+// Both node kinds, and leaves of one and of several triangles.
+TEST(FirstContact, PegSlidingIntoASleeveWallAgreesWithTheReference) {
+  CylinderParams sleeve_params;
+  sleeve_params.radius = 0.3;
+  sleeve_params.inner_radius = 0.2;
+  sleeve_params.height = 0.4;
+  sleeve_params.segments = 24;
+  CylinderParams peg_params;
+  peg_params.radius = 0.19;
+  peg_params.height = 0.6;
+  peg_params.segments = 24;
+  const TriangleMesh sleeve = unwrap(makeCylinder(sleeve_params), "sleeve");
+  const TriangleMesh peg = unwrap(makeCylinder(peg_params), "peg");
+  const auto peg_at = [](double x, double z, double tilt_degrees) {
+    Pose pose = at(x, 0.0, z);
+    pose.linear() =
+        Eigen::AngleAxisd(tilt_degrees * M_PI / 180.0, Eigen::Vector3d::UnitY()).toRotationMatrix();
+    return pose;
+  };
+  BuildOptions compact;
+  compact.float_boxes = true;
+  compact.max_leaf_triangles = 8;
+  int touches = 0;
+  for (const BuildOptions& options : {BuildOptions{}, compact}) {
+    for (int k = 0; k < 5; ++k) {
+      SCOPED_TRACE(k);
+      const double drift = 0.003 + 0.001 * k;
+      const double tilt = 0.4 * k;
+      touches += expectAgrees(sleeve, motion(at(0), at(0)), peg,
+                              motion(peg_at(k * drift, 0.45 - 0.1 * k, k * tilt),
+                                     peg_at((k + 1) * drift, 0.35 - 0.1 * k, (k + 1) * tilt)),
+                              1e-3, options)
+                     ? 1
+                     : 0;
+    }
+  }
+  EXPECT_GT(touches, 0);
+  EXPECT_LT(touches, 10);
 }
 
 }  // namespace
