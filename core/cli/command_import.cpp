@@ -37,6 +37,9 @@ void addImportCommand(CLI::App& app, int& exit_code) {
   urdf->add_option("--clearance", request->clearance_links,
                    "LINK: ask its distance to each environment object (repeatable; default: the "
                    "link with the most joints above it)");
+  urdf->add_option("--first-contact", request->first_contact_links,
+                   "LINK: ask its first contact with each environment object over every step "
+                   "from a frame to the next (repeatable)");
   urdf->callback([request, environment, &exit_code] {
     if (Status s = parseEnvironmentMeshes(*environment, request->environment); !s.ok()) {
       std::cerr << "error: " << s.message() << "\n";

@@ -265,39 +265,60 @@ class SceneBuilder {
     return {};
   }
 
-  // The robot against its environment (one group query of all pairs), and the clearance of each
+  // The robot against its environment (one group query of all pairs); the clearance of each
   // link --clearance names (by default the last link of the longest chain) to each environment
-  // object. Errors name a link that is unknown or has no collision geometry.
+  // object; and the first contact over each step of each link --first-contact names with each
+  // environment object (a planner's edge check between waypoints). Errors name the option and a
+  // link that is unknown or has no collision geometry.
   Status addEnvironmentQueries() {
     if (objects_.size() == robot_objects_) return {};
     queries_.push_back({{"name", "robot vs environment"},
                         {"a", {{"subtree", objects_[0].name}}},
                         {"b", {{"subtree", objects_[robot_objects_].name}}},
                         {"kind", "all_pairs"}});
-    std::vector<std::size_t> measured;  // first objects of the links whose clearance is asked
-    for (const std::string& name : request_.clearance_links) {
+    Result<std::vector<std::size_t>> measured =
+        linkObjects(request_.clearance_links, "--clearance");
+    if (!measured.ok()) return measured.status();
+    if (measured.value().empty()) measured.value().push_back(deepestLinkObject());
+    addLinkQueries(measured.value(), "clearance: ", "distance");
+    const Result<std::vector<std::size_t>> moving =
+        linkObjects(request_.first_contact_links, "--first-contact");
+    if (!moving.ok()) return moving.status();
+    addLinkQueries(moving.value(), "first contact: ", "first_contact");
+    return {};
+  }
+
+  // The first object of each named link, in the order named.
+  Result<std::vector<std::size_t>> linkObjects(const std::vector<std::string>& names,
+                                               const std::string& option) const {
+    std::vector<std::size_t> firsts;
+    for (const std::string& name : names) {
       const std::optional<std::size_t> link = robot_.linkNamed(name);
       if (!link) {
         return Status(StatusCode::kInvalidArgument,
-                      "--clearance " + name + ": no link of robot '" + robot_.name + "'");
+                      option + " " + name + ": no link of robot '" + robot_.name + "'");
       }
       const auto first = first_of_link_.find(*link);
       if (first == first_of_link_.end()) {
         return Status(StatusCode::kInvalidArgument,
-                      "--clearance " + name + ": link has no collision geometry");
+                      option + " " + name + ": link has no collision geometry");
       }
-      measured.push_back(first->second);
+      firsts.push_back(first->second);
     }
-    if (measured.empty()) measured.push_back(deepestLinkObject());
-    for (const std::size_t tool : measured) {
+    return firsts;
+  }
+
+  // One query of `kind` between each of `links` and each environment object.
+  void addLinkQueries(const std::vector<std::size_t>& links, const std::string& prefix,
+                      const char* kind) {
+    for (const std::size_t link : links) {
       for (std::size_t e = robot_objects_; e < objects_.size(); ++e) {
-        queries_.push_back({{"name", "clearance: " + objects_[tool].name + "-" + objects_[e].name},
-                            {"a", objects_[tool].name},
+        queries_.push_back({{"name", prefix + objects_[link].name + "-" + objects_[e].name},
+                            {"a", objects_[link].name},
                             {"b", objects_[e].name},
-                            {"kind", "distance"}});
+                            {"kind", kind}});
       }
     }
-    return {};
   }
 
   // The first object of the link with the most joints above it (the tool, on an arm).

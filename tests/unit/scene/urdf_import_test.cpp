@@ -239,6 +239,27 @@ TEST(UrdfImport, ClearanceIsAskedForTheNamedLinks) {
   }
 }
 
+// --first-contact asks each named link's first contact with each environment object over every
+// step; the same refusals as --clearance, naming the option.
+TEST(UrdfImport, FirstContactIsAskedForTheNamedLinks) {
+  const Files f = writeRobot(kRobot, "yaw\n0\n0.5\n");
+  UrdfImportRequest request = requestWithEnvironment(f);
+  request.first_contact_links = {"tool"};
+  ASSERT_TRUE(importUrdf(request).ok());
+  const Result<Scene> loaded = loadScene(request.output);
+  ASSERT_TRUE(loaded.ok()) << loaded.status().toString();
+  const SceneQuery& last = loaded.value().queries.back();
+  EXPECT_EQ(last.name, "first contact: tool-env_far_box");
+  EXPECT_EQ(queryKindName(last.request.kind), std::string("first_contact"));
+
+  request.first_contact_links = {"elbow"};
+  const Result<UrdfImport> refused = importUrdf(request);
+  ASSERT_FALSE(refused.ok());
+  EXPECT_NE(refused.status().message().find("--first-contact elbow: no link of robot"),
+            std::string::npos)
+      << refused.status().message();
+}
+
 // An environment mesh placed by --environment FILE@X,Y,Z,ROLL,PITCH,YAW sits there in every
 // frame, loaded back: URDF's rpy, about the fixed axes.
 TEST(UrdfImport, EnvironmentMeshesArePlacedWhereTheArgumentSays) {

@@ -45,6 +45,9 @@ struct UrdfImportRequest {
   /// Links whose clearance to each environment object is asked; empty: the link with the most
   /// joints above it.
   std::vector<std::string> clearance_links;
+  /// Links whose first contact with each environment object is asked over every step (the
+  /// links' poses interpolated between frames, StepMotion); empty: none.
+  std::vector<std::string> first_contact_links;
 };
 
 /// What an import wrote.
@@ -64,8 +67,9 @@ struct UrdfImport {
 /// contact at the reference configuration (MoveIt's default state), as MoveIt's setup assistant
 /// applies those two rules, the pairs left out being its `except` list;
 /// robot against environment is one group query of all pairs, and each clearance link (by default
-/// the link with the most joints above it) gets a distance query to each environment object. Errors
-/// name the file and the link, joint or column.
+/// the link with the most joints above it) gets a distance query to each environment object, each
+/// first-contact link a first_contact query to each. Errors name the file and the link, joint or
+/// column.
 Result<UrdfImport> importUrdf(const UrdfImportRequest& request);
 
 }  // namespace collido
