@@ -273,19 +273,25 @@ class FclBackend final : public Backend {
  private:
   // FCL's continuousCollide as it is: conservative advancement (CCDC_CONSERVATIVE_ADVANCEMENT)
   // on FCL's interpolated motion with its reference point at the origin (the interface's
-  // StepMotion). The motions are made here: the overload taking two transforms per object builds
-  // InterpMotion without setting its reference point (uninitialised memory, README). FCL gives
-  // one time; it is reported as both ends of the bracket.
+  // StepMotion). The motions are made here with the constructor that takes rotations and
+  // translations: it is the only one that sets the reference point and then the velocities (the
+  // overload taking two transforms per object leaves its reference point unset, and the one
+  // taking two transforms and a point its velocities, uninitialised memory that made FCL's
+  // answers depend on what the process did before; README). FCL gives one time; it is reported as
+  // both ends of the bracket.
+  static fcl::InterpMotion<double> motionBetween(const Pose& start, const Pose& end) {
+    return fcl::InterpMotion<double>(start.linear(), start.translation(), end.linear(),
+                                     end.translation(), fcl::Vector3d::Zero());
+  }
+
   static Status firstContact(const FclModel& a, const Pose& pose_a, const FclModel& b,
                              const Pose& pose_b, const QueryRequest& request, QueryResult& result) {
     fcl::ContinuousCollisionRequestd fcl_request;
     fcl_request.ccd_motion_type = fcl::CCDM_LINEAR;
     fcl_request.ccd_solver_type = fcl::CCDC_CONSERVATIVE_ADVANCEMENT;
     fcl::ContinuousCollisionResultd fcl_result;
-    const fcl::InterpMotion<double> motion_a(toTransform(pose_a), toTransform(request.step->pose_a),
-                                             fcl::Vector3d::Zero());
-    const fcl::InterpMotion<double> motion_b(toTransform(pose_b), toTransform(request.step->pose_b),
-                                             fcl::Vector3d::Zero());
+    const fcl::InterpMotion<double> motion_a = motionBetween(pose_a, request.step->pose_a);
+    const fcl::InterpMotion<double> motion_b = motionBetween(pose_b, request.step->pose_b);
     const double toc = fcl::continuousCollide(&a.geometry(), &motion_a, &b.geometry(), &motion_b,
                                               fcl_request, fcl_result);
     if (toc < 0.0) return {StatusCode::kInternal, "fcl: continuousCollide refused the pair"};

@@ -55,6 +55,29 @@ constexpr const char* kKitScenes[] = {
            "motion": {"random": {"seed": 78, "relative_to": "gear", "overlap": [0.1, 0.6]}}}],
         "queries": [{"name": "all_pairs", "a": "gear", "b": "ball", "kind": "all_pairs"},
                     {"name": "boolean", "a": "gear", "b": "ball", "kind": "boolean"}]})",
+    // A torus thrown past and through another, turning: four of the six steps first touch
+    // inside the step (near t = 0.09, 0.17, 0.52 and 0.54), two pass clear. Checks a plugin's
+    // first contact over a step when it declares one, and its boolean at the frames.
+    R"({"name": "kit_first_contact", "frames": 7,
+        "objects": [
+          {"name": "a", "shape": {"generator": "torus", "major_segments": 24, "minor_segments": 12}},
+          {"name": "b", "shape": {"generator": "torus", "major_segments": 24, "minor_segments": 12},
+           "motion": {"keyframes": [
+             {"frame": 0, "pose": {"translation": [-3, 0.1, 0.2]}},
+             {"frame": 1, "pose": {"translation": [3, 0.3, -0.1],
+                                   "rotation": {"axis": [0, 1, 0], "degrees": 50}}},
+             {"frame": 2, "pose": {"translation": [-3, 3.1, 0.4],
+                                   "rotation": {"axis": [1, 0, 0], "degrees": 80}}},
+             {"frame": 3, "pose": {"translation": [2.5, -0.2, 3],
+                                   "rotation": {"axis": [1, 1, 0], "degrees": 120}}},
+             {"frame": 4, "pose": {"translation": [0.3, 0.2, -2.5],
+                                   "rotation": {"axis": [0, 0, 1], "degrees": 170}}},
+             {"frame": 5, "pose": {"translation": [0.2, 0.1, 0.9],
+                                   "rotation": {"axis": [0, 1, 1], "degrees": 30}}},
+             {"frame": 6, "pose": {"translation": [3.5, 0.1, 0.9],
+                                   "rotation": {"axis": [0, 1, 1], "degrees": 30}}}]}}],
+        "queries": [{"name": "first_contact", "a": "a", "b": "b", "kind": "first_contact"},
+                    {"name": "boolean", "a": "a", "b": "b", "kind": "boolean"}]})",
 };
 
 /// Where loadSceneCase finds placements and stored answers (loadSceneCases sets them).

@@ -32,7 +32,8 @@ std::vector<SceneCase>& sceneCases();
 
 /// Lists every *.json in `directory` (the bundled scenes) but those whose file stem is in
 /// `skipped`, and the kit's own adversarial scenes: linked tori touching exactly, coplanar
-/// overlapping sheets, tori at random poses, and a sphere against a gear. Reads each file's name
+/// overlapping sheets, tori at random poses, a sphere against a gear, and a torus thrown past
+/// another over steps (first contact). Reads each file's name
 /// only; fails on a file that is not a JSON object, and on a skipped name that is no file of
 /// `directory`. A scene that does not load fails its own tests (loadSceneCase). Loading solves
 /// placements with `placement_store`, and reads the answers stored in `oracle_answers` for that
