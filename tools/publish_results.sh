@@ -2,7 +2,8 @@
 # Writes docs/results/default_study.md, and the README's headline table between its markers, from
 # one finished default study (tools/study.sh): the run
 # it came from (date, commit, machine, wall time when given), then table.txt's summary sections
-# (what to pick, the OBB tree against the field, needs, contacts, deforming and tracked scenes) as
+# (what to pick, the OBB tree against the field, between the frames, needs, contacts, deforming and
+# tracked scenes) as
 # the study printed them. A new run replaces the page whole; nobody edits its tables by hand.
 # The sections are read from STUDY_DIR/sections.json by their keys, so a sweep that renames one
 # (its `field` names the field table after its own family) cannot drop it.
@@ -74,7 +75,7 @@ try:
     sections = {s["key"]: s for s in json.load(open(path, encoding="utf-8"))["sections"]}
 except (OSError, ValueError, KeyError, TypeError) as error:
     sys.exit(f"error: {path}: not a study's sections ({error})")
-for key in ("what_to_pick", "field", "needs", "contacts", "deforming", "tracking"):
+for key in ("what_to_pick", "field", "continuous", "needs", "contacts", "deforming", "tracking"):
     section = sections.get(key)
     if section is None:
         continue

@@ -36,13 +36,16 @@ else
   out=build/release/study
   # The headline: dense overlaps, flat and touching CAD parts, docking, deformation, scaling,
   # what the scenes' needs save (boolean only, mostly static, distance only), and a robot's
-  # pick-and-place in a cluttered cell (self-collision, robot against the cell, clearance).
+  # pick-and-place in a cluttered cell (self-collision, robot against the cell, clearance); and
+  # between the frames, the first contact over each step (a thin part crossing a plate, the
+  # docking approach, a peg sliding into its sleeve's wall, a robot's edges between waypoints).
   scenes=(scenes/{bunny_vs_bunny,interlocked_tori}.json
           scenes/{gears_at_backlash,stacked_parts,stacked_plates,peg_in_hole,cad_assembly}.json
           scenes/station_docking{,_clearance,_tracked}.json
           scenes/{deforming_tori,sheet_over_bunny}.json scenes/scaling_spheres.json
           scenes/{bunny_teapot_boolean,cad_assembly_held,env_rob_clearance}.json
-          scenes/robot_cell.json)
+          scenes/robot_cell.json
+          scenes/continuous/{thin_crossing,docking_approach,peg_side_contact,robot_cell_waypoints}.json)
   sweep=scenes/sweeps/default.json
   times=scenes/sweeps/default.times.json
 fi

@@ -4,7 +4,8 @@
 # matrix has cells, ODE's all-pairs ones unsupported, a deforming scene for the view over
 # time, and a small scene posed from tracked markers; the tori's distance query fills the distance
 # view; a NURBS comparison on the sphere zones fills the surfaces view; an FRep comparison with
-# its preview picture fills the FRep view), writes its report with
+# its preview picture fills the FRep view; the thin crossing, with the runner's sub-steps beside the
+# tree's own answer, fills the first-contact view), writes its report with
 # itself as the
 # baseline, and opens it in headless Chromium (web/tests/report.test.mjs): every chart drawn,
 # no console error, no network request.
@@ -17,7 +18,8 @@ rm -rf "$work"
 mkdir -p "$work"
 cat > "$work/sweep.json" <<'JSON'
 {
-  "backends": [{"variant": "obbtree", "options": {"max_leaf_triangles": [1, 4]}}, "ode"],
+  "backends": [{"variant": "obbtree", "options": {"max_leaf_triangles": [1, 4]}}, "ode",
+               {"variant": "obbtree", "options": {"substeps": [4]}, "scenes": ["thin_crossing"]}],
   "resolutions": [0.5, 1],
   "needs": ["declared", "every"],
   "repetitions": 1
@@ -41,6 +43,7 @@ cat > "$work/tracked.json" <<'JSON'
 JSON
 "$collido" study "$source_dir/scenes/interlocked_tori.json" "$work/stress_touching.json" \
   "$source_dir/scenes/deforming_tori.json" "$work/tracked.json" \
+  "$source_dir/scenes/continuous/thin_crossing.json" \
   --sweep "$work/sweep.json" --out "$work/study" --quiet > "$work/table.txt"
 "$collido" pose-error "$work/tracked.json" --object probe --layouts spread,given \
   --markers 3,4 --trials 20 --json "$work/pose_error.json" > /dev/null
@@ -58,7 +61,7 @@ ASAN_OPTIONS="${ASAN_OPTIONS:-}:detect_leaks=0" "$collido" view "$work/tracked.j
 "$collido" report "$work/study" --baseline "$work/study" --pose-error "$work/pose_error.json" \
   --surface-distance "$work/surfaces.json" --frep "$work/frep.json" -o "$work/report.html"
 COLLIDO_REPORT_HTML="$work/report.html" COLLIDO_TABLE_TXT="$work/study/table.txt" \
-COLLIDO_EXPECT_VIEWS="time-vs-error,distance-error,contact-error,surfaces,frep,robustness,time-distribution,deforming,tracking,pose-error,memory,scaling,scaling-memory,needs,comparison" \
-COLLIDO_EXPECT_SECTION_TEXT="robustness=unsupported,robustness=touching,scene-views=tracked_small,what-to-pick=smallest exact,failures=Not applicable" \
+COLLIDO_EXPECT_VIEWS="time-vs-error,distance-error,contact-error,first-contact-error,surfaces,frep,robustness,time-distribution,deforming,tracking,pose-error,memory,scaling,scaling-memory,needs,comparison" \
+COLLIDO_EXPECT_SECTION_TEXT="between-frames=obbtree[substeps,robustness=unsupported,robustness=touching,scene-views=tracked_small,what-to-pick=smallest exact,failures=Not applicable" \
 COLLIDO_REPORT_SCREENSHOT="$work/report.png" \
   node --test "$source_dir/web/tests/report.test.mjs"

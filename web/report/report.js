@@ -18,6 +18,7 @@
   ReportTimeError.timeVsError(model);
   ReportTimeError.distanceError(model);
   ReportTimeError.contactError(model);
+  ReportTimeError.betweenFrames(model);
   ReportSurfaces.surfaces(model);
   ReportSurfaces.frep(model);
   ReportRobustness.render(model);

@@ -165,5 +165,46 @@ const ReportTimeError = (() => {
     }
   }
 
-  return { timeVsError, distanceError, contactError };
+  // --- between the frames ---------------------------------------------------------------------
+  const count = (v) => (v === null || v === undefined ? '-' : String(v));
+  function betweenFrames(model) {
+    const s = section('between-frames', 'Between the frames: first contact over a step',
+      'Queries asked over a step, frame k to k + 1 (docs/ORACLE.md, "First contact over a ' +
+      'step"): time per step (log scale; the mean over steps of each step\'s median call, ' +
+      'whiskers its 95% interval) against the largest error of the first-contact time, as a ' +
+      'share of the step (symlog scale: an answer within rounding of the oracle\'s bracket is ' +
+      'drawn at 0), one chart for each query where some step touches. A backend\'s own answer ' +
+      'is certified; substeps=N is the runner\'s discrete checks at N + 1 times of the step, ' +
+      'whose error is up to 1/N and which miss a contact no check lands on. The table counts, ' +
+      'for every query, the touching steps each setting missed or made up, and those coarser ' +
+      'than asked; table.txt ("Between the frames") names what to pick.');
+    const box = el('div', { class: 'charts' });
+    s.appendChild(box);
+    const rows = model.charted.filter((r) => r.kind === 'first_contact');
+    const groups = groupBy(rows, (r) => r.scene + ' · ' + r.query);
+    if (groups.size === 0) empty(s, 'No measured first-contact query.');
+    const lines = [];
+    for (const [name, points] of groups) {
+      if (points.some((p) => p.max_first_contact_error !== null &&
+        p.max_first_contact_error !== undefined)) {
+        timeAgainstErrorChart(box, 'first-contact-error:' + name, points,
+          (p) => p.max_first_contact_error, 'largest first-contact time error',
+          [{ field: 'false_negatives', title: 'missed steps' },
+            { field: 'false_positives', title: 'false steps' },
+            { field: 'coarse_steps', title: 'coarser than asked' },
+            { field: 'max_first_contact_error', format: '.3g' }], model);
+      }
+      for (const p of points) {
+        lines.push([name, p.label, withInterval(timeOf(p), ciOf(p)), count(p.frames),
+          count(p.false_negatives), count(p.false_positives), figure(p.max_first_contact_error, 3),
+          count(p.coarse_steps), count(p.disagreements)]);
+      }
+    }
+    if (lines.length > 0) {
+      laterTable(s, ['scene · query', 'backend / setting', 'mean µs a step [95% CI]', 'steps',
+        'missed', 'false', 'time err', 'coarse', 'wrong steps'], lines);
+    }
+  }
+
+  return { timeVsError, distanceError, contactError, betweenFrames };
 })();

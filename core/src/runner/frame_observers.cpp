@@ -30,6 +30,7 @@ void addAnswer(const FrameRecord& one, FrameRecord& frame) {
   frame.reported_t_lo = one.reported_t_lo;
   frame.reported_t_hi = one.reported_t_hi;
   frame.first_contact_error = one.first_contact_error;
+  frame.bracket_width = one.bracket_width;
   frame.invalid_first_contact = one.invalid_first_contact;
   if (one.contact) {
     if (!frame.contact) frame.contact.emplace();

@@ -169,6 +169,7 @@ void compareFirstContact(const TriangleMesh& a, const Pose& pose_a, const Triang
   const double slack = request.step->bracket_width + 1e-12;
   using Outcome = ExactFirstContact::Outcome;
   record.reported_intersecting = reported.touches;
+  record.bracket_width = request.step->bracket_width;
   record.oracle_t_lo = truth.t_lo;
   if (truth.outcome != Outcome::kUndecided) {
     record.oracle_touches = truth.outcome == Outcome::kTouch;
@@ -264,6 +265,11 @@ void compareWithOracle(const TriangleMesh& a, const Pose& pose_a, const Triangle
   record.matched_pairs = matched.size();
 }
 
+bool FrameRecord::coarserThanAsked() const {
+  // Two brackets of the asked width around the same time are at most two widths apart.
+  return first_contact_error && bracket_width && *first_contact_error > 2.0 * *bracket_width + 1e-12;
+}
+
 bool FrameRecord::disagrees(QueryKind query_kind) const {
   const QueryKindInfo& kind = queryKindInfo(query_kind);
   if (kind.has(AnswerPart::kDistance)) {
@@ -276,7 +282,8 @@ bool FrameRecord::disagrees(QueryKind query_kind) const {
       (oracle_intersecting != reported_intersecting || invalid_pairs != 0))
     return true;
   if (kind.has(AnswerPart::kFirstContact) &&
-      (invalid_first_contact || oracle_intersecting != reported_intersecting))
+      (invalid_first_contact || oracle_intersecting != reported_intersecting ||
+       coarserThanAsked()))
     return true;
   if (kind.has(AnswerPart::kContacts) && contact && contact->anyWrong()) return true;
   if (!kind.has(AnswerPart::kPairSet)) return false;

@@ -85,7 +85,8 @@ FieldAnswers fieldAnswers(const std::vector<CombinationResult>& results,
         std::find(field.families.begin(), field.families.end(), family) == field.families.end())
       field.families.push_back(family);
     for (const QueryMeasurement& m : tableMeasurements(r)) {
-      if (!m.ok()) continue;
+      // Queries over a step are compared in their own table (continuous_table.h).
+      if (!m.ok() || queryKindInfo(m.kind).over_a_step) continue;
       const FieldAnswers::Key key{c.scene_name, c.resolution, m.query};
       if (field.groups.find(key) == field.groups.end()) field.order.push_back(key);
       field.groups[key].push_back({c.backend, m});

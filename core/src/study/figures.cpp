@@ -93,6 +93,15 @@ const std::vector<Figure>& measurementFigures() {
       {"max_distance_error", kBoth, [](R, M m) { return nullable(m.max_distance_error); }},
       {"max_relative_distance_error", kBoth,
        [](R, M m) { return nullable(m.max_relative_distance_error); }},
+      {"max_first_contact_error", kBoth, [](R, M m) { return nullable(m.max_first_contact_error); }},
+      {"coarse_steps", kInDashboard,
+       [](R, M m) {
+         if (!queryKindInfo(m.kind).over_a_step) return Json();
+         std::size_t coarse = 0;
+         for (const FrameRecord& f : m.frames)
+           coarse += f.coarserThanAsked() ? 1 : 0;
+         return Json(coarse);
+       }},
       {"contact", kInSummary,
        [](R, M m) { return m.contact ? contactScoreJson<Json>(*m.contact) : Json(); }},
       {"contacts_per_frame", kInDashboard,

@@ -19,6 +19,7 @@
 #include <collido/runner/time_statistic.h>
 #include <collido/study/comparison_files.h>
 #include <collido/study/contact_table.h>
+#include <collido/study/continuous_table.h>
 #include <collido/study/deform_table.h>
 #include <collido/study/expected_time.h>
 #include <collido/study/field_table.h>
@@ -163,6 +164,10 @@ std::vector<TableSection> summarySectionsWith(const std::vector<CombinationResul
       needsTable(results));
   add("field", fieldTableTitle(sides), "single thread, exact answers; per scene and query",
       fieldTable(results, sides));
+  add("continuous", "Between the frames",
+      "first contact over each step: time against missed contacts and time error; per scene and "
+      "query",
+      continuousTable(results, sides));
   add("contacts", "Contacts against the exact reference", "", contactTable(results));
   add("deforming", "Deforming scenes", "update, then query, every frame", deformTable(results));
   add("tracking", "Poses from tracked markers", "collision error against the true poses",

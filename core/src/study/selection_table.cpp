@@ -212,7 +212,9 @@ std::vector<SceneQueryPicks> whatToPick(const std::vector<CombinationResult>& re
     if (!r.outcome.ok() || !c.category.empty() || c.needs != NeedsMode::kDeclared || c.limit != 0)
       continue;
     for (const QueryMeasurement& m : tableMeasurements(r)) {
-      if (!m.ok() || m.frames.empty()) continue;
+      // Queries over a step have their own picks, which tell certified answers from discrete
+      // ones (continuous_table.h).
+      if (!m.ok() || m.frames.empty() || queryKindInfo(m.kind).over_a_step) continue;
       const Key key{c.scene_name, c.resolution, m.query};
       if (groups.find(key) == groups.end()) order.push_back(key);
       groups[key].push_back(candidateOf(c.backend, m));

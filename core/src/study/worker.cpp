@@ -56,6 +56,16 @@ Result<CombinationResult> runCombination(const WorkerRequest& request) {
     for (std::size_t i = 0; i < scene.objects.size(); ++i)
       scene.objects[i].poses = finest->objects[i].poses;
   }
+  // A sub-step setting answers like its backend but over a step: studied there alone, its
+  // other answers being its backend's own, studied already.
+  if (const auto parsed = parseBackendText(c.backend);
+      parsed.ok() && parsed.value().second.count(kSubstepsOption) != 0) {
+    scene.queries.erase(std::remove_if(scene.queries.begin(), scene.queries.end(),
+                                       [](const SceneQuery& q) {
+                                         return !queryKindInfo(q.request.kind).over_a_step;
+                                       }),
+                        scene.queries.end());
+  }
   if (c.limit != 0) {
     for (SceneQuery& q : scene.queries) {
       if (const auto limit = queryKindInfo(q.request.kind).limit) q.request.*limit = c.limit;

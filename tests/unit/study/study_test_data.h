@@ -132,6 +132,7 @@ inline QueryMeasurement everyFieldMeasurement(const std::string& backend) {
     f.reported_t_lo = 0.2;
     f.reported_t_hi = 0.201;
     f.first_contact_error = 0.0505;
+    f.bracket_width = 0.001;
     f.invalid_first_contact = i == 1;
     ContactScore contact;
     contact.contacts = 4;

@@ -91,6 +91,7 @@ void visitFrameFields(Frame& f, bool counts_bv_tests, bool counts_primitive_test
   visit("reported_t_lo", f.reported_t_lo, Absent::kKeep);
   visit("reported_t_hi", f.reported_t_hi, Absent::kKeep);
   visit("first_contact_error", f.first_contact_error, Absent::kKeep);
+  visit("bracket_width", f.bracket_width, Absent::kKeep);
   visit("invalid_first_contact", f.invalid_first_contact, Absent::kKeep);
   visit("median_us", f.median_us, Absent::kError);
   visit("floor_us", f.floor_us, Absent::kKeep);

@@ -167,6 +167,8 @@ struct FrameRecord {
   std::optional<double> reported_t_lo;
   std::optional<double> reported_t_hi;
   std::optional<double> first_contact_error;
+  /// kFirstContact: the bracket width the query asked for.
+  std::optional<double> bracket_width;
   /// kFirstContact: the reported bracket contradicts the oracle's by more than the bracket width
   /// asked for (its contact lies that far inside the oracle's proven free part, or its free part
   /// reaches that far past the oracle's proven contact), or its witness pair does not share a
@@ -191,8 +193,13 @@ struct FrameRecord {
   /// check that did not measure this frame leaves its names out.
   std::map<std::string, double> values;
 
-  /// Whether the answer differs from the oracle's in any way this query asks about.
+  /// Whether the answer differs from the oracle's in any way this query asks about; for a first
+  /// contact that includes a time coarser than asked (coarserThanAsked).
   bool disagrees(QueryKind kind) const;
+  /// kFirstContact: the time error is above twice the bracket width asked (two brackets of that
+  /// width around the true time are at most that far apart): a coarser answer than the query
+  /// asks for, as discrete sub-steps give.
+  bool coarserThanAsked() const;
 };
 
 /// Compares a backend's answer with the oracle's for meshes posed by `pose_a` and `pose_b` and
