@@ -40,13 +40,13 @@ cell=$out/robot_cell_cast
 "$build/collido" check "$out/robot_cell_cast.json" > /dev/null
 
 # The cast cell's planner edges: every 8th configuration of the pick-and-place as waypoints, each
-# link moved between them (StepMotion), and the first contact over each step of the wrist and a
-# finger with everything around the arm.
+# link moved between them (StepMotion), and the first contact over each step of a finger with
+# everything around the arm (one link keeps FCL's share of the default study's time small).
 awk 'NR == 1 || (NR - 2) % 8 == 0' "$cell/pick_and_place.csv" > "$cell/waypoints.csv"
 mkdir -p "$out/continuous"
 "$build/collido" import urdf "$cell/arm6_cast.urdf" --trajectory "$cell/waypoints.csv" \
   --environment "$cell"/cell/{shelf,bin_a,bin_b,fixture,bench,guard_back,guard_side}.obj \
-  --clearance wrist --first-contact wrist finger_left -o "$out/continuous/robot_cell_waypoints.json"
+  --clearance wrist --first-contact finger_left -o "$out/continuous/robot_cell_waypoints.json"
 "$build/collido" check "$out/continuous/robot_cell_waypoints.json" > /dev/null
 
 if [[ $out != "$root/scenes" ]]; then
