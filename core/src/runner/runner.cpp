@@ -267,7 +267,8 @@ void compareWithOracle(const TriangleMesh& a, const Pose& pose_a, const Triangle
 
 bool FrameRecord::coarserThanAsked() const {
   // Two brackets of the asked width around the same time are at most two widths apart.
-  return first_contact_error && bracket_width && *first_contact_error > 2.0 * *bracket_width + 1e-12;
+  return first_contact_error && bracket_width &&
+         *first_contact_error > 2.0 * *bracket_width + 1e-12;
 }
 
 bool FrameRecord::disagrees(QueryKind query_kind) const {
@@ -282,8 +283,7 @@ bool FrameRecord::disagrees(QueryKind query_kind) const {
       (oracle_intersecting != reported_intersecting || invalid_pairs != 0))
     return true;
   if (kind.has(AnswerPart::kFirstContact) &&
-      (invalid_first_contact || oracle_intersecting != reported_intersecting ||
-       coarserThanAsked()))
+      (invalid_first_contact || oracle_intersecting != reported_intersecting || coarserThanAsked()))
     return true;
   if (kind.has(AnswerPart::kContacts) && contact && contact->anyWrong()) return true;
   if (!kind.has(AnswerPart::kPairSet)) return false;

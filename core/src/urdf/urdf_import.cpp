@@ -293,15 +293,18 @@ class SceneBuilder {
                                                const std::string& option) const {
     std::vector<std::size_t> firsts;
     for (const std::string& name : names) {
+      std::string problem = option;
+      problem += " ";
+      problem += name;
       const std::optional<std::size_t> link = robot_.linkNamed(name);
       if (!link) {
-        return Status(StatusCode::kInvalidArgument,
-                      option + " " + name + ": no link of robot '" + robot_.name + "'");
+        problem += ": no link of robot '" + robot_.name + "'";
+        return Status(StatusCode::kInvalidArgument, problem);
       }
       const auto first = first_of_link_.find(*link);
       if (first == first_of_link_.end()) {
-        return Status(StatusCode::kInvalidArgument,
-                      option + " " + name + ": link has no collision geometry");
+        problem += ": link has no collision geometry";
+        return Status(StatusCode::kInvalidArgument, problem);
       }
       firsts.push_back(first->second);
     }
