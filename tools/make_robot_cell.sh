@@ -46,7 +46,7 @@ awk 'NR == 1 || (NR - 2) % 8 == 0' "$cell/pick_and_place.csv" > "$cell/waypoints
 mkdir -p "$out/continuous"
 "$build/collido" import urdf "$cell/arm6_cast.urdf" --trajectory "$cell/waypoints.csv" \
   --environment "$cell"/cell/{shelf,bin_a,bin_b,fixture,bench,guard_back,guard_side}.obj \
-  --clearance wrist --first-contact finger_left -o "$out/continuous/robot_cell_waypoints.json"
+  --first-contact finger_left --first-contact-only -o "$out/continuous/robot_cell_waypoints.json"
 "$build/collido" check "$out/continuous/robot_cell_waypoints.json" > /dev/null
 
 if [[ $out != "$root/scenes" ]]; then

@@ -40,6 +40,9 @@ void addImportCommand(CLI::App& app, int& exit_code) {
   urdf->add_option("--first-contact", request->first_contact_links,
                    "LINK: ask its first contact with each environment object over every step "
                    "from a frame to the next (repeatable)");
+  urdf->add_flag("--first-contact-only", request->first_contact_only,
+                 "ask the --first-contact queries alone, not self-collision, the environment and "
+                 "clearance at the frames");
   urdf->callback([request, environment, &exit_code] {
     if (Status s = parseEnvironmentMeshes(*environment, request->environment); !s.ok()) {
       std::cerr << "error: " << s.message() << "\n";

@@ -374,6 +374,15 @@ class SceneBuilder {
             {"queries", queries_}};
   }
 
+  // Only the first-contact queries (--first-contact-only): a planner's edge checks alone.
+  void keepFirstContactsOnly() {
+    Json kept = Json::array();
+    for (const Json& query : queries_) {
+      if (query.at("kind") == "first_contact") kept.push_back(query);
+    }
+    queries_ = std::move(kept);
+  }
+
   bool hasQueries() const { return !queries_.empty(); }
   std::size_t objectCount() const { return objects_.size(); }
 
@@ -441,6 +450,13 @@ Result<UrdfImport> importUrdf(const UrdfImportRequest& request) {
   if (Status s = builder.addEnvironment(summary.frames); !s.ok()) return s;
   if (Status s = builder.addSelfCollision(summary); !s.ok()) return s;
   if (Status s = builder.addEnvironmentQueries(); !s.ok()) return s;
+  if (request.first_contact_only) {
+    if (request.first_contact_links.empty()) {
+      return Status(StatusCode::kInvalidArgument,
+                    "--first-contact-only: no --first-contact link to ask");
+    }
+    builder.keepFirstContactsOnly();
+  }
   if (!builder.hasQueries()) {
     return Status(StatusCode::kInvalidArgument,
                   request.urdf +

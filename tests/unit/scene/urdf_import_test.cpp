@@ -252,6 +252,19 @@ TEST(UrdfImport, FirstContactIsAskedForTheNamedLinks) {
   EXPECT_EQ(last.name, "first contact: tool-env_far_box");
   EXPECT_EQ(queryKindName(last.request.kind), std::string("first_contact"));
 
+  request.first_contact_only = true;
+  ASSERT_TRUE(importUrdf(request).ok());
+  const Result<Scene> edges = loadScene(request.output);
+  ASSERT_TRUE(edges.ok()) << edges.status().toString();
+  ASSERT_EQ(edges.value().queries.size(), 1u);
+  EXPECT_EQ(edges.value().queries[0].name, "first contact: tool-env_far_box");
+  request.first_contact_links.clear();
+  const Result<UrdfImport> nothing = importUrdf(request);
+  ASSERT_FALSE(nothing.ok());
+  EXPECT_NE(nothing.status().message().find("--first-contact-only: no --first-contact link"),
+            std::string::npos);
+  request.first_contact_only = false;
+
   request.first_contact_links = {"elbow"};
   const Result<UrdfImport> refused = importUrdf(request);
   ASSERT_FALSE(refused.ok());

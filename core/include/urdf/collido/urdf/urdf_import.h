@@ -48,6 +48,9 @@ struct UrdfImportRequest {
   /// Links whose first contact with each environment object is asked over every step (the
   /// links' poses interpolated between frames, StepMotion); empty: none.
   std::vector<std::string> first_contact_links;
+  /// Ask the first-contact queries alone (a planner's edge checks), not self-collision, the
+  /// environment and clearance at the frames.
+  bool first_contact_only = false;
 };
 
 /// What an import wrote.
