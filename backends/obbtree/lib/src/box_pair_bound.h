@@ -9,6 +9,7 @@
 #include <Eigen/Core>
 
 #include "frame_products.h"
+#include "query_bounds.h"
 
 namespace collido::obbtree::detail {
 
@@ -42,6 +43,20 @@ inline Eigen::Vector3d closestPointsDirection(const BoxPairInA& boxes) {
       transposedTimesVector(boxes.r, near_centre - boxes.t).cwiseMax(-boxes.b).cwiseMin(boxes.b);
   const Eigen::Vector3d on_b = boxes.t + timesVector(boxes.r, local);
   return on_b - on_b.cwiseMax(-boxes.a).cwiseMin(boxes.a);
+}
+
+/// How far B's box, its centre mapped into A's frame by `map` (and its axes with it), may lie from
+/// the exact box, as a distance: the mapped centre's error and the axes' over the half extents.
+inline double mappedBoxError(const RelativeMap& map, const OrientedBox& box) {
+  return map.bounds.pointError(box.center) * std::sqrt(3.0) +
+         map.bounds.axis_error * box.half_extents.sum();
+}
+
+/// The slack boxPairLowerBound takes for boxes with B mapped by `map` (`mapped_error`:
+/// mappedBoxError): 5 axis_error (|t|_1 + |a|_1 + |b|_1), plus B's mapping error.
+inline double boxPairSlack(const RelativeMap& map, const BoxPairInA& boxes, double mapped_error) {
+  return 5.0 * map.bounds.axis_error * (boxes.t.cwiseAbs().sum() + boxes.a.sum() + boxes.b.sum()) +
+         mapped_error + kUnderflowGuard;
 }
 
 /// A lower bound on the distance between the boxes, never negative: the gap, less `slack`,

@@ -160,8 +160,7 @@ class Search {
 
   MappedBox mappedB(const OrientedBox& box) const {
     return {box, detail::timesVector(map_.rotation, box.center) + map_.translation,
-            map_.bounds.pointError(box.center) * std::sqrt(3.0) +
-                map_.bounds.axis_error * box.half_extents.sum()};
+            detail::mappedBoxError(map_, box)};
   }
 
   // A lower bound (in A's frame) on the distance between A's box and B's mapped box, given
@@ -170,11 +169,8 @@ class Search {
     ++answer_.box_tests;
     const Eigen::Vector3d t =
         detail::transposedTimesVector(box_a.axes, box_b.center - box_a.center);
-    const double slack =
-        5.0 * map_.bounds.axis_error *
-            (t.cwiseAbs().sum() + box_a.half_extents.sum() + box_b.box.half_extents.sum()) +
-        box_b.error + detail::kUnderflowGuard;
-    return detail::boxPairLowerBound({r, t, box_a.half_extents, box_b.box.half_extents}, slack);
+    const detail::BoxPairInA boxes{r, t, box_a.half_extents, box_b.box.half_extents};
+    return detail::boxPairLowerBound(boxes, detail::boxPairSlack(map_, boxes, box_b.error));
   }
 
   // Whether a pair with this lower bound on its world distance cannot beat the best (less the

@@ -103,15 +103,10 @@ class Advance {
     const OrientedBox box_a = boxOf(nodes_a_[static_cast<std::size_t>(ia)]);
     const OrientedBox box_b = boxOf(nodes_b_[static_cast<std::size_t>(ib)]);
     const Eigen::Vector3d center_b = map_(box_b.center);
-    const double error_b = map_.bounds.pointError(box_b.center) * std::sqrt(3.0) +
-                           map_.bounds.axis_error * box_b.half_extents.sum();
     const Eigen::Matrix3d r = transposedTimes(box_a.axes, times(map_.rotation, box_b.axes));
     const Eigen::Vector3d t = transposedTimesVector(box_a.axes, center_b - box_a.center);
     const BoxPairInA boxes{r, t, box_a.half_extents, box_b.half_extents};
-    const double slack =
-        5.0 * map_.bounds.axis_error *
-            (t.cwiseAbs().sum() + box_a.half_extents.sum() + box_b.half_extents.sum()) +
-        error_b + kUnderflowGuard;
+    const double slack = boxPairSlack(map_, boxes, mappedBoxError(map_, box_b));
     double time = 0.0;
     const Eigen::Vector3d towards_b = closestPointsDirection(boxes);
     const double length = towards_b.norm();
