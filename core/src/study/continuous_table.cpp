@@ -8,6 +8,7 @@
 
 #include <collido/runner/text_table.h>
 #include <collido/runner/time_statistic.h>
+#include <collido/study/plan.h>
 #include <collido/study/robustness.h>
 #include <collido/study/selection_table.h>
 
@@ -28,13 +29,8 @@ struct StepAnswers {
   bool right() const { return missed == 0 && falsely == 0 && coarse == 0 && wrong == 0; }
 };
 
-bool discreteSetting(const std::string& backend) {
-  const auto parsed = parseBackendText(backend);
-  return parsed.ok() && parsed.value().second.count(kSubstepsOption) != 0;
-}
-
 StepAnswers countSteps(const CombinationResult& r, const QueryMeasurement& m) {
-  StepAnswers s{r.combination.backend, discreteSetting(r.combination.backend), m};
+  StepAnswers s{r.combination.backend, answersBySubsteps(r.combination.backend), m};
   for (const FrameRecord& f : m.frames) {
     const bool touches = f.oracle_touches.value_or(false);
     s.touching += touches ? 1 : 0;

@@ -214,6 +214,11 @@ bool runsOnOneThread(const std::string& backend) {
   return threads == options.end() || threads->second == "1" || threads->second == "0";
 }
 
+bool answersBySubsteps(const std::string& backend) {
+  const auto parsed = parseBackendText(backend);
+  return parsed.ok() && parsed.value().second.count(kSubstepsOption) != 0;
+}
+
 std::vector<Combination> shardOf(const std::vector<Combination>& plan, std::size_t index,
                                  std::size_t count) {
   std::vector<Combination> part;

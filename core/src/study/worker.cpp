@@ -6,6 +6,7 @@
 #include <collido/runner/runner.h>
 #include <collido/scene/scene.h>
 #include <collido/study/oracle_store.h>
+#include <collido/study/plan.h>
 #include <collido/study/resident_memory.h>
 
 #include "comparison_worker.h"
@@ -58,8 +59,7 @@ Result<CombinationResult> runCombination(const WorkerRequest& request) {
   }
   // A sub-step setting answers like its backend but over a step: studied there alone, its
   // other answers being its backend's own, studied already.
-  if (const auto parsed = parseBackendText(c.backend);
-      parsed.ok() && parsed.value().second.count(kSubstepsOption) != 0) {
+  if (answersBySubsteps(c.backend)) {
     scene.queries.erase(std::remove_if(scene.queries.begin(), scene.queries.end(),
                                        [](const SceneQuery& q) {
                                          return !queryKindInfo(q.request.kind).over_a_step;

@@ -119,6 +119,10 @@ std::vector<Combination> planComparisons(const std::vector<PlannedScene>& files,
 /// `threads` option, or 0 or 1 (a text that does not parse counts as one thread).
 bool runsOnOneThread(const std::string& backend);
 
+/// Whether a backend setting answers queries over a step by the runner's discrete sub-steps
+/// (its `substeps` option, BackendSpec::substeps) rather than by its own continuous answer.
+bool answersBySubsteps(const std::string& backend);
+
 /// The part of a plan that shard `index` of `count` runs (every count-th combination from
 /// `index`, so each shard gets a fair mix of cheap and dear ones).
 std::vector<Combination> shardOf(const std::vector<Combination>& plan, std::size_t index,
